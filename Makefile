@@ -1,0 +1,41 @@
+# SPDX-License-Identifier: BSD-2-Clause
+# The two commands: `make run` and `make test`. Both install what is missing, configure and build.
+BUILD ?= build
+SCENE ?= inputs/sod_weak.opts
+OUT   ?= output/sod_weak
+NP    ?= 1
+PY    ?= /usr/bin/python3
+MPIEXEC = mpiexec --allow-run-as-root --oversubscribe
+
+.PHONY: all deps configure build run test bench clean format
+all: build
+
+deps:
+	@scripts/install-deps.sh
+
+$(BUILD)/build.ninja: CMakeLists.txt | deps
+	cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release
+
+configure: deps $(BUILD)/build.ninja
+
+build: configure
+	cmake --build $(BUILD)
+
+run: build
+	$(MPIEXEC) -n $(NP) $(BUILD)/petmpm -options_file $(SCENE) -mpm_output $(OUT) -mpm_report $(OUT)/report.json
+	$(PY) scripts/plot_profiles.py $(OUT)/petmpm.h5 $(OUT)/profiles.png
+	$(PY) scripts/summary.py $(OUT)/report.json
+	@echo "Profiles plotted against the exact solution: $(OUT)/profiles.png"
+	@echo "HDF5: $(OUT)/petmpm.h5   ParaView/VisIt: $(OUT)/petmpm.xmf   report: $(OUT)/report.json"
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure
+
+bench: build
+	$(PY) scripts/bench.py
+
+format:
+	clang-format -i $$(git ls-files '*.c' '*.h')
+
+clean:
+	rm -rf $(BUILD)

@@ -1,0 +1,125 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* petmpm: explicit Material Point Method on a PETSc DMDA with a DMSwarm of material points, driven by TS.
+   Units are CGS, temperature in eV. */
+#pragma once
+#include <petscdmda.h>
+#include <petscdmswarm.h>
+#include <petscts.h>
+#include <petmpm/compat.h>
+
+#define MPM_MAX_DIM 3
+
+typedef struct _p_MPM          *MPM;
+typedef struct _p_MPMShape     *MPMShape;
+typedef struct _p_MPMEOS       *MPMEOS;
+typedef struct _p_MPMViscosity *MPMViscosity;
+typedef struct _p_MPMUpdate    *MPMUpdate;
+typedef struct _p_MPMExact     *MPMExact;
+
+/* Closed algorithm switches: enums, so that -help lists the choices. */
+typedef enum {
+  MPM_SCHEME_USL,
+  MPM_SCHEME_MUSL
+} MPMScheme;
+PETSC_EXTERN const char *const MPMSchemes[];
+
+typedef enum {
+  MPM_STRESS_CELL,
+  MPM_STRESS_POINT
+} MPMStressIntegration;
+PETSC_EXTERN const char *const MPMStressIntegrations[];
+
+typedef enum {
+  MPM_BC_WALL,
+  MPM_BC_FREE
+} MPMBoundaryType;
+PETSC_EXTERN const char *const MPMBoundaryTypes[];
+
+/* Type names */
+typedef const char *MPMShapeType;
+#define MPMSHAPELINEAR "linear"
+typedef const char *MPMEOSType;
+#define MPMEOSIDEALGAS "idealgas"
+typedef const char *MPMViscosityType;
+#define MPMVISCOSITYNONE "none"
+#define MPMVISCOSITYVNR  "vnr"
+typedef const char *MPMUpdateType;
+#define MPMUPDATEPIC   "pic"
+#define MPMUPDATEFLIP  "flip"
+#define MPMUPDATEBLEND "blend"
+typedef const char *MPMExactType;
+#define MPMEXACTNONE    "none"
+#define MPMEXACTRIEMANN "riemann"
+
+/* The MPM object */
+PETSC_EXTERN PetscErrorCode MPMInitializePackage(void);
+PETSC_EXTERN PetscErrorCode MPMCreate(MPI_Comm, MPM *);
+PETSC_EXTERN PetscErrorCode MPMSetFromOptions(MPM);
+PETSC_EXTERN PetscErrorCode MPMSetUp(MPM);
+PETSC_EXTERN PetscErrorCode MPMSolve(MPM);
+PETSC_EXTERN PetscErrorCode MPMView(MPM, PetscViewer);
+PETSC_EXTERN PetscErrorCode MPMWriteReport(MPM);
+PETSC_EXTERN PetscErrorCode MPMDestroy(MPM *);
+
+/* Shape functions */
+PETSC_EXTERN PetscErrorCode MPMShapeRegister(const char[], PetscErrorCode (*)(MPMShape));
+PETSC_EXTERN PetscErrorCode MPMShapeCreate(MPI_Comm, MPMShape *);
+PETSC_EXTERN PetscErrorCode MPMShapeSetType(MPMShape, MPMShapeType);
+PETSC_EXTERN PetscErrorCode MPMShapeSetFromOptions(MPMShape);
+PETSC_EXTERN PetscErrorCode MPMShapeView(MPMShape, PetscViewer);
+PETSC_EXTERN PetscErrorCode MPMShapeGetGhostWidth(MPMShape, PetscInt *);
+PETSC_EXTERN PetscErrorCode MPMShapeDestroy(MPMShape *);
+
+/* Equations of state */
+PETSC_EXTERN PetscErrorCode MPMEOSRegister(const char[], PetscErrorCode (*)(MPMEOS));
+PETSC_EXTERN PetscErrorCode MPMEOSCreate(MPI_Comm, MPMEOS *);
+PETSC_EXTERN PetscErrorCode MPMEOSSetOptionsPrefix(MPMEOS, const char[]);
+PETSC_EXTERN PetscErrorCode MPMEOSSetType(MPMEOS, MPMEOSType);
+PETSC_EXTERN PetscErrorCode MPMEOSSetFromOptions(MPMEOS);
+PETSC_EXTERN PetscErrorCode MPMEOSView(MPMEOS, PetscViewer);
+PETSC_EXTERN PetscErrorCode MPMEOSDestroy(MPMEOS *);
+PETSC_EXTERN PetscErrorCode MPMEOSPressure(MPMEOS, PetscReal, PetscReal, PetscReal *, PetscReal *);
+PETSC_EXTERN PetscErrorCode MPMEOSTemperature(MPMEOS, PetscReal, PetscReal, PetscReal *);
+PETSC_EXTERN PetscErrorCode MPMEOSEnergyFromTemperature(MPMEOS, PetscReal, PetscReal, PetscReal *);
+PETSC_EXTERN PetscErrorCode MPMEOSIdealGasGetParameters(MPMEOS, PetscReal *, PetscReal *);
+
+/* Artificial viscosity */
+PETSC_EXTERN PetscErrorCode MPMViscosityRegister(const char[], PetscErrorCode (*)(MPMViscosity));
+PETSC_EXTERN PetscErrorCode MPMViscosityCreate(MPI_Comm, MPMViscosity *);
+PETSC_EXTERN PetscErrorCode MPMViscositySetType(MPMViscosity, MPMViscosityType);
+PETSC_EXTERN PetscErrorCode MPMViscositySetFromOptions(MPMViscosity);
+PETSC_EXTERN PetscErrorCode MPMViscosityView(MPMViscosity, PetscViewer);
+PETSC_EXTERN PetscErrorCode MPMViscosityIsActive(MPMViscosity, PetscBool *);
+PETSC_EXTERN PetscErrorCode MPMViscosityDestroy(MPMViscosity *);
+
+/* Particle velocity update (PIC, FLIP, blend) */
+PETSC_EXTERN PetscErrorCode MPMUpdateRegister(const char[], PetscErrorCode (*)(MPMUpdate));
+PETSC_EXTERN PetscErrorCode MPMUpdateCreate(MPI_Comm, MPMUpdate *);
+PETSC_EXTERN PetscErrorCode MPMUpdateSetType(MPMUpdate, MPMUpdateType);
+PETSC_EXTERN PetscErrorCode MPMUpdateSetFromOptions(MPMUpdate);
+PETSC_EXTERN PetscErrorCode MPMUpdateView(MPMUpdate, PetscViewer);
+PETSC_EXTERN PetscErrorCode MPMUpdateGetFLIPFraction(MPMUpdate, PetscReal *);
+PETSC_EXTERN PetscErrorCode MPMUpdateDestroy(MPMUpdate *);
+
+/* Exact solutions for self-checks */
+PETSC_EXTERN PetscErrorCode MPMExactRegister(const char[], PetscErrorCode (*)(MPMExact));
+PETSC_EXTERN PetscErrorCode MPMExactCreate(MPI_Comm, MPMExact *);
+PETSC_EXTERN PetscErrorCode MPMExactSetType(MPMExact, MPMExactType);
+PETSC_EXTERN PetscErrorCode MPMExactSetFromOptions(MPMExact);
+PETSC_EXTERN PetscErrorCode MPMExactView(MPMExact, PetscViewer);
+PETSC_EXTERN PetscErrorCode MPMExactDestroy(MPMExact *);
+
+/* Exact Riemann solver for ideal gases (Toro, ch. 4); gamma may differ on each side. */
+typedef struct {
+  PetscReal rho, u, p, gamma; /* density [g/cm^3], velocity [cm/s], pressure [dyn/cm^2], ratio of specific heats [-] */
+} MPMRiemannState;
+typedef struct {
+  MPMRiemannState L, R;
+  PetscReal       pstar, ustar;       /* star pressure [dyn/cm^2], star (contact) velocity [cm/s] */
+  PetscReal       rhostarL, rhostarR; /* densities beside the contact [g/cm^3] */
+  PetscReal       SL, SR;             /* shock speeds if the waves are shocks [cm/s] */
+  PetscReal       SHL, STL, SHR, STR; /* rarefaction head and tail speeds [cm/s] */
+  PetscBool       shockL, shockR;     /* which of the two outer waves are shocks */
+} MPMRiemannSolution;
+PETSC_EXTERN PetscErrorCode MPMRiemannSolve(const MPMRiemannState *, const MPMRiemannState *, MPMRiemannSolution *);
+PETSC_EXTERN void           MPMRiemannSample(const MPMRiemannSolution *, PetscReal, PetscReal *, PetscReal *, PetscReal *);

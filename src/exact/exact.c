@@ -1,0 +1,93 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* Exact-solution class: a verification scene names its exact solution with -mpm_exact_type; the report
+   then carries error norms of density, velocity, pressure and temperature and the scene's named checks. */
+#include "../petmpmimpl.h"
+
+static PetscFunctionList MPMExactList = NULL;
+
+PetscErrorCode MPMExactRegister(const char name[], PetscErrorCode (*create)(MPMExact))
+{
+  PetscFunctionBegin;
+  PetscCall(PetscFunctionListAdd(&MPMExactList, name, create));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMExactCreate(MPI_Comm comm, MPMExact *exact)
+{
+  PetscFunctionBegin;
+  PetscCall(MPMInitializePackage());
+  PetscCall(PetscNew(exact));
+  (*exact)->comm = comm;
+  PetscCall(MPMExactSetType(*exact, MPMEXACTNONE));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMExactSetType(MPMExact exact, MPMExactType type)
+{
+  PetscErrorCode (*create)(MPMExact);
+
+  PetscFunctionBegin;
+  PetscCall(MPMClassSetType(MPMExactList, "exact solution", "-mpm_exact_type", type, (PetscErrorCode(**)(void *))&create));
+  if (exact->ops.destroy) PetscCall(exact->ops.destroy(exact));
+  PetscCall(PetscMemzero(&exact->ops, sizeof(exact->ops)));
+  exact->data = NULL;
+  PetscCall(PetscStrncpy(exact->type_name, type, sizeof(exact->type_name)));
+  PetscCall(create(exact));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMExactSetFromOptions(MPMExact exact)
+{
+  char      type[MPM_MAX_NAME];
+  PetscBool set;
+
+  PetscFunctionBegin;
+  PetscOptionsBegin(exact->comm, NULL, "Exact solution for the self-check", "MPMExact");
+  PetscCall(PetscOptionsFList("-mpm_exact_type", "Exact solution of the scene", "MPMExactSetType", MPMExactList, exact->type_name, type, sizeof(type), &set));
+  if (set) PetscCall(MPMExactSetType(exact, type));
+  if (exact->ops.setfromoptions) PetscCall(exact->ops.setfromoptions(exact, PetscOptionsObject));
+  PetscOptionsEnd();
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMExactView(MPMExact exact, PetscViewer viewer)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "Exact solution: %s\n", exact->type_name));
+  if (exact->ops.view) {
+    PetscCall(PetscViewerASCIIPushTab(viewer));
+    PetscCall(exact->ops.view(exact, viewer));
+    PetscCall(PetscViewerASCIIPopTab(viewer));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMExactSetUp(MPMExact exact, MPM mpm)
+{
+  PetscFunctionBegin;
+  if (exact->ops.setup) PetscCall(exact->ops.setup(exact, mpm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMExactEvaluate(MPMExact exact, PetscReal t, const PetscReal x[], PetscReal *rho, PetscReal v[], PetscReal *p, PetscReal *T)
+{
+  PetscFunctionBegin;
+  exact->ops.evaluate(exact->data, t, x, rho, v, p, T);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMExactComputeChecks(MPMExact exact, MPM mpm)
+{
+  PetscFunctionBegin;
+  if (exact->ops.checks) PetscCall(exact->ops.checks(exact, mpm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMExactDestroy(MPMExact *exact)
+{
+  PetscFunctionBegin;
+  if (!*exact) PetscFunctionReturn(PETSC_SUCCESS);
+  if ((*exact)->ops.destroy) PetscCall((*exact)->ops.destroy(*exact));
+  PetscCall(PetscFree(*exact));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -1,0 +1,171 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* Exact solution of a shock tube along x: the Riemann problem at x = x0 (-mpm_exact_riemann_x0 [cm])
+   between the initial states of the scene on either side, solved by MPMRiemannSolve (Toro, ch. 4).
+   Both materials must be ideal gases; T = p / ((gamma - 1) rho Cv).
+   Checks (all positions in cm, measured on the volume-weighted density profile of the points binned
+   by grid cell along x, at the crossing of the mid level nearest the exact position):
+     shock_position    crossing of (rho_shocked + rho_ahead)/2 at the (right or left) shock,
+     contact_position  crossing of (rho*_L + rho*_R)/2,
+     plateau_pressure  volume-weighted mean pressure of the points in the middle half of the star region. */
+#include "../../petmpmimpl.h"
+
+typedef struct {
+  PetscReal          x0;       /* initial discontinuity [cm]           */
+  PetscReal          cv[2];    /* specific heats left, right [erg/(g eV)] */
+  MPMRiemannSolution sol;
+} Exact_Riemann;
+
+static void MPMExactEvaluate_Riemann(void *ctx, PetscReal t, const PetscReal x[], PetscReal *rho, PetscReal v[], PetscReal *p, PetscReal *T)
+{
+  const Exact_Riemann *er = (const Exact_Riemann *)ctx;
+  const PetscReal      S  = t > 0 ? (x[0] - er->x0) / t : (x[0] <= er->x0 ? -PETSC_MAX_REAL : PETSC_MAX_REAL);
+  const PetscBool      left = S <= er->sol.ustar ? PETSC_TRUE : PETSC_FALSE;
+  const PetscReal      g = left ? er->sol.L.gamma : er->sol.R.gamma;
+
+  MPMRiemannSample(&er->sol, S, rho, &v[0], p);
+  v[1] = v[2] = 0.0;
+  *T          = *p / ((g - 1.0) * (*rho) * er->cv[left ? 0 : 1]);
+}
+
+/* Initial state of the scene at x: the first region that contains the point. */
+static PetscErrorCode RiemannSceneState(MPM mpm, PetscReal x0, PetscReal shift, MPMRiemannState *s, PetscReal *cv)
+{
+  PetscReal x[MPM_MAX_DIM];
+  PetscInt  r;
+
+  PetscFunctionBegin;
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) x[k] = 0.5 * (mpm->grid.lo[k] + mpm->grid.hi[k]);
+  x[0] = x0 + shift;
+  for (r = 0; r < mpm->nreg; r++) {
+    PetscBool in = PETSC_TRUE;
+    for (PetscInt k = 0; k < mpm->grid.dim; k++) in = (PetscBool)(in && x[k] >= mpm->reg[r].lo[k] && x[k] <= mpm->reg[r].hi[k]);
+    if (in) break;
+  }
+  PetscCheck(r < mpm->nreg, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_riemann_x0 %g: no region holds x = %g", (double)x0, (double)x[0]);
+  {
+    MPMEOS    eos = mpm->mat[mpm->reg[r].material].eos;
+    PetscReal e, c2;
+    PetscCall(MPMEOSIdealGasGetParameters(eos, &s->gamma, cv));
+    PetscCall(MPMEOSEnergyFromTemperature(eos, mpm->reg[r].rho, mpm->reg[r].T, &e));
+    PetscCall(MPMEOSPressure(eos, mpm->reg[r].rho, e, &s->p, &c2));
+    s->rho = mpm->reg[r].rho;
+    s->u   = mpm->reg[r].v[0];
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMExactSetUp_Riemann(MPMExact exact, MPM mpm)
+{
+  Exact_Riemann  *er = (Exact_Riemann *)exact->data;
+  MPMRiemannState L, R;
+  const PetscReal eps = 1e-6 * mpm->grid.h[0];
+
+  PetscFunctionBegin;
+  PetscCall(MPMOptionsCheckRange("-mpm_exact_riemann_x0", er->x0, mpm->grid.lo[0], mpm->grid.hi[0], PETSC_TRUE, PETSC_TRUE));
+  PetscCall(RiemannSceneState(mpm, er->x0, -eps, &L, &er->cv[0]));
+  PetscCall(RiemannSceneState(mpm, er->x0, +eps, &R, &er->cv[1]));
+  PetscCall(MPMRiemannSolve(&L, &R, &er->sol));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The crossing of level by the binned profile f (bin centres xc) nearest to xref, by linear interpolation. */
+static PetscReal ProfileCrossing(PetscInt n, const PetscReal xc[], const PetscReal f[], PetscReal level, PetscReal xref)
+{
+  PetscReal best = PETSC_MAX_REAL;
+
+  for (PetscInt i = 0; i + 1 < n; i++) {
+    const PetscReal a = f[i] - level, b = f[i + 1] - level;
+    if ((a <= 0 && b > 0) || (a >= 0 && b < 0) || (a > 0 && b <= 0) || (a < 0 && b >= 0)) {
+      const PetscReal x = xc[i] + (xc[i + 1] - xc[i]) * a / (a - b);
+      if (PetscAbsReal(x - xref) < PetscAbsReal(best - xref)) best = x;
+    }
+  }
+  return best;
+}
+
+static PetscErrorCode MPMExactChecks_Riemann(MPMExact exact, MPM mpm)
+{
+  Exact_Riemann            *er = (Exact_Riemann *)exact->data;
+  const MPMRiemannSolution *s  = &er->sol;
+  const PetscReal           t  = mpm->time;
+  const PetscInt            n  = mpm->grid.cells[0];
+  PetscReal                *xc, *rho;
+
+  PetscFunctionBegin;
+  PetscCall(PetscMalloc2(n, &xc, n, &rho));
+  PetscCall(MPMXProfile(mpm, n, xc, rho));
+  if (s->shockR) {
+    const PetscReal xs = er->x0 + s->SR * t;
+    PetscCall(MPMAddCheck(mpm, "shock_position", ProfileCrossing(n, xc, rho, 0.5 * (s->rhostarR + s->R.rho), xs), xs));
+  } else if (s->shockL) {
+    const PetscReal xs = er->x0 + s->SL * t;
+    PetscCall(MPMAddCheck(mpm, "shock_position", ProfileCrossing(n, xc, rho, 0.5 * (s->rhostarL + s->L.rho), xs), xs));
+  }
+  {
+    const PetscReal xcon = er->x0 + s->ustar * t;
+    PetscCall(MPMAddCheck(mpm, "contact_position", ProfileCrossing(n, xc, rho, 0.5 * (s->rhostarL + s->rhostarR), xcon), xcon));
+  }
+  {
+    const PetscReal xa = er->x0 + s->STL * t, xb = er->x0 + s->STR * t, w = xb - xa;
+    PetscReal       sum[2] = {0, 0};
+    MPMPoints       pts;
+
+    PetscCall(MPMPointsGetArrays(mpm, &pts));
+    for (PetscInt q = 0; q < pts.n; q++) {
+      const PetscReal x = pts.f[MPM_FIELD_POSITION][q * mpm->grid.dim];
+      if (x > xa + 0.25 * w && x < xb - 0.25 * w) {
+        sum[0] += pts.f[MPM_FIELD_VOLUME][q] * pts.f[MPM_FIELD_PRESSURE][q];
+        sum[1] += pts.f[MPM_FIELD_VOLUME][q];
+      }
+    }
+    PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, sum, 2, MPIU_REAL, MPIU_SUM, mpm->comm));
+    PetscCall(MPMAddCheck(mpm, "plateau_pressure", sum[1] > 0 ? sum[0] / sum[1] : 0.0, s->pstar));
+  }
+  PetscCall(PetscFree2(xc, rho));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMExactSetFromOptions_Riemann(MPMExact exact, PetscOptionItems *PetscOptionsObject)
+{
+  Exact_Riemann *er = (Exact_Riemann *)exact->data;
+
+  PetscFunctionBegin;
+  PetscOptionsHeadBegin(PetscOptionsObject, "Exact Riemann solution");
+  PetscCall(PetscOptionsReal("-mpm_exact_riemann_x0", "Initial discontinuity x0 [cm]", "", er->x0, &er->x0, NULL));
+  PetscOptionsHeadEnd();
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMExactView_Riemann(MPMExact exact, PetscViewer viewer)
+{
+  Exact_Riemann            *er = (Exact_Riemann *)exact->data;
+  const MPMRiemannSolution *s  = &er->sol;
+
+  PetscFunctionBegin;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "x0 %g cm: p* %.9g dyn/cm^2, u* %.9g cm/s, rho*L %.9g, rho*R %.9g g/cm^3\n", (double)er->x0, (double)s->pstar, (double)s->ustar, (double)s->rhostarL, (double)s->rhostarR));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMExactDestroy_Riemann(MPMExact exact)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscFree(exact->data));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMExactCreate_Riemann(MPMExact exact)
+{
+  Exact_Riemann *er;
+
+  PetscFunctionBegin;
+  PetscCall(PetscNew(&er));
+  exact->data               = er;
+  exact->ops.setup          = MPMExactSetUp_Riemann;
+  exact->ops.evaluate       = MPMExactEvaluate_Riemann;
+  exact->ops.checks         = MPMExactChecks_Riemann;
+  exact->ops.setfromoptions = MPMExactSetFromOptions_Riemann;
+  exact->ops.view           = MPMExactView_Riemann;
+  exact->ops.destroy        = MPMExactDestroy_Riemann;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

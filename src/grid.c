@@ -1,0 +1,96 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* The background grid: a DMDA of vertices in 1, 2 or 3 dimensions whose ghost width follows the support of
+   the shape functions. Cell i lies between vertices i and i+1 and belongs to the rank owning vertex i,
+   so every point of a cell lives on one rank and cell averages need no communication. */
+#include "petmpmimpl.h"
+
+PetscErrorCode MPMCreateGrid(MPM mpm)
+{
+  MPMGrid        *g = &mpm->grid;
+  PetscInt        sw, M[MPM_MAX_DIM] = {1, 1, 1};
+  const PetscInt *l[MPM_MAX_DIM] = {NULL, NULL, NULL};
+
+  PetscFunctionBegin;
+  PetscCall(MPMShapeGetGhostWidth(mpm->shape, &sw));
+  for (PetscInt k = 0; k < g->dim; k++) M[k] = g->cells[k] + 1;
+  switch (g->dim) {
+  case 1:
+    PetscCall(DMDACreate1d(mpm->comm, DM_BOUNDARY_NONE, M[0], MPM_NODE_DOF, sw, NULL, &mpm->da));
+    break;
+  case 2:
+    PetscCall(DMDACreate2d(mpm->comm, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DMDA_STENCIL_BOX, M[0], M[1], PETSC_DECIDE, PETSC_DECIDE, MPM_NODE_DOF, sw, NULL, NULL, &mpm->da));
+    break;
+  default:
+    PetscCall(DMDACreate3d(mpm->comm, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DMDA_STENCIL_BOX, M[0], M[1], M[2], PETSC_DECIDE, PETSC_DECIDE, PETSC_DECIDE, MPM_NODE_DOF, sw, NULL, NULL, NULL, &mpm->da));
+  }
+  PetscCall(DMSetUp(mpm->da));
+  PetscCall(DMDASetUniformCoordinates(mpm->da, g->lo[0], g->hi[0], g->lo[1], g->hi[1], g->lo[2], g->hi[2]));
+  PetscCall(DMDAGetCorners(mpm->da, &g->xs[0], &g->xs[1], &g->xs[2], &g->xm[0], &g->xm[1], &g->xm[2]));
+  PetscCall(DMDAGetGhostCorners(mpm->da, &g->gs[0], &g->gs[1], &g->gs[2], &g->gm[0], &g->gm[1], &g->gm[2]));
+  PetscCall(DMDAGetInfo(mpm->da, NULL, NULL, NULL, NULL, &g->nranks[0], &g->nranks[1], &g->nranks[2], NULL, NULL, NULL, NULL, NULL, NULL));
+  PetscCall(DMDAGetOwnershipRanges(mpm->da, &l[0], &l[1], &l[2]));
+  g->ncells = 1;
+  g->vcell  = 1.0;
+  g->hmin   = PETSC_MAX_REAL;
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
+    if (k >= g->dim) {
+      g->cells[k] = 1;
+      g->cs[k]    = 0;
+      g->cm[k]    = 1;
+      g->h[k]     = 1.0;
+      g->nranks[k] = 1;
+    } else {
+      g->h[k]  = (g->hi[k] - g->lo[k]) / g->cells[k];
+      g->cs[k] = g->xs[k];
+      g->cm[k] = PetscMin(g->xs[k] + g->xm[k], g->cells[k]) - g->xs[k];
+      g->vcell *= g->h[k];
+      g->hmin = PetscMin(g->hmin, g->h[k]);
+    }
+    PetscCheck(g->cm[k] > 0, mpm->comm, PETSC_ERR_ARG_SIZ, "A rank owns no cell in direction %" PetscInt_FMT ": use fewer ranks or more cells (-mpm_cells)", k);
+    g->ncells *= g->cm[k];
+    PetscCall(PetscMalloc1(g->nranks[k] + 1, &g->rank_start[k]));
+    g->rank_start[k][0] = 0;
+    for (PetscInt r = 0; r < g->nranks[k]; r++) g->rank_start[k][r + 1] = g->rank_start[k][r] + (k < g->dim ? l[k][r] : 1);
+  }
+  PetscCall(DMCreateGlobalVector(mpm->da, &mpm->nodes));
+  PetscCall(DMCreateLocalVector(mpm->da, &mpm->lnodes));
+  PetscCall(PetscMalloc2(g->ncells, &mpm->cellV, g->ncells, &mpm->cellS));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Global cell index of x in direction k, clamped to the domain. */
+static inline PetscInt MPMCellIndex(const MPMGrid *g, PetscInt k, PetscReal x)
+{
+  PetscInt i = (PetscInt)PetscFloorReal((x - g->lo[k]) / g->h[k]);
+  return i < 0 ? 0 : (i >= g->cells[k] ? g->cells[k] - 1 : i);
+}
+
+/* Flat index of the owned cell holding x, or -1 if another rank owns it. */
+PetscInt MPMLocalCell(const MPMGrid *g, const PetscReal x[])
+{
+  PetscInt c[MPM_MAX_DIM] = {0, 0, 0};
+
+  for (PetscInt k = 0; k < g->dim; k++) {
+    c[k] = MPMCellIndex(g, k, x[k]) - g->cs[k];
+    if (c[k] < 0 || c[k] >= g->cm[k]) return -1;
+  }
+  return (c[2] * g->cm[1] + c[1]) * g->cm[0] + c[0];
+}
+
+/* Rank owning the cell that holds x (DMDA ranks are numbered x fastest). */
+PetscMPIInt MPMOwnerRank(const MPMGrid *g, const PetscReal x[])
+{
+  PetscInt r[MPM_MAX_DIM] = {0, 0, 0};
+
+  for (PetscInt k = 0; k < g->dim; k++) {
+    const PetscInt i  = MPMCellIndex(g, k, x[k]);
+    PetscInt       lo = 0, hi = g->nranks[k];
+    while (hi - lo > 1) { /* bisection in the ownership ranges */
+      const PetscInt mid = (lo + hi) / 2;
+      if (g->rank_start[k][mid] <= i) lo = mid;
+      else hi = mid;
+    }
+    r[k] = lo;
+  }
+  return (PetscMPIInt)((r[2] * g->nranks[1] + r[1]) * g->nranks[0] + r[0]);
+}

@@ -1,0 +1,250 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* The MPM object: owns the DMDA background grid, the DMSwarm of material points, the TS that drives the
+   explicit steps, the materials and the physics the scene selects. */
+#include "petmpmimpl.h"
+
+const char *const MPMSchemes[]             = {"usl", "musl", "MPMScheme", "MPM_SCHEME_", NULL};
+const char *const MPMStressIntegrations[]  = {"cell", "point", "MPMStressIntegration", "MPM_STRESS_", NULL};
+const char *const MPMBoundaryTypes[]       = {"wall", "free", "MPMBoundaryType", "MPM_BC_", NULL};
+
+PETSC_EXTERN PetscErrorCode MPMShapeCreate_Linear(MPMShape);
+PETSC_EXTERN PetscErrorCode MPMEOSCreate_IdealGas(MPMEOS);
+PETSC_EXTERN PetscErrorCode MPMViscosityCreate_None(MPMViscosity);
+PETSC_EXTERN PetscErrorCode MPMViscosityCreate_VNR(MPMViscosity);
+PETSC_EXTERN PetscErrorCode MPMUpdateCreate_PIC(MPMUpdate);
+PETSC_EXTERN PetscErrorCode MPMUpdateCreate_FLIP(MPMUpdate);
+PETSC_EXTERN PetscErrorCode MPMUpdateCreate_Blend(MPMUpdate);
+PETSC_EXTERN PetscErrorCode MPMExactCreate_None(MPMExact);
+PETSC_EXTERN PetscErrorCode MPMExactCreate_Riemann(MPMExact);
+
+static PetscBool     MPMPackageInitialized = PETSC_FALSE;
+static PetscClassId  MPM_CLASSID;
+
+/* Registers every type of every class: a new type is one file plus one line here. */
+PetscErrorCode MPMInitializePackage(void)
+{
+  PetscFunctionBegin;
+  if (MPMPackageInitialized) PetscFunctionReturn(PETSC_SUCCESS);
+  MPMPackageInitialized = PETSC_TRUE;
+  PetscCall(PetscClassIdRegister("MPM", &MPM_CLASSID));
+  PetscCall(MPMShapeRegister(MPMSHAPELINEAR, MPMShapeCreate_Linear));
+  PetscCall(MPMEOSRegister(MPMEOSIDEALGAS, MPMEOSCreate_IdealGas));
+  PetscCall(MPMViscosityRegister(MPMVISCOSITYNONE, MPMViscosityCreate_None));
+  PetscCall(MPMViscosityRegister(MPMVISCOSITYVNR, MPMViscosityCreate_VNR));
+  PetscCall(MPMUpdateRegister(MPMUPDATEPIC, MPMUpdateCreate_PIC));
+  PetscCall(MPMUpdateRegister(MPMUPDATEFLIP, MPMUpdateCreate_FLIP));
+  PetscCall(MPMUpdateRegister(MPMUPDATEBLEND, MPMUpdateCreate_Blend));
+  PetscCall(MPMExactRegister(MPMEXACTNONE, MPMExactCreate_None));
+  PetscCall(MPMExactRegister(MPMEXACTRIEMANN, MPMExactCreate_Riemann));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
+{
+  MPM m;
+
+  PetscFunctionBegin;
+  PetscCall(MPMInitializePackage());
+  PetscCall(PetscNew(&m));
+  m->comm            = comm;
+  m->grid.dim        = 1;
+  m->ppc             = 2;
+  m->cfl             = 0.4;
+  m->dtmin           = 0.0;
+  m->output_interval = 0;
+  m->scheme          = MPM_SCHEME_USL;
+  m->stress_integration = MPM_STRESS_CELL;
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
+    m->grid.cells[k] = 1;
+    m->grid.lo[k]    = 0.0;
+    m->grid.hi[k]    = 1.0;
+    m->bc_lo[k]      = MPM_BC_WALL;
+    m->bc_hi[k]      = MPM_BC_WALL;
+  }
+  PetscCall(PetscStrncpy(m->scene, "unnamed", sizeof(m->scene)));
+  PetscCall(PetscStrncpy(m->outdir, "output", sizeof(m->outdir)));
+  PetscCall(MPMShapeCreate(comm, &m->shape));
+  PetscCall(MPMUpdateCreate(comm, &m->update));
+  PetscCall(MPMViscosityCreate(comm, &m->viscosity));
+  PetscCall(MPMExactCreate(comm, &m->exact));
+  *mpm = m;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Reads a list option of exactly dim entries (or one entry, applied to every direction). */
+static PetscErrorCode MPMOptionsDimReals(PetscOptionItems *PetscOptionsObject, const char opt[], const char text[], PetscInt dim, PetscReal v[])
+{
+  PetscReal vals[MPM_MAX_DIM];
+  PetscInt  n = MPM_MAX_DIM;
+  PetscBool set;
+
+  PetscFunctionBegin;
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) vals[k] = v[k];
+  PetscCall(PetscOptionsRealArray(opt, text, "", vals, &n, &set));
+  if (set) {
+    PetscCheck(n == dim || n == 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s needs %" PetscInt_FMT " comma-separated values (one per dimension), got %" PetscInt_FMT, opt, dim, n);
+    for (PetscInt k = 0; k < dim; k++) v[k] = vals[n == 1 ? 0 : k];
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMSetFromOptions(MPM mpm)
+{
+  MPMGrid  *g = &mpm->grid;
+  PetscInt  n;
+  PetscBool set;
+
+  PetscFunctionBegin;
+  PetscOptionsBegin(mpm->comm, NULL, "Material Point Method (petmpm)", "MPM");
+  PetscCall(PetscOptionsString("-mpm_scene_name", "Scene name for the report", "", mpm->scene, mpm->scene, sizeof(mpm->scene), NULL));
+  PetscCall(PetscOptionsRangeInt("-mpm_dim", "Space dimension d of the grid [-], 1 to 3", "", g->dim, &g->dim, NULL, 1, 3));
+  {
+    PetscInt cells[MPM_MAX_DIM] = {g->cells[0], g->cells[1], g->cells[2]};
+    n = MPM_MAX_DIM;
+    PetscCall(PetscOptionsIntArray("-mpm_cells", "Cells per direction N[,M[,K]] [-]", "", cells, &n, &set));
+    if (set) {
+      PetscCheck(n == g->dim, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_cells needs %" PetscInt_FMT " comma-separated values for a %" PetscInt_FMT "D scene, got %" PetscInt_FMT, g->dim, g->dim, n);
+      for (PetscInt k = 0; k < g->dim; k++) {
+        PetscCheck(cells[k] >= 2, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_cells: %" PetscInt_FMT " cells in direction %" PetscInt_FMT "; valid is >= 2", cells[k], k);
+        g->cells[k] = cells[k];
+      }
+    }
+  }
+  PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-mpm_lo", "Lower corner of the domain [cm]", g->dim, g->lo));
+  PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-mpm_hi", "Upper corner of the domain [cm]", g->dim, g->hi));
+  for (PetscInt k = 0; k < g->dim; k++) PetscCheck(g->hi[k] > g->lo[k], mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_hi must exceed -mpm_lo in direction %" PetscInt_FMT ": %g <= %g", k, (double)g->hi[k], (double)g->lo[k]);
+  PetscCall(PetscOptionsRangeInt("-mpm_ppc", "Material points per cell per direction [-], 1 to 8", "", mpm->ppc, &mpm->ppc, NULL, 1, 8));
+  PetscCall(PetscOptionsReal("-mpm_cfl", "Courant number C in dt = C h / (c + |v|) [-], in (0, 1]", "", mpm->cfl, &mpm->cfl, NULL));
+  PetscCall(MPMOptionsCheckRange("-mpm_cfl", mpm->cfl, 0.0, 1.0, PETSC_TRUE, PETSC_FALSE));
+  PetscCall(PetscOptionsReal("-mpm_dt_min", "Smallest time step [s]; a smaller CFL step stops the run", "", mpm->dtmin, &mpm->dtmin, NULL));
+  PetscCall(PetscOptionsEnum("-mpm_scheme", "Stress update order", "", MPMSchemes, (PetscEnum)mpm->scheme, (PetscEnum *)&mpm->scheme, NULL));
+  PetscCall(PetscOptionsEnum("-mpm_stress_integration", "Internal force quadrature: cell-averaged stress or point by point", "", MPMStressIntegrations, (PetscEnum)mpm->stress_integration, (PetscEnum *)&mpm->stress_integration, NULL));
+  n = MPM_MAX_DIM;
+  PetscCall(PetscOptionsEnumArray("-mpm_bc_lo", "Boundary at the lower face of each direction", "", MPMBoundaryTypes, (PetscEnum *)mpm->bc_lo, &n, &set));
+  PetscCheck(!set || n == g->dim || n == 1, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_bc_lo needs %" PetscInt_FMT " values (wall or free), got %" PetscInt_FMT, g->dim, n);
+  if (set && n == 1) for (PetscInt k = 1; k < MPM_MAX_DIM; k++) mpm->bc_lo[k] = mpm->bc_lo[0];
+  n = MPM_MAX_DIM;
+  PetscCall(PetscOptionsEnumArray("-mpm_bc_hi", "Boundary at the upper face of each direction", "", MPMBoundaryTypes, (PetscEnum *)mpm->bc_hi, &n, &set));
+  PetscCheck(!set || n == g->dim || n == 1, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_bc_hi needs %" PetscInt_FMT " values (wall or free), got %" PetscInt_FMT, g->dim, n);
+  if (set && n == 1) for (PetscInt k = 1; k < MPM_MAX_DIM; k++) mpm->bc_hi[k] = mpm->bc_hi[0];
+  PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-mpm_gravity", "Body acceleration g [cm/s^2]; enables the gravity module", g->dim, mpm->gravity));
+  for (PetscInt k = 0; k < g->dim; k++) mpm->has_gravity = (PetscBool)(mpm->has_gravity || mpm->gravity[k] != 0.0);
+  PetscCall(PetscOptionsString("-mpm_output", "Output directory DIR (DIR/petmpm.h5, DIR/petmpm.xmf)", "", mpm->outdir, mpm->outdir, sizeof(mpm->outdir), NULL));
+  PetscCall(PetscOptionsBoundedInt("-mpm_output_interval", "Steps between outputs; 0: first and last state only", "", mpm->output_interval, &mpm->output_interval, NULL, 0));
+  PetscCall(PetscOptionsString("-mpm_report", "JSON report FILE (errors, conservation, cost)", "", mpm->report, mpm->report, sizeof(mpm->report), NULL));
+  PetscCall(PetscOptionsBool("-mpm_view", "Print the configuration of the run", "", mpm->view, &mpm->view, NULL));
+  PetscCall(MPMSceneSetFromOptions(mpm, PetscOptionsObject));
+  PetscOptionsEnd();
+  PetscCall(MPMShapeSetFromOptions(mpm->shape));
+  PetscCall(MPMUpdateSetFromOptions(mpm->update));
+  PetscCall(MPMViscositySetFromOptions(mpm->viscosity));
+  PetscCall(MPMExactSetFromOptions(mpm->exact));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Fails on options nobody read, so that a misspelled option never silently does nothing. */
+static PetscErrorCode MPMCheckUnusedOptions(MPM mpm)
+{
+  PetscInt  n;
+  char    **names, **values;
+
+  PetscFunctionBegin;
+  PetscCall(PetscOptionsLeftGet(NULL, &n, &names, &values));
+  if (n) {
+    char list[2048] = "";
+    for (PetscInt i = 0; i < n; i++) {
+      PetscCall(PetscStrlcat(list, " -", sizeof(list)));
+      PetscCall(PetscStrlcat(list, names[i], sizeof(list)));
+    }
+    PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
+    SETERRQ(mpm->comm, PETSC_ERR_USER_INPUT, "Unknown or unused option(s):%s (see -help for the valid options)", list);
+  }
+  PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMSetUp(MPM mpm)
+{
+  PetscBool active;
+  PetscReal t0 = MPI_Wtime();
+
+  PetscFunctionBegin;
+  PetscCall(PetscLogStageRegister("MPM set-up", &mpm->log.setup));
+  PetscCall(PetscLogStageRegister("MPM time loop", &mpm->log.loop));
+  PetscCall(PetscLogStageRegister("MPM output", &mpm->log.io));
+  PetscCall(PetscLogStagePush(mpm->log.setup));
+  PetscCall(PetscLogEventRegister("MPMParticlesToGrid", MPM_CLASSID, &mpm->log.p2g));
+  PetscCall(PetscLogEventRegister("MPMGridAdvance", MPM_CLASSID, &mpm->log.advance));
+  PetscCall(PetscLogEventRegister("MPMGridToParticles", MPM_CLASSID, &mpm->log.g2p));
+  PetscCall(PetscLogEventRegister("MPMConstitutive", MPM_CLASSID, &mpm->log.constitutive));
+  PetscCall(PetscLogEventRegister("MPMMigrate", MPM_CLASSID, &mpm->log.migrate));
+  PetscCall(PetscLogEventRegister("MPMTimeStep", MPM_CLASSID, &mpm->log.timestep));
+  PetscCall(PetscLogEventRegister("MPMOutput", MPM_CLASSID, &mpm->log.output));
+  if (mpm->scheme == MPM_SCHEME_MUSL) PetscCall(PetscLogEventRegister("MPMRemapMomentum", MPM_CLASSID, &mpm->log.remap));
+  if (mpm->has_gravity) PetscCall(PetscLogEventRegister("MPMGravity", MPM_CLASSID, &mpm->log.gravity));
+  PetscCall(MPMViscosityIsActive(mpm->viscosity, &active));
+  if (active) PetscCall(PetscLogEventRegister("MPMViscosity", MPM_CLASSID, &mpm->log.viscosity));
+  else PetscCall(MPMViscosityDestroy(&mpm->viscosity)); /* none: the module is not in the step */
+
+  PetscCall(MPMCreateGrid(mpm));
+  PetscCall(MPMCreatePoints(mpm));
+  PetscCall(MPMConstitutiveInitialize(mpm));
+  PetscCall(MPMExactSetUp(mpm->exact, mpm));
+  if (!mpm->exact->ops.evaluate) PetscCall(MPMExactDestroy(&mpm->exact));
+  PetscCall(MPMCreateTS(mpm));
+  PetscCall(MPMCheckUnusedOptions(mpm));
+  PetscCall(MPMOutputOpen(mpm));
+  PetscCall(MPMGlobalSums(mpm, &mpm->mass0, &mpm->energy0, mpm->momentum0));
+  if (mpm->view) PetscCall(MPMView(mpm, PETSC_VIEWER_STDOUT_(mpm->comm)));
+  PetscCall(PetscLogStagePop());
+  mpm->wall_setup = MPI_Wtime() - t0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMView(MPM mpm, PetscViewer viewer)
+{
+  const MPMGrid *g = &mpm->grid;
+  PetscMPIInt    size;
+
+  PetscFunctionBegin;
+  PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "MPM scene '%s': %" PetscInt_FMT "D, %d rank(s)\n", mpm->scene, g->dim, size));
+  PetscCall(PetscViewerASCIIPushTab(viewer));
+  for (PetscInt k = 0; k < g->dim; k++) PetscCall(PetscViewerASCIIPrintf(viewer, "direction %" PetscInt_FMT ": [%g, %g] cm, %" PetscInt_FMT " cells of %g cm, %s/%s boundaries\n", k, (double)g->lo[k], (double)g->hi[k], g->cells[k], (double)g->h[k], MPMBoundaryTypes[mpm->bc_lo[k]], MPMBoundaryTypes[mpm->bc_hi[k]]));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "%" PetscInt_FMT " points (%" PetscInt_FMT " per cell per direction), CFL %g, scheme %s, stress integration %s\n", mpm->npoints0, mpm->ppc, (double)mpm->cfl, MPMSchemes[mpm->scheme], MPMStressIntegrations[mpm->stress_integration]));
+  if (mpm->has_gravity) PetscCall(PetscViewerASCIIPrintf(viewer, "gravity (%g, %g, %g) cm/s^2\n", (double)mpm->gravity[0], (double)mpm->gravity[1], (double)mpm->gravity[2]));
+  PetscCall(MPMShapeView(mpm->shape, viewer));
+  PetscCall(MPMUpdateView(mpm->update, viewer));
+  if (mpm->viscosity) PetscCall(MPMViscosityView(mpm->viscosity, viewer));
+  else PetscCall(PetscViewerASCIIPrintf(viewer, "Artificial viscosity: none\n"));
+  PetscCall(MPMSceneView(mpm, viewer));
+  if (mpm->exact) PetscCall(MPMExactView(mpm->exact, viewer));
+  PetscCall(PetscViewerASCIIPopTab(viewer));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMDestroy(MPM *mpm)
+{
+  MPM m = *mpm;
+
+  PetscFunctionBegin;
+  if (!m) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MPMOutputClose(m));
+  PetscCall(TSDestroy(&m->ts));
+  PetscCall(VecDestroy(&m->tsu));
+  PetscCall(VecDestroy(&m->nodes));
+  PetscCall(VecDestroy(&m->lnodes));
+  PetscCall(PetscFree2(m->cellV, m->cellS));
+  PetscCall(DMDestroy(&m->swarm));
+  PetscCall(DMDestroy(&m->da));
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) PetscCall(PetscFree(m->grid.rank_start[k]));
+  for (PetscInt i = 0; i < m->nmat; i++) PetscCall(MPMEOSDestroy(&m->mat[i].eos));
+  PetscCall(MPMShapeDestroy(&m->shape));
+  PetscCall(MPMUpdateDestroy(&m->update));
+  PetscCall(MPMViscosityDestroy(&m->viscosity));
+  PetscCall(MPMExactDestroy(&m->exact));
+  PetscCall(PetscFree(m->output_times));
+  PetscCall(PetscFree(m));
+  *mpm = NULL;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -1,0 +1,262 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* Private data of petmpm's objects. Only files under src/ include this. */
+#pragma once
+#include <petmpm.h>
+
+#define MPM_MAX_NAME    64
+#define MPM_MAX_STENCIL 216 /* nodes a point can touch: 6^3 covers every planned shape type */
+
+/* Generic class header, in the PETSc pattern: a type name, an options prefix and the type's data. */
+#define MPM_CLASS_HEADER(Ops) \
+  MPI_Comm comm; \
+  char     type_name[MPM_MAX_NAME]; \
+  char    *prefix; \
+  Ops      ops; \
+  void    *data
+
+/* ------------------------------------------------------------------ grid */
+typedef struct {
+  PetscInt  dim;                   /* number of space dimensions d [-]                        */
+  PetscInt  cells[MPM_MAX_DIM];    /* global cells per direction [-]                          */
+  PetscInt  xs[MPM_MAX_DIM];       /* first owned vertex (also first owned cell) per direction */
+  PetscInt  xm[MPM_MAX_DIM];       /* owned vertices per direction                            */
+  PetscInt  cs[MPM_MAX_DIM];       /* first owned cell per direction                          */
+  PetscInt  cm[MPM_MAX_DIM];       /* owned cells per direction                               */
+  PetscInt  gs[MPM_MAX_DIM];       /* first vertex of the ghosted local box                   */
+  PetscInt  gm[MPM_MAX_DIM];       /* vertices per direction of the ghosted local box         */
+  PetscInt  ncells;                /* owned cells on this rank                                */
+  PetscReal lo[MPM_MAX_DIM];       /* lower corner of the domain [cm]                         */
+  PetscReal hi[MPM_MAX_DIM];       /* upper corner of the domain [cm]                         */
+  PetscReal h[MPM_MAX_DIM];        /* cell size [cm]                                          */
+  PetscReal hmin;                  /* smallest cell size [cm]                                 */
+  PetscReal vcell;                 /* cell volume h_x h_y h_z [cm^d]                          */
+  PetscInt *rank_start[MPM_MAX_DIM]; /* first owned cell of each rank column, size p_d + 1    */
+  PetscInt  nranks[MPM_MAX_DIM];   /* ranks per direction                                     */
+} MPMGrid;
+
+/* Nodal data: a struct overlay on the DMDA vector (dof = sizeof(MPMNode)/sizeof(PetscScalar)). */
+typedef struct {
+  PetscScalar m;     /* lumped nodal mass m_I                   [g]      */
+  PetscScalar p[3];  /* nodal momentum (mv)_I                   [g cm/s] */
+  PetscScalar f[3];  /* internal + external force f_I           [dyn]    */
+  PetscScalar v0[3]; /* velocity at the start of the step v_I^n [cm/s]   */
+} MPMNode;
+#define MPM_NODE_DOF ((PetscInt)(sizeof(MPMNode) / sizeof(PetscScalar)))
+
+/* The nodes one point touches: flat indices into the ghosted local node array, weights N_I(x_p), gradients. */
+typedef struct {
+  PetscInt  n;
+  PetscInt  node[MPM_MAX_STENCIL];
+  PetscReal w[MPM_MAX_STENCIL];
+  PetscReal dw[MPM_MAX_STENCIL][MPM_MAX_DIM];
+} MPMStencil;
+
+/* ------------------------------------------------------------------ particles */
+/* Every particle field once: name (also the HDF5 dataset name), block size, unit, meaning. */
+typedef enum {
+  MPM_FIELD_POSITION,
+  MPM_FIELD_VELOCITY,
+  MPM_FIELD_MASS,
+  MPM_FIELD_VOLUME,
+  MPM_FIELD_DENSITY,
+  MPM_FIELD_PRESSURE,
+  MPM_FIELD_ENERGY,
+  MPM_FIELD_TEMPERATURE,
+  MPM_FIELD_SOUNDSPEED,
+  MPM_FIELD_VISCOSITY,
+  MPM_FIELD_GRADV,
+  MPM_FIELD_MATERIAL,
+  MPM_FIELD_ID,
+  MPM_NUM_FIELDS
+} MPMField;
+
+typedef struct {
+  const char *name;    /* DMSwarm field and HDF5 dataset name                */
+  PetscInt    bs;      /* block size; 0 means d, -1 means d*d                */
+  const char *unit;    /* CGS unit                                           */
+  const char *meaning; /* what it is                                         */
+  PetscBool   output;  /* written to HDF5                                    */
+} MPMFieldInfo;
+PETSC_INTERN const MPMFieldInfo MPMFieldTable[MPM_NUM_FIELDS];
+
+/* Raw arrays of every particle field, valid between MPMPointsGetArrays() and MPMPointsRestoreArrays(). */
+typedef struct {
+  PetscInt   n;
+  PetscReal *f[MPM_NUM_FIELDS];
+} MPMPoints;
+
+/* ------------------------------------------------------------------ classes */
+typedef struct {
+  PetscInt (*support)(void *);                                              /* ghost width the type needs [cells] */
+  void (*basis1d)(void *, PetscReal, PetscInt, PetscInt *, PetscInt *, PetscReal[], PetscReal[]); /* xi = (x-lo)/h, cells -> first node, count, N, dN/dxi */
+  PetscErrorCode (*setfromoptions)(MPMShape, PetscOptionItems *);
+  PetscErrorCode (*view)(MPMShape, PetscViewer);
+  PetscErrorCode (*destroy)(MPMShape);
+} MPMShapeOps;
+struct _p_MPMShape {
+  MPM_CLASS_HEADER(MPMShapeOps);
+};
+
+typedef struct {
+  void (*pressure)(void *, PetscReal, PetscReal, PetscReal *, PetscReal *);   /* (rho, e) -> p, c^2     */
+  void (*temperature)(void *, PetscReal, PetscReal, PetscReal *);             /* (rho, e) -> T          */
+  void (*energy)(void *, PetscReal, PetscReal, PetscReal *);                  /* (rho, T) -> e          */
+  PetscErrorCode (*setfromoptions)(MPMEOS, PetscOptionItems *);
+  PetscErrorCode (*view)(MPMEOS, PetscViewer);
+  PetscErrorCode (*destroy)(MPMEOS);
+} MPMEOSOps;
+struct _p_MPMEOS {
+  MPM_CLASS_HEADER(MPMEOSOps);
+};
+
+typedef struct {
+  PetscErrorCode (*apply)(MPMViscosity, MPM, PetscReal); /* fills the particle field q [dyn/cm^2] */
+  PetscErrorCode (*setfromoptions)(MPMViscosity, PetscOptionItems *);
+  PetscErrorCode (*view)(MPMViscosity, PetscViewer);
+  PetscErrorCode (*destroy)(MPMViscosity);
+} MPMViscosityOps;
+struct _p_MPMViscosity {
+  MPM_CLASS_HEADER(MPMViscosityOps);
+};
+
+typedef struct {
+  PetscErrorCode (*setfromoptions)(MPMUpdate, PetscOptionItems *);
+  PetscErrorCode (*view)(MPMUpdate, PetscViewer);
+  PetscErrorCode (*destroy)(MPMUpdate);
+} MPMUpdateOps;
+struct _p_MPMUpdate {
+  MPM_CLASS_HEADER(MPMUpdateOps);
+  PetscReal alpha; /* FLIP fraction: v_p <- alpha (v_p + dv) + (1 - alpha) v_pic [-] */
+};
+
+/* An exact solution knows the fields at a point and the scene's named scalar checks. */
+typedef struct {
+  PetscErrorCode (*setup)(MPMExact, MPM);
+  void (*evaluate)(void *, PetscReal, const PetscReal[], PetscReal *, PetscReal[], PetscReal *, PetscReal *); /* (t, x) -> rho, v, p, T */
+  PetscErrorCode (*checks)(MPMExact, MPM);
+  PetscErrorCode (*setfromoptions)(MPMExact, PetscOptionItems *);
+  PetscErrorCode (*view)(MPMExact, PetscViewer);
+  PetscErrorCode (*destroy)(MPMExact);
+} MPMExactOps;
+struct _p_MPMExact {
+  MPM_CLASS_HEADER(MPMExactOps);
+};
+
+/* ------------------------------------------------------------------ scene */
+typedef struct {
+  char   name[MPM_MAX_NAME]; /* material name used in option prefixes -mat_<name>_ */
+  MPMEOS eos;                /* equation of state                               */
+} MPMMaterial;
+
+typedef struct {
+  char      name[MPM_MAX_NAME];     /* region name used in option prefixes -region_<name>_ */
+  PetscInt  material;               /* index into MPM::mat                                 */
+  PetscReal lo[MPM_MAX_DIM];        /* box lower corner [cm]                               */
+  PetscReal hi[MPM_MAX_DIM];        /* box upper corner [cm]                               */
+  PetscReal rho;                    /* initial density [g/cm^3]                            */
+  PetscReal T;                      /* initial temperature [eV]                            */
+  PetscReal v[MPM_MAX_DIM];         /* initial velocity [cm/s]                             */
+} MPMRegion;
+
+#define MPM_MAX_MATERIALS 16
+#define MPM_MAX_REGIONS   32
+#define MPM_MAX_CHECKS    16
+
+typedef struct {
+  char      name[MPM_MAX_NAME];
+  PetscReal value, reference;
+} MPMCheck;
+
+/* Log events, one per step phase; module events are registered only when the scene enables the module. */
+typedef struct {
+  PetscLogEvent p2g, advance, g2p, remap, viscosity, constitutive, migrate, gravity, output, timestep;
+  PetscLogStage setup, loop, io;
+} MPMLog;
+
+struct _p_MPM {
+  MPI_Comm comm;
+  /* scene */
+  char                 scene[PETSC_MAX_PATH_LEN];  /* scene name for the report                        */
+  char                 outdir[PETSC_MAX_PATH_LEN]; /* output directory                                  */
+  char                 report[PETSC_MAX_PATH_LEN]; /* JSON report file, empty for none                  */
+  MPMGrid              grid;
+  PetscInt             ppc;                        /* points per cell per direction                     */
+  PetscReal            cfl;                        /* Courant number                                    */
+  PetscReal            dtmin;                      /* smallest time step before the run is stopped [s]  */
+  PetscInt             output_interval;            /* steps between outputs, 0: start and end only      */
+  MPMScheme            scheme;
+  MPMStressIntegration stress_integration;
+  MPMBoundaryType      bc_lo[MPM_MAX_DIM], bc_hi[MPM_MAX_DIM];
+  PetscReal            gravity[MPM_MAX_DIM];        /* body acceleration g [cm/s^2]                      */
+  PetscBool            has_gravity;
+  PetscBool            view;
+  PetscInt             nmat, nreg;
+  MPMMaterial          mat[MPM_MAX_MATERIALS];
+  MPMRegion            reg[MPM_MAX_REGIONS];
+  /* physics */
+  MPMShape     shape;
+  MPMUpdate    update;
+  MPMViscosity viscosity; /* NULL when the scene asks for none: not in the step */
+  MPMExact     exact;     /* NULL when the scene has no exact solution          */
+  /* discretization */
+  DM        da;     /* background grid, dof = MPM_NODE_DOF                       */
+  DM        swarm;  /* material points, DMSWARM_BASIC                            */
+  Vec       nodes;  /* global nodal vector                                       */
+  Vec       lnodes; /* ghosted local nodal vector                                */
+  PetscReal *cellV, *cellS; /* per owned cell: sum V_p, sum V_p (p_p + q_p)      */
+  TS        ts;
+  Vec       tsu;    /* the TS state: empty; the MPM state lives in the grid and swarm */
+  /* output */
+  PetscViewer h5;       /* HDF5 file DIR/petmpm.h5, open for the run                 */
+  DM          daout;    /* grid output layout: nodal mass and velocity (dof 1 + d)   */
+  PetscInt    last_output_step;
+  /* run bookkeeping */
+  PetscInt  npoints0;      /* global number of points at start                    */
+  PetscReal mass0, energy0, momentum0[MPM_MAX_DIM];
+  PetscReal wall_loop, wall_setup, wall_output;
+  PetscInt  steps;
+  PetscReal time;
+  PetscInt  noutputs;
+  PetscReal *output_times;
+  PetscInt  output_times_cap;
+  PetscInt  nchecks;
+  MPMCheck  checks[MPM_MAX_CHECKS];
+  MPMLog    log;
+};
+
+/* Internal API */
+PETSC_INTERN PetscErrorCode MPMOptionsCheckRange(const char[], PetscReal, PetscReal, PetscReal, PetscBool, PetscBool);
+PETSC_INTERN PetscErrorCode MPMCreateGrid(MPM);
+PETSC_INTERN PetscErrorCode MPMCreatePoints(MPM);
+PETSC_INTERN PetscErrorCode MPMPointsGetArrays(MPM, MPMPoints *);
+PETSC_INTERN PetscErrorCode MPMPointsRestoreArrays(MPM, MPMPoints *);
+PETSC_INTERN PetscErrorCode MPMMigrate(MPM);
+PETSC_INTERN PetscInt       MPMLocalCell(const MPMGrid *, const PetscReal[]);
+PETSC_INTERN PetscMPIInt    MPMOwnerRank(const MPMGrid *, const PetscReal[]);
+PETSC_INTERN PetscErrorCode MPMShapeEvaluate(MPMShape, const MPMGrid *, const PetscReal[], MPMStencil *);
+PETSC_INTERN PetscErrorCode MPMStep(MPM, PetscReal);
+PETSC_INTERN PetscErrorCode MPMProjectToGrid(MPM);
+PETSC_INTERN PetscErrorCode MPMOutputWriteExact(MPM);
+PETSC_INTERN PetscErrorCode MPMConstitutiveInitialize(MPM);
+PETSC_INTERN PetscErrorCode MPMComputeTimeStep(MPM, PetscReal *);
+PETSC_INTERN PetscErrorCode MPMCreateTS(MPM);
+PETSC_INTERN PetscErrorCode MPMOutputOpen(MPM);
+PETSC_INTERN PetscErrorCode MPMOutputWrite(MPM, PetscInt, PetscReal);
+PETSC_INTERN PetscErrorCode MPMOutputClose(MPM);
+PETSC_INTERN PetscErrorCode MPMGlobalSums(MPM, PetscReal *, PetscReal *, PetscReal[]);
+PETSC_INTERN PetscErrorCode MPMSceneSetFromOptions(MPM, PetscOptionItems *);
+PETSC_INTERN PetscErrorCode MPMSceneView(MPM, PetscViewer);
+PETSC_INTERN PetscErrorCode MPMExactSetUp(MPMExact, MPM);
+PETSC_INTERN PetscErrorCode MPMExactEvaluate(MPMExact, PetscReal, const PetscReal[], PetscReal *, PetscReal[], PetscReal *, PetscReal *);
+PETSC_INTERN PetscErrorCode MPMExactComputeChecks(MPMExact, MPM);
+PETSC_INTERN PetscErrorCode MPMAddCheck(MPM, const char[], PetscReal, PetscReal);
+PETSC_INTERN PetscErrorCode MPMViscosityApply(MPMViscosity, MPM, PetscReal);
+PETSC_INTERN PetscErrorCode MPMXProfile(MPM, PetscInt, PetscReal[], PetscReal[]);
+PETSC_INTERN PetscErrorCode MPMClassSetType(PetscFunctionList, const char[], const char[], const char[], PetscErrorCode (**)(void *));
+PETSC_INTERN PetscErrorCode MPMClassTypeList(PetscFunctionList, char[], size_t);
+
+/* EOS kernels for the batched loops: the ops table is read once per call site. */
+static inline void MPMEOSPressureKernel(MPMEOS eos, PetscReal rho, PetscReal e, PetscReal *p, PetscReal *c2)
+{
+  eos->ops.pressure(eos->data, rho, e, p, c2);
+}

@@ -1,0 +1,141 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* The program judges its own answer: error norms against the scene's exact solution, conservation, cost,
+   and the scene's named checks, printed and written as one JSON object (-mpm_report FILE).
+   Norms are volume-weighted over the points and relative to the exact solution q(x):
+     L1 = sum V_p |q_p - q(x_p)| / sum V_p |q(x_p)|,  L2 = sqrt(sum V_p (q_p - q(x_p))^2 / sum V_p q(x_p)^2),
+     Linf = max |q_p - q(x_p)| / max |q(x_p)|;  for the velocity |.| is the Euclidean norm of the vector. */
+#include "petmpmimpl.h"
+#include <errno.h>
+
+#define MPM_NERR 4
+static const char *const MPMErrorNames[MPM_NERR] = {"density", "velocity", "pressure", "temperature"};
+
+PetscErrorCode MPMAddCheck(MPM mpm, const char name[], PetscReal value, PetscReal reference)
+{
+  PetscFunctionBegin;
+  PetscCheck(mpm->nchecks < MPM_MAX_CHECKS, mpm->comm, PETSC_ERR_ARG_OUTOFRANGE, "Too many checks");
+  PetscCall(PetscStrncpy(mpm->checks[mpm->nchecks].name, name, MPM_MAX_NAME));
+  mpm->checks[mpm->nchecks].value     = value;
+  mpm->checks[mpm->nchecks].reference = reference;
+  mpm->nchecks++;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* err[q][0..2]: L1, L2, Linf of field q; nonfinite and min density over all points. */
+static PetscErrorCode MPMComputeErrors(MPM mpm, PetscReal err[][3], PetscInt *nonfinite, PetscReal *rhomin)
+{
+  const PetscInt d = mpm->grid.dim;
+  PetscReal      sum[MPM_NERR][4] = {{0}}, mx[MPM_NERR][2] = {{0}}; /* sum V|e|, sum V|q|, sum V e^2, sum V q^2; max|e|, max|q| */
+  PetscInt       bad = 0;
+  PetscReal      rmin = PETSC_MAX_REAL;
+  MPMPoints      pts;
+
+  PetscFunctionBegin;
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt p = 0; p < pts.n; p++) {
+    for (PetscInt f = 0; f < MPM_NUM_FIELDS; f++) {
+      const PetscInt bs = MPMFieldTable[f].bs == 0 ? d : (MPMFieldTable[f].bs < 0 ? d * d : 1);
+      for (PetscInt k = 0; k < bs; k++)
+        if (PetscIsInfOrNanReal(pts.f[f][p * bs + k])) bad++;
+    }
+    rmin = PetscMin(rmin, pts.f[MPM_FIELD_DENSITY][p]);
+    if (mpm->exact) {
+      const PetscReal V = pts.f[MPM_FIELD_VOLUME][p];
+      PetscReal       ex[MPM_NERR], nu[MPM_NERR], vex[MPM_MAX_DIM] = {0, 0, 0}, dv2 = 0.0, v2 = 0.0;
+      PetscCall(MPMExactEvaluate(mpm->exact, mpm->time, &pts.f[MPM_FIELD_POSITION][p * d], &ex[0], vex, &ex[2], &ex[3]));
+      for (PetscInt k = 0; k < d; k++) {
+        dv2 += PetscSqr(pts.f[MPM_FIELD_VELOCITY][p * d + k] - vex[k]);
+        v2 += PetscSqr(vex[k]);
+      }
+      nu[0] = PetscAbsReal(pts.f[MPM_FIELD_DENSITY][p] - ex[0]);
+      nu[1] = PetscSqrtReal(dv2);
+      ex[1] = PetscSqrtReal(v2);
+      nu[2] = PetscAbsReal(pts.f[MPM_FIELD_PRESSURE][p] - ex[2]);
+      nu[3] = PetscAbsReal(pts.f[MPM_FIELD_TEMPERATURE][p] - ex[3]);
+      for (PetscInt q = 0; q < MPM_NERR; q++) {
+        sum[q][0] += V * nu[q];
+        sum[q][1] += V * PetscAbsReal(ex[q]);
+        sum[q][2] += V * nu[q] * nu[q];
+        sum[q][3] += V * ex[q] * ex[q];
+        mx[q][0] = PetscMax(mx[q][0], nu[q]);
+        mx[q][1] = PetscMax(mx[q][1], PetscAbsReal(ex[q]));
+      }
+    }
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, sum, 4 * MPM_NERR, MPIU_REAL, MPIU_SUM, mpm->comm));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, mx, 2 * MPM_NERR, MPIU_REAL, MPIU_MAX, mpm->comm));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &bad, 1, MPIU_INT, MPI_SUM, mpm->comm));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &rmin, 1, MPIU_REAL, MPIU_MIN, mpm->comm));
+  for (PetscInt q = 0; q < MPM_NERR; q++) {
+    err[q][0] = sum[q][1] > 0 ? sum[q][0] / sum[q][1] : sum[q][0];
+    err[q][1] = sum[q][3] > 0 ? PetscSqrtReal(sum[q][2] / sum[q][3]) : PetscSqrtReal(sum[q][2]);
+    err[q][2] = mx[q][1] > 0 ? mx[q][0] / mx[q][1] : mx[q][0];
+  }
+  *nonfinite = bad;
+  *rhomin    = rmin;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscReal MPMRelErr(PetscReal v, PetscReal r)
+{
+  return r != 0.0 ? PetscAbsReal(v - r) / PetscAbsReal(r) : PetscAbsReal(v - r);
+}
+
+PetscErrorCode MPMWriteReport(MPM mpm)
+{
+  const MPMGrid *g = &mpm->grid;
+  PetscReal      err[MPM_NERR][3], rhomin = 0, mass, energy, mom[MPM_MAX_DIM], shock_cells = -1.0, pss;
+  PetscInt       nonfinite = 0, npoints;
+  PetscMPIInt    size, rank;
+
+  PetscFunctionBegin;
+  PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
+  PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
+  PetscCall(DMSwarmGetSize(mpm->swarm, &npoints));
+  PetscCall(MPMComputeErrors(mpm, err, &nonfinite, &rhomin));
+  PetscCall(MPMGlobalSums(mpm, &mass, &energy, mom));
+  mpm->nchecks = 0;
+  if (mpm->exact) PetscCall(MPMExactComputeChecks(mpm->exact, mpm));
+  for (PetscInt c = 0; c < mpm->nchecks; c++) {
+    PetscBool is;
+    PetscCall(PetscStrcmp(mpm->checks[c].name, "shock_position", &is));
+    if (is) shock_cells = PetscAbsReal(mpm->checks[c].value - mpm->checks[c].reference) / g->h[0];
+  }
+  pss = mpm->wall_loop > 0 ? (PetscReal)npoints * mpm->steps / mpm->wall_loop : 0.0;
+
+  PetscCall(PetscPrintf(mpm->comm, "petmpm %s: %" PetscInt_FMT " points, %" PetscInt_FMT " steps to t = %g s in %.3f s (%.3g point-steps/s on %d rank(s))\n", mpm->scene, npoints, mpm->steps, (double)mpm->time, (double)mpm->wall_loop, (double)pss, size));
+  PetscCall(PetscPrintf(mpm->comm, "  conservation: mass %.3e, total energy %.3e (relative change); min density %g; %" PetscInt_FMT " non-finite values\n", (double)MPMRelErr(mass, mpm->mass0), (double)MPMRelErr(energy, mpm->energy0), (double)rhomin, nonfinite));
+  if (mpm->exact) {
+    for (PetscInt q = 0; q < MPM_NERR; q++) PetscCall(PetscPrintf(mpm->comm, "  %-12s error: L1 %.4e  L2 %.4e  Linf %.4e\n", MPMErrorNames[q], (double)err[q][0], (double)err[q][1], (double)err[q][2]));
+    for (PetscInt c = 0; c < mpm->nchecks; c++) PetscCall(PetscPrintf(mpm->comm, "  check %-17s %.6g (exact %.6g, rel. error %.3e)\n", mpm->checks[c].name, (double)mpm->checks[c].value, (double)mpm->checks[c].reference, (double)MPMRelErr(mpm->checks[c].value, mpm->checks[c].reference)));
+  }
+  if (!mpm->report[0] || rank) PetscFunctionReturn(PETSC_SUCCESS);
+  {
+    char  tmp[PETSC_MAX_PATH_LEN + 8];
+    FILE *fp;
+    PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", mpm->report));
+    fp = fopen(tmp, "w");
+    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write the report %s (-mpm_report): %s", tmp, strerror(errno));
+    fprintf(fp, "{\n  \"scene\": \"%s\",\n  \"dim\": %" PetscInt_FMT ",\n  \"cells\": [", mpm->scene, g->dim);
+    for (PetscInt k = 0; k < g->dim; k++) fprintf(fp, "%s%" PetscInt_FMT, k ? ", " : "", g->cells[k]);
+    fprintf(fp, "],\n  \"points_per_cell\": %" PetscInt_FMT ",\n  \"particles\": %" PetscInt_FMT ",\n  \"ranks\": %d,\n", mpm->ppc, npoints, size);
+    fprintf(fp, "  \"shape\": \"%s\",\n  \"update\": \"%s\",\n  \"viscosity\": \"%s\",\n  \"scheme\": \"%s\",\n  \"stress_integration\": \"%s\",\n", mpm->shape->type_name, mpm->update->type_name, mpm->viscosity ? mpm->viscosity->type_name : "none", MPMSchemes[mpm->scheme], MPMStressIntegrations[mpm->stress_integration]);
+    fprintf(fp, "  \"steps\": %" PetscInt_FMT ",\n  \"time\": %.17g,\n  \"wall_seconds\": %.6g,\n  \"setup_seconds\": %.6g,\n  \"output_seconds\": %.6g,\n", mpm->steps, (double)mpm->time, (double)mpm->wall_loop, (double)mpm->wall_setup, (double)mpm->wall_output);
+    fprintf(fp, "  \"particle_steps_per_second\": %.6g,\n  \"particle_steps_per_second_per_rank\": %.6g,\n", (double)pss, (double)(pss / size));
+    if (mpm->exact) {
+      fprintf(fp, "  \"errors\": {\n");
+      for (PetscInt q = 0; q < MPM_NERR; q++) fprintf(fp, "    \"%s\": {\"L1\": %.10g, \"L2\": %.10g, \"Linf\": %.10g}%s\n", MPMErrorNames[q], (double)err[q][0], (double)err[q][1], (double)err[q][2], q + 1 < MPM_NERR ? "," : "");
+      fprintf(fp, "  },\n");
+    }
+    if (shock_cells >= 0) fprintf(fp, "  \"shock_position_error_cells\": %.6g,\n", (double)shock_cells);
+    fprintf(fp, "  \"conservation\": {\"mass\": %.6e, \"total_energy\": %.6e, \"momentum\": [", (double)((mass - mpm->mass0) / mpm->mass0), (double)(mpm->energy0 != 0 ? (energy - mpm->energy0) / PetscAbsReal(mpm->energy0) : energy));
+    for (PetscInt k = 0; k < g->dim; k++) fprintf(fp, "%s%.6e", k ? ", " : "", (double)(mom[k] - mpm->momentum0[k]));
+    fprintf(fp, "]},\n  \"min_density\": %.10g,\n  \"nonfinite\": %" PetscInt_FMT ",\n  \"checks\": [", (double)rhomin, nonfinite);
+    for (PetscInt c = 0; c < mpm->nchecks; c++) fprintf(fp, "%s\n    {\"name\": \"%s\", \"value\": %.10g, \"reference\": %.10g, \"rel_error\": %.6e}", c ? "," : "", mpm->checks[c].name, (double)mpm->checks[c].value, (double)mpm->checks[c].reference, (double)MPMRelErr(mpm->checks[c].value, mpm->checks[c].reference));
+    fprintf(fp, "%s]\n}\n", mpm->nchecks ? "\n  " : "");
+    PetscCheck(!fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write the report %s: %s", tmp, strerror(errno));
+    PetscCheck(!rename(tmp, mpm->report), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot rename %s to %s: %s", tmp, mpm->report, strerror(errno));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

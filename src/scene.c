@@ -1,0 +1,113 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* The scene: named materials and the regions that place them.
+     -mpm_materials a,b            materials; each reads -mat_<name>_eos_type and its EOS options
+     -mpm_regions r1,r2            regions, seeded in this order (the first region that holds a point wins);
+     -region_<r>_material a        its material
+     -region_<r>_lo, _hi           its box [cm] (default: the whole domain)
+     -region_<r>_density           initial density [g/cm^3] (> 0)
+     -region_<r>_temperature       initial temperature [eV] (>= 0)
+     -region_<r>_velocity          initial velocity [cm/s] */
+#include "petmpmimpl.h"
+
+static PetscErrorCode MPMSceneNames(PetscOptionItems *PetscOptionsObject, const char opt[], const char text[], PetscInt max, char names[][MPM_MAX_NAME], PetscInt *n)
+{
+  char     *list[MPM_MAX_REGIONS];
+  PetscInt  nn = max;
+  PetscBool set;
+
+  PetscFunctionBegin;
+  PetscCall(PetscOptionsStringArray(opt, text, "", list, &nn, &set));
+  if (!set) nn = 0;
+  for (PetscInt i = 0; i < nn; i++) {
+    size_t len;
+    PetscCall(PetscStrlen(list[i], &len));
+    PetscCheck(len > 0 && len < MPM_MAX_NAME, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: name '%s' must have 1 to %d characters", opt, list[i], MPM_MAX_NAME - 1);
+    PetscCall(PetscStrncpy(names[i], list[i], MPM_MAX_NAME));
+    PetscCall(PetscFree(list[i]));
+  }
+  *n = nn;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMRegionSetFromOptions(MPM mpm, MPMRegion *r)
+{
+  char      prefix[MPM_MAX_NAME + 16], mat[MPM_MAX_NAME] = "", opt[MPM_MAX_NAME + 32];
+  PetscInt  d = mpm->grid.dim, n;
+  PetscBool set;
+
+  PetscFunctionBegin;
+  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "region_%s_", r->name));
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
+    r->lo[k] = mpm->grid.lo[k];
+    r->hi[k] = mpm->grid.hi[k];
+  }
+  r->rho = -1.0;
+  PetscOptionsBegin(mpm->comm, prefix, "Region of the scene", "MPM");
+  PetscCall(PetscOptionsString("-material", "Material that fills the region (one of -mpm_materials)", "", mat, mat, sizeof(mat), &set));
+  n = MPM_MAX_DIM;
+  PetscCall(PetscOptionsRealArray("-lo", "Lower corner of the region's box [cm]", "", r->lo, &n, &set));
+  PetscCheck(!set || n == d, mpm->comm, PETSC_ERR_USER_INPUT, "-%slo needs %" PetscInt_FMT " values", prefix, d);
+  n = MPM_MAX_DIM;
+  PetscCall(PetscOptionsRealArray("-hi", "Upper corner of the region's box [cm]", "", r->hi, &n, &set));
+  PetscCheck(!set || n == d, mpm->comm, PETSC_ERR_USER_INPUT, "-%shi needs %" PetscInt_FMT " values", prefix, d);
+  PetscCall(PetscOptionsReal("-density", "Initial density rho [g/cm^3], > 0", "", r->rho, &r->rho, NULL));
+  PetscCall(PetscOptionsReal("-temperature", "Initial temperature T [eV], >= 0", "", r->T, &r->T, NULL));
+  n = MPM_MAX_DIM;
+  PetscCall(PetscOptionsRealArray("-velocity", "Initial velocity v [cm/s]", "", r->v, &n, &set));
+  PetscCheck(!set || n == d, mpm->comm, PETSC_ERR_USER_INPUT, "-%svelocity needs %" PetscInt_FMT " values", prefix, d);
+  PetscOptionsEnd();
+  for (r->material = 0; r->material < mpm->nmat; r->material++) {
+    PetscBool match;
+    PetscCall(PetscStrcmp(mat, mpm->mat[r->material].name, &match));
+    if (match) break;
+  }
+  PetscCheck(r->material < mpm->nmat, mpm->comm, PETSC_ERR_USER_INPUT, "-%smaterial '%s' is not one of -mpm_materials", prefix, mat);
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sdensity", prefix));
+  PetscCall(MPMOptionsCheckRange(opt, r->rho, 0.0, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%stemperature", prefix));
+  PetscCall(MPMOptionsCheckRange(opt, r->T, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+  for (PetscInt k = 0; k < d; k++) PetscCheck(r->hi[k] > r->lo[k], mpm->comm, PETSC_ERR_USER_INPUT, "-%shi must exceed -%slo in direction %" PetscInt_FMT, prefix, prefix, k);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMSceneSetFromOptions(MPM mpm, PetscOptionItems *PetscOptionsObject)
+{
+  char      names[MPM_MAX_REGIONS][MPM_MAX_NAME];
+  PetscBool help;
+
+  PetscFunctionBegin;
+  PetscCall(PetscOptionsHasHelp(NULL, &help));
+  PetscCall(MPMSceneNames(PetscOptionsObject, "-mpm_materials", "Names of the scene's materials", MPM_MAX_MATERIALS, names, &mpm->nmat));
+  if (!help) PetscCheck(mpm->nmat > 0, mpm->comm, PETSC_ERR_USER_INPUT, "The scene names no material: give -mpm_materials name[,name...] (e.g. -options_file inputs/sod_weak.opts)");
+  for (PetscInt i = 0; i < mpm->nmat; i++) {
+    char prefix[MPM_MAX_NAME + 16];
+    PetscCall(PetscStrncpy(mpm->mat[i].name, names[i], MPM_MAX_NAME));
+    PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "mat_%s_", names[i]));
+    PetscCall(MPMEOSCreate(mpm->comm, &mpm->mat[i].eos));
+    PetscCall(MPMEOSSetOptionsPrefix(mpm->mat[i].eos, prefix));
+    PetscCall(MPMEOSSetFromOptions(mpm->mat[i].eos));
+  }
+  PetscCall(MPMSceneNames(PetscOptionsObject, "-mpm_regions", "Names of the regions that place the materials, in seeding priority", MPM_MAX_REGIONS, names, &mpm->nreg));
+  if (!help) PetscCheck(mpm->nreg > 0, mpm->comm, PETSC_ERR_USER_INPUT, "The scene places no material: give -mpm_regions name[,name...] and -region_<name>_material");
+  for (PetscInt i = 0; i < mpm->nreg; i++) {
+    PetscCall(PetscStrncpy(mpm->reg[i].name, names[i], MPM_MAX_NAME));
+    PetscCall(MPMRegionSetFromOptions(mpm, &mpm->reg[i]));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMSceneView(MPM mpm, PetscViewer viewer)
+{
+  PetscFunctionBegin;
+  for (PetscInt i = 0; i < mpm->nmat; i++) {
+    PetscCall(PetscViewerASCIIPrintf(viewer, "Material %s: ", mpm->mat[i].name));
+    PetscCall(PetscViewerASCIIUseTabs(viewer, PETSC_FALSE));
+    PetscCall(MPMEOSView(mpm->mat[i].eos, viewer));
+    PetscCall(PetscViewerASCIIUseTabs(viewer, PETSC_TRUE));
+  }
+  for (PetscInt i = 0; i < mpm->nreg; i++) {
+    const MPMRegion *r = &mpm->reg[i];
+    PetscCall(PetscViewerASCIIPrintf(viewer, "Region %s: %s, x in [%g, %g], rho %g g/cm^3, T %g eV, v %g cm/s\n", r->name, mpm->mat[r->material].name, (double)r->lo[0], (double)r->hi[0], (double)r->rho, (double)r->T, (double)r->v[0]));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -1,0 +1,35 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* Linear (tent) shape functions, the standard MPM basis (Sulsky, Chen & Schreyer, CMAME 118 (1994) 179,
+   doi:10.1016/0045-7825(94)90112-0). With xi = (x - x_0)/h and i = floor(xi), t = xi - i:
+     N_i = 1 - t,  N_{i+1} = t,  dN/dxi = -1, +1.
+   Support: one cell on each side of a node, so the grid needs ghost width 1. */
+#include "../../petmpmimpl.h"
+
+static PetscInt MPMShapeSupport_Linear(void *ctx)
+{
+  return 1;
+}
+
+static void MPMShapeBasis1d_Linear(void *ctx, PetscReal xi, PetscInt ncells, PetscInt *first, PetscInt *n, PetscReal w[], PetscReal dw[])
+{
+  PetscInt  i = (PetscInt)PetscFloorReal(xi);
+  PetscReal t;
+
+  if (i < 0) i = 0;
+  if (i > ncells - 1) i = ncells - 1;
+  t      = xi - i;
+  *first = i;
+  *n     = 2;
+  w[0]   = 1.0 - t;
+  w[1]   = t;
+  dw[0]  = -1.0;
+  dw[1]  = 1.0;
+}
+
+PetscErrorCode MPMShapeCreate_Linear(MPMShape shape)
+{
+  PetscFunctionBegin;
+  shape->ops.support = MPMShapeSupport_Linear;
+  shape->ops.basis1d = MPMShapeBasis1d_Linear;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

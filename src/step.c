@@ -1,0 +1,395 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* One explicit MPM step (Sulsky, Chen & Schreyer, CMAME 118 (1994) 179; update-stress-last and
+   modified update-stress-last as in Nairn, CMES 4 (2003) 649 and Buzzi et al., 2008). Every phase is
+   a PetscLogEvent; modules the scene did not ask for are not in the step. */
+#include "petmpmimpl.h"
+
+/* m_I = sum_p N_I m_p, (mv)_I = sum_p N_I m_p v_p and, with the force, f_I = -int sigma . grad N_I dV.
+   With sigma = -(p + q) I the internal force is f_I = int (p + q) grad N_I dV, integrated either point by
+   point (sum_p V_p (p_p + q_p) grad N_I(x_p)) or with the volume-averaged pressure of each cell,
+   f_I = sum_c phi_c V_c P_c grad N_I(x_c), P_c = sum V_p P_p / sum V_p, phi_c = min(1, sum V_p / V_c):
+   the cell rule does not feel how many points a cell happens to hold, so it has no cell-crossing noise. */
+static PetscErrorCode MPMScatter(MPM mpm, PetscBool force)
+{
+  const MPMGrid *g = &mpm->grid;
+  const PetscInt d = g->dim;
+  const PetscBool cellrule = (PetscBool)(force && mpm->stress_integration == MPM_STRESS_CELL);
+  MPMStencil     st;
+  MPMPoints      pts;
+  MPMNode       *node;
+
+  PetscFunctionBegin;
+  PetscCall(VecZeroEntries(mpm->lnodes));
+  PetscCall(VecGetArray(mpm->lnodes, (PetscScalar **)&node));
+  if (cellrule) {
+    PetscCall(PetscArrayzero(mpm->cellV, g->ncells));
+    PetscCall(PetscArrayzero(mpm->cellS, g->ncells));
+  }
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  {
+    const PetscReal *x = pts.f[MPM_FIELD_POSITION], *v = pts.f[MPM_FIELD_VELOCITY], *m = pts.f[MPM_FIELD_MASS];
+    const PetscReal *V = pts.f[MPM_FIELD_VOLUME], *pr = pts.f[MPM_FIELD_PRESSURE], *q = pts.f[MPM_FIELD_VISCOSITY];
+
+    for (PetscInt p = 0; p < pts.n; p++) {
+      const PetscReal P = pr[p] + q[p];
+      PetscCall(MPMShapeEvaluate(mpm->shape, g, &x[p * d], &st));
+      for (PetscInt a = 0; a < st.n; a++) {
+        MPMNode        *nd = &node[st.node[a]];
+        const PetscReal wm = st.w[a] * m[p];
+        nd->m += wm;
+        for (PetscInt k = 0; k < d; k++) nd->p[k] += wm * v[p * d + k];
+        if (force && !cellrule)
+          for (PetscInt k = 0; k < d; k++) nd->f[k] += V[p] * P * st.dw[a][k];
+      }
+      if (cellrule) {
+        const PetscInt c = MPMLocalCell(g, &x[p * d]);
+        mpm->cellV[c] += V[p];
+        mpm->cellS[c] += V[p] * P;
+      }
+    }
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  if (cellrule) {
+    for (PetscInt c = 0; c < g->ncells; c++) {
+      PetscReal      xc[MPM_MAX_DIM] = {0, 0, 0}, phiV, P;
+      const PetscInt ijk[3]          = {c % g->cm[0], (c / g->cm[0]) % g->cm[1], c / (g->cm[0] * g->cm[1])};
+      if (mpm->cellV[c] <= 0.0) continue;
+      phiV = g->vcell;
+      P    = mpm->cellS[c] / mpm->cellV[c];
+      for (PetscInt k = 0; k < d; k++) xc[k] = g->lo[k] + (g->cs[k] + ijk[k] + 0.5) * g->h[k];
+      PetscCall(MPMShapeEvaluate(mpm->shape, g, xc, &st));
+      for (PetscInt a = 0; a < st.n; a++)
+        for (PetscInt k = 0; k < d; k++) node[st.node[a]].f[k] += phiV * P * st.dw[a][k];
+    }
+  }
+  PetscCall(VecRestoreArray(mpm->lnodes, (PetscScalar **)&node));
+  PetscCall(VecZeroEntries(mpm->nodes));
+  PetscCall(DMLocalToGlobal(mpm->da, mpm->lnodes, ADD_VALUES, mpm->nodes));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMParticlesToGrid(MPM mpm)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscLogEventBegin(mpm->log.p2g, 0, 0, 0, 0));
+  PetscCall(MPMScatter(mpm, PETSC_TRUE));
+  PetscCall(PetscLogEventEnd(mpm->log.p2g, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Global (i, j, k) of the c-th owned node of the global nodal vector, and the number of owned nodes. */
+static inline void MPMOwnedNode(const MPMGrid *g, PetscInt c, PetscInt gi[])
+{
+  gi[0] = g->xs[0] + c % g->xm[0];
+  gi[1] = g->xs[1] + (c / g->xm[0]) % g->xm[1];
+  gi[2] = g->xs[2] + c / (g->xm[0] * g->xm[1]);
+}
+
+static inline PetscInt MPMNumOwnedNodes(const MPMGrid *g)
+{
+  return g->xm[0] * g->xm[1] * g->xm[2];
+}
+
+/* Rigid walls: the normal velocity of the nodes on a wall face is zero. */
+static inline void MPMApplyWalls(const MPM mpm, MPMNode *nd, const PetscInt gi[])
+{
+  for (PetscInt k = 0; k < mpm->grid.dim; k++) {
+    if ((gi[k] == 0 && mpm->bc_lo[k] == MPM_BC_WALL) || (gi[k] == mpm->grid.cells[k] && mpm->bc_hi[k] == MPM_BC_WALL)) {
+      nd->p[k] = nd->f[k] = nd->v0[k] = 0.0;
+    }
+  }
+}
+
+/* Gravity module: f_I += m_I g (= sum_p N_I m_p g, since the N_I sum to one). */
+static PetscErrorCode MPMGravity(MPM mpm)
+{
+  const PetscInt d = mpm->grid.dim;
+
+  MPMNode       *node;
+
+  PetscFunctionBegin;
+  PetscCall(PetscLogEventBegin(mpm->log.gravity, 0, 0, 0, 0));
+
+  PetscCall(VecGetArray(mpm->nodes, (PetscScalar **)&node));
+  for (PetscInt c = 0; c < MPMNumOwnedNodes(&mpm->grid); c++)
+    for (PetscInt k = 0; k < d; k++) node[c].f[k] += node[c].m * mpm->gravity[k];
+  PetscCall(VecRestoreArray(mpm->nodes, (PetscScalar **)&node));
+  PetscCall(PetscLogEventEnd(mpm->log.gravity, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* v_I^n = (mv)_I / m_I, (mv)_I += dt f_I, v_I^{n+1} = (mv)_I / m_I, then walls. The new velocity is stored
+   in p (as velocity) for the gather; v0 keeps v_I^n for the FLIP increment. */
+static PetscErrorCode MPMGridAdvance(MPM mpm, PetscReal dt)
+{
+  const PetscInt d = mpm->grid.dim;
+  MPMNode       *node;
+
+  PetscFunctionBegin;
+  PetscCall(PetscLogEventBegin(mpm->log.advance, 0, 0, 0, 0));
+
+  PetscCall(VecGetArray(mpm->nodes, (PetscScalar **)&node));
+  for (PetscInt c = 0; c < MPMNumOwnedNodes(&mpm->grid); c++) {
+    MPMNode *nd = &node[c];
+    PetscInt gi[3];
+    MPMOwnedNode(&mpm->grid, c, gi);
+    if (nd->m > 0.0) {
+      const PetscReal minv = 1.0 / nd->m;
+      for (PetscInt k = 0; k < d; k++) {
+        nd->v0[k] = nd->p[k] * minv;
+        nd->p[k]  = (nd->p[k] + dt * nd->f[k]) * minv;
+      }
+    } else {
+      for (PetscInt k = 0; k < d; k++) nd->v0[k] = nd->p[k] = 0.0;
+    }
+    MPMApplyWalls(mpm, nd, gi);
+  }
+  PetscCall(VecRestoreArray(mpm->nodes, (PetscScalar **)&node));
+  PetscCall(DMGlobalToLocal(mpm->da, mpm->nodes, INSERT_VALUES, mpm->lnodes));
+  PetscCall(PetscLogEventEnd(mpm->log.advance, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Gathers the grid velocity (stored in MPMNode::p after the advance) to the points:
+   velocity:   v_p <- alpha (v_p + sum N_I (v_I - v_I^n)) + (1 - alpha) sum N_I v_I,
+   kinematics: x_p += dt sum N_I v_I,  L_p = sum v_I (x) grad N_I. */
+static PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscBool velocity, PetscBool kinematics)
+{
+  const MPMGrid  *g = &mpm->grid;
+  const PetscInt  d = g->dim;
+  const PetscReal alpha = mpm->update->alpha;
+  MPMStencil      st;
+  MPMPoints       pts;
+  const MPMNode  *node;
+
+  PetscFunctionBegin;
+  PetscCall(VecGetArrayRead(mpm->lnodes, (const PetscScalar **)&node));
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  {
+    PetscReal *x = pts.f[MPM_FIELD_POSITION], *v = pts.f[MPM_FIELD_VELOCITY], *L = pts.f[MPM_FIELD_GRADV];
+
+    for (PetscInt p = 0; p < pts.n; p++) {
+      PetscReal vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0};
+      PetscCall(MPMShapeEvaluate(mpm->shape, g, &x[p * d], &st));
+      for (PetscInt a = 0; a < st.n; a++) {
+        const MPMNode *nd = &node[st.node[a]];
+        for (PetscInt i = 0; i < d; i++) {
+          vpic[i] += st.w[a] * nd->p[i];
+          dv[i] += st.w[a] * (nd->p[i] - nd->v0[i]);
+          for (PetscInt j = 0; j < d; j++) Lp[i * d + j] += nd->p[i] * st.dw[a][j];
+        }
+      }
+      if (velocity)
+        for (PetscInt i = 0; i < d; i++) v[p * d + i] = alpha * (v[p * d + i] + dv[i]) + (1.0 - alpha) * vpic[i];
+      if (kinematics) {
+        for (PetscInt i = 0; i < d; i++) x[p * d + i] += dt * vpic[i];
+        for (PetscInt i = 0; i < d * d; i++) L[p * d * d + i] = Lp[i];
+      }
+    }
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(VecRestoreArrayRead(mpm->lnodes, (const PetscScalar **)&node));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMGridToParticles(MPM mpm, PetscReal dt)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscLogEventBegin(mpm->log.g2p, 0, 0, 0, 0));
+  PetscCall(MPMGather(mpm, dt, PETSC_TRUE, (PetscBool)(mpm->scheme == MPM_SCHEME_USL)));
+  PetscCall(PetscLogEventEnd(mpm->log.g2p, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* MUSL: map the updated point momenta back to the grid, v_I = sum N m_p v_p / m_I, and move the points
+   and compute L_p with that velocity. */
+static PetscErrorCode MPMRemapMomentum(MPM mpm, PetscReal dt)
+{
+  const PetscInt d = mpm->grid.dim;
+  MPMNode       *node;
+
+  PetscFunctionBegin;
+  PetscCall(PetscLogEventBegin(mpm->log.remap, 0, 0, 0, 0));
+  PetscCall(MPMScatter(mpm, PETSC_FALSE));
+  PetscCall(VecGetArray(mpm->nodes, (PetscScalar **)&node));
+  for (PetscInt c = 0; c < MPMNumOwnedNodes(&mpm->grid); c++) {
+    const PetscReal minv = node[c].m > 0.0 ? 1.0 / node[c].m : 0.0;
+    PetscInt        gi[3];
+    MPMOwnedNode(&mpm->grid, c, gi);
+    for (PetscInt k = 0; k < d; k++) node[c].p[k] *= minv;
+    MPMApplyWalls(mpm, &node[c], gi);
+  }
+  PetscCall(VecRestoreArray(mpm->nodes, (PetscScalar **)&node));
+  PetscCall(DMGlobalToLocal(mpm->da, mpm->nodes, INSERT_VALUES, mpm->lnodes));
+  PetscCall(MPMGather(mpm, dt, PETSC_FALSE, PETSC_TRUE));
+  PetscCall(PetscLogEventEnd(mpm->log.remap, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static inline PetscReal MPMDetIPlusDtL(PetscInt d, PetscReal dt, const PetscReal L[])
+{
+  if (d == 1) return 1.0 + dt * L[0];
+  if (d == 2) return (1.0 + dt * L[0]) * (1.0 + dt * L[3]) - dt * dt * L[1] * L[2];
+  {
+    const PetscReal a = 1.0 + dt * L[0], b = dt * L[1], c = dt * L[2], e = dt * L[3], f = 1.0 + dt * L[4], h = dt * L[5], i = dt * L[6], j = dt * L[7], k = 1.0 + dt * L[8];
+    return a * (f * k - h * j) - b * (e * k - h * i) + c * (e * j - f * i);
+  }
+}
+
+/* Density from the deformation, rho^{n+1} = rho^n / det(I + dt L), and internal energy consistent with the
+   pressure and viscous work, de = -(pbar + q) d(1/rho), where pbar = (p^n + p^{n+1})/2 comes from one
+   predictor-corrector pass through the EOS. A non-physical state stops the run with its diagnosis. */
+static PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
+{
+  const PetscInt d = mpm->grid.dim;
+  MPMPoints      pts;
+  MPMEOS         eos[MPM_MAX_MATERIALS];
+  PetscInt       bad = -1, nbad;
+
+  PetscFunctionBegin;
+  PetscCall(PetscLogEventBegin(mpm->log.constitutive, 0, 0, 0, 0));
+  for (PetscInt i = 0; i < mpm->nmat; i++) eos[i] = mpm->mat[i].eos;
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  {
+    const PetscReal *L = pts.f[MPM_FIELD_GRADV], *m = pts.f[MPM_FIELD_MASS], *q = pts.f[MPM_FIELD_VISCOSITY], *mat = pts.f[MPM_FIELD_MATERIAL];
+    PetscReal       *rho = pts.f[MPM_FIELD_DENSITY], *V = pts.f[MPM_FIELD_VOLUME], *e = pts.f[MPM_FIELD_ENERGY], *pr = pts.f[MPM_FIELD_PRESSURE];
+    PetscReal       *c = pts.f[MPM_FIELD_SOUNDSPEED], *T = pts.f[MPM_FIELD_TEMPERATURE];
+
+    for (PetscInt p = 0; p < pts.n; p++) {
+      const MPMEOS    E    = eos[(PetscInt)mat[p]];
+      const PetscReal J    = MPMDetIPlusDtL(d, dt, &L[p * d * d]);
+      const PetscReal rho1 = rho[p] / J, dvol = 1.0 / rho1 - 1.0 / rho[p];
+      PetscReal       e1, ppred, c2;
+
+      MPMEOSPressureKernel(E, rho1, e[p] - (pr[p] + q[p]) * dvol, &ppred, &c2); /* predictor */
+      e1 = e[p] - (0.5 * (pr[p] + ppred) + q[p]) * dvol;                      /* corrector */
+      MPMEOSPressureKernel(E, rho1, e1, &pr[p], &c2);
+      E->ops.temperature(E->data, rho1, e1, &T[p]);
+      e[p]   = e1;
+      rho[p] = rho1;
+      V[p]   = m[p] / rho1;
+      c[p]   = PetscSqrtReal(PetscMax(c2, 0.0));
+      if (bad < 0 && !(rho1 > 0.0 && PetscIsNormalReal(rho1) && !PetscIsInfOrNanReal(e1) && !PetscIsInfOrNanReal(pr[p]) && c2 >= 0.0)) bad = p;
+    }
+    if (bad >= 0) {
+      PetscMPIInt rank;
+      PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "[%d] step %" PetscInt_FMT ", t = %g s: point %.0f at x = %g cm has rho = %g g/cm^3, e = %g erg/g, p = %g dyn/cm^2, c^2 = %g (det(I + dt L) = %g)\n", rank, mpm->steps, (double)mpm->time, (double)pts.f[MPM_FIELD_ID][bad], (double)pts.f[MPM_FIELD_POSITION][bad * d], (double)rho[bad], (double)e[bad], (double)pr[bad], (double)(c[bad] * c[bad]), (double)MPMDetIPlusDtL(d, dt, &L[bad * d * d])));
+    }
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(PetscLogFlops(30.0 * pts.n));
+  nbad = bad >= 0 ? 1 : 0;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &nbad, 1, MPIU_INT, MPI_SUM, mpm->comm));
+  PetscCall(PetscLogEventEnd(mpm->log.constitutive, 0, 0, 0, 0));
+  if (nbad) {
+    PetscCall(MPMOutputWrite(mpm, mpm->steps, mpm->time));
+    SETERRQ(mpm->comm, PETSC_ERR_NOT_CONVERGED, "Step %" PetscInt_FMT ": non-physical state (negative or non-finite density, energy or pressure) on %" PetscInt_FMT " rank(s), diagnosis above; last state written to %s", mpm->steps, nbad, mpm->outdir);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Grid fields for output: m_I and v_I = sum N_I m_p v_p / m_I of the current point state, in the global nodal vector. */
+PetscErrorCode MPMProjectToGrid(MPM mpm)
+{
+  const PetscInt d = mpm->grid.dim;
+  MPMNode       *node;
+
+  PetscFunctionBegin;
+  PetscCall(MPMScatter(mpm, PETSC_FALSE));
+  PetscCall(VecGetArray(mpm->nodes, (PetscScalar **)&node));
+  for (PetscInt c = 0; c < MPMNumOwnedNodes(&mpm->grid); c++)
+    for (PetscInt k = 0; k < d; k++) node[c].p[k] = node[c].m > 0.0 ? node[c].p[k] / node[c].m : 0.0;
+  PetscCall(VecRestoreArray(mpm->nodes, (PetscScalar **)&node));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* One explicit MPM step. -log_view shows a row per phase. */
+PetscErrorCode MPMStep(MPM mpm, PetscReal dt)
+{
+  PetscFunctionBegin;
+  PetscCall(MPMParticlesToGrid(mpm));                                          /* m_I, (mv)_I, f_I = f_int       */
+  if (mpm->has_gravity) PetscCall(MPMGravity(mpm));                            /* f_I += m_I g                   */
+  PetscCall(MPMGridAdvance(mpm, dt));                                          /* (mv)_I += dt f_I; walls        */
+  PetscCall(MPMGridToParticles(mpm, dt));                                      /* v_p; USL: x_p, L_p             */
+  if (mpm->scheme == MPM_SCHEME_MUSL) PetscCall(MPMRemapMomentum(mpm, dt));    /* MUSL: v_I from v_p; x_p, L_p   */
+  if (mpm->viscosity) PetscCall(MPMViscosityApply(mpm->viscosity, mpm, dt));   /* q_p                            */
+  PetscCall(MPMConstitutive(mpm, dt));                                         /* rho_p, e_p, p_p, c_p, T_p      */
+  PetscCall(MPMMigrate(mpm));                                                  /* points follow their cells      */
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Initial internal energy, pressure and sound speed from each point's density and temperature. */
+PetscErrorCode MPMConstitutiveInitialize(MPM mpm)
+{
+  MPMPoints pts;
+
+  PetscFunctionBegin;
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt p = 0; p < pts.n; p++) {
+    const MPMEOS E = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].eos;
+    PetscReal    c2;
+    E->ops.energy(E->data, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_TEMPERATURE][p], &pts.f[MPM_FIELD_ENERGY][p]);
+    E->ops.pressure(E->data, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_ENERGY][p], &pts.f[MPM_FIELD_PRESSURE][p], &c2);
+    pts.f[MPM_FIELD_SOUNDSPEED][p] = PetscSqrtReal(PetscMax(c2, 0.0));
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* dt = C h_min / max_p (c_p + |v_p| + 2 nu_p / h_min), with the viscous diffusivity nu_p = q_p / (rho_p |div v_p|)
+   so that the artificial viscosity's own (diffusive) limit is respected. */
+PetscErrorCode MPMComputeTimeStep(MPM mpm, PetscReal *dt)
+{
+  const PetscInt  d = mpm->grid.dim;
+  const PetscReal h = mpm->grid.hmin;
+  PetscReal       smax = 0.0;
+  MPMPoints       pts;
+
+  PetscFunctionBegin;
+  PetscCall(PetscLogEventBegin(mpm->log.timestep, 0, 0, 0, 0));
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt p = 0; p < pts.n; p++) {
+    const PetscReal *v = &pts.f[MPM_FIELD_VELOCITY][p * d], *L = &pts.f[MPM_FIELD_GRADV][p * d * d], q = pts.f[MPM_FIELD_VISCOSITY][p];
+    PetscReal        v2 = 0.0, divv = 0.0, s;
+    for (PetscInt k = 0; k < d; k++) {
+      v2 += v[k] * v[k];
+      divv += L[k * d + k];
+    }
+    s = pts.f[MPM_FIELD_SOUNDSPEED][p] + PetscSqrtReal(v2);
+    if (q > 0.0 && divv != 0.0) s += 2.0 * q / (pts.f[MPM_FIELD_DENSITY][p] * PetscAbsReal(divv) * h);
+    smax = PetscMax(smax, s);
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &smax, 1, MPIU_REAL, MPIU_MAX, mpm->comm));
+  *dt = smax > 0.0 ? mpm->cfl * h / smax : PETSC_MAX_REAL;
+  PetscCall(PetscLogEventEnd(mpm->log.timestep, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Total mass sum m_p, total energy sum m_p (e_p + |v_p|^2 / 2) and momentum sum m_p v_p over all ranks. */
+PetscErrorCode MPMGlobalSums(MPM mpm, PetscReal *mass, PetscReal *energy, PetscReal momentum[])
+{
+  const PetscInt d = mpm->grid.dim;
+  PetscReal      s[2 + MPM_MAX_DIM] = {0, 0, 0, 0, 0};
+  MPMPoints      pts;
+
+  PetscFunctionBegin;
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt p = 0; p < pts.n; p++) {
+    const PetscReal  m = pts.f[MPM_FIELD_MASS][p], *v = &pts.f[MPM_FIELD_VELOCITY][p * d];
+    PetscReal        v2 = 0.0;
+    for (PetscInt k = 0; k < d; k++) {
+      v2 += v[k] * v[k];
+      s[2 + k] += m * v[k];
+    }
+    s[0] += m;
+    s[1] += m * (pts.f[MPM_FIELD_ENERGY][p] + 0.5 * v2);
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 2 + MPM_MAX_DIM, MPIU_REAL, MPIU_SUM, mpm->comm));
+  *mass   = s[0];
+  *energy = s[1];
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) momentum[k] = s[2 + k];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -1,0 +1,100 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* Every TS detail of petmpm. TS owns time, step number, step size, the final time and the monitors
+   (-ts_max_time, -ts_max_steps, -ts_monitor). The MPM state lives in the grid and the swarm, not in a TS
+   vector (PIC and MUSL rebuild it from the points every step), so the TS integrates an empty system and the
+   MPM cycle runs as its post-step: pre-step sets dt from the CFL condition, trimmed so that the last step
+   lands exactly on the final time. */
+#include "petmpmimpl.h"
+
+static PetscErrorCode MPMTSRHSFunction(TS ts, PetscReal t, Vec U, Vec F, void *ctx)
+{
+  PetscFunctionBegin;
+  PetscCall(VecZeroEntries(F));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMTSPreStep(TS ts)
+{
+  MPM       mpm;
+  PetscReal t, tmax, dt;
+  PetscInt  step;
+
+  PetscFunctionBegin;
+  PetscCall(TSGetApplicationContext(ts, &mpm));
+  PetscCall(TSGetTime(ts, &t));
+  PetscCall(TSGetMaxTime(ts, &tmax));
+  PetscCall(TSGetStepNumber(ts, &step));
+  PetscCall(MPMComputeTimeStep(mpm, &dt));
+  if (dt < mpm->dtmin) {
+    PetscCall(MPMOutputWrite(mpm, step, t));
+    SETERRQ(mpm->comm, PETSC_ERR_NOT_CONVERGED, "Step %" PetscInt_FMT ", t = %g s: CFL time step %g s fell below -mpm_dt_min %g s; last state written to %s", step, (double)t, (double)dt, (double)mpm->dtmin, mpm->outdir);
+  }
+  if (t + dt * (1.0 + 1e-6) >= tmax) dt = tmax - t; /* land on the final time, never leave a sliver */
+  PetscCall(TSSetTimeStep(ts, dt));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMTSPostStep(TS ts)
+{
+  MPM       mpm;
+  PetscReal t, dt, tmax;
+  PetscInt  step;
+
+  PetscFunctionBegin;
+  PetscCall(TSGetApplicationContext(ts, &mpm));
+  PetscCall(TSGetTime(ts, &t));
+  PetscCall(TSGetMaxTime(ts, &tmax));
+  PetscCall(TSGetTimeStep(ts, &dt));
+  PetscCall(TSGetStepNumber(ts, &step));
+  if (PetscAbsReal(t - tmax) <= 1e-12 * PetscAbsReal(tmax)) {
+    t = tmax; /* the trimmed last step: report the final time exactly */
+    PetscCall(TSSetTime(ts, t));
+  }
+  mpm->steps = step;
+  mpm->time  = t;
+  PetscCall(MPMStep(mpm, dt));
+  if (mpm->output_interval > 0 && step % mpm->output_interval == 0) PetscCall(MPMOutputWrite(mpm, step, t));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMCreateTS(MPM mpm)
+{
+  PetscFunctionBegin;
+  PetscCall(VecCreateMPI(mpm->comm, 0, PETSC_DETERMINE, &mpm->tsu));
+  PetscCall(TSCreate(mpm->comm, &mpm->ts));
+  PetscCall(TSSetApplicationContext(mpm->ts, mpm));
+  PetscCall(TSSetType(mpm->ts, TSEULER));
+  PetscCall(TSSetProblemType(mpm->ts, TS_NONLINEAR));
+  PetscCall(TSSetRHSFunction(mpm->ts, NULL, MPMTSRHSFunction, NULL));
+  PetscCall(TSSetSolution(mpm->ts, mpm->tsu));
+  PetscCall(TSSetMaxTime(mpm->ts, 1.0));
+  PetscCall(TSSetTimeStep(mpm->ts, 1.0));
+  PetscCall(TSSetExactFinalTime(mpm->ts, TS_EXACTFINALTIME_STEPOVER));
+  PetscCall(TSSetPreStep(mpm->ts, MPMTSPreStep));
+  PetscCall(TSSetPostStep(mpm->ts, MPMTSPostStep));
+  PetscCall(TSSetFromOptions(mpm->ts));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMSolve(MPM mpm)
+{
+  PetscReal t0, out0;
+
+  PetscFunctionBegin;
+  PetscCall(PetscLogStagePush(mpm->log.io));
+  PetscCall(MPMOutputWrite(mpm, 0, 0.0));
+  PetscCall(PetscLogStagePop());
+  PetscCall(PetscLogStagePush(mpm->log.loop));
+  t0   = MPI_Wtime();
+  out0 = mpm->wall_output;
+  PetscCall(TSSolve(mpm->ts, mpm->tsu));
+  mpm->wall_loop = MPI_Wtime() - t0 - (mpm->wall_output - out0); /* the time loop without its outputs */
+  PetscCall(PetscLogStagePop());
+  PetscCall(TSGetStepNumber(mpm->ts, &mpm->steps));
+  PetscCall(TSGetTime(mpm->ts, &mpm->time));
+  PetscCall(PetscLogStagePush(mpm->log.io));
+  PetscCall(MPMOutputWrite(mpm, mpm->steps, mpm->time));
+  PetscCall(MPMOutputWriteExact(mpm));
+  PetscCall(PetscLogStagePop());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
