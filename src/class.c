@@ -13,7 +13,8 @@ PetscErrorCode MPMClassTypeList(PetscFunctionList list, char buf[], size_t len)
   PetscCall(PetscFunctionListGet(list, &names, &n));
   buf[0] = 0;
   for (int i = 0; i < n; i++) {
-    if (i) PetscCall(PetscStrlcat(buf, ", ", len));
+    if (!names[i] || !names[i][0]) continue;
+    if (buf[0]) PetscCall(PetscStrlcat(buf, ", ", len));
     PetscCall(PetscStrlcat(buf, names[i], len));
   }
   PetscCall(PetscFree(names));

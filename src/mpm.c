@@ -139,6 +139,7 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscCall(MPMUpdateSetFromOptions(mpm->update));
   PetscCall(MPMViscositySetFromOptions(mpm->viscosity));
   PetscCall(MPMExactSetFromOptions(mpm->exact));
+  PetscCall(MPMCreateTS(mpm));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -191,7 +192,6 @@ PetscErrorCode MPMSetUp(MPM mpm)
   PetscCall(MPMConstitutiveInitialize(mpm));
   PetscCall(MPMExactSetUp(mpm->exact, mpm));
   if (!mpm->exact->ops.evaluate) PetscCall(MPMExactDestroy(&mpm->exact));
-  PetscCall(MPMCreateTS(mpm));
   PetscCall(MPMCheckUnusedOptions(mpm));
   PetscCall(MPMOutputOpen(mpm));
   PetscCall(MPMGlobalSums(mpm, &mpm->mass0, &mpm->energy0, mpm->momentum0));

@@ -233,7 +233,6 @@ PETSC_INTERN PetscErrorCode MPMPointsRestoreArrays(MPM, MPMPoints *);
 PETSC_INTERN PetscErrorCode MPMMigrate(MPM);
 PETSC_INTERN PetscInt       MPMLocalCell(const MPMGrid *, const PetscReal[]);
 PETSC_INTERN PetscMPIInt    MPMOwnerRank(const MPMGrid *, const PetscReal[]);
-PETSC_INTERN PetscErrorCode MPMShapeEvaluate(MPMShape, const MPMGrid *, const PetscReal[], MPMStencil *);
 PETSC_INTERN PetscErrorCode MPMStep(MPM, PetscReal);
 PETSC_INTERN PetscErrorCode MPMProjectToGrid(MPM);
 PETSC_INTERN PetscErrorCode MPMOutputWriteExact(MPM);
@@ -259,4 +258,49 @@ PETSC_INTERN PetscErrorCode MPMClassTypeList(PetscFunctionList, char[], size_t);
 static inline void MPMEOSPressureKernel(MPMEOS eos, PetscReal rho, PetscReal e, PetscReal *p, PetscReal *c2)
 {
   eos->ops.pressure(eos->data, rho, e, p, c2);
+}
+
+#define MPM_MAX_1D 8 /* nodes per direction a 1D basis can touch */
+
+/* N_I(x) and grad N_I(x) at x as tensor products of the type's 1D basis: flat ghosted-local node indices,
+   weights and gradients. Inline, so that the particle loops call the 1D basis and nothing else. */
+static inline void MPMShapeEvaluate(MPMShape shape, const MPMGrid *g, const PetscReal x[], MPMStencil *st)
+{
+  PetscInt       first[MPM_MAX_DIM], nn[MPM_MAX_DIM];
+  PetscReal      w[MPM_MAX_DIM][MPM_MAX_1D], dw[MPM_MAX_DIM][MPM_MAX_1D];
+  const PetscInt d = g->dim;
+
+  for (PetscInt k = 0; k < d; k++) {
+    const PetscReal hinv = 1.0 / g->h[k];
+    shape->ops.basis1d(shape->data, (x[k] - g->lo[k]) * hinv, g->cells[k], &first[k], &nn[k], w[k], dw[k]);
+    for (PetscInt a = 0; a < nn[k]; a++) dw[k][a] *= hinv;
+    first[k] -= g->gs[k];
+  }
+  st->n = 0;
+  if (d == 1) {
+    for (PetscInt a = 0; a < nn[0]; a++) {
+      st->node[a]  = first[0] + a;
+      st->w[a]     = w[0][a];
+      st->dw[a][0] = dw[0][a];
+    }
+    st->n = nn[0];
+  } else if (d == 2) {
+    for (PetscInt b = 0; b < nn[1]; b++)
+      for (PetscInt a = 0; a < nn[0]; a++, st->n++) {
+        st->node[st->n]  = (first[1] + b) * g->gm[0] + first[0] + a;
+        st->w[st->n]     = w[0][a] * w[1][b];
+        st->dw[st->n][0] = dw[0][a] * w[1][b];
+        st->dw[st->n][1] = w[0][a] * dw[1][b];
+      }
+  } else {
+    for (PetscInt c = 0; c < nn[2]; c++)
+      for (PetscInt b = 0; b < nn[1]; b++)
+        for (PetscInt a = 0; a < nn[0]; a++, st->n++) {
+          st->node[st->n]  = ((first[2] + c) * g->gm[1] + (first[1] + b)) * g->gm[0] + first[0] + a;
+          st->w[st->n]     = w[0][a] * w[1][b] * w[2][c];
+          st->dw[st->n][0] = dw[0][a] * w[1][b] * w[2][c];
+          st->dw[st->n][1] = w[0][a] * dw[1][b] * w[2][c];
+          st->dw[st->n][2] = w[0][a] * w[1][b] * dw[2][c];
+        }
+  }
 }

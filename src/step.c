@@ -32,7 +32,7 @@ static PetscErrorCode MPMScatter(MPM mpm, PetscBool force)
 
     for (PetscInt p = 0; p < pts.n; p++) {
       const PetscReal P = pr[p] + q[p];
-      PetscCall(MPMShapeEvaluate(mpm->shape, g, &x[p * d], &st));
+      MPMShapeEvaluate(mpm->shape, g, &x[p * d], &st);
       for (PetscInt a = 0; a < st.n; a++) {
         MPMNode        *nd = &node[st.node[a]];
         const PetscReal wm = st.w[a] * m[p];
@@ -57,7 +57,7 @@ static PetscErrorCode MPMScatter(MPM mpm, PetscBool force)
       phiV = g->vcell;
       P    = mpm->cellS[c] / mpm->cellV[c];
       for (PetscInt k = 0; k < d; k++) xc[k] = g->lo[k] + (g->cs[k] + ijk[k] + 0.5) * g->h[k];
-      PetscCall(MPMShapeEvaluate(mpm->shape, g, xc, &st));
+      MPMShapeEvaluate(mpm->shape, g, xc, &st);
       for (PetscInt a = 0; a < st.n; a++)
         for (PetscInt k = 0; k < d; k++) node[st.node[a]].f[k] += phiV * P * st.dw[a][k];
     }
@@ -170,7 +170,7 @@ static PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscBool velocity, Petsc
 
     for (PetscInt p = 0; p < pts.n; p++) {
       PetscReal vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0};
-      PetscCall(MPMShapeEvaluate(mpm->shape, g, &x[p * d], &st));
+      MPMShapeEvaluate(mpm->shape, g, &x[p * d], &st);
       for (PetscInt a = 0; a < st.n; a++) {
         const MPMNode *nd = &node[st.node[a]];
         for (PetscInt i = 0; i < d; i++) {

@@ -73,38 +73,3 @@ PetscErrorCode MPMShapeDestroy(MPMShape *shape)
   PetscCall(PetscFree(*shape));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
-
-#define MPM_MAX_1D 8
-
-/* Tensor-product evaluation at x: flat ghosted-local node indices, weights and gradients. */
-PetscErrorCode MPMShapeEvaluate(MPMShape shape, const MPMGrid *g, const PetscReal x[], MPMStencil *st)
-{
-  PetscInt  first[MPM_MAX_DIM] = {0, 0, 0}, nn[MPM_MAX_DIM] = {1, 1, 1};
-  PetscReal w[MPM_MAX_DIM][MPM_MAX_1D], dw[MPM_MAX_DIM][MPM_MAX_1D];
-  const PetscInt d = g->dim;
-
-  PetscFunctionBeginHot;
-  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
-    w[k][0]  = 1.0;
-    dw[k][0] = 0.0;
-  }
-  for (PetscInt k = 0; k < d; k++) {
-    shape->ops.basis1d(shape->data, (x[k] - g->lo[k]) / g->h[k], g->cells[k], &first[k], &nn[k], w[k], dw[k]);
-    for (PetscInt a = 0; a < nn[k]; a++) dw[k][a] /= g->h[k];
-    first[k] -= g->gs[k];
-  }
-  st->n = 0;
-  for (PetscInt c = 0; c < nn[2]; c++) {
-    for (PetscInt b = 0; b < nn[1]; b++) {
-      for (PetscInt a = 0; a < nn[0]; a++) {
-        const PetscInt n = st->n++;
-        st->node[n]      = ((first[2] + c) * g->gm[1] + (first[1] + b)) * g->gm[0] + first[0] + a;
-        st->w[n]         = w[0][a] * w[1][b] * w[2][c];
-        st->dw[n][0]     = dw[0][a] * w[1][b] * w[2][c];
-        st->dw[n][1]     = w[0][a] * dw[1][b] * w[2][c];
-        st->dw[n][2]     = w[0][a] * w[1][b] * dw[2][c];
-      }
-    }
-  }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
