@@ -78,8 +78,8 @@ PetscErrorCode MPMViscosityCreate_VNR(MPMViscosity visc)
 
   PetscFunctionBegin;
   PetscCall(PetscNew(&vnr));
-  vnr->cq                  = 1.0;
-  vnr->cl                  = 0.1;
+  vnr->cq                  = 2.0;
+  vnr->cl                  = 0.2;
   visc->data               = vnr;
   visc->ops.apply          = MPMViscosityApply_VNR;
   visc->ops.setfromoptions = MPMViscositySetFromOptions_VNR;
