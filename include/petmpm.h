@@ -17,22 +17,13 @@ typedef struct _p_MPMUpdate    *MPMUpdate;
 typedef struct _p_MPMExact     *MPMExact;
 
 /* Closed algorithm switches: enums, so that -help lists the choices. */
-typedef enum {
-  MPM_SCHEME_USL,
-  MPM_SCHEME_MUSL
-} MPMScheme;
+typedef enum { MPM_SCHEME_USL, MPM_SCHEME_MUSL } MPMScheme;
 PETSC_EXTERN const char *const MPMSchemes[];
 
-typedef enum {
-  MPM_STRESS_CELL,
-  MPM_STRESS_POINT
-} MPMStressIntegration;
+typedef enum { MPM_STRESS_CELL, MPM_STRESS_POINT } MPMStressIntegration;
 PETSC_EXTERN const char *const MPMStressIntegrations[];
 
-typedef enum {
-  MPM_BC_WALL,
-  MPM_BC_FREE
-} MPMBoundaryType;
+typedef enum { MPM_BC_WALL, MPM_BC_FREE } MPMBoundaryType;
 PETSC_EXTERN const char *const MPMBoundaryTypes[];
 
 /* Type names */
@@ -42,13 +33,13 @@ typedef const char *MPMEOSType;
 #define MPMEOSIDEALGAS "idealgas"
 typedef const char *MPMViscosityType;
 #define MPMVISCOSITYNONE "none"
-#define MPMVISCOSITYVNR  "vnr"
+#define MPMVISCOSITYVNR "vnr"
 typedef const char *MPMUpdateType;
-#define MPMUPDATEPIC   "pic"
-#define MPMUPDATEFLIP  "flip"
+#define MPMUPDATEPIC "pic"
+#define MPMUPDATEFLIP "flip"
 #define MPMUPDATEBLEND "blend"
 typedef const char *MPMExactType;
-#define MPMEXACTNONE    "none"
+#define MPMEXACTNONE "none"
 #define MPMEXACTRIEMANN "riemann"
 
 /* The MPM object */

@@ -51,10 +51,10 @@ def main():
     for line in log.splitlines():
         if line.startswith("--- Event Stage"):
             stage = line
-        m = re.match(r"^(MPM\w+|TSStep|DMSwarmMigrate|DMLocalToGlobal|DMGlobalToLocal)\s+(\d+)\s+\S+\s+(\S+)", line)
+        m = re.match(r"^(MPM\w+|DMSwarmMigrate)\s+(\d+)\s+\S+\s+(\S+)", line)
         if m and stage and "time loop" in stage:
             fields = line.split()
-            print(f"| {m.group(1)} | {m.group(2)} | {float(m.group(3)):.4f} | {fields[-5]} |")
+            print(f"| {m.group(1)} | {m.group(2)} | {float(m.group(3)):.4f} | {fields[-6]} |")
 
     print("\nConvergence, weak Sod, FLIP, 4 points per cell:\n")
     print("| cells | L1 density | rate | L2 density | rate | shock error [cells] | wall [s] |")

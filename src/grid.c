@@ -34,10 +34,10 @@ PetscErrorCode MPMCreateGrid(MPM mpm)
   g->hmin   = PETSC_MAX_REAL;
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
     if (k >= g->dim) {
-      g->cells[k] = 1;
-      g->cs[k]    = 0;
-      g->cm[k]    = 1;
-      g->h[k]     = 1.0;
+      g->cells[k]  = 1;
+      g->cs[k]     = 0;
+      g->cm[k]     = 1;
+      g->h[k]      = 1.0;
       g->nranks[k] = 1;
     } else {
       g->h[k]  = (g->hi[k] - g->lo[k]) / g->cells[k];
@@ -87,8 +87,10 @@ PetscMPIInt MPMOwnerRank(const MPMGrid *g, const PetscReal x[])
     PetscInt       lo = 0, hi = g->nranks[k];
     while (hi - lo > 1) { /* bisection in the ownership ranges */
       const PetscInt mid = (lo + hi) / 2;
-      if (g->rank_start[k][mid] <= i) lo = mid;
-      else hi = mid;
+      if (g->rank_start[k][mid] <= i)
+        lo = mid;
+      else
+        hi = mid;
     }
     r[k] = lo;
   }

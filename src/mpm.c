@@ -3,9 +3,9 @@
    explicit steps, the materials and the physics the scene selects. */
 #include "petmpmimpl.h"
 
-const char *const MPMSchemes[]             = {"usl", "musl", "MPMScheme", "MPM_SCHEME_", NULL};
-const char *const MPMStressIntegrations[]  = {"cell", "point", "MPMStressIntegration", "MPM_STRESS_", NULL};
-const char *const MPMBoundaryTypes[]       = {"wall", "free", "MPMBoundaryType", "MPM_BC_", NULL};
+const char *const MPMSchemes[]            = {"usl", "musl", "MPMScheme", "MPM_SCHEME_", NULL};
+const char *const MPMStressIntegrations[] = {"cell", "point", "MPMStressIntegration", "MPM_STRESS_", NULL};
+const char *const MPMBoundaryTypes[]      = {"wall", "free", "MPMBoundaryType", "MPM_BC_", NULL};
 
 PETSC_EXTERN PetscErrorCode MPMShapeCreate_Linear(MPMShape);
 PETSC_EXTERN PetscErrorCode MPMEOSCreate_IdealGas(MPMEOS);
@@ -17,8 +17,8 @@ PETSC_EXTERN PetscErrorCode MPMUpdateCreate_Blend(MPMUpdate);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_None(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_Riemann(MPMExact);
 
-static PetscBool     MPMPackageInitialized = PETSC_FALSE;
-static PetscClassId  MPM_CLASSID;
+static PetscBool    MPMPackageInitialized = PETSC_FALSE;
+static PetscClassId MPM_CLASSID;
 
 /* Registers every type of every class: a new type is one file plus one line here. */
 PetscErrorCode MPMInitializePackage(void)
@@ -46,13 +46,13 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   PetscFunctionBegin;
   PetscCall(MPMInitializePackage());
   PetscCall(PetscNew(&m));
-  m->comm            = comm;
-  m->grid.dim        = 1;
-  m->ppc             = 2;
-  m->cfl             = 0.4;
-  m->dtmin           = 0.0;
-  m->output_interval = 0;
-  m->scheme          = MPM_SCHEME_USL;
+  m->comm               = comm;
+  m->grid.dim           = 1;
+  m->ppc                = 2;
+  m->cfl                = 0.5;
+  m->dtmin              = 0.0;
+  m->output_interval    = 0;
+  m->scheme             = MPM_SCHEME_USL;
   m->stress_integration = MPM_STRESS_CELL;
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
     m->grid.cells[k] = 1;
@@ -100,7 +100,7 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscCall(PetscOptionsRangeInt("-mpm_dim", "Space dimension d of the grid [-], 1 to 3", "", g->dim, &g->dim, NULL, 1, 3));
   {
     PetscInt cells[MPM_MAX_DIM] = {g->cells[0], g->cells[1], g->cells[2]};
-    n = MPM_MAX_DIM;
+    n                           = MPM_MAX_DIM;
     PetscCall(PetscOptionsIntArray("-mpm_cells", "Cells per direction N[,M[,K]] [-]", "", cells, &n, &set));
     if (set) {
       PetscCheck(n == g->dim, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_cells needs %" PetscInt_FMT " comma-separated values for a %" PetscInt_FMT "D scene, got %" PetscInt_FMT, g->dim, g->dim, n);
@@ -122,11 +122,13 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   n = MPM_MAX_DIM;
   PetscCall(PetscOptionsEnumArray("-mpm_bc_lo", "Boundary at the lower face of each direction", "", MPMBoundaryTypes, (PetscEnum *)mpm->bc_lo, &n, &set));
   PetscCheck(!set || n == g->dim || n == 1, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_bc_lo needs %" PetscInt_FMT " values (wall or free), got %" PetscInt_FMT, g->dim, n);
-  if (set && n == 1) for (PetscInt k = 1; k < MPM_MAX_DIM; k++) mpm->bc_lo[k] = mpm->bc_lo[0];
+  if (set && n == 1)
+    for (PetscInt k = 1; k < MPM_MAX_DIM; k++) mpm->bc_lo[k] = mpm->bc_lo[0];
   n = MPM_MAX_DIM;
   PetscCall(PetscOptionsEnumArray("-mpm_bc_hi", "Boundary at the upper face of each direction", "", MPMBoundaryTypes, (PetscEnum *)mpm->bc_hi, &n, &set));
   PetscCheck(!set || n == g->dim || n == 1, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_bc_hi needs %" PetscInt_FMT " values (wall or free), got %" PetscInt_FMT, g->dim, n);
-  if (set && n == 1) for (PetscInt k = 1; k < MPM_MAX_DIM; k++) mpm->bc_hi[k] = mpm->bc_hi[0];
+  if (set && n == 1)
+    for (PetscInt k = 1; k < MPM_MAX_DIM; k++) mpm->bc_hi[k] = mpm->bc_hi[0];
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-mpm_gravity", "Body acceleration g [cm/s^2]; enables the gravity module", g->dim, mpm->gravity));
   for (PetscInt k = 0; k < g->dim; k++) mpm->has_gravity = (PetscBool)(mpm->has_gravity || mpm->gravity[k] != 0.0);
   PetscCall(PetscOptionsString("-mpm_output", "Output directory DIR (DIR/petmpm.h5, DIR/petmpm.xmf)", "", mpm->outdir, mpm->outdir, sizeof(mpm->outdir), NULL));
@@ -146,8 +148,8 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
 /* Fails on options nobody read, so that a misspelled option never silently does nothing. */
 static PetscErrorCode MPMCheckUnusedOptions(MPM mpm)
 {
-  PetscInt  n;
-  char    **names, **values;
+  PetscInt n;
+  char   **names, **values;
 
   PetscFunctionBegin;
   PetscCall(PetscOptionsLeftGet(NULL, &n, &names, &values));
@@ -184,8 +186,10 @@ PetscErrorCode MPMSetUp(MPM mpm)
   if (mpm->scheme == MPM_SCHEME_MUSL) PetscCall(PetscLogEventRegister("MPMRemapMomentum", MPM_CLASSID, &mpm->log.remap));
   if (mpm->has_gravity) PetscCall(PetscLogEventRegister("MPMGravity", MPM_CLASSID, &mpm->log.gravity));
   PetscCall(MPMViscosityIsActive(mpm->viscosity, &active));
-  if (active) PetscCall(PetscLogEventRegister("MPMViscosity", MPM_CLASSID, &mpm->log.viscosity));
-  else PetscCall(MPMViscosityDestroy(&mpm->viscosity)); /* none: the module is not in the step */
+  if (active)
+    PetscCall(PetscLogEventRegister("MPMViscosity", MPM_CLASSID, &mpm->log.viscosity));
+  else
+    PetscCall(MPMViscosityDestroy(&mpm->viscosity)); /* none: the module is not in the step */
 
   PetscCall(MPMCreateGrid(mpm));
   PetscCall(MPMCreatePoints(mpm));
@@ -210,13 +214,18 @@ PetscErrorCode MPMView(MPM mpm, PetscViewer viewer)
   PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
   PetscCall(PetscViewerASCIIPrintf(viewer, "MPM scene '%s': %" PetscInt_FMT "D, %d rank(s)\n", mpm->scene, g->dim, size));
   PetscCall(PetscViewerASCIIPushTab(viewer));
-  for (PetscInt k = 0; k < g->dim; k++) PetscCall(PetscViewerASCIIPrintf(viewer, "direction %" PetscInt_FMT ": [%g, %g] cm, %" PetscInt_FMT " cells of %g cm, %s/%s boundaries\n", k, (double)g->lo[k], (double)g->hi[k], g->cells[k], (double)g->h[k], MPMBoundaryTypes[mpm->bc_lo[k]], MPMBoundaryTypes[mpm->bc_hi[k]]));
-  PetscCall(PetscViewerASCIIPrintf(viewer, "%" PetscInt_FMT " points (%" PetscInt_FMT " per cell per direction), CFL %g, scheme %s, stress integration %s\n", mpm->npoints0, mpm->ppc, (double)mpm->cfl, MPMSchemes[mpm->scheme], MPMStressIntegrations[mpm->stress_integration]));
+  for (PetscInt k = 0; k < g->dim; k++)
+    PetscCall(PetscViewerASCIIPrintf(viewer, "direction %" PetscInt_FMT ": [%g, %g] cm, %" PetscInt_FMT " cells of %g cm, %s/%s boundaries\n", k, (double)g->lo[k], (double)g->hi[k], g->cells[k], (double)g->h[k], MPMBoundaryTypes[mpm->bc_lo[k]],
+                                     MPMBoundaryTypes[mpm->bc_hi[k]]));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "%" PetscInt_FMT " points (%" PetscInt_FMT " per cell per direction), CFL %g, scheme %s, stress integration %s\n", mpm->npoints0, mpm->ppc, (double)mpm->cfl, MPMSchemes[mpm->scheme],
+                                   MPMStressIntegrations[mpm->stress_integration]));
   if (mpm->has_gravity) PetscCall(PetscViewerASCIIPrintf(viewer, "gravity (%g, %g, %g) cm/s^2\n", (double)mpm->gravity[0], (double)mpm->gravity[1], (double)mpm->gravity[2]));
   PetscCall(MPMShapeView(mpm->shape, viewer));
   PetscCall(MPMUpdateView(mpm->update, viewer));
-  if (mpm->viscosity) PetscCall(MPMViscosityView(mpm->viscosity, viewer));
-  else PetscCall(PetscViewerASCIIPrintf(viewer, "Artificial viscosity: none\n"));
+  if (mpm->viscosity)
+    PetscCall(MPMViscosityView(mpm->viscosity, viewer));
+  else
+    PetscCall(PetscViewerASCIIPrintf(viewer, "Artificial viscosity: none\n"));
   PetscCall(MPMSceneView(mpm, viewer));
   if (mpm->exact) PetscCall(MPMExactView(mpm->exact, viewer));
   PetscCall(PetscViewerASCIIPopTab(viewer));

@@ -35,7 +35,8 @@ static PetscErrorCode MPMEnsureWritableDir(MPI_Comm comm, const char dir[], cons
       FILE *fp;
       PetscCall(PetscSNPrintf(probe, sizeof(probe), "%s/.petmpm-probe-%d", dir, (int)getpid()));
       fp = fopen(probe, "w");
-      if (!fp) err = errno;
+      if (!fp)
+        err = errno;
       else {
         fclose(fp);
         remove(probe);
@@ -57,8 +58,10 @@ PetscErrorCode MPMOutputOpen(MPM mpm)
     char dir[PETSC_MAX_PATH_LEN], *slash;
     PetscCall(PetscStrncpy(dir, mpm->report, sizeof(dir)));
     slash = strrchr(dir, '/');
-    if (slash) *slash = 0;
-    else PetscCall(PetscStrncpy(dir, ".", sizeof(dir)));
+    if (slash)
+      *slash = 0;
+    else
+      PetscCall(PetscStrncpy(dir, ".", sizeof(dir)));
     PetscCall(MPMEnsureWritableDir(mpm->comm, slash == dir ? "/" : dir, "-mpm_report"));
   }
   PetscCall(PetscSNPrintf(file, sizeof(file), "%s/petmpm.h5", mpm->outdir));
@@ -104,7 +107,8 @@ static PetscErrorCode MPMWriteXDMF(MPM mpm)
         fprintf(fp, "      <DataItem Dimensions=\"3 2\" Format=\"XML\">%" PetscInt_FMT " 0 1 1 1 %" PetscInt_FMT "</DataItem>\n", s, N);
         fprintf(fp, "      <DataItem Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">petmpm.h5:/particle_fields/%s</DataItem>\n", S, N, MPMFieldTable[f].name);
       } else {
-        fprintf(fp, "    <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"Node\">\n     <DataItem ItemType=\"HyperSlab\" Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT "\" Type=\"HyperSlab\">\n", MPMFieldTable[f].name, bs == 3 ? "Vector" : "Matrix", N, bs);
+        fprintf(fp, "    <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"Node\">\n     <DataItem ItemType=\"HyperSlab\" Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT "\" Type=\"HyperSlab\">\n", MPMFieldTable[f].name,
+                bs == 3 ? "Vector" : "Matrix", N, bs);
         fprintf(fp, "      <DataItem Dimensions=\"3 3\" Format=\"XML\">%" PetscInt_FMT " 0 0 1 1 1 1 %" PetscInt_FMT " %" PetscInt_FMT "</DataItem>\n", s, N, bs);
         fprintf(fp, "      <DataItem Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT " %" PetscInt_FMT "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">petmpm.h5:/particle_fields/%s</DataItem>\n", S, N, bs, MPMFieldTable[f].name);
       }
@@ -217,7 +221,7 @@ PetscErrorCode MPMOutputWrite(MPM mpm, PetscInt step, PetscReal t)
 /* The exact solution at the final points (same order as the last output), and the output times. */
 PetscErrorCode MPMOutputWriteExact(MPM mpm)
 {
-  const PetscInt d = mpm->grid.dim;
+  const PetscInt d        = mpm->grid.dim;
   const char    *names[4] = {"density", "velocity", "pressure", "temperature"};
   PetscInt       n;
   MPMPoints      pts;
@@ -240,7 +244,8 @@ PetscErrorCode MPMOutputWriteExact(MPM mpm)
       PetscCall(MPMExactEvaluate(mpm->exact, mpm->time, &pts.f[MPM_FIELD_POSITION][p * d], &rho, vel, &pr, &T));
       if (f == 1)
         for (PetscInt k = 0; k < d; k++) a[p * d + k] = vel[k];
-      else a[p] = f == 0 ? rho : (f == 2 ? pr : T);
+      else
+        a[p] = f == 0 ? rho : (f == 2 ? pr : T);
     }
     PetscCall(VecRestoreArray(v, &a));
     PetscCall(PetscViewerHDF5PushGroup(mpm->h5, "/exact"));
@@ -257,8 +262,8 @@ PetscErrorCode MPMOutputClose(MPM mpm)
 {
   PetscFunctionBegin;
   if (mpm->h5 && mpm->noutputs) {
-    Vec          t;
-    PetscMPIInt  rank;
+    Vec         t;
+    PetscMPIInt rank;
     PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
     PetscCall(PetscViewerHDF5PopTimestepping(mpm->h5));
     PetscCall(VecCreateMPI(mpm->comm, rank ? 0 : mpm->noutputs, PETSC_DETERMINE, &t));

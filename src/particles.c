@@ -5,19 +5,19 @@
 #include "petmpmimpl.h"
 
 const MPMFieldInfo MPMFieldTable[MPM_NUM_FIELDS] = {
-  {"position",    0,  "cm",         "position x_p",                               PETSC_TRUE },
-  {"velocity",    0,  "cm/s",       "velocity v_p",                               PETSC_TRUE },
-  {"mass",        1,  "g",          "mass m_p",                                   PETSC_TRUE },
-  {"volume",      1,  "cm^d",       "volume V_p",                                 PETSC_TRUE },
-  {"density",     1,  "g/cm^3",     "density rho_p = m_p / V_p",                  PETSC_TRUE },
-  {"pressure",    1,  "dyn/cm^2",   "pressure p_p from the EOS",                  PETSC_TRUE },
-  {"energy",      1,  "erg/g",      "specific internal energy e_p",               PETSC_TRUE },
-  {"temperature", 1,  "eV",         "temperature T_p",                            PETSC_TRUE },
-  {"soundspeed",  1,  "cm/s",       "sound speed c_p",                            PETSC_FALSE},
-  {"viscosity",   1,  "dyn/cm^2",   "artificial viscous pressure q_p",            PETSC_TRUE },
-  {"gradv",       -1, "1/s",        "velocity gradient L_p = dv/dx, row-major",   PETSC_FALSE},
-  {"material",    1,  "-",          "material index",                             PETSC_TRUE },
-  {"id",          1,  "-",          "persistent id: the point's seeding lattice index", PETSC_TRUE },
+  {"position", 0, "cm", "position x_p", PETSC_TRUE},
+  {"velocity", 0, "cm/s", "velocity v_p", PETSC_TRUE},
+  {"mass", 1, "g", "mass m_p", PETSC_TRUE},
+  {"volume", 1, "cm^d", "volume V_p", PETSC_TRUE},
+  {"density", 1, "g/cm^3", "density rho_p = m_p / V_p", PETSC_TRUE},
+  {"pressure", 1, "dyn/cm^2", "pressure p_p from the EOS", PETSC_TRUE},
+  {"energy", 1, "erg/g", "specific internal energy e_p", PETSC_TRUE},
+  {"temperature", 1, "eV", "temperature T_p", PETSC_TRUE},
+  {"soundspeed", 1, "cm/s", "sound speed c_p", PETSC_FALSE},
+  {"viscosity", 1, "dyn/cm^2", "artificial viscous pressure q_p", PETSC_TRUE},
+  {"gradv", -1, "1/s", "velocity gradient L_p = dv/dx, row-major", PETSC_FALSE},
+  {"material", 1, "-", "material index", PETSC_TRUE},
+  {"id", 1, "-", "persistent id: the point's seeding lattice index", PETSC_TRUE},
 };
 
 static PetscInt MPMFieldBlockSize(PetscInt bs, PetscInt dim)
@@ -94,8 +94,8 @@ PetscErrorCode MPMCreatePoints(MPM mpm)
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   n = 0;
   for (PetscInt s = 0; s < g->ncells * npd; s++) {
-    PetscReal      x[MPM_MAX_DIM], id;
-    PetscInt       r;
+    PetscReal x[MPM_MAX_DIM], id;
+    PetscInt  r;
     MPMSiteAt(g, mpm->ppc, s, x, &id);
     r = MPMRegionAt(mpm, x);
     if (r >= 0) {
@@ -142,7 +142,8 @@ PetscErrorCode MPMMigrate(MPM mpm)
     const PetscReal *xp = &x[p * g->dim];
     PetscBool        in = PETSC_TRUE;
     for (PetscInt k = 0; k < g->dim; k++) in = (PetscBool)(in && xp[k] >= g->lo[k] && xp[k] <= g->hi[k]);
-    if (!in && !nout++) PetscCall(PetscPrintf(PETSC_COMM_SELF, "[%d] step %" PetscInt_FMT ": point %.0f left the domain at x = (%g, %g, %g)\n", rank, mpm->steps, (double)id[p], (double)xp[0], (double)(g->dim > 1 ? xp[1] : 0), (double)(g->dim > 2 ? xp[2] : 0)));
+    if (!in && !nout++)
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "[%d] step %" PetscInt_FMT ": point %.0f left the domain at x = (%g, %g, %g)\n", rank, mpm->steps, (double)id[p], (double)xp[0], (double)(g->dim > 1 ? xp[1] : 0), (double)(g->dim > 2 ? xp[2] : 0)));
     owner[p] = MPMOwnerRank(g, xp);
     if (owner[p] != rank) nmove++;
   }

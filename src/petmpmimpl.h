@@ -3,35 +3,35 @@
 #pragma once
 #include <petmpm.h>
 
-#define MPM_MAX_NAME    64
+#define MPM_MAX_NAME 64
 #define MPM_MAX_STENCIL 216 /* nodes a point can touch: 6^3 covers every planned shape type */
 
 /* Generic class header, in the PETSc pattern: a type name, an options prefix and the type's data. */
-#define MPM_CLASS_HEADER(Ops) \
-  MPI_Comm comm; \
+#define MPM_CLASS_HEADER(Ops)       \
+  MPI_Comm comm;                    \
   char     type_name[MPM_MAX_NAME]; \
-  char    *prefix; \
-  Ops      ops; \
+  char    *prefix;                  \
+  Ops      ops;                     \
   void    *data
 
 /* ------------------------------------------------------------------ grid */
 typedef struct {
-  PetscInt  dim;                   /* number of space dimensions d [-]                        */
-  PetscInt  cells[MPM_MAX_DIM];    /* global cells per direction [-]                          */
-  PetscInt  xs[MPM_MAX_DIM];       /* first owned vertex (also first owned cell) per direction */
-  PetscInt  xm[MPM_MAX_DIM];       /* owned vertices per direction                            */
-  PetscInt  cs[MPM_MAX_DIM];       /* first owned cell per direction                          */
-  PetscInt  cm[MPM_MAX_DIM];       /* owned cells per direction                               */
-  PetscInt  gs[MPM_MAX_DIM];       /* first vertex of the ghosted local box                   */
-  PetscInt  gm[MPM_MAX_DIM];       /* vertices per direction of the ghosted local box         */
-  PetscInt  ncells;                /* owned cells on this rank                                */
-  PetscReal lo[MPM_MAX_DIM];       /* lower corner of the domain [cm]                         */
-  PetscReal hi[MPM_MAX_DIM];       /* upper corner of the domain [cm]                         */
-  PetscReal h[MPM_MAX_DIM];        /* cell size [cm]                                          */
-  PetscReal hmin;                  /* smallest cell size [cm]                                 */
-  PetscReal vcell;                 /* cell volume h_x h_y h_z [cm^d]                          */
+  PetscInt  dim;                     /* number of space dimensions d [-]                        */
+  PetscInt  cells[MPM_MAX_DIM];      /* global cells per direction [-]                          */
+  PetscInt  xs[MPM_MAX_DIM];         /* first owned vertex (also first owned cell) per direction */
+  PetscInt  xm[MPM_MAX_DIM];         /* owned vertices per direction                            */
+  PetscInt  cs[MPM_MAX_DIM];         /* first owned cell per direction                          */
+  PetscInt  cm[MPM_MAX_DIM];         /* owned cells per direction                               */
+  PetscInt  gs[MPM_MAX_DIM];         /* first vertex of the ghosted local box                   */
+  PetscInt  gm[MPM_MAX_DIM];         /* vertices per direction of the ghosted local box         */
+  PetscInt  ncells;                  /* owned cells on this rank                                */
+  PetscReal lo[MPM_MAX_DIM];         /* lower corner of the domain [cm]                         */
+  PetscReal hi[MPM_MAX_DIM];         /* upper corner of the domain [cm]                         */
+  PetscReal h[MPM_MAX_DIM];          /* cell size [cm]                                          */
+  PetscReal hmin;                    /* smallest cell size [cm]                                 */
+  PetscReal vcell;                   /* cell volume h_x h_y h_z [cm^d]                          */
   PetscInt *rank_start[MPM_MAX_DIM]; /* first owned cell of each rank column, size p_d + 1    */
-  PetscInt  nranks[MPM_MAX_DIM];   /* ranks per direction                                     */
+  PetscInt  nranks[MPM_MAX_DIM];     /* ranks per direction                                     */
 } MPMGrid;
 
 /* Nodal data: a struct overlay on the DMDA vector (dof = sizeof(MPMNode)/sizeof(PetscScalar)). */
@@ -87,7 +87,7 @@ typedef struct {
 
 /* ------------------------------------------------------------------ classes */
 typedef struct {
-  PetscInt (*support)(void *);                                              /* ghost width the type needs [cells] */
+  PetscInt (*support)(void *);                                                                    /* ghost width the type needs [cells] */
   void (*basis1d)(void *, PetscReal, PetscInt, PetscInt *, PetscInt *, PetscReal[], PetscReal[]); /* xi = (x-lo)/h, cells -> first node, count, N, dN/dxi */
   PetscErrorCode (*setfromoptions)(MPMShape, PetscOptionItems *);
   PetscErrorCode (*view)(MPMShape, PetscViewer);
@@ -98,9 +98,9 @@ struct _p_MPMShape {
 };
 
 typedef struct {
-  void (*pressure)(void *, PetscReal, PetscReal, PetscReal *, PetscReal *);   /* (rho, e) -> p, c^2     */
-  void (*temperature)(void *, PetscReal, PetscReal, PetscReal *);             /* (rho, e) -> T          */
-  void (*energy)(void *, PetscReal, PetscReal, PetscReal *);                  /* (rho, T) -> e          */
+  void (*pressure)(void *, PetscReal, PetscReal, PetscReal *, PetscReal *); /* (rho, e) -> p, c^2     */
+  void (*temperature)(void *, PetscReal, PetscReal, PetscReal *);           /* (rho, e) -> T          */
+  void (*energy)(void *, PetscReal, PetscReal, PetscReal *);                /* (rho, T) -> e          */
   PetscErrorCode (*setfromoptions)(MPMEOS, PetscOptionItems *);
   PetscErrorCode (*view)(MPMEOS, PetscViewer);
   PetscErrorCode (*destroy)(MPMEOS);
@@ -149,18 +149,18 @@ typedef struct {
 } MPMMaterial;
 
 typedef struct {
-  char      name[MPM_MAX_NAME];     /* region name used in option prefixes -region_<name>_ */
-  PetscInt  material;               /* index into MPM::mat                                 */
-  PetscReal lo[MPM_MAX_DIM];        /* box lower corner [cm]                               */
-  PetscReal hi[MPM_MAX_DIM];        /* box upper corner [cm]                               */
-  PetscReal rho;                    /* initial density [g/cm^3]                            */
-  PetscReal T;                      /* initial temperature [eV]                            */
-  PetscReal v[MPM_MAX_DIM];         /* initial velocity [cm/s]                             */
+  char      name[MPM_MAX_NAME]; /* region name used in option prefixes -region_<name>_ */
+  PetscInt  material;           /* index into MPM::mat                                 */
+  PetscReal lo[MPM_MAX_DIM];    /* box lower corner [cm]                               */
+  PetscReal hi[MPM_MAX_DIM];    /* box upper corner [cm]                               */
+  PetscReal rho;                /* initial density [g/cm^3]                            */
+  PetscReal T;                  /* initial temperature [eV]                            */
+  PetscReal v[MPM_MAX_DIM];     /* initial velocity [cm/s]                             */
 } MPMRegion;
 
 #define MPM_MAX_MATERIALS 16
-#define MPM_MAX_REGIONS   32
-#define MPM_MAX_CHECKS    16
+#define MPM_MAX_REGIONS 32
+#define MPM_MAX_CHECKS 16
 
 typedef struct {
   char      name[MPM_MAX_NAME];
@@ -180,14 +180,14 @@ struct _p_MPM {
   char                 outdir[PETSC_MAX_PATH_LEN]; /* output directory                                  */
   char                 report[PETSC_MAX_PATH_LEN]; /* JSON report file, empty for none                  */
   MPMGrid              grid;
-  PetscInt             ppc;                        /* points per cell per direction                     */
-  PetscReal            cfl;                        /* Courant number                                    */
-  PetscReal            dtmin;                      /* smallest time step before the run is stopped [s]  */
-  PetscInt             output_interval;            /* steps between outputs, 0: start and end only      */
+  PetscInt             ppc;             /* points per cell per direction                     */
+  PetscReal            cfl;             /* Courant number                                    */
+  PetscReal            dtmin;           /* smallest time step before the run is stopped [s]  */
+  PetscInt             output_interval; /* steps between outputs, 0: start and end only      */
   MPMScheme            scheme;
   MPMStressIntegration stress_integration;
   MPMBoundaryType      bc_lo[MPM_MAX_DIM], bc_hi[MPM_MAX_DIM];
-  PetscReal            gravity[MPM_MAX_DIM];        /* body acceleration g [cm/s^2]                      */
+  PetscReal            gravity[MPM_MAX_DIM]; /* body acceleration g [cm/s^2]                      */
   PetscBool            has_gravity;
   PetscBool            view;
   PetscInt             nmat, nreg;
@@ -199,29 +199,29 @@ struct _p_MPM {
   MPMViscosity viscosity; /* NULL when the scene asks for none: not in the step */
   MPMExact     exact;     /* NULL when the scene has no exact solution          */
   /* discretization */
-  DM        da;     /* background grid, dof = MPM_NODE_DOF                       */
-  DM        swarm;  /* material points, DMSWARM_BASIC                            */
-  Vec       nodes;  /* global nodal vector                                       */
-  Vec       lnodes; /* ghosted local nodal vector                                */
+  DM         da;            /* background grid, dof = MPM_NODE_DOF                       */
+  DM         swarm;         /* material points, DMSWARM_BASIC                            */
+  Vec        nodes;         /* global nodal vector                                       */
+  Vec        lnodes;        /* ghosted local nodal vector                                */
   PetscReal *cellV, *cellS; /* per owned cell: sum V_p, sum V_p (p_p + q_p)      */
-  TS        ts;
-  Vec       tsu;    /* the TS state: empty; the MPM state lives in the grid and swarm */
+  TS         ts;
+  Vec        tsu; /* the TS state: empty; the MPM state lives in the grid and swarm */
   /* output */
-  PetscViewer h5;       /* HDF5 file DIR/petmpm.h5, open for the run                 */
-  DM          daout;    /* grid output layout: nodal mass and velocity (dof 1 + d)   */
+  PetscViewer h5;    /* HDF5 file DIR/petmpm.h5, open for the run                 */
+  DM          daout; /* grid output layout: nodal mass and velocity (dof 1 + d)   */
   PetscInt    last_output_step;
   /* run bookkeeping */
-  PetscInt  npoints0;      /* global number of points at start                    */
-  PetscReal mass0, energy0, momentum0[MPM_MAX_DIM];
-  PetscReal wall_loop, wall_setup, wall_output;
-  PetscInt  steps;
-  PetscReal time;
-  PetscInt  noutputs;
+  PetscInt   npoints0; /* global number of points at start                    */
+  PetscReal  mass0, energy0, momentum0[MPM_MAX_DIM];
+  PetscReal  wall_loop, wall_setup, wall_output;
+  PetscInt   steps;
+  PetscReal  time;
+  PetscInt   noutputs;
   PetscReal *output_times;
-  PetscInt  output_times_cap;
-  PetscInt  nchecks;
-  MPMCheck  checks[MPM_MAX_CHECKS];
-  MPMLog    log;
+  PetscInt   output_times_cap;
+  PetscInt   nchecks;
+  MPMCheck   checks[MPM_MAX_CHECKS];
+  MPMLog     log;
 };
 
 /* Internal API */

@@ -24,9 +24,9 @@ PetscErrorCode MPMAddCheck(MPM mpm, const char name[], PetscReal value, PetscRea
 /* err[q][0..2]: L1, L2, Linf of field q; nonfinite and min density over all points. */
 static PetscErrorCode MPMComputeErrors(MPM mpm, PetscReal err[][3], PetscInt *nonfinite, PetscReal *rhomin)
 {
-  const PetscInt d = mpm->grid.dim;
+  const PetscInt d                = mpm->grid.dim;
   PetscReal      sum[MPM_NERR][4] = {{0}}, mx[MPM_NERR][2] = {{0}}; /* sum V|e|, sum V|q|, sum V e^2, sum V q^2; max|e|, max|q| */
-  PetscInt       bad = 0;
+  PetscInt       bad  = 0;
   PetscReal      rmin = PETSC_MAX_REAL;
   MPMPoints      pts;
 
@@ -104,11 +104,14 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   }
   pss = mpm->wall_loop > 0 ? (PetscReal)npoints * mpm->steps / mpm->wall_loop : 0.0;
 
-  PetscCall(PetscPrintf(mpm->comm, "petmpm %s: %" PetscInt_FMT " points, %" PetscInt_FMT " steps to t = %g s in %.3f s (%.3g point-steps/s on %d rank(s))\n", mpm->scene, npoints, mpm->steps, (double)mpm->time, (double)mpm->wall_loop, (double)pss, size));
-  PetscCall(PetscPrintf(mpm->comm, "  conservation: mass %.3e, total energy %.3e (relative change); min density %g; %" PetscInt_FMT " non-finite values\n", (double)MPMRelErr(mass, mpm->mass0), (double)MPMRelErr(energy, mpm->energy0), (double)rhomin, nonfinite));
+  PetscCall(
+    PetscPrintf(mpm->comm, "petmpm %s: %" PetscInt_FMT " points, %" PetscInt_FMT " steps to t = %g s in %.3f s (%.3g point-steps/s on %d rank(s))\n", mpm->scene, npoints, mpm->steps, (double)mpm->time, (double)mpm->wall_loop, (double)pss, size));
+  PetscCall(PetscPrintf(mpm->comm, "  conservation: mass %.3e, total energy %.3e (relative change); min density %g; %" PetscInt_FMT " non-finite values\n", (double)MPMRelErr(mass, mpm->mass0), (double)MPMRelErr(energy, mpm->energy0), (double)rhomin,
+                        nonfinite));
   if (mpm->exact) {
     for (PetscInt q = 0; q < MPM_NERR; q++) PetscCall(PetscPrintf(mpm->comm, "  %-12s error: L1 %.4e  L2 %.4e  Linf %.4e\n", MPMErrorNames[q], (double)err[q][0], (double)err[q][1], (double)err[q][2]));
-    for (PetscInt c = 0; c < mpm->nchecks; c++) PetscCall(PetscPrintf(mpm->comm, "  check %-17s %.6g (exact %.6g, rel. error %.3e)\n", mpm->checks[c].name, (double)mpm->checks[c].value, (double)mpm->checks[c].reference, (double)MPMRelErr(mpm->checks[c].value, mpm->checks[c].reference)));
+    for (PetscInt c = 0; c < mpm->nchecks; c++)
+      PetscCall(PetscPrintf(mpm->comm, "  check %-17s %.6g (exact %.6g, rel. error %.3e)\n", mpm->checks[c].name, (double)mpm->checks[c].value, (double)mpm->checks[c].reference, (double)MPMRelErr(mpm->checks[c].value, mpm->checks[c].reference)));
   }
   if (!mpm->report[0] || rank) PetscFunctionReturn(PETSC_SUCCESS);
   {
@@ -120,8 +123,10 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     fprintf(fp, "{\n  \"scene\": \"%s\",\n  \"dim\": %" PetscInt_FMT ",\n  \"cells\": [", mpm->scene, g->dim);
     for (PetscInt k = 0; k < g->dim; k++) fprintf(fp, "%s%" PetscInt_FMT, k ? ", " : "", g->cells[k]);
     fprintf(fp, "],\n  \"points_per_cell\": %" PetscInt_FMT ",\n  \"particles\": %" PetscInt_FMT ",\n  \"ranks\": %d,\n", mpm->ppc, npoints, size);
-    fprintf(fp, "  \"shape\": \"%s\",\n  \"update\": \"%s\",\n  \"viscosity\": \"%s\",\n  \"scheme\": \"%s\",\n  \"stress_integration\": \"%s\",\n", mpm->shape->type_name, mpm->update->type_name, mpm->viscosity ? mpm->viscosity->type_name : "none", MPMSchemes[mpm->scheme], MPMStressIntegrations[mpm->stress_integration]);
-    fprintf(fp, "  \"steps\": %" PetscInt_FMT ",\n  \"time\": %.17g,\n  \"wall_seconds\": %.6g,\n  \"setup_seconds\": %.6g,\n  \"output_seconds\": %.6g,\n", mpm->steps, (double)mpm->time, (double)mpm->wall_loop, (double)mpm->wall_setup, (double)mpm->wall_output);
+    fprintf(fp, "  \"shape\": \"%s\",\n  \"update\": \"%s\",\n  \"viscosity\": \"%s\",\n  \"scheme\": \"%s\",\n  \"stress_integration\": \"%s\",\n", mpm->shape->type_name, mpm->update->type_name, mpm->viscosity ? mpm->viscosity->type_name : "none",
+            MPMSchemes[mpm->scheme], MPMStressIntegrations[mpm->stress_integration]);
+    fprintf(fp, "  \"steps\": %" PetscInt_FMT ",\n  \"time\": %.17g,\n  \"wall_seconds\": %.6g,\n  \"setup_seconds\": %.6g,\n  \"output_seconds\": %.6g,\n", mpm->steps, (double)mpm->time, (double)mpm->wall_loop, (double)mpm->wall_setup,
+            (double)mpm->wall_output);
     fprintf(fp, "  \"particle_steps_per_second\": %.6g,\n  \"particle_steps_per_second_per_rank\": %.6g,\n", (double)pss, (double)(pss / size));
     if (mpm->exact) {
       fprintf(fp, "  \"errors\": {\n");
@@ -132,7 +137,9 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     fprintf(fp, "  \"conservation\": {\"mass\": %.6e, \"total_energy\": %.6e, \"momentum\": [", (double)((mass - mpm->mass0) / mpm->mass0), (double)(mpm->energy0 != 0 ? (energy - mpm->energy0) / PetscAbsReal(mpm->energy0) : energy));
     for (PetscInt k = 0; k < g->dim; k++) fprintf(fp, "%s%.6e", k ? ", " : "", (double)(mom[k] - mpm->momentum0[k]));
     fprintf(fp, "]},\n  \"min_density\": %.10g,\n  \"nonfinite\": %" PetscInt_FMT ",\n  \"checks\": [", (double)rhomin, nonfinite);
-    for (PetscInt c = 0; c < mpm->nchecks; c++) fprintf(fp, "%s\n    {\"name\": \"%s\", \"value\": %.10g, \"reference\": %.10g, \"rel_error\": %.6e}", c ? "," : "", mpm->checks[c].name, (double)mpm->checks[c].value, (double)mpm->checks[c].reference, (double)MPMRelErr(mpm->checks[c].value, mpm->checks[c].reference));
+    for (PetscInt c = 0; c < mpm->nchecks; c++)
+      fprintf(fp, "%s\n    {\"name\": \"%s\", \"value\": %.10g, \"reference\": %.10g, \"rel_error\": %.6e}", c ? "," : "", mpm->checks[c].name, (double)mpm->checks[c].value, (double)mpm->checks[c].reference,
+              (double)MPMRelErr(mpm->checks[c].value, mpm->checks[c].reference));
     fprintf(fp, "%s]\n}\n", mpm->nchecks ? "\n  " : "");
     PetscCheck(!fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write the report %s: %s", tmp, strerror(errno));
     PetscCheck(!rename(tmp, mpm->report), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot rename %s to %s: %s", tmp, mpm->report, strerror(errno));

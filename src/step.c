@@ -11,12 +11,12 @@
    the cell rule does not feel how many points a cell happens to hold, so it has no cell-crossing noise. */
 static PetscErrorCode MPMScatter(MPM mpm, PetscBool force)
 {
-  const MPMGrid *g = &mpm->grid;
-  const PetscInt d = g->dim;
+  const MPMGrid  *g        = &mpm->grid;
+  const PetscInt  d        = g->dim;
   const PetscBool cellrule = (PetscBool)(force && mpm->stress_integration == MPM_STRESS_CELL);
-  MPMStencil     st;
-  MPMPoints      pts;
-  MPMNode       *node;
+  MPMStencil      st;
+  MPMPoints       pts;
+  MPMNode        *node;
 
   PetscFunctionBegin;
   PetscCall(VecZeroEntries(mpm->lnodes));
@@ -105,7 +105,7 @@ static PetscErrorCode MPMGravity(MPM mpm)
 {
   const PetscInt d = mpm->grid.dim;
 
-  MPMNode       *node;
+  MPMNode *node;
 
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(mpm->log.gravity, 0, 0, 0, 0));
@@ -155,8 +155,8 @@ static PetscErrorCode MPMGridAdvance(MPM mpm, PetscReal dt)
    kinematics: x_p += dt sum N_I v_I,  L_p = sum v_I (x) grad N_I. */
 static PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscBool velocity, PetscBool kinematics)
 {
-  const MPMGrid  *g = &mpm->grid;
-  const PetscInt  d = g->dim;
+  const MPMGrid  *g     = &mpm->grid;
+  const PetscInt  d     = g->dim;
   const PetscReal alpha = mpm->update->alpha;
   MPMStencil      st;
   MPMPoints       pts;
@@ -262,7 +262,7 @@ static PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
       PetscReal       e1, ppred, c2;
 
       MPMEOSPressureKernel(E, rho1, e[p] - (pr[p] + q[p]) * dvol, &ppred, &c2); /* predictor */
-      e1 = e[p] - (0.5 * (pr[p] + ppred) + q[p]) * dvol;                      /* corrector */
+      e1 = e[p] - (0.5 * (pr[p] + ppred) + q[p]) * dvol;                        /* corrector */
       MPMEOSPressureKernel(E, rho1, e1, &pr[p], &c2);
       E->ops.temperature(E->data, rho1, e1, &T[p]);
       e[p]   = e1;
@@ -274,7 +274,8 @@ static PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
     if (bad >= 0) {
       PetscMPIInt rank;
       PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
-      PetscCall(PetscPrintf(PETSC_COMM_SELF, "[%d] step %" PetscInt_FMT ", t = %g s: point %.0f at x = %g cm has rho = %g g/cm^3, e = %g erg/g, p = %g dyn/cm^2, c^2 = %g (det(I + dt L) = %g)\n", rank, mpm->steps, (double)mpm->time, (double)pts.f[MPM_FIELD_ID][bad], (double)pts.f[MPM_FIELD_POSITION][bad * d], (double)rho[bad], (double)e[bad], (double)pr[bad], (double)(c[bad] * c[bad]), (double)MPMDetIPlusDtL(d, dt, &L[bad * d * d])));
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "[%d] step %" PetscInt_FMT ", t = %g s: point %.0f at x = %g cm has rho = %g g/cm^3, e = %g erg/g, p = %g dyn/cm^2, c^2 = %g (det(I + dt L) = %g)\n", rank, mpm->steps, (double)mpm->time,
+                            (double)pts.f[MPM_FIELD_ID][bad], (double)pts.f[MPM_FIELD_POSITION][bad * d], (double)rho[bad], (double)e[bad], (double)pr[bad], (double)(c[bad] * c[bad]), (double)MPMDetIPlusDtL(d, dt, &L[bad * d * d])));
     }
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
@@ -308,14 +309,14 @@ PetscErrorCode MPMProjectToGrid(MPM mpm)
 PetscErrorCode MPMStep(MPM mpm, PetscReal dt)
 {
   PetscFunctionBegin;
-  PetscCall(MPMParticlesToGrid(mpm));                                          /* m_I, (mv)_I, f_I = f_int       */
-  if (mpm->has_gravity) PetscCall(MPMGravity(mpm));                            /* f_I += m_I g                   */
-  PetscCall(MPMGridAdvance(mpm, dt));                                          /* (mv)_I += dt f_I; walls        */
-  PetscCall(MPMGridToParticles(mpm, dt));                                      /* v_p; USL: x_p, L_p             */
-  if (mpm->scheme == MPM_SCHEME_MUSL) PetscCall(MPMRemapMomentum(mpm, dt));    /* MUSL: v_I from v_p; x_p, L_p   */
-  if (mpm->viscosity) PetscCall(MPMViscosityApply(mpm->viscosity, mpm, dt));   /* q_p                            */
-  PetscCall(MPMConstitutive(mpm, dt));                                         /* rho_p, e_p, p_p, c_p, T_p      */
-  PetscCall(MPMMigrate(mpm));                                                  /* points follow their cells      */
+  PetscCall(MPMParticlesToGrid(mpm));                                        /* m_I, (mv)_I, f_I = f_int       */
+  if (mpm->has_gravity) PetscCall(MPMGravity(mpm));                          /* f_I += m_I g                   */
+  PetscCall(MPMGridAdvance(mpm, dt));                                        /* (mv)_I += dt f_I; walls        */
+  PetscCall(MPMGridToParticles(mpm, dt));                                    /* v_p; USL: x_p, L_p             */
+  if (mpm->scheme == MPM_SCHEME_MUSL) PetscCall(MPMRemapMomentum(mpm, dt));  /* MUSL: v_I from v_p; x_p, L_p   */
+  if (mpm->viscosity) PetscCall(MPMViscosityApply(mpm->viscosity, mpm, dt)); /* q_p                            */
+  PetscCall(MPMConstitutive(mpm, dt));                                       /* rho_p, e_p, p_p, c_p, T_p      */
+  PetscCall(MPMMigrate(mpm));                                                /* points follow their cells      */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -341,8 +342,8 @@ PetscErrorCode MPMConstitutiveInitialize(MPM mpm)
    so that the artificial viscosity's own (diffusive) limit is respected. */
 PetscErrorCode MPMComputeTimeStep(MPM mpm, PetscReal *dt)
 {
-  const PetscInt  d = mpm->grid.dim;
-  const PetscReal h = mpm->grid.hmin;
+  const PetscInt  d    = mpm->grid.dim;
+  const PetscReal h    = mpm->grid.hmin;
   PetscReal       smax = 0.0;
   MPMPoints       pts;
 
@@ -370,15 +371,15 @@ PetscErrorCode MPMComputeTimeStep(MPM mpm, PetscReal *dt)
 /* Total mass sum m_p, total energy sum m_p (e_p + |v_p|^2 / 2) and momentum sum m_p v_p over all ranks. */
 PetscErrorCode MPMGlobalSums(MPM mpm, PetscReal *mass, PetscReal *energy, PetscReal momentum[])
 {
-  const PetscInt d = mpm->grid.dim;
+  const PetscInt d                  = mpm->grid.dim;
   PetscReal      s[2 + MPM_MAX_DIM] = {0, 0, 0, 0, 0};
   MPMPoints      pts;
 
   PetscFunctionBegin;
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   for (PetscInt p = 0; p < pts.n; p++) {
-    const PetscReal  m = pts.f[MPM_FIELD_MASS][p], *v = &pts.f[MPM_FIELD_VELOCITY][p * d];
-    PetscReal        v2 = 0.0;
+    const PetscReal m = pts.f[MPM_FIELD_MASS][p], *v = &pts.f[MPM_FIELD_VELOCITY][p * d];
+    PetscReal       v2 = 0.0;
     for (PetscInt k = 0; k < d; k++) {
       v2 += v[k] * v[k];
       s[2 + k] += m * v[k];

@@ -44,7 +44,8 @@ int main(int argc, char **argv)
   if (!(worst_c < 1e-6)) fails++;
   if (!(worst_T < 1e-14)) fails++;
   if (!(worst_p < 1e-14)) fails++;
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s idealgas: sound speed vs isentropic FD rel. error %.2e (tol 1e-6), T round trip %.1e (tol 1e-14), p = (gamma-1) rho Cv T %.1e (tol 1e-14)\n", fails ? "FAILED" : "PASSED", (double)worst_c, (double)worst_T, (double)worst_p));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s idealgas: sound speed vs isentropic FD rel. error %.2e (tol 1e-6), T round trip %.1e (tol 1e-14), p = (gamma-1) rho Cv T %.1e (tol 1e-14)\n", fails ? "FAILED" : "PASSED", (double)worst_c, (double)worst_T,
+                        (double)worst_p));
   PetscCall(MPMEOSDestroy(&eos));
   PetscCall(PetscFinalize());
   return fails ? 1 : 0;

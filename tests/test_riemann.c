@@ -19,7 +19,7 @@ int main(int argc, char **argv)
   const PetscReal    TsL[2] = {0.300732785, 0.862038271}, TsR[2] = {0.267154608, 1.32517507};
   const PetscReal    SR[2] = {3.61164406e5, 9.39538588e5}, SHL[2] = {-3.34499626e5, -6.68999253e5}, STL[2] = {-3.52959223e4, 2.46721261e5};
   const char        *name[2] = {"weak", "strong"};
-  PetscInt           fails = 0;
+  PetscInt           fails   = 0;
   MPMRiemannSolution sol;
 
   PetscFunctionBeginUser;

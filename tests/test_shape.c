@@ -6,10 +6,10 @@
 
 static PetscErrorCode CheckType(const char type[], PetscInt dim, PetscReal *worst)
 {
-  MPMShape   shape;
-  MPMGrid    g;
-  MPMStencil st;
-  PetscInt   width;
+  MPMShape    shape;
+  MPMGrid     g;
+  MPMStencil  st;
+  PetscInt    width;
   PetscRandom rnd;
 
   PetscFunctionBegin;
@@ -63,9 +63,9 @@ static PetscErrorCode CheckType(const char type[], PetscInt dim, PetscReal *wors
 
 int main(int argc, char **argv)
 {
-  const char  *types[] = {MPMSHAPELINEAR};
-  const PetscReal tol = 1e-12;
-  PetscInt     fails = 0;
+  const char     *types[] = {MPMSHAPELINEAR};
+  const PetscReal tol     = 1e-12;
+  PetscInt        fails   = 0;
 
   PetscFunctionBeginUser;
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
@@ -76,7 +76,8 @@ int main(int argc, char **argv)
       PetscCall(CheckType(types[t], dim, worst));
       ok = (PetscBool)(worst[0] < tol && worst[1] < tol && worst[2] < tol && worst[3] < tol);
       if (!ok) fails++;
-      PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s %s %" PetscInt_FMT "D: |sum N - 1| %.1e, |sum grad N| h %.1e, |sum N x_I - x|/h %.1e, |sum x_I grad N - I| %.1e (tol %.0e)\n", ok ? "PASSED" : "FAILED", types[t], dim, (double)worst[0], (double)worst[1], (double)worst[2], (double)worst[3], (double)tol));
+      PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s %s %" PetscInt_FMT "D: |sum N - 1| %.1e, |sum grad N| h %.1e, |sum N x_I - x|/h %.1e, |sum x_I grad N - I| %.1e (tol %.0e)\n", ok ? "PASSED" : "FAILED", types[t], dim, (double)worst[0],
+                            (double)worst[1], (double)worst[2], (double)worst[3], (double)tol));
     }
   }
   PetscCall(PetscFinalize());

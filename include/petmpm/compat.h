@@ -4,7 +4,7 @@
 #include <petscsys.h>
 
 #if PETSC_VERSION_LT(3, 19, 0)
-  #ifndef PETSC_SUCCESS
-    #define PETSC_SUCCESS 0
-  #endif
+#  ifndef PETSC_SUCCESS
+#    define PETSC_SUCCESS 0
+#  endif
 #endif

@@ -36,7 +36,7 @@ PetscErrorCode MPMEOSSetType(MPMEOS eos, MPMEOSType type)
 
   PetscFunctionBegin;
   PetscCall(PetscSNPrintf(option, sizeof(option), "-%seos_type", eos->prefix ? eos->prefix : ""));
-  PetscCall(MPMClassSetType(MPMEOSList, "equation of state", option, type, (PetscErrorCode(**)(void *))&create));
+  PetscCall(MPMClassSetType(MPMEOSList, "equation of state", option, type, (PetscErrorCode(**)(void *)) & create));
   if (eos->ops.destroy) PetscCall(eos->ops.destroy(eos));
   PetscCall(PetscMemzero(&eos->ops, sizeof(eos->ops)));
   eos->data = NULL;

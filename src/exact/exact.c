@@ -27,7 +27,7 @@ PetscErrorCode MPMExactSetType(MPMExact exact, MPMExactType type)
   PetscErrorCode (*create)(MPMExact);
 
   PetscFunctionBegin;
-  PetscCall(MPMClassSetType(MPMExactList, "exact solution", "-mpm_exact_type", type, (PetscErrorCode(**)(void *))&create));
+  PetscCall(MPMClassSetType(MPMExactList, "exact solution", "-mpm_exact_type", type, (PetscErrorCode(**)(void *)) & create));
   if (exact->ops.destroy) PetscCall(exact->ops.destroy(exact));
   PetscCall(PetscMemzero(&exact->ops, sizeof(exact->ops)));
   exact->data = NULL;

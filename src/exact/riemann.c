@@ -17,8 +17,8 @@ static void RiemannF(const MPMRiemannState *s, PetscReal p, PetscReal *f, PetscR
     *df = q * (1.0 - 0.5 * (p - s->p) / (B + p));
   } else {
     const PetscReal r = p / s->p;
-    *f  = 2.0 * c / (g - 1.0) * (PetscPowReal(r, (g - 1.0) / (2.0 * g)) - 1.0);
-    *df = 1.0 / (s->rho * c) * PetscPowReal(r, -(g + 1.0) / (2.0 * g));
+    *f                = 2.0 * c / (g - 1.0) * (PetscPowReal(r, (g - 1.0) / (2.0 * g)) - 1.0);
+    *df               = 1.0 / (s->rho * c) * PetscPowReal(r, -(g + 1.0) / (2.0 * g));
   }
 }
 
@@ -79,12 +79,12 @@ PetscErrorCode MPMRiemannSolve(const MPMRiemannState *L, const MPMRiemannState *
 /* The solution at similarity coordinate S = (x - x0)/t (Toro, section 4.5). */
 void MPMRiemannSample(const MPMRiemannSolution *sol, PetscReal S, PetscReal *rho, PetscReal *u, PetscReal *p)
 {
-  const PetscBool         left = S <= sol->ustar ? PETSC_TRUE : PETSC_FALSE;
-  const MPMRiemannState  *K    = left ? &sol->L : &sol->R;
-  const PetscReal         sign = left ? -1.0 : 1.0, g = K->gamma, c = PetscSqrtReal(g * K->p / K->rho);
-  const PetscBool         shock = left ? sol->shockL : sol->shockR;
-  const PetscReal         rhostar = left ? sol->rhostarL : sol->rhostarR;
-  const PetscReal         SH = left ? sol->SHL : sol->SHR, ST = left ? sol->STL : sol->STR;
+  const PetscBool        left = S <= sol->ustar ? PETSC_TRUE : PETSC_FALSE;
+  const MPMRiemannState *K    = left ? &sol->L : &sol->R;
+  const PetscReal        sign = left ? -1.0 : 1.0, g = K->gamma, c = PetscSqrtReal(g * K->p / K->rho);
+  const PetscBool        shock   = left ? sol->shockL : sol->shockR;
+  const PetscReal        rhostar = left ? sol->rhostarL : sol->rhostarR;
+  const PetscReal        SH = left ? sol->SHL : sol->SHR, ST = left ? sol->STL : sol->STR;
 
   if (shock) {
     const PetscReal Sshock = left ? sol->SL : sol->SR;
@@ -108,8 +108,8 @@ void MPMRiemannSample(const MPMRiemannSolution *sol, PetscReal S, PetscReal *rho
   } else { /* inside the fan, Toro eq. (4.56) and (4.63) */
     const PetscReal a = 2.0 / (g + 1.0), b = (g - 1.0) / ((g + 1.0) * c);
     const PetscReal r = PetscPowReal(a - sign * b * (K->u - S), 2.0 / (g - 1.0));
-    *rho = K->rho * r;
-    *u   = a * (-sign * c + 0.5 * (g - 1.0) * K->u + S);
-    *p   = K->p * PetscPowReal(a - sign * b * (K->u - S), 2.0 * g / (g - 1.0));
+    *rho              = K->rho * r;
+    *u                = a * (-sign * c + 0.5 * (g - 1.0) * K->u + S);
+    *p                = K->p * PetscPowReal(a - sign * b * (K->u - S), 2.0 * g / (g - 1.0));
   }
 }

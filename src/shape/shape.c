@@ -27,7 +27,7 @@ PetscErrorCode MPMShapeSetType(MPMShape shape, MPMShapeType type)
   PetscErrorCode (*create)(MPMShape);
 
   PetscFunctionBegin;
-  PetscCall(MPMClassSetType(MPMShapeList, "shape function", "-mpm_shape_type", type, (PetscErrorCode(**)(void *))&create));
+  PetscCall(MPMClassSetType(MPMShapeList, "shape function", "-mpm_shape_type", type, (PetscErrorCode(**)(void *)) & create));
   if (shape->ops.destroy) PetscCall(shape->ops.destroy(shape));
   PetscCall(PetscMemzero(&shape->ops, sizeof(shape->ops)));
   shape->data = NULL;

@@ -29,7 +29,7 @@ PetscErrorCode MPMUpdateSetType(MPMUpdate update, MPMUpdateType type)
   PetscErrorCode (*create)(MPMUpdate);
 
   PetscFunctionBegin;
-  PetscCall(MPMClassSetType(MPMUpdateList, "particle update", "-mpm_update_type", type, (PetscErrorCode(**)(void *))&create));
+  PetscCall(MPMClassSetType(MPMUpdateList, "particle update", "-mpm_update_type", type, (PetscErrorCode(**)(void *)) & create));
   if (update->ops.destroy) PetscCall(update->ops.destroy(update));
   PetscCall(PetscMemzero(&update->ops, sizeof(update->ops)));
   update->data = NULL;

@@ -28,7 +28,7 @@ PetscErrorCode MPMViscositySetType(MPMViscosity visc, MPMViscosityType type)
   PetscErrorCode (*create)(MPMViscosity);
 
   PetscFunctionBegin;
-  PetscCall(MPMClassSetType(MPMViscosityList, "artificial viscosity", "-mpm_viscosity_type", type, (PetscErrorCode(**)(void *))&create));
+  PetscCall(MPMClassSetType(MPMViscosityList, "artificial viscosity", "-mpm_viscosity_type", type, (PetscErrorCode(**)(void *)) & create));
   if (visc->ops.destroy) PetscCall(visc->ops.destroy(visc));
   PetscCall(PetscMemzero(&visc->ops, sizeof(visc->ops)));
   visc->data = NULL;

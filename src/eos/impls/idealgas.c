@@ -64,7 +64,7 @@ static PetscErrorCode MPMEOSDestroy_IdealGas(MPMEOS eos)
 /* The exact Riemann solver needs gamma and Cv: only ideal-gas materials have them. */
 PetscErrorCode MPMEOSIdealGasGetParameters(MPMEOS eos, PetscReal *gamma, PetscReal *cv)
 {
-  PetscBool      isig;
+  PetscBool     isig;
   EOS_IdealGas *ig = (EOS_IdealGas *)eos->data;
 
   PetscFunctionBegin;
@@ -81,14 +81,14 @@ PetscErrorCode MPMEOSCreate_IdealGas(MPMEOS eos)
 
   PetscFunctionBegin;
   PetscCall(PetscNew(&ig));
-  ig->gamma                = 1.4;
-  ig->cv                   = 8.33e10; /* air */
-  eos->data                = ig;
-  eos->ops.pressure        = MPMEOSPressure_IdealGas;
-  eos->ops.temperature     = MPMEOSTemperature_IdealGas;
-  eos->ops.energy          = MPMEOSEnergy_IdealGas;
-  eos->ops.setfromoptions  = MPMEOSSetFromOptions_IdealGas;
-  eos->ops.view            = MPMEOSView_IdealGas;
-  eos->ops.destroy         = MPMEOSDestroy_IdealGas;
+  ig->gamma               = 1.4;
+  ig->cv                  = 8.33e10; /* air */
+  eos->data               = ig;
+  eos->ops.pressure       = MPMEOSPressure_IdealGas;
+  eos->ops.temperature    = MPMEOSTemperature_IdealGas;
+  eos->ops.energy         = MPMEOSEnergy_IdealGas;
+  eos->ops.setfromoptions = MPMEOSSetFromOptions_IdealGas;
+  eos->ops.view           = MPMEOSView_IdealGas;
+  eos->ops.destroy        = MPMEOSDestroy_IdealGas;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -10,17 +10,17 @@
 #include "../../petmpmimpl.h"
 
 typedef struct {
-  PetscReal          x0;       /* initial discontinuity [cm]           */
-  PetscReal          cv[2];    /* specific heats left, right [erg/(g eV)] */
+  PetscReal          x0;    /* initial discontinuity [cm]           */
+  PetscReal          cv[2]; /* specific heats left, right [erg/(g eV)] */
   MPMRiemannSolution sol;
 } Exact_Riemann;
 
 static void MPMExactEvaluate_Riemann(void *ctx, PetscReal t, const PetscReal x[], PetscReal *rho, PetscReal v[], PetscReal *p, PetscReal *T)
 {
-  const Exact_Riemann *er = (const Exact_Riemann *)ctx;
-  const PetscReal      S  = t > 0 ? (x[0] - er->x0) / t : (x[0] <= er->x0 ? -PETSC_MAX_REAL : PETSC_MAX_REAL);
+  const Exact_Riemann *er   = (const Exact_Riemann *)ctx;
+  const PetscReal      S    = t > 0 ? (x[0] - er->x0) / t : (x[0] <= er->x0 ? -PETSC_MAX_REAL : PETSC_MAX_REAL);
   const PetscBool      left = S <= er->sol.ustar ? PETSC_TRUE : PETSC_FALSE;
-  const PetscReal      g = left ? er->sol.L.gamma : er->sol.R.gamma;
+  const PetscReal      g    = left ? er->sol.L.gamma : er->sol.R.gamma;
 
   MPMRiemannSample(&er->sol, S, rho, &v[0], p);
   v[1] = v[2] = 0.0;

@@ -21,8 +21,8 @@ static inline PetscReal VNRViscosity(PetscReal cq, PetscReal cl, PetscReal rho, 
 static PetscErrorCode MPMViscosityApply_VNR(MPMViscosity visc, MPM mpm, PetscReal dt)
 {
   Visc_VNR       *vnr = (Visc_VNR *)visc->data;
-  const PetscInt  d = mpm->grid.dim;
-  const PetscReal h = mpm->grid.hmin;
+  const PetscInt  d   = mpm->grid.dim;
+  const PetscReal h   = mpm->grid.hmin;
   MPMPoints       pts;
 
   PetscFunctionBegin;
