@@ -118,6 +118,24 @@ def test_parallel():
             check(worst < 1e-10, f"{ranks} ranks vs 1: largest relative field difference {worst:.2e} < 1e-10")
 
 
+def test_dimensions():
+    """The same tube on a 2D grid (one rank) and a 3D grid (two ranks) gives the 1D answer to round-off:
+    uniform in y and z, with walls there, the multi-dimensional step must reduce to the 1D one."""
+    with tempfile.TemporaryDirectory() as d:
+        base = ["-mpm_cells", "128", "-mpm_ppc", "2"]
+        r1, _ = sod(os.path.join(d, "1"), base)
+        tube2 = ["-mpm_dim", "2", "-mpm_cells", "128,3", "-mpm_ppc", "2", "-mpm_lo", "0,0", "-mpm_hi", "20,0.46875",
+                 "-region_left_lo", "0,0", "-region_left_hi", "8,1", "-region_right_lo", "8,0", "-region_right_hi", "20,1"]
+        tube3 = ["-mpm_dim", "3", "-mpm_cells", "128,2,2", "-mpm_ppc", "2", "-mpm_lo", "0,0,0", "-mpm_hi", "20,0.3125,0.3125",
+                 "-region_left_lo", "0,0,0", "-region_left_hi", "8,1,1", "-region_right_lo", "8,0,0", "-region_right_hi", "20,1,1"]
+        for name, args, ranks in (("2D", tube2, 1), ("3D", tube3, 2)):
+            r, _ = sod(os.path.join(d, name), args, ranks)
+            for q in ("density", "velocity", "pressure", "temperature"):
+                a, b = r["errors"][q]["L1"], r1["errors"][q]["L1"]
+                check(abs(a - b) <= 1e-9 * b, f"{name} tube on {ranks} rank(s): L1 {q} error {a:.10e} equals 1D {b:.10e}")
+            check(r["steps"] == r1["steps"], f"{name}: {r['steps']} steps == 1D {r1['steps']}")
+
+
 def test_output():
     """HDF5 holds every particle field at every output with one row per point, the XDMF file is valid XML
     that points at existing datasets, and -ts_max_steps stops the run."""
