@@ -41,7 +41,7 @@ PetscErrorCode MPMPointsRestoreArrays(MPM mpm, MPMPoints *pts)
 }
 
 /* Region index of the first region holding x, or -1. */
-static PetscInt MPMRegionAt(MPM mpm, const PetscReal x[])
+PetscInt MPMRegionAt(MPM mpm, const PetscReal x[])
 {
   for (PetscInt r = 0; r < mpm->nreg; r++) {
     PetscBool in = PETSC_TRUE;

@@ -233,6 +233,7 @@ PETSC_INTERN PetscErrorCode MPMPointsRestoreArrays(MPM, MPMPoints *);
 PETSC_INTERN PetscErrorCode MPMMigrate(MPM);
 PETSC_INTERN PetscInt       MPMLocalCell(const MPMGrid *, const PetscReal[]);
 PETSC_INTERN PetscMPIInt    MPMOwnerRank(const MPMGrid *, const PetscReal[]);
+PETSC_INTERN PetscInt       MPMRegionAt(MPM, const PetscReal[]);
 PETSC_INTERN PetscErrorCode MPMStep(MPM, PetscReal);
 PETSC_INTERN PetscErrorCode MPMProjectToGrid(MPM);
 PETSC_INTERN PetscErrorCode MPMOutputWriteExact(MPM);

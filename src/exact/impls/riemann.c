@@ -36,12 +36,8 @@ static PetscErrorCode RiemannSceneState(MPM mpm, PetscReal x0, PetscReal shift, 
   PetscFunctionBegin;
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) x[k] = 0.5 * (mpm->grid.lo[k] + mpm->grid.hi[k]);
   x[0] = x0 + shift;
-  for (r = 0; r < mpm->nreg; r++) {
-    PetscBool in = PETSC_TRUE;
-    for (PetscInt k = 0; k < mpm->grid.dim; k++) in = (PetscBool)(in && x[k] >= mpm->reg[r].lo[k] && x[k] <= mpm->reg[r].hi[k]);
-    if (in) break;
-  }
-  PetscCheck(r < mpm->nreg, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_riemann_x0 %g: no region holds x = %g", (double)x0, (double)x[0]);
+  r    = MPMRegionAt(mpm, x);
+  PetscCheck(r >= 0, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_riemann_x0 %g: no region holds x = %g", (double)x0, (double)x[0]);
   {
     MPMEOS    eos = mpm->mat[mpm->reg[r].material].eos;
     PetscReal e, c2;
