@@ -47,3 +47,43 @@ PetscErrorCode MPMOptionsCheckRange(const char option[], PetscReal value, PetscR
   PetscCheck(!bad, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %g is out of range: valid is %s%g, %g%s", option, (double)value, strictlo ? "(" : "[", (double)lo, (double)hi, stricthi ? ")" : "]");
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+/* A list option with one value per dimension, or one value for every direction. Errors name the option
+   with the prefix of the options block it is read in. */
+static PetscErrorCode MPMOptionsCheckDimCount(PetscOptionItems *PetscOptionsObject, const char opt[], PetscInt dim, PetscInt n)
+{
+  PetscFunctionBegin;
+  PetscCheck(n == dim || n == 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%s%s needs %" PetscInt_FMT " comma-separated values (one per dimension) or one for all, got %" PetscInt_FMT, PetscOptionsObject->prefix ? PetscOptionsObject->prefix : "",
+             opt + 1, dim, n);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMOptionsDimReals(PetscOptionItems *PetscOptionsObject, const char opt[], const char text[], PetscInt dim, PetscReal v[])
+{
+  PetscReal vals[MPM_MAX_DIM];
+  PetscInt  n = MPM_MAX_DIM;
+  PetscBool set;
+
+  PetscFunctionBegin;
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) vals[k] = v[k];
+  PetscCall(PetscOptionsRealArray(opt, text, "", vals, &n, &set));
+  if (!set) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MPMOptionsCheckDimCount(PetscOptionsObject, opt, dim, n));
+  for (PetscInt k = 0; k < dim; k++) v[k] = vals[n == 1 ? 0 : k];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMOptionsDimEnums(PetscOptionItems *PetscOptionsObject, const char opt[], const char text[], const char *const names[], PetscInt dim, PetscEnum v[])
+{
+  PetscEnum vals[MPM_MAX_DIM];
+  PetscInt  n = MPM_MAX_DIM;
+  PetscBool set;
+
+  PetscFunctionBegin;
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) vals[k] = v[k];
+  PetscCall(PetscOptionsEnumArray(opt, text, "", names, vals, &n, &set));
+  if (!set) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MPMOptionsCheckDimCount(PetscOptionsObject, opt, dim, n));
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) v[k] = vals[n == 1 ? 0 : PetscMin(k, n - 1)];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -71,23 +71,6 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Reads a list option of exactly dim entries (or one entry, applied to every direction). */
-static PetscErrorCode MPMOptionsDimReals(PetscOptionItems *PetscOptionsObject, const char opt[], const char text[], PetscInt dim, PetscReal v[])
-{
-  PetscReal vals[MPM_MAX_DIM];
-  PetscInt  n = MPM_MAX_DIM;
-  PetscBool set;
-
-  PetscFunctionBegin;
-  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) vals[k] = v[k];
-  PetscCall(PetscOptionsRealArray(opt, text, "", vals, &n, &set));
-  if (set) {
-    PetscCheck(n == dim || n == 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s needs %" PetscInt_FMT " comma-separated values (one per dimension), got %" PetscInt_FMT, opt, dim, n);
-    for (PetscInt k = 0; k < dim; k++) v[k] = vals[n == 1 ? 0 : k];
-  }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode MPMSetFromOptions(MPM mpm)
 {
   MPMGrid  *g = &mpm->grid;
@@ -119,16 +102,8 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscCall(PetscOptionsReal("-mpm_dt_min", "Smallest time step [s]; a smaller CFL step stops the run", "", mpm->dtmin, &mpm->dtmin, NULL));
   PetscCall(PetscOptionsEnum("-mpm_scheme", "Stress update order", "", MPMSchemes, (PetscEnum)mpm->scheme, (PetscEnum *)&mpm->scheme, NULL));
   PetscCall(PetscOptionsEnum("-mpm_stress_integration", "Internal force quadrature: cell-averaged stress or point by point", "", MPMStressIntegrations, (PetscEnum)mpm->stress_integration, (PetscEnum *)&mpm->stress_integration, NULL));
-  n = MPM_MAX_DIM;
-  PetscCall(PetscOptionsEnumArray("-mpm_bc_lo", "Boundary at the lower face of each direction", "", MPMBoundaryTypes, (PetscEnum *)mpm->bc_lo, &n, &set));
-  PetscCheck(!set || n == g->dim || n == 1, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_bc_lo needs %" PetscInt_FMT " values (wall or free), got %" PetscInt_FMT, g->dim, n);
-  if (set && n == 1)
-    for (PetscInt k = 1; k < MPM_MAX_DIM; k++) mpm->bc_lo[k] = mpm->bc_lo[0];
-  n = MPM_MAX_DIM;
-  PetscCall(PetscOptionsEnumArray("-mpm_bc_hi", "Boundary at the upper face of each direction", "", MPMBoundaryTypes, (PetscEnum *)mpm->bc_hi, &n, &set));
-  PetscCheck(!set || n == g->dim || n == 1, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_bc_hi needs %" PetscInt_FMT " values (wall or free), got %" PetscInt_FMT, g->dim, n);
-  if (set && n == 1)
-    for (PetscInt k = 1; k < MPM_MAX_DIM; k++) mpm->bc_hi[k] = mpm->bc_hi[0];
+  PetscCall(MPMOptionsDimEnums(PetscOptionsObject, "-mpm_bc_lo", "Boundary at the lower face of each direction", MPMBoundaryTypes, g->dim, (PetscEnum *)mpm->bc_lo));
+  PetscCall(MPMOptionsDimEnums(PetscOptionsObject, "-mpm_bc_hi", "Boundary at the upper face of each direction", MPMBoundaryTypes, g->dim, (PetscEnum *)mpm->bc_hi));
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-mpm_gravity", "Body acceleration g [cm/s^2]; enables the gravity module", g->dim, mpm->gravity));
   for (PetscInt k = 0; k < g->dim; k++) mpm->has_gravity = (PetscBool)(mpm->has_gravity || mpm->gravity[k] != 0.0);
   PetscCall(PetscOptionsString("-mpm_output", "Output directory DIR (DIR/petmpm.h5, DIR/petmpm.xmf)", "", mpm->outdir, mpm->outdir, sizeof(mpm->outdir), NULL));

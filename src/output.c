@@ -100,8 +100,8 @@ static PetscErrorCode MPMWriteXDMF(MPM mpm)
     fprintf(fp, "      <DataItem Dimensions=\"3 3\" Format=\"XML\">%" PetscInt_FMT " 0 0 1 1 1 1 %" PetscInt_FMT " 3</DataItem>\n", s, N);
     fprintf(fp, "      <DataItem Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">petmpm.h5:/particle_fields/xyz</DataItem>\n     </DataItem>\n    </Geometry>\n", S, N);
     for (PetscInt f = 0; f < MPM_NUM_FIELDS; f++) {
-      const PetscInt bs = MPMFieldTable[f].bs == 0 ? mpm->grid.dim : 1;
-      if (!MPMFieldTable[f].output || MPMFieldTable[f].bs < 0) continue;
+      const PetscInt bs = MPMFieldBlockSize(MPMFieldTable[f].bs, mpm->grid.dim);
+      if (!MPMFieldTable[f].output || bs > MPM_MAX_DIM) continue; /* tensors have no XDMF attribute here */
       if (bs == 1) {
         fprintf(fp, "    <Attribute Name=\"%s\" AttributeType=\"Scalar\" Center=\"Node\">\n     <DataItem ItemType=\"HyperSlab\" Dimensions=\"%" PetscInt_FMT "\" Type=\"HyperSlab\">\n", MPMFieldTable[f].name, N);
         fprintf(fp, "      <DataItem Dimensions=\"3 2\" Format=\"XML\">%" PetscInt_FMT " 0 1 1 1 %" PetscInt_FMT "</DataItem>\n", s, N);
@@ -197,9 +197,7 @@ PetscErrorCode MPMOutputWrite(MPM mpm, PetscInt step, PetscReal t)
     PetscCall(VecView(v, mpm->h5));
     PetscCall(DMSwarmDestroyGlobalVectorFromField(mpm->swarm, MPMFieldTable[f].name, &v));
   }
-  PetscCall(PetscViewerHDF5SetTimestep(mpm->h5, k));
   PetscCall(MPMWriteXYZ(mpm));
-  PetscCall(PetscViewerHDF5SetTimestep(mpm->h5, k));
   PetscCall(MPMWriteGrid(mpm));
   if (mpm->noutputs == mpm->output_times_cap) {
     PetscReal *times;

@@ -20,7 +20,8 @@ const MPMFieldInfo MPMFieldTable[MPM_NUM_FIELDS] = {
   {"id", 1, "-", "persistent id: the point's seeding lattice index", PETSC_TRUE},
 };
 
-static PetscInt MPMFieldBlockSize(PetscInt bs, PetscInt dim)
+/* Block size of a table entry: 0 means d, -1 means d*d. */
+PetscInt MPMFieldBlockSize(PetscInt bs, PetscInt dim)
 {
   return bs == 0 ? dim : (bs < 0 ? dim * dim : bs);
 }

@@ -226,6 +226,9 @@ struct _p_MPM {
 
 /* Internal API */
 PETSC_INTERN PetscErrorCode MPMOptionsCheckRange(const char[], PetscReal, PetscReal, PetscReal, PetscBool, PetscBool);
+PETSC_INTERN PetscErrorCode MPMOptionsDimReals(PetscOptionItems *, const char[], const char[], PetscInt, PetscReal[]);
+PETSC_INTERN PetscErrorCode MPMOptionsDimEnums(PetscOptionItems *, const char[], const char[], const char *const[], PetscInt, PetscEnum[]);
+PETSC_INTERN PetscInt       MPMFieldBlockSize(PetscInt, PetscInt);
 PETSC_INTERN PetscErrorCode MPMCreateGrid(MPM);
 PETSC_INTERN PetscErrorCode MPMCreatePoints(MPM);
 PETSC_INTERN PetscErrorCode MPMPointsGetArrays(MPM, MPMPoints *);
@@ -259,6 +262,16 @@ PETSC_INTERN PetscErrorCode MPMClassTypeList(PetscFunctionList, char[], size_t);
 static inline void MPMEOSPressureKernel(MPMEOS eos, PetscReal rho, PetscReal e, PetscReal *p, PetscReal *c2)
 {
   eos->ops.pressure(eos->data, rho, e, p, c2);
+}
+
+static inline void MPMEOSTemperatureKernel(MPMEOS eos, PetscReal rho, PetscReal e, PetscReal *T)
+{
+  eos->ops.temperature(eos->data, rho, e, T);
+}
+
+static inline void MPMEOSEnergyKernel(MPMEOS eos, PetscReal rho, PetscReal T, PetscReal *e)
+{
+  eos->ops.energy(eos->data, rho, T, e);
 }
 
 #define MPM_MAX_1D 8 /* nodes per direction a 1D basis can touch */

@@ -34,7 +34,7 @@ static PetscErrorCode MPMComputeErrors(MPM mpm, PetscReal err[][3], PetscInt *no
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   for (PetscInt p = 0; p < pts.n; p++) {
     for (PetscInt f = 0; f < MPM_NUM_FIELDS; f++) {
-      const PetscInt bs = MPMFieldTable[f].bs == 0 ? d : (MPMFieldTable[f].bs < 0 ? d * d : 1);
+      const PetscInt bs = MPMFieldBlockSize(MPMFieldTable[f].bs, d);
       for (PetscInt k = 0; k < bs; k++)
         if (PetscIsInfOrNanReal(pts.f[f][p * bs + k])) bad++;
     }
@@ -85,7 +85,7 @@ static PetscReal MPMRelErr(PetscReal v, PetscReal r)
 PetscErrorCode MPMWriteReport(MPM mpm)
 {
   const MPMGrid *g = &mpm->grid;
-  PetscReal      err[MPM_NERR][3], rhomin = 0, mass, energy, mom[MPM_MAX_DIM], shock_cells = -1.0, pss;
+  PetscReal      err[MPM_NERR][3], rhomin = 0, dmass, denergy, mass, energy, mom[MPM_MAX_DIM], shock_cells = -1.0, pss;
   PetscInt       nonfinite = 0, npoints;
   PetscMPIInt    size, rank;
 
@@ -102,12 +102,13 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     PetscCall(PetscStrcmp(mpm->checks[c].name, "shock_position", &is));
     if (is) shock_cells = PetscAbsReal(mpm->checks[c].value - mpm->checks[c].reference) / g->h[0];
   }
-  pss = mpm->wall_loop > 0 ? (PetscReal)npoints * mpm->steps / mpm->wall_loop : 0.0;
+  dmass   = (mass - mpm->mass0) / mpm->mass0; /* signed relative changes, printed and reported alike */
+  denergy = mpm->energy0 != 0 ? (energy - mpm->energy0) / PetscAbsReal(mpm->energy0) : energy;
+  pss     = mpm->wall_loop > 0 ? (PetscReal)npoints * mpm->steps / mpm->wall_loop : 0.0;
 
   PetscCall(
     PetscPrintf(mpm->comm, "petmpm %s: %" PetscInt_FMT " points, %" PetscInt_FMT " steps to t = %g s in %.3f s (%.3g point-steps/s on %d rank(s))\n", mpm->scene, npoints, mpm->steps, (double)mpm->time, (double)mpm->wall_loop, (double)pss, size));
-  PetscCall(PetscPrintf(mpm->comm, "  conservation: mass %.3e, total energy %.3e (relative change); min density %g; %" PetscInt_FMT " non-finite values\n", (double)MPMRelErr(mass, mpm->mass0), (double)MPMRelErr(energy, mpm->energy0), (double)rhomin,
-                        nonfinite));
+  PetscCall(PetscPrintf(mpm->comm, "  conservation: mass %.3e, total energy %.3e (relative change); min density %g; %" PetscInt_FMT " non-finite values\n", (double)dmass, (double)denergy, (double)rhomin, nonfinite));
   if (mpm->exact) {
     for (PetscInt q = 0; q < MPM_NERR; q++) PetscCall(PetscPrintf(mpm->comm, "  %-12s error: L1 %.4e  L2 %.4e  Linf %.4e\n", MPMErrorNames[q], (double)err[q][0], (double)err[q][1], (double)err[q][2]));
     for (PetscInt c = 0; c < mpm->nchecks; c++)
@@ -134,7 +135,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
       fprintf(fp, "  },\n");
     }
     if (shock_cells >= 0) fprintf(fp, "  \"shock_position_error_cells\": %.6g,\n", (double)shock_cells);
-    fprintf(fp, "  \"conservation\": {\"mass\": %.6e, \"total_energy\": %.6e, \"momentum\": [", (double)((mass - mpm->mass0) / mpm->mass0), (double)(mpm->energy0 != 0 ? (energy - mpm->energy0) / PetscAbsReal(mpm->energy0) : energy));
+    fprintf(fp, "  \"conservation\": {\"mass\": %.6e, \"total_energy\": %.6e, \"momentum\": [", (double)dmass, (double)denergy);
     for (PetscInt k = 0; k < g->dim; k++) fprintf(fp, "%s%.6e", k ? ", " : "", (double)(mom[k] - mpm->momentum0[k]));
     fprintf(fp, "]},\n  \"min_density\": %.10g,\n  \"nonfinite\": %" PetscInt_FMT ",\n  \"checks\": [", (double)rhomin, nonfinite);
     for (PetscInt c = 0; c < mpm->nchecks; c++)

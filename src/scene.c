@@ -32,7 +32,7 @@ static PetscErrorCode MPMSceneNames(PetscOptionItems *PetscOptionsObject, const 
 static PetscErrorCode MPMRegionSetFromOptions(MPM mpm, MPMRegion *r)
 {
   char      prefix[MPM_MAX_NAME + 16], mat[MPM_MAX_NAME] = "", opt[MPM_MAX_NAME + 32];
-  PetscInt  d = mpm->grid.dim, n;
+  PetscInt  d = mpm->grid.dim;
   PetscBool set;
 
   PetscFunctionBegin;
@@ -44,17 +44,11 @@ static PetscErrorCode MPMRegionSetFromOptions(MPM mpm, MPMRegion *r)
   r->rho = -1.0;
   PetscOptionsBegin(mpm->comm, prefix, "Region of the scene", "MPM");
   PetscCall(PetscOptionsString("-material", "Material that fills the region (one of -mpm_materials)", "", mat, mat, sizeof(mat), &set));
-  n = MPM_MAX_DIM;
-  PetscCall(PetscOptionsRealArray("-lo", "Lower corner of the region's box [cm]", "", r->lo, &n, &set));
-  PetscCheck(!set || n == d, mpm->comm, PETSC_ERR_USER_INPUT, "-%slo needs %" PetscInt_FMT " values", prefix, d);
-  n = MPM_MAX_DIM;
-  PetscCall(PetscOptionsRealArray("-hi", "Upper corner of the region's box [cm]", "", r->hi, &n, &set));
-  PetscCheck(!set || n == d, mpm->comm, PETSC_ERR_USER_INPUT, "-%shi needs %" PetscInt_FMT " values", prefix, d);
+  PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-lo", "Lower corner of the region's box [cm]", d, r->lo));
+  PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-hi", "Upper corner of the region's box [cm]", d, r->hi));
   PetscCall(PetscOptionsReal("-density", "Initial density rho [g/cm^3], > 0", "", r->rho, &r->rho, NULL));
   PetscCall(PetscOptionsReal("-temperature", "Initial temperature T [eV], >= 0", "", r->T, &r->T, NULL));
-  n = MPM_MAX_DIM;
-  PetscCall(PetscOptionsRealArray("-velocity", "Initial velocity v [cm/s]", "", r->v, &n, &set));
-  PetscCheck(!set || n == d, mpm->comm, PETSC_ERR_USER_INPUT, "-%svelocity needs %" PetscInt_FMT " values", prefix, d);
+  PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-velocity", "Initial velocity v [cm/s]", d, r->v));
   PetscOptionsEnd();
   for (r->material = 0; r->material < mpm->nmat; r->material++) {
     PetscBool match;

@@ -264,7 +264,7 @@ static PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
       MPMEOSPressureKernel(E, rho1, e[p] - (pr[p] + q[p]) * dvol, &ppred, &c2); /* predictor */
       e1 = e[p] - (0.5 * (pr[p] + ppred) + q[p]) * dvol;                        /* corrector */
       MPMEOSPressureKernel(E, rho1, e1, &pr[p], &c2);
-      E->ops.temperature(E->data, rho1, e1, &T[p]);
+      MPMEOSTemperatureKernel(E, rho1, e1, &T[p]);
       e[p]   = e1;
       rho[p] = rho1;
       V[p]   = m[p] / rho1;
@@ -330,8 +330,8 @@ PetscErrorCode MPMConstitutiveInitialize(MPM mpm)
   for (PetscInt p = 0; p < pts.n; p++) {
     const MPMEOS E = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].eos;
     PetscReal    c2;
-    E->ops.energy(E->data, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_TEMPERATURE][p], &pts.f[MPM_FIELD_ENERGY][p]);
-    E->ops.pressure(E->data, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_ENERGY][p], &pts.f[MPM_FIELD_PRESSURE][p], &c2);
+    MPMEOSEnergyKernel(E, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_TEMPERATURE][p], &pts.f[MPM_FIELD_ENERGY][p]);
+    MPMEOSPressureKernel(E, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_ENERGY][p], &pts.f[MPM_FIELD_PRESSURE][p], &c2);
     pts.f[MPM_FIELD_SOUNDSPEED][p] = PetscSqrtReal(PetscMax(c2, 0.0));
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));

@@ -89,20 +89,20 @@ PetscErrorCode MPMEOSDestroy(MPMEOS *eos)
 PetscErrorCode MPMEOSPressure(MPMEOS eos, PetscReal rho, PetscReal e, PetscReal *p, PetscReal *c2)
 {
   PetscFunctionBegin;
-  eos->ops.pressure(eos->data, rho, e, p, c2);
+  MPMEOSPressureKernel(eos, rho, e, p, c2);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode MPMEOSTemperature(MPMEOS eos, PetscReal rho, PetscReal e, PetscReal *T)
 {
   PetscFunctionBegin;
-  eos->ops.temperature(eos->data, rho, e, T);
+  MPMEOSTemperatureKernel(eos, rho, e, T);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode MPMEOSEnergyFromTemperature(MPMEOS eos, PetscReal rho, PetscReal T, PetscReal *e)
 {
   PetscFunctionBegin;
-  eos->ops.energy(eos->data, rho, T, e);
+  MPMEOSEnergyKernel(eos, rho, T, e);
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -71,7 +71,7 @@ static PetscReal ProfileCrossing(PetscInt n, const PetscReal xc[], const PetscRe
 
   for (PetscInt i = 0; i + 1 < n; i++) {
     const PetscReal a = f[i] - level, b = f[i + 1] - level;
-    if ((a <= 0 && b > 0) || (a >= 0 && b < 0) || (a > 0 && b <= 0) || (a < 0 && b >= 0)) {
+    if ((a <= 0) != (b <= 0)) { /* f - level changes sign between the two bin centres */
       const PetscReal x = xc[i] + (xc[i + 1] - xc[i]) * a / (a - b);
       if (PetscAbsReal(x - xref) < PetscAbsReal(best - xref)) best = x;
     }
