@@ -22,6 +22,9 @@ PETSC_EXTERN const char *const MPMSchemes[];
 
 typedef enum { MPM_STRESS_CELL, MPM_STRESS_POINT } MPMStressIntegration;
 PETSC_EXTERN const char *const MPMStressIntegrations[];
+/* Internal-energy update: with the pressure the force used (compatible) or predictor-corrector midpoint. */
+typedef enum { MPM_ENERGY_COMPATIBLE, MPM_ENERGY_MIDPOINT } MPMEnergyUpdate;
+PETSC_EXTERN const char *const MPMEnergyUpdates[];
 
 typedef enum { MPM_BC_WALL, MPM_BC_FREE } MPMBoundaryType;
 PETSC_EXTERN const char *const MPMBoundaryTypes[];
@@ -34,6 +37,7 @@ typedef const char *MPMEOSType;
 typedef const char *MPMViscosityType;
 #define MPMVISCOSITYNONE "none"
 #define MPMVISCOSITYVNR "vnr"
+#define MPMVISCOSITYLIMITED "limited"
 typedef const char *MPMUpdateType;
 #define MPMUPDATEPIC "pic"
 #define MPMUPDATEFLIP "flip"

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* The background grid: a DMDA of vertices in 1, 2 or 3 dimensions whose ghost width follows the support of
-   the shape functions. Cell i lies between vertices i and i+1 and belongs to the rank owning vertex i,
+   the shape functions, plus the neighbour cells a limited viscosity reads. Cell i lies between vertices i and i+1 and belongs to the rank owning vertex i,
    so every point of a cell lives on one rank and cell averages need no communication. */
 #include "petmpmimpl.h"
 
@@ -12,6 +12,7 @@ PetscErrorCode MPMCreateGrid(MPM mpm)
 
   PetscFunctionBegin;
   PetscCall(MPMShapeGetGhostWidth(mpm->shape, &sw));
+  if (mpm->viscosity) sw += mpm->viscosity->ghost; /* a limiter reads the neighbouring cells */
   for (PetscInt k = 0; k < g->dim; k++) M[k] = g->cells[k] + 1;
   switch (g->dim) {
   case 1:

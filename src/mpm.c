@@ -5,12 +5,14 @@
 
 const char *const MPMSchemes[]            = {"usl", "musl", "MPMScheme", "MPM_SCHEME_", NULL};
 const char *const MPMStressIntegrations[] = {"cell", "point", "MPMStressIntegration", "MPM_STRESS_", NULL};
+const char *const MPMEnergyUpdates[]      = {"compatible", "midpoint", "MPMEnergyUpdate", "MPM_ENERGY_", NULL};
 const char *const MPMBoundaryTypes[]      = {"wall", "free", "MPMBoundaryType", "MPM_BC_", NULL};
 
 PETSC_EXTERN PetscErrorCode MPMShapeCreate_Linear(MPMShape);
 PETSC_EXTERN PetscErrorCode MPMEOSCreate_IdealGas(MPMEOS);
 PETSC_EXTERN PetscErrorCode MPMViscosityCreate_None(MPMViscosity);
 PETSC_EXTERN PetscErrorCode MPMViscosityCreate_VNR(MPMViscosity);
+PETSC_EXTERN PetscErrorCode MPMViscosityCreate_Limited(MPMViscosity);
 PETSC_EXTERN PetscErrorCode MPMUpdateCreate_PIC(MPMUpdate);
 PETSC_EXTERN PetscErrorCode MPMUpdateCreate_FLIP(MPMUpdate);
 PETSC_EXTERN PetscErrorCode MPMUpdateCreate_Blend(MPMUpdate);
@@ -31,6 +33,7 @@ PetscErrorCode MPMInitializePackage(void)
   PetscCall(MPMEOSRegister(MPMEOSIDEALGAS, MPMEOSCreate_IdealGas));
   PetscCall(MPMViscosityRegister(MPMVISCOSITYNONE, MPMViscosityCreate_None));
   PetscCall(MPMViscosityRegister(MPMVISCOSITYVNR, MPMViscosityCreate_VNR));
+  PetscCall(MPMViscosityRegister(MPMVISCOSITYLIMITED, MPMViscosityCreate_Limited));
   PetscCall(MPMUpdateRegister(MPMUPDATEPIC, MPMUpdateCreate_PIC));
   PetscCall(MPMUpdateRegister(MPMUPDATEFLIP, MPMUpdateCreate_FLIP));
   PetscCall(MPMUpdateRegister(MPMUPDATEBLEND, MPMUpdateCreate_Blend));
@@ -54,6 +57,8 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   m->output_interval    = 0;
   m->scheme             = MPM_SCHEME_USL;
   m->stress_integration = MPM_STRESS_CELL;
+  m->energy_update      = MPM_ENERGY_COMPATIBLE;
+  m->ke_fix             = PETSC_TRUE;
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
     m->grid.cells[k] = 1;
     m->grid.lo[k]    = 0.0;
@@ -102,6 +107,8 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscCall(PetscOptionsReal("-mpm_dt_min", "Smallest time step [s]; a smaller CFL step stops the run", "", mpm->dtmin, &mpm->dtmin, NULL));
   PetscCall(PetscOptionsEnum("-mpm_scheme", "Stress update order", "", MPMSchemes, (PetscEnum)mpm->scheme, (PetscEnum *)&mpm->scheme, NULL));
   PetscCall(PetscOptionsEnum("-mpm_stress_integration", "Internal force quadrature: cell-averaged stress or point by point", "", MPMStressIntegrations, (PetscEnum)mpm->stress_integration, (PetscEnum *)&mpm->stress_integration, NULL));
+  PetscCall(PetscOptionsEnum("-mpm_energy_update", "Internal energy de = -(p + q) d(1/rho): p^n, as in the force (compatible), or (p^n + p^{n+1})/2 (midpoint)", "", MPMEnergyUpdates, (PetscEnum)mpm->energy_update, (PetscEnum *)&mpm->energy_update, NULL));
+  PetscCall(PetscOptionsBool("-mpm_ke_fix", "Turn the kinetic energy the grid-to-point velocity map discards into internal energy of the point", "", mpm->ke_fix, &mpm->ke_fix, NULL));
   PetscCall(MPMOptionsDimEnums(PetscOptionsObject, "-mpm_bc_lo", "Boundary at the lower face of each direction", MPMBoundaryTypes, g->dim, (PetscEnum *)mpm->bc_lo));
   PetscCall(MPMOptionsDimEnums(PetscOptionsObject, "-mpm_bc_hi", "Boundary at the upper face of each direction", MPMBoundaryTypes, g->dim, (PetscEnum *)mpm->bc_hi));
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-mpm_gravity", "Body acceleration g [cm/s^2]; enables the gravity module", g->dim, mpm->gravity));
@@ -194,6 +201,7 @@ PetscErrorCode MPMView(MPM mpm, PetscViewer viewer)
                                      MPMBoundaryTypes[mpm->bc_hi[k]]));
   PetscCall(PetscViewerASCIIPrintf(viewer, "%" PetscInt_FMT " points (%" PetscInt_FMT " per cell per direction), CFL %g, scheme %s, stress integration %s\n", mpm->npoints0, mpm->ppc, (double)mpm->cfl, MPMSchemes[mpm->scheme],
                                    MPMStressIntegrations[mpm->stress_integration]));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "energy update %s, kinetic energy fix %s\n", MPMEnergyUpdates[mpm->energy_update], mpm->ke_fix ? "on" : "off"));
   if (mpm->has_gravity) PetscCall(PetscViewerASCIIPrintf(viewer, "gravity (%g, %g, %g) cm/s^2\n", (double)mpm->gravity[0], (double)mpm->gravity[1], (double)mpm->gravity[2]));
   PetscCall(MPMShapeView(mpm->shape, viewer));
   PetscCall(MPMUpdateView(mpm->update, viewer));

@@ -117,6 +117,7 @@ typedef struct {
 } MPMViscosityOps;
 struct _p_MPMViscosity {
   MPM_CLASS_HEADER(MPMViscosityOps);
+  PetscInt ghost; /* grid ghost cells the type reads beyond the shape support [cells] */
 };
 
 typedef struct {
@@ -186,6 +187,8 @@ struct _p_MPM {
   PetscInt             output_interval; /* steps between outputs, 0: start and end only      */
   MPMScheme            scheme;
   MPMStressIntegration stress_integration;
+  MPMEnergyUpdate      energy_update;
+  PetscBool            ke_fix; /* heat the points with the kinetic energy the grid-to-point map discards */
   MPMBoundaryType      bc_lo[MPM_MAX_DIM], bc_hi[MPM_MAX_DIM];
   PetscReal            gravity[MPM_MAX_DIM]; /* body acceleration g [cm/s^2]                      */
   PetscBool            has_gravity;

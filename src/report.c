@@ -126,6 +126,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     fprintf(fp, "],\n  \"points_per_cell\": %" PetscInt_FMT ",\n  \"particles\": %" PetscInt_FMT ",\n  \"ranks\": %d,\n", mpm->ppc, npoints, size);
     fprintf(fp, "  \"shape\": \"%s\",\n  \"update\": \"%s\",\n  \"viscosity\": \"%s\",\n  \"scheme\": \"%s\",\n  \"stress_integration\": \"%s\",\n", mpm->shape->type_name, mpm->update->type_name, mpm->viscosity ? mpm->viscosity->type_name : "none",
             MPMSchemes[mpm->scheme], MPMStressIntegrations[mpm->stress_integration]);
+    fprintf(fp, "  \"energy_update\": \"%s\",\n  \"ke_fix\": %s,\n", MPMEnergyUpdates[mpm->energy_update], mpm->ke_fix ? "true" : "false");
     fprintf(fp, "  \"steps\": %" PetscInt_FMT ",\n  \"time\": %.17g,\n  \"wall_seconds\": %.6g,\n  \"setup_seconds\": %.6g,\n  \"output_seconds\": %.6g,\n", mpm->steps, (double)mpm->time, (double)mpm->wall_loop, (double)mpm->wall_setup,
             (double)mpm->wall_output);
     fprintf(fp, "  \"particle_steps_per_second\": %.6g,\n  \"particle_steps_per_second_per_rank\": %.6g,\n", (double)pss, (double)(pss / size));

@@ -31,7 +31,8 @@ PetscErrorCode MPMViscositySetType(MPMViscosity visc, MPMViscosityType type)
   PetscCall(MPMClassSetType(MPMViscosityList, "artificial viscosity", "-mpm_viscosity_type", type, (PetscErrorCode(**)(void *)) & create));
   if (visc->ops.destroy) PetscCall(visc->ops.destroy(visc));
   PetscCall(PetscMemzero(&visc->ops, sizeof(visc->ops)));
-  visc->data = NULL;
+  visc->data  = NULL;
+  visc->ghost = 0;
   PetscCall(PetscStrncpy(visc->type_name, type, sizeof(visc->type_name)));
   PetscCall(create(visc));
   PetscFunctionReturn(PETSC_SUCCESS);
