@@ -141,6 +141,7 @@ typedef struct {
 } MPMExactOps;
 struct _p_MPMExact {
   MPM_CLASS_HEADER(MPMExactOps);
+  PetscReal window[2]; /* error norms only for lo < x < hi [cm]: where no wave from the domain ends has arrived */
 };
 
 /* ------------------------------------------------------------------ scene */
@@ -244,7 +245,7 @@ PETSC_INTERN PetscErrorCode MPMStep(MPM, PetscReal);
 PETSC_INTERN PetscErrorCode MPMProjectToGrid(MPM);
 PETSC_INTERN PetscErrorCode MPMOutputWriteExact(MPM);
 PETSC_INTERN PetscErrorCode MPMConstitutiveInitialize(MPM);
-PETSC_INTERN PetscErrorCode MPMComputeTimeStep(MPM, PetscReal *);
+PETSC_INTERN PetscErrorCode MPMComputeTimeStep(MPM, PetscBool, PetscReal *);
 PETSC_INTERN PetscErrorCode MPMCreateTS(MPM);
 PETSC_INTERN PetscErrorCode MPMOutputOpen(MPM);
 PETSC_INTERN PetscErrorCode MPMOutputWrite(MPM, PetscInt, PetscReal);
@@ -255,6 +256,7 @@ PETSC_INTERN PetscErrorCode MPMSceneView(MPM, PetscViewer);
 PETSC_INTERN PetscErrorCode MPMExactSetUp(MPMExact, MPM);
 PETSC_INTERN PetscErrorCode MPMExactEvaluate(MPMExact, PetscReal, const PetscReal[], PetscReal *, PetscReal[], PetscReal *, PetscReal *);
 PETSC_INTERN PetscErrorCode MPMExactComputeChecks(MPMExact, MPM);
+PETSC_INTERN PetscBool      MPMExactInWindow(MPMExact, const PetscReal[]);
 PETSC_INTERN PetscErrorCode MPMAddCheck(MPM, const char[], PetscReal, PetscReal);
 PETSC_INTERN PetscErrorCode MPMViscosityApply(MPMViscosity, MPM, PetscReal);
 PETSC_INTERN PetscErrorCode MPMXProfile(MPM, PetscInt, PetscReal[], PetscReal[]);

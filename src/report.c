@@ -39,7 +39,7 @@ static PetscErrorCode MPMComputeErrors(MPM mpm, PetscReal err[][3], PetscInt *no
         if (PetscIsInfOrNanReal(pts.f[f][p * bs + k])) bad++;
     }
     rmin = PetscMin(rmin, pts.f[MPM_FIELD_DENSITY][p]);
-    if (mpm->exact) {
+    if (mpm->exact && MPMExactInWindow(mpm->exact, &pts.f[MPM_FIELD_POSITION][p * d])) {
       const PetscReal V = pts.f[MPM_FIELD_VOLUME][p];
       PetscReal       ex[MPM_NERR], nu[MPM_NERR], vex[MPM_MAX_DIM] = {0, 0, 0}, dv2 = 0.0, v2 = 0.0;
       PetscCall(MPMExactEvaluate(mpm->exact, mpm->time, &pts.f[MPM_FIELD_POSITION][p * d], &ex[0], vex, &ex[2], &ex[3]));

@@ -24,8 +24,9 @@ static PetscErrorCode MPMTSPreStep(TS ts)
   PetscCall(TSGetTime(ts, &t));
   PetscCall(TSGetMaxTime(ts, &tmax));
   PetscCall(TSGetStepNumber(ts, &step));
-  PetscCall(MPMComputeTimeStep(mpm, &dt));
+  PetscCall(MPMComputeTimeStep(mpm, PETSC_FALSE, &dt));
   if (dt < mpm->dtmin) {
+    PetscCall(MPMComputeTimeStep(mpm, PETSC_TRUE, &dt));
     PetscCall(MPMOutputWrite(mpm, step, t));
     SETERRQ(mpm->comm, PETSC_ERR_NOT_CONVERGED, "Step %" PetscInt_FMT ", t = %g s: CFL time step %g s fell below -mpm_dt_min %g s; last state written to %s", step, (double)t, (double)dt, (double)mpm->dtmin, mpm->outdir);
   }

@@ -17,7 +17,9 @@ PetscErrorCode MPMExactCreate(MPI_Comm comm, MPMExact *exact)
   PetscFunctionBegin;
   PetscCall(MPMInitializePackage());
   PetscCall(PetscNew(exact));
-  (*exact)->comm = comm;
+  (*exact)->comm      = comm;
+  (*exact)->window[0] = PETSC_MIN_REAL;
+  (*exact)->window[1] = PETSC_MAX_REAL;
   PetscCall(MPMExactSetType(*exact, MPMEXACTNONE));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -45,6 +47,11 @@ PetscErrorCode MPMExactSetFromOptions(MPMExact exact)
   PetscOptionsBegin(exact->comm, NULL, "Exact solution for the self-check", "MPMExact");
   PetscCall(PetscOptionsFList("-mpm_exact_type", "Exact solution of the scene", "MPMExactSetType", MPMExactList, exact->type_name, type, sizeof(type), &set));
   if (set) PetscCall(MPMExactSetType(exact, type));
+  {
+    PetscInt n = 2;
+    PetscCall(PetscOptionsRealArray("-mpm_exact_window", "Error norms only for points with lo < x < hi [cm] (waves from the domain ends never reach there)", "", exact->window, &n, &set));
+    PetscCheck(!set || (n == 2 && exact->window[0] < exact->window[1]), exact->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_window needs two values lo,hi with lo < hi");
+  }
   if (exact->ops.setfromoptions) PetscCall(exact->ops.setfromoptions(exact, PetscOptionsObject));
   PetscOptionsEnd();
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -74,6 +81,11 @@ PetscErrorCode MPMExactEvaluate(MPMExact exact, PetscReal t, const PetscReal x[]
   PetscFunctionBegin;
   exact->ops.evaluate(exact->data, t, x, rho, v, p, T);
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscBool MPMExactInWindow(MPMExact exact, const PetscReal x[])
+{
+  return (PetscBool)(x[0] > exact->window[0] && x[0] < exact->window[1]);
 }
 
 PetscErrorCode MPMExactComputeChecks(MPMExact exact, MPM mpm)

@@ -58,7 +58,7 @@ PetscErrorCode MPMRiemannSolve(const MPMRiemannState *L, const MPMRiemannState *
     RiemannF(R, p, &fR, &dfR);
     pnew = p - (fL + fR + R->u - L->u) / (dfL + dfR);
     if (pnew <= 0) pnew = 0.5 * p;
-    if (PetscAbsReal(pnew - p) <= 1e-15 * 0.5 * (pnew + p)) {
+    if (PetscAbsReal(pnew - p) <= 1e-13 * 0.5 * (pnew + p)) {
       p = pnew;
       break;
     }

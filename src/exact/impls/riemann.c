@@ -4,9 +4,11 @@
    Both materials must be ideal gases; T = p / ((gamma - 1) rho Cv).
    Checks (all positions in cm, measured on the volume-weighted density profile of the points binned
    by grid cell along x, at the crossing of the mid level nearest the exact position):
-     shock_position    crossing of (rho_shocked + rho_ahead)/2 at the (right or left) shock,
-     contact_position  crossing of (rho*_L + rho*_R)/2,
-     plateau_pressure  volume-weighted mean pressure of the points in the middle half of the star region. */
+     shock_position       crossing of (rho_shocked + rho_ahead)/2 at the right shock (or the left one if alone),
+     left_shock_position  the same at the left shock when there are two,
+     contact_position     crossing of (rho*_L + rho*_R)/2 (when the contact carries a density jump),
+     plateau_pressure     volume-weighted mean pressure of the points in the middle half of the star region,
+     star_density_left    volume-weighted mean density in the middle half between the left wave and the contact. */
 #include "../../petmpmimpl.h"
 
 typedef struct {
@@ -93,30 +95,36 @@ static PetscErrorCode MPMExactChecks_Riemann(MPMExact exact, MPM mpm)
   if (s->shockR) {
     const PetscReal xs = er->x0 + s->SR * t;
     PetscCall(MPMAddCheck(mpm, "shock_position", ProfileCrossing(n, xc, rho, 0.5 * (s->rhostarR + s->R.rho), xs), xs));
-  } else if (s->shockL) {
-    const PetscReal xs = er->x0 + s->SL * t;
-    PetscCall(MPMAddCheck(mpm, "shock_position", ProfileCrossing(n, xc, rho, 0.5 * (s->rhostarL + s->L.rho), xs), xs));
   }
-  {
+  if (s->shockL) {
+    const PetscReal xs = er->x0 + s->SL * t;
+    PetscCall(MPMAddCheck(mpm, s->shockR ? "left_shock_position" : "shock_position", ProfileCrossing(n, xc, rho, 0.5 * (s->rhostarL + s->L.rho), xs), xs));
+  }
+  if (PetscAbsReal(s->rhostarL - s->rhostarR) > 1e-3 * PetscMax(s->rhostarL, s->rhostarR)) { /* a contact with a density jump */
     const PetscReal xcon = er->x0 + s->ustar * t;
     PetscCall(MPMAddCheck(mpm, "contact_position", ProfileCrossing(n, xc, rho, 0.5 * (s->rhostarL + s->rhostarR), xcon), xcon));
   }
   {
-    const PetscReal xa = er->x0 + s->STL * t, xb = er->x0 + s->STR * t, w = xb - xa;
-    PetscReal       sum[2] = {0, 0};
+    const PetscReal xa = er->x0 + s->STL * t, xb = er->x0 + s->STR * t, xm = er->x0 + s->ustar * t, w = xb - xa, wl = xm - xa;
+    PetscReal       sum[4] = {0, 0, 0, 0};
     MPMPoints       pts;
 
     PetscCall(MPMPointsGetArrays(mpm, &pts));
     for (PetscInt q = 0; q < pts.n; q++) {
-      const PetscReal x = pts.f[MPM_FIELD_POSITION][q * mpm->grid.dim];
+      const PetscReal x = pts.f[MPM_FIELD_POSITION][q * mpm->grid.dim], V = pts.f[MPM_FIELD_VOLUME][q];
       if (x > xa + 0.25 * w && x < xb - 0.25 * w) {
-        sum[0] += pts.f[MPM_FIELD_VOLUME][q] * pts.f[MPM_FIELD_PRESSURE][q];
-        sum[1] += pts.f[MPM_FIELD_VOLUME][q];
+        sum[0] += V * pts.f[MPM_FIELD_PRESSURE][q];
+        sum[1] += V;
+      }
+      if (x > xa + 0.25 * wl && x < xm - 0.25 * wl) {
+        sum[2] += V * pts.f[MPM_FIELD_DENSITY][q];
+        sum[3] += V;
       }
     }
     PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, sum, 2, MPIU_REAL, MPIU_SUM, mpm->comm));
-    PetscCall(MPMAddCheck(mpm, "plateau_pressure", sum[1] > 0 ? sum[0] / sum[1] : 0.0, s->pstar));
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, sum, 4, MPIU_REAL, MPIU_SUM, mpm->comm));
+    if (sum[1] > 0) PetscCall(MPMAddCheck(mpm, "plateau_pressure", sum[0] / sum[1], s->pstar)); /* a near vacuum may hold no point */
+    if (sum[3] > 0) PetscCall(MPMAddCheck(mpm, "star_density_left", sum[2] / sum[3], s->rhostarL));
   }
   PetscCall(PetscFree2(xc, rho));
   PetscFunctionReturn(PETSC_SUCCESS);
