@@ -7,7 +7,7 @@
 /* m_I = sum_p N_I m_p, (mv)_I = sum_p N_I m_p v_p and, with the force, f_I = -int sigma . grad N_I dV.
    With sigma = -(p + q) I the internal force is f_I = int (p + q) grad N_I dV, integrated either point by
    point (sum_p V_p (p_p + q_p) grad N_I(x_p)) or with the volume-averaged pressure of each cell,
-   f_I = sum_c phi_c V_c P_c grad N_I(x_c), P_c = sum V_p P_p / sum V_p, phi_c = min(1, sum V_p / V_c):
+   f_I = sum_c V_c P_c grad N_I(x_c), P_c = sum V_p P_p / sum V_p, V_c the cell volume (every occupied cell full):
    the cell rule does not feel how many points a cell happens to hold, so it has no cell-crossing noise. */
 static PetscErrorCode MPMScatter(MPM mpm, PetscBool force)
 {
