@@ -59,13 +59,6 @@ PetscErrorCode MPMCreateGrid(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Global cell index of x in direction k, clamped to the domain. */
-static inline PetscInt MPMCellIndex(const MPMGrid *g, PetscInt k, PetscReal x)
-{
-  PetscInt i = (PetscInt)PetscFloorReal((x - g->lo[k]) / g->h[k]);
-  return i < 0 ? 0 : (i >= g->cells[k] ? g->cells[k] - 1 : i);
-}
-
 /* Flat index of the owned cell holding x, or -1 if another rank owns it. */
 PetscInt MPMLocalCell(const MPMGrid *g, const PetscReal x[])
 {

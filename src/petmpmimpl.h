@@ -263,6 +263,13 @@ PETSC_INTERN PetscErrorCode MPMXProfile(MPM, PetscInt, PetscReal[], PetscReal[])
 PETSC_INTERN PetscErrorCode MPMClassSetType(PetscFunctionList, const char[], const char[], const char[], PetscErrorCode (**)(void *));
 PETSC_INTERN PetscErrorCode MPMClassTypeList(PetscFunctionList, char[], size_t);
 
+/* Global cell index of x in direction k, clamped to the domain. */
+static inline PetscInt MPMCellIndex(const MPMGrid *g, PetscInt k, PetscReal x)
+{
+  PetscInt i = (PetscInt)PetscFloorReal((x - g->lo[k]) / g->h[k]);
+  return i < 0 ? 0 : (i >= g->cells[k] ? g->cells[k] - 1 : i);
+}
+
 /* EOS kernels for the batched loops: the ops table is read once per call site. */
 static inline void MPMEOSPressureKernel(MPMEOS eos, PetscReal rho, PetscReal e, PetscReal *p, PetscReal *c2)
 {

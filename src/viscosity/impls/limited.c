@@ -106,11 +106,7 @@ static PetscErrorCode MPMViscosityApply_Limited(MPMViscosity visc, MPM mpm, Pets
     for (PetscInt p = 0; p < pts.n; p++) {
       PetscInt ijk[3] = {0, 0, 0};
       q[p]            = 0.0;
-      for (PetscInt k = 0; k < d; k++) {
-        PetscInt i = (PetscInt)PetscFloorReal((x[p * d + k] - g->lo[k]) / g->h[k]);
-        i          = PetscMax(0, PetscMin(i, g->cells[k] - 1));
-        ijk[k]     = i - g->cs[k] + LIMITED_PAD;
-      }
+      for (PetscInt k = 0; k < d; k++) ijk[k] = MPMCellIndex(g, k, x[p * d + k]) - g->cs[k] + LIMITED_PAD;
       for (PetscInt k = 0; k < d; k++) {
         const PetscReal du = g->h[k] * L[p * d * d + k * d + k];
         PetscReal       r[2];
