@@ -15,6 +15,7 @@ typedef struct _p_MPMEOS       *MPMEOS;
 typedef struct _p_MPMViscosity *MPMViscosity;
 typedef struct _p_MPMUpdate    *MPMUpdate;
 typedef struct _p_MPMExact     *MPMExact;
+typedef struct _p_MPMStrength  *MPMStrength;
 
 /* Closed algorithm switches: enums, so that -help lists the choices. */
 typedef enum { MPM_SCHEME_USL, MPM_SCHEME_MUSL } MPMScheme;
@@ -32,8 +33,16 @@ PETSC_EXTERN const char *const MPMBoundaryTypes[];
 /* Type names */
 typedef const char *MPMShapeType;
 #define MPMSHAPELINEAR "linear"
+#define MPMSHAPEGIMP "gimp"
+#define MPMSHAPECPDI "cpdi"
+#define MPMSHAPEBSPLINE2 "bspline2"
+#define MPMSHAPEBSPLINE3 "bspline3"
 typedef const char *MPMEOSType;
 #define MPMEOSIDEALGAS "idealgas"
+#define MPMEOSNONE "none"
+typedef const char *MPMStrengthType;
+#define MPMSTRENGTHNONE "none"
+#define MPMSTRENGTHNEOHOOKEAN "neohookean"
 typedef const char *MPMViscosityType;
 #define MPMVISCOSITYNONE "none"
 #define MPMVISCOSITYVNR "vnr"
@@ -45,6 +54,7 @@ typedef const char *MPMUpdateType;
 typedef const char *MPMExactType;
 #define MPMEXACTNONE "none"
 #define MPMEXACTRIEMANN "riemann"
+#define MPMEXACTMMS "mms"
 
 /* The MPM object */
 PETSC_EXTERN PetscErrorCode MPMInitializePackage(void);
@@ -77,6 +87,18 @@ PETSC_EXTERN PetscErrorCode MPMEOSPressure(MPMEOS, PetscReal, PetscReal, PetscRe
 PETSC_EXTERN PetscErrorCode MPMEOSTemperature(MPMEOS, PetscReal, PetscReal, PetscReal *);
 PETSC_EXTERN PetscErrorCode MPMEOSEnergyFromTemperature(MPMEOS, PetscReal, PetscReal, PetscReal *);
 PETSC_EXTERN PetscErrorCode MPMEOSIdealGasGetParameters(MPMEOS, PetscReal *, PetscReal *);
+
+/* Strength models: the stress s besides the EOS pressure, sigma = s - (p + q) I */
+PETSC_EXTERN PetscErrorCode MPMStrengthRegister(const char[], PetscErrorCode (*)(MPMStrength));
+PETSC_EXTERN PetscErrorCode MPMStrengthCreate(MPI_Comm, MPMStrength *);
+PETSC_EXTERN PetscErrorCode MPMStrengthSetOptionsPrefix(MPMStrength, const char[]);
+PETSC_EXTERN PetscErrorCode MPMStrengthSetType(MPMStrength, MPMStrengthType);
+PETSC_EXTERN PetscErrorCode MPMStrengthSetFromOptions(MPMStrength);
+PETSC_EXTERN PetscErrorCode MPMStrengthIsActive(MPMStrength, PetscBool *);
+PETSC_EXTERN PetscErrorCode MPMStrengthView(MPMStrength, PetscViewer);
+PETSC_EXTERN PetscErrorCode MPMStrengthDestroy(MPMStrength *);
+PETSC_EXTERN PetscErrorCode MPMStrengthNeoHookeanGetParameters(MPMStrength, PetscReal *, PetscReal *);
+PETSC_EXTERN PetscErrorCode MPMStrengthStress(MPMStrength, PetscInt, PetscReal, const PetscReal[], const PetscReal[], PetscReal, PetscReal[], PetscReal *);
 
 /* Artificial viscosity */
 PETSC_EXTERN PetscErrorCode MPMViscosityRegister(const char[], PetscErrorCode (*)(MPMViscosity));

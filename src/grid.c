@@ -53,6 +53,10 @@ PetscErrorCode MPMCreateGrid(MPM mpm)
     g->rank_start[k][0] = 0;
     for (PetscInt r = 0; r < g->nranks[k]; r++) g->rank_start[k][r + 1] = g->rank_start[k][r] + (k < g->dim ? l[k][r] : 1);
   }
+  for (PetscInt k = 0; k < g->dim; k++) {
+    g->mirror_lo[k] = (PetscBool)(mpm->bc_lo[k] == MPM_BC_WALL);
+    g->mirror_hi[k] = (PetscBool)(mpm->bc_hi[k] == MPM_BC_WALL);
+  }
   PetscCall(DMCreateGlobalVector(mpm->da, &mpm->nodes));
   PetscCall(DMCreateLocalVector(mpm->da, &mpm->lnodes));
   PetscCall(PetscMalloc2(g->ncells, &mpm->cellV, g->ncells, &mpm->cellS));

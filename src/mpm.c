@@ -9,7 +9,15 @@ const char *const MPMEnergyUpdates[]      = {"compatible", "midpoint", "MPMEnerg
 const char *const MPMBoundaryTypes[]      = {"wall", "free", "MPMBoundaryType", "MPM_BC_", NULL};
 
 PETSC_EXTERN PetscErrorCode MPMShapeCreate_Linear(MPMShape);
+PETSC_EXTERN PetscErrorCode MPMShapeCreate_GIMP(MPMShape);
+PETSC_EXTERN PetscErrorCode MPMShapeCreate_CPDI(MPMShape);
+PETSC_EXTERN PetscErrorCode MPMShapeCreate_BSpline2(MPMShape);
+PETSC_EXTERN PetscErrorCode MPMShapeCreate_BSpline3(MPMShape);
 PETSC_EXTERN PetscErrorCode MPMEOSCreate_IdealGas(MPMEOS);
+PETSC_EXTERN PetscErrorCode MPMEOSCreate_None(MPMEOS);
+PETSC_EXTERN PetscErrorCode MPMStrengthCreate_None(MPMStrength);
+PETSC_EXTERN PetscErrorCode MPMStrengthCreate_NeoHookean(MPMStrength);
+PETSC_EXTERN PetscErrorCode MPMExactCreate_MMS(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMViscosityCreate_None(MPMViscosity);
 PETSC_EXTERN PetscErrorCode MPMViscosityCreate_VNR(MPMViscosity);
 PETSC_EXTERN PetscErrorCode MPMViscosityCreate_Limited(MPMViscosity);
@@ -30,7 +38,14 @@ PetscErrorCode MPMInitializePackage(void)
   MPMPackageInitialized = PETSC_TRUE;
   PetscCall(PetscClassIdRegister("MPM", &MPM_CLASSID));
   PetscCall(MPMShapeRegister(MPMSHAPELINEAR, MPMShapeCreate_Linear));
+  PetscCall(MPMShapeRegister(MPMSHAPEGIMP, MPMShapeCreate_GIMP));
+  PetscCall(MPMShapeRegister(MPMSHAPECPDI, MPMShapeCreate_CPDI));
+  PetscCall(MPMShapeRegister(MPMSHAPEBSPLINE2, MPMShapeCreate_BSpline2));
+  PetscCall(MPMShapeRegister(MPMSHAPEBSPLINE3, MPMShapeCreate_BSpline3));
   PetscCall(MPMEOSRegister(MPMEOSIDEALGAS, MPMEOSCreate_IdealGas));
+  PetscCall(MPMEOSRegister(MPMEOSNONE, MPMEOSCreate_None));
+  PetscCall(MPMStrengthRegister(MPMSTRENGTHNONE, MPMStrengthCreate_None));
+  PetscCall(MPMStrengthRegister(MPMSTRENGTHNEOHOOKEAN, MPMStrengthCreate_NeoHookean));
   PetscCall(MPMViscosityRegister(MPMVISCOSITYNONE, MPMViscosityCreate_None));
   PetscCall(MPMViscosityRegister(MPMVISCOSITYVNR, MPMViscosityCreate_VNR));
   PetscCall(MPMViscosityRegister(MPMVISCOSITYLIMITED, MPMViscosityCreate_Limited));
@@ -39,6 +54,7 @@ PetscErrorCode MPMInitializePackage(void)
   PetscCall(MPMUpdateRegister(MPMUPDATEBLEND, MPMUpdateCreate_Blend));
   PetscCall(MPMExactRegister(MPMEXACTNONE, MPMExactCreate_None));
   PetscCall(MPMExactRegister(MPMEXACTRIEMANN, MPMExactCreate_Riemann));
+  PetscCall(MPMExactRegister(MPMEXACTMMS, MPMExactCreate_MMS));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -175,10 +191,14 @@ PetscErrorCode MPMSetUp(MPM mpm)
     PetscCall(MPMViscosityDestroy(&mpm->viscosity)); /* none: the module is not in the step */
 
   PetscCall(MPMCreateGrid(mpm));
+  PetscCall(MPMShapeSetUp(mpm->shape, &mpm->grid, mpm->ppc));
   PetscCall(MPMCreatePoints(mpm));
-  PetscCall(MPMConstitutiveInitialize(mpm));
   PetscCall(MPMExactSetUp(mpm->exact, mpm));
+  PetscCall(MPMExactInitialize(mpm->exact, mpm));
   if (!mpm->exact->ops.evaluate) PetscCall(MPMExactDestroy(&mpm->exact));
+  mpm->has_bodyforce = (PetscBool)(mpm->exact && mpm->exact->ops.bodyforce);
+  if (mpm->shape->needs_F) mpm->track_F = PETSC_TRUE;
+  PetscCall(MPMConstitutiveInitialize(mpm));
   PetscCall(MPMCheckUnusedOptions(mpm));
   PetscCall(MPMOutputOpen(mpm));
   PetscCall(MPMGlobalSums(mpm, &mpm->mass0, &mpm->energy0, mpm->momentum0));
@@ -231,7 +251,10 @@ PetscErrorCode MPMDestroy(MPM *mpm)
   PetscCall(DMDestroy(&m->swarm));
   PetscCall(DMDestroy(&m->da));
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) PetscCall(PetscFree(m->grid.rank_start[k]));
-  for (PetscInt i = 0; i < m->nmat; i++) PetscCall(MPMEOSDestroy(&m->mat[i].eos));
+  for (PetscInt i = 0; i < m->nmat; i++) {
+    PetscCall(MPMEOSDestroy(&m->mat[i].eos));
+    PetscCall(MPMStrengthDestroy(&m->mat[i].strength));
+  }
   PetscCall(MPMShapeDestroy(&m->shape));
   PetscCall(MPMUpdateDestroy(&m->update));
   PetscCall(MPMViscosityDestroy(&m->viscosity));

@@ -239,7 +239,7 @@ PetscErrorCode MPMOutputWriteExact(MPM mpm)
     PetscCall(VecGetArray(v, &a));
     for (PetscInt p = 0; p < n; p++) {
       PetscReal rho, vel[MPM_MAX_DIM], pr, T;
-      PetscCall(MPMExactEvaluate(mpm->exact, mpm->time, &pts.f[MPM_FIELD_POSITION][p * d], &rho, vel, &pr, &T));
+      PetscCall(MPMExactEvaluate(mpm->exact, mpm->time, &pts.f[MPM_FIELD_POSITION][p * d], &pts.f[MPM_FIELD_REFPOSITION][p * d], &rho, vel, &pr, &T));
       if (f == 1)
         for (PetscInt k = 0; k < d; k++) a[p * d + k] = vel[k];
       else

@@ -16,6 +16,9 @@ const MPMFieldInfo MPMFieldTable[MPM_NUM_FIELDS] = {
   {"soundspeed", 1, "cm/s", "sound speed c_p", PETSC_FALSE},
   {"viscosity", 1, "dyn/cm^2", "artificial viscous pressure q_p", PETSC_TRUE},
   {"gradv", -1, "1/s", "velocity gradient L_p = dv/dx, row-major", PETSC_FALSE},
+  {"defgrad", -1, "-", "deformation gradient F_p = dx/dX, row-major", PETSC_TRUE},
+  {"stress", -1, "dyn/cm^2", "stress s_p besides the pressure (strength model), row-major", PETSC_TRUE},
+  {"refposition", 0, "cm", "reference (initial lattice) position X_p", PETSC_TRUE},
   {"material", 1, "-", "material index", PETSC_TRUE},
   {"id", 1, "-", "persistent id: the point's seeding lattice index", PETSC_TRUE},
 };
@@ -45,9 +48,14 @@ PetscErrorCode MPMPointsRestoreArrays(MPM mpm, MPMPoints *pts)
 PetscInt MPMRegionAt(MPM mpm, const PetscReal x[])
 {
   for (PetscInt r = 0; r < mpm->nreg; r++) {
-    PetscBool in = PETSC_TRUE;
-    for (PetscInt k = 0; k < mpm->grid.dim; k++) in = (PetscBool)(in && x[k] >= mpm->reg[r].lo[k] && x[k] <= mpm->reg[r].hi[k]);
-    if (in) return r;
+    const MPMRegion *reg = &mpm->reg[r];
+    PetscBool        in  = PETSC_TRUE;
+    PetscReal        r2  = 0.0;
+    for (PetscInt k = 0; k < mpm->grid.dim; k++) {
+      in = (PetscBool)(in && x[k] >= reg->lo[k] && x[k] <= reg->hi[k]);
+      r2 += PetscSqr(x[k] - reg->center[k]);
+    }
+    if (in && r2 >= reg->rmin * reg->rmin && (reg->rmax >= PETSC_MAX_REAL || r2 <= reg->rmax * reg->rmax)) return r;
   }
   return -1;
 }
@@ -105,7 +113,12 @@ PetscErrorCode MPMCreatePoints(MPM mpm)
         pts.f[MPM_FIELD_POSITION][n * d + k] = x[k];
         pts.f[MPM_FIELD_VELOCITY][n * d + k] = reg->v[k];
       }
-      for (PetscInt k = 0; k < d * d; k++) pts.f[MPM_FIELD_GRADV][n * d * d + k] = 0.0;
+      for (PetscInt k = 0; k < d; k++) pts.f[MPM_FIELD_REFPOSITION][n * d + k] = x[k];
+      for (PetscInt k = 0; k < d * d; k++) {
+        pts.f[MPM_FIELD_GRADV][n * d * d + k]   = 0.0;
+        pts.f[MPM_FIELD_STRESS][n * d * d + k]  = 0.0;
+        pts.f[MPM_FIELD_DEFGRAD][n * d * d + k] = k % (d + 1) == 0 ? 1.0 : 0.0;
+      }
       pts.f[MPM_FIELD_VOLUME][n]      = g->vcell / npd;
       pts.f[MPM_FIELD_DENSITY][n]     = reg->rho;
       pts.f[MPM_FIELD_MASS][n]        = reg->rho * g->vcell / npd;

@@ -32,6 +32,8 @@ typedef struct {
   PetscReal vcell;                   /* cell volume h_x h_y h_z [cm^d]                          */
   PetscInt *rank_start[MPM_MAX_DIM]; /* first owned cell of each rank column, size p_d + 1    */
   PetscInt  nranks[MPM_MAX_DIM];     /* ranks per direction                                     */
+  PetscBool mirror_lo[MPM_MAX_DIM];  /* lower face is a wall: shape functions fold onto it by reflection */
+  PetscBool mirror_hi[MPM_MAX_DIM];  /* upper face is a wall                                    */
 } MPMGrid;
 
 /* Nodal data: a struct overlay on the DMDA vector (dof = sizeof(MPMNode)/sizeof(PetscScalar)). */
@@ -43,12 +45,15 @@ typedef struct {
 } MPMNode;
 #define MPM_NODE_DOF ((PetscInt)(sizeof(MPMNode) / sizeof(PetscScalar)))
 
-/* The nodes one point touches: flat indices into the ghosted local node array, weights N_I(x_p), gradients. */
+/* The nodes one point touches: flat indices into the ghosted local node array, weights N_I(x_p), gradients,
+   and the sign of each vector component: -1 for component k where the entry is the mirror image, across a
+   wall normal to k, of a node outside the domain (a symmetry plane by image points). An index may repeat. */
 typedef struct {
   PetscInt  n;
   PetscInt  node[MPM_MAX_STENCIL];
   PetscReal w[MPM_MAX_STENCIL];
   PetscReal dw[MPM_MAX_STENCIL][MPM_MAX_DIM];
+  PetscReal s[MPM_MAX_STENCIL][MPM_MAX_DIM];
 } MPMStencil;
 
 /* ------------------------------------------------------------------ particles */
@@ -65,6 +70,9 @@ typedef enum {
   MPM_FIELD_SOUNDSPEED,
   MPM_FIELD_VISCOSITY,
   MPM_FIELD_GRADV,
+  MPM_FIELD_DEFGRAD,
+  MPM_FIELD_STRESS,
+  MPM_FIELD_REFPOSITION,
   MPM_FIELD_MATERIAL,
   MPM_FIELD_ID,
   MPM_NUM_FIELDS
@@ -87,14 +95,18 @@ typedef struct {
 
 /* ------------------------------------------------------------------ classes */
 typedef struct {
-  PetscInt (*support)(void *);                                                                    /* ghost width the type needs [cells] */
-  void (*basis1d)(void *, PetscReal, PetscInt, PetscInt *, PetscInt *, PetscReal[], PetscReal[]); /* xi = (x-lo)/h, cells -> first node, count, N, dN/dxi */
+  PetscInt (*support)(void *);                                                                   /* ghost width the type needs [cells] */
+  void (*basis1d)(void *, PetscReal, PetscInt *, PetscInt *, PetscReal[], PetscReal[]);          /* xi = (x-lo)/h -> first node (may lie outside the grid), count, N, dN/dxi */
+  void (*evaluate)(void *, const MPMGrid *, const PetscReal[], const PetscReal[], MPMStencil *); /* (x, F) -> stencil, for types that are not tensor products */
+  PetscBool (*admissible)(void *, const MPMGrid *, const PetscReal[]);                           /* can the type evaluate a point with deformation gradient F? */
+  PetscErrorCode (*setup)(MPMShape, const MPMGrid *, PetscInt);                                  /* grid and points per cell per direction */
   PetscErrorCode (*setfromoptions)(MPMShape, PetscOptionItems *);
   PetscErrorCode (*view)(MPMShape, PetscViewer);
   PetscErrorCode (*destroy)(MPMShape);
 } MPMShapeOps;
 struct _p_MPMShape {
   MPM_CLASS_HEADER(MPMShapeOps);
+  PetscBool needs_F; /* the type reads the points' deformation gradient */
 };
 
 typedef struct {
@@ -107,6 +119,17 @@ typedef struct {
 } MPMEOSOps;
 struct _p_MPMEOS {
   MPM_CLASS_HEADER(MPMEOSOps);
+};
+
+typedef struct {
+  void (*stress)(void *, PetscInt, PetscReal, const PetscReal[], const PetscReal[], PetscReal, PetscReal[], PetscReal *); /* (d, dt, L, F, rho) -> s (row-major d x d, in/out) [dyn/cm^2], c^2 [cm^2/s^2] */
+  PetscErrorCode (*setfromoptions)(MPMStrength, PetscOptionItems *);
+  PetscErrorCode (*view)(MPMStrength, PetscViewer);
+  PetscErrorCode (*destroy)(MPMStrength);
+} MPMStrengthOps;
+struct _p_MPMStrength {
+  MPM_CLASS_HEADER(MPMStrengthOps);
+  PetscBool needs_F; /* the model reads the deformation gradient */
 };
 
 typedef struct {
@@ -133,7 +156,10 @@ struct _p_MPMUpdate {
 /* An exact solution knows the fields at a point and the scene's named scalar checks. */
 typedef struct {
   PetscErrorCode (*setup)(MPMExact, MPM);
-  void (*evaluate)(void *, PetscReal, const PetscReal[], PetscReal *, PetscReal[], PetscReal *, PetscReal *); /* (t, x) -> rho, v, p, T */
+  void (*evaluate)(void *, PetscReal, const PetscReal[], const PetscReal[], PetscReal *, PetscReal[], PetscReal *, PetscReal *); /* (t, x, X) -> rho, v, p, T */
+  void (*initial)(void *, const PetscReal[], PetscReal[], PetscReal[], PetscReal[]);                                             /* X -> x, v, F at t = 0 (points that do not start at rest on their lattice site) */
+  void (*bodyforce)(void *, PetscReal, const PetscReal[], const PetscReal[], PetscReal[]);                                       /* (t, X, F) -> b [cm/s^2], applied as m_p b */
+  void (*displacement)(void *, PetscReal, const PetscReal[], PetscReal[]);                                                       /* (t, X) -> u [cm]                      */
   PetscErrorCode (*checks)(MPMExact, MPM);
   PetscErrorCode (*setfromoptions)(MPMExact, PetscOptionItems *);
   PetscErrorCode (*view)(MPMExact, PetscViewer);
@@ -146,18 +172,20 @@ struct _p_MPMExact {
 
 /* ------------------------------------------------------------------ scene */
 typedef struct {
-  char   name[MPM_MAX_NAME]; /* material name used in option prefixes -mat_<name>_ */
-  MPMEOS eos;                /* equation of state                               */
+  char        name[MPM_MAX_NAME]; /* material name used in option prefixes -mat_<name>_ */
+  MPMEOS      eos;                /* equation of state                               */
+  MPMStrength strength;           /* stress besides the pressure; NULL for a fluid   */
 } MPMMaterial;
 
 typedef struct {
-  char      name[MPM_MAX_NAME]; /* region name used in option prefixes -region_<name>_ */
-  PetscInt  material;           /* index into MPM::mat                                 */
-  PetscReal lo[MPM_MAX_DIM];    /* box lower corner [cm]                               */
-  PetscReal hi[MPM_MAX_DIM];    /* box upper corner [cm]                               */
-  PetscReal rho;                /* initial density [g/cm^3]                            */
-  PetscReal T;                  /* initial temperature [eV]                            */
-  PetscReal v[MPM_MAX_DIM];     /* initial velocity [cm/s]                             */
+  char      name[MPM_MAX_NAME];              /* region name used in option prefixes -region_<name>_ */
+  PetscInt  material;                        /* index into MPM::mat                                 */
+  PetscReal lo[MPM_MAX_DIM];                 /* box lower corner [cm]                               */
+  PetscReal hi[MPM_MAX_DIM];                 /* box upper corner [cm]                               */
+  PetscReal center[MPM_MAX_DIM], rmin, rmax; /* and rmin <= |x - center| <= rmax [cm]      */
+  PetscReal rho;                             /* initial density [g/cm^3]                            */
+  PetscReal T;                               /* initial temperature [eV]                            */
+  PetscReal v[MPM_MAX_DIM];                  /* initial velocity [cm/s]                             */
 } MPMRegion;
 
 #define MPM_MAX_MATERIALS 16
@@ -193,6 +221,9 @@ struct _p_MPM {
   MPMBoundaryType      bc_lo[MPM_MAX_DIM], bc_hi[MPM_MAX_DIM];
   PetscReal            gravity[MPM_MAX_DIM]; /* body acceleration g [cm/s^2]                      */
   PetscBool            has_gravity;
+  PetscBool            has_stress;    /* some material has a strength model: s_p enters the force            */
+  PetscBool            track_F;       /* the shape functions or a strength model read the deformation gradient */
+  PetscBool            has_bodyforce; /* the exact solution drives the points with a body force (manufactured) */
   PetscBool            view;
   PetscInt             nmat, nreg;
   MPMMaterial          mat[MPM_MAX_MATERIALS];
@@ -220,6 +251,7 @@ struct _p_MPM {
   PetscReal  wall_loop, wall_setup, wall_output;
   PetscInt   steps;
   PetscReal  time;
+  PetscReal  dt; /* size of the step being taken [s] */
   PetscInt   noutputs;
   PetscReal *output_times;
   PetscInt   output_times_cap;
@@ -254,7 +286,8 @@ PETSC_INTERN PetscErrorCode MPMGlobalSums(MPM, PetscReal *, PetscReal *, PetscRe
 PETSC_INTERN PetscErrorCode MPMSceneSetFromOptions(MPM, PetscOptionItems *);
 PETSC_INTERN PetscErrorCode MPMSceneView(MPM, PetscViewer);
 PETSC_INTERN PetscErrorCode MPMExactSetUp(MPMExact, MPM);
-PETSC_INTERN PetscErrorCode MPMExactEvaluate(MPMExact, PetscReal, const PetscReal[], PetscReal *, PetscReal[], PetscReal *, PetscReal *);
+PETSC_INTERN PetscErrorCode MPMExactEvaluate(MPMExact, PetscReal, const PetscReal[], const PetscReal[], PetscReal *, PetscReal[], PetscReal *, PetscReal *);
+PETSC_INTERN PetscErrorCode MPMExactInitialize(MPMExact, MPM);
 PETSC_INTERN PetscErrorCode MPMExactComputeChecks(MPMExact, MPM);
 PETSC_INTERN PetscBool      MPMExactInWindow(MPMExact, const PetscReal[]);
 PETSC_INTERN PetscErrorCode MPMAddCheck(MPM, const char[], PetscReal, PetscReal);
@@ -268,6 +301,14 @@ static inline PetscInt MPMCellIndex(const MPMGrid *g, PetscInt k, PetscReal x)
 {
   PetscInt i = (PetscInt)PetscFloorReal((x - g->lo[k]) / g->h[k]);
   return i < 0 ? 0 : (i >= g->cells[k] ? g->cells[k] - 1 : i);
+}
+
+/* det A of a d x d row-major matrix. */
+static inline PetscReal MPMDeterminant(PetscInt d, const PetscReal A[])
+{
+  if (d == 1) return A[0];
+  if (d == 2) return A[0] * A[3] - A[1] * A[2];
+  return A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6]) + A[2] * (A[3] * A[7] - A[4] * A[6]);
 }
 
 /* EOS kernels for the batched loops: the ops table is read once per call site. */
@@ -288,45 +329,99 @@ static inline void MPMEOSEnergyKernel(MPMEOS eos, PetscReal rho, PetscReal T, Pe
 
 #define MPM_MAX_1D 8 /* nodes per direction a 1D basis can touch */
 
-/* N_I(x) and grad N_I(x) at x as tensor products of the type's 1D basis: flat ghosted-local node indices,
-   weights and gradients. Inline, so that the particle loops call the 1D basis and nothing else. */
-static inline void MPMShapeEvaluate(MPMShape shape, const MPMGrid *g, const PetscReal x[], MPMStencil *st)
+/* Maps the global node indices idx[0..n) of direction k that lie outside the grid onto grid nodes, as
+   ghosted-local indices, with the sign sg of vector component k: across a wall the node outside is the mirror
+   image of the node inside (symmetry plane: the image field is the reflected one), across a free face it
+   merges into the face node (constant extension). Both keep sum N_I = 1 and sum grad N_I = 0. */
+static inline void MPMShapeFold1d(const MPMGrid *g, PetscInt k, PetscInt n, PetscInt idx[], PetscReal sg[])
 {
-  PetscInt       first[MPM_MAX_DIM], nn[MPM_MAX_DIM];
-  PetscReal      w[MPM_MAX_DIM][MPM_MAX_1D], dw[MPM_MAX_DIM][MPM_MAX_1D];
+  const PetscInt nc = g->cells[k];
+
+  for (PetscInt a = 0; a < n; a++) {
+    PetscInt i = idx[a];
+    sg[a]      = 1.0;
+    if (i < 0) {
+      if (g->mirror_lo[k]) {
+        i     = -i;
+        sg[a] = -1.0;
+      } else
+        i = 0;
+    } else if (i > nc) {
+      if (g->mirror_hi[k]) {
+        i     = 2 * nc - i;
+        sg[a] = -1.0;
+      } else
+        i = nc;
+    }
+    idx[a] = i - g->gs[k];
+  }
+}
+
+/* Tensor product of per-direction node lists (ghosted-local index, weight, derivative, sign). */
+static inline void MPMShapeTensor(const MPMGrid *g, const PetscInt nn[], PetscInt idx[][MPM_MAX_1D], PetscReal w[][MPM_MAX_1D], PetscReal dw[][MPM_MAX_1D], PetscReal sg[][MPM_MAX_1D], MPMStencil *st)
+{
   const PetscInt d = g->dim;
 
-  for (PetscInt k = 0; k < d; k++) {
-    const PetscReal hinv = 1.0 / g->h[k];
-    shape->ops.basis1d(shape->data, (x[k] - g->lo[k]) * hinv, g->cells[k], &first[k], &nn[k], w[k], dw[k]);
-    for (PetscInt a = 0; a < nn[k]; a++) dw[k][a] *= hinv;
-    first[k] -= g->gs[k];
-  }
   st->n = 0;
   if (d == 1) {
     for (PetscInt a = 0; a < nn[0]; a++) {
-      st->node[a]  = first[0] + a;
+      st->node[a]  = idx[0][a];
       st->w[a]     = w[0][a];
       st->dw[a][0] = dw[0][a];
+      st->s[a][0]  = sg[0][a];
     }
     st->n = nn[0];
   } else if (d == 2) {
     for (PetscInt b = 0; b < nn[1]; b++)
       for (PetscInt a = 0; a < nn[0]; a++, st->n++) {
-        st->node[st->n]  = (first[1] + b) * g->gm[0] + first[0] + a;
+        st->node[st->n]  = idx[1][b] * g->gm[0] + idx[0][a];
         st->w[st->n]     = w[0][a] * w[1][b];
         st->dw[st->n][0] = dw[0][a] * w[1][b];
         st->dw[st->n][1] = w[0][a] * dw[1][b];
+        st->s[st->n][0]  = sg[0][a];
+        st->s[st->n][1]  = sg[1][b];
       }
   } else {
     for (PetscInt c = 0; c < nn[2]; c++)
       for (PetscInt b = 0; b < nn[1]; b++)
         for (PetscInt a = 0; a < nn[0]; a++, st->n++) {
-          st->node[st->n]  = ((first[2] + c) * g->gm[1] + (first[1] + b)) * g->gm[0] + first[0] + a;
+          st->node[st->n]  = (idx[2][c] * g->gm[1] + idx[1][b]) * g->gm[0] + idx[0][a];
           st->w[st->n]     = w[0][a] * w[1][b] * w[2][c];
           st->dw[st->n][0] = dw[0][a] * w[1][b] * w[2][c];
           st->dw[st->n][1] = w[0][a] * dw[1][b] * w[2][c];
           st->dw[st->n][2] = w[0][a] * w[1][b] * dw[2][c];
+          st->s[st->n][0]  = sg[0][a];
+          st->s[st->n][1]  = sg[1][b];
+          st->s[st->n][2]  = sg[2][c];
         }
   }
 }
+
+/* N_I(x_p) and grad N_I(x_p) at a point with deformation gradient F (read only by types that follow the
+   deformation, may be NULL otherwise): tensor products of the type's 1D basis unless the type evaluates
+   points itself. Inline, so that the particle loops call the 1D basis and nothing else. */
+static inline void MPMShapeEvaluate(MPMShape shape, const MPMGrid *g, const PetscReal x[], const PetscReal F[], MPMStencil *st)
+{
+  PetscInt       idx[MPM_MAX_DIM][MPM_MAX_1D], nn[MPM_MAX_DIM];
+  PetscReal      w[MPM_MAX_DIM][MPM_MAX_1D], dw[MPM_MAX_DIM][MPM_MAX_1D], sg[MPM_MAX_DIM][MPM_MAX_1D];
+  const PetscInt d = g->dim;
+
+  if (shape->ops.evaluate) {
+    shape->ops.evaluate(shape->data, g, x, F, st);
+    return;
+  }
+  for (PetscInt k = 0; k < d; k++) {
+    const PetscReal hinv = 1.0 / g->h[k];
+    PetscInt        first;
+    shape->ops.basis1d(shape->data, (x[k] - g->lo[k]) * hinv, &first, &nn[k], w[k], dw[k]);
+    for (PetscInt a = 0; a < nn[k]; a++) {
+      dw[k][a] *= hinv;
+      idx[k][a] = first + a;
+    }
+    MPMShapeFold1d(g, k, nn[k], idx[k], sg[k]);
+  }
+  MPMShapeTensor(g, nn, idx, w, dw, sg, st);
+}
+
+PETSC_INTERN PetscErrorCode MPMShapeSetUp(MPMShape, const MPMGrid *, PetscInt);
+PETSC_INTERN void           MPMShapeEvaluateCell(MPMShape, const MPMGrid *, const PetscInt[], MPMStencil *);

@@ -1,14 +1,20 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* The program judges its own answer: error norms against the scene's exact solution, conservation, cost,
    and the scene's named checks, printed and written as one JSON object (-mpm_report FILE).
-   Norms are volume-weighted over the points and relative to the exact solution q(x):
+   Norms are volume-weighted over the points and relative to the exact solution q(x) (q(X) for a manufactured one):
      L1 = sum V_p |q_p - q(x_p)| / sum V_p |q(x_p)|,  L2 = sqrt(sum V_p (q_p - q(x_p))^2 / sum V_p q(x_p)^2),
      Linf = max |q_p - q(x_p)| / max |q(x_p)|;  for the velocity |.| is the Euclidean norm of the vector. */
 #include "petmpmimpl.h"
 #include <errno.h>
 
-#define MPM_NERR 4
-static const char *const MPMErrorNames[MPM_NERR] = {"density", "velocity", "pressure", "temperature"};
+#define MPM_NERR 5
+static const char *const MPMErrorNames[MPM_NERR] = {"density", "velocity", "pressure", "temperature", "displacement"};
+
+/* Error fields the exact solution defines: the displacement u_p = x_p - X_p only where it knows u(X, t). */
+static PetscInt MPMNumErrors(MPM mpm)
+{
+  return mpm->exact && mpm->exact->ops.displacement ? MPM_NERR : MPM_NERR - 1;
+}
 
 PetscErrorCode MPMAddCheck(MPM mpm, const char name[], PetscReal value, PetscReal reference)
 {
@@ -41,8 +47,8 @@ static PetscErrorCode MPMComputeErrors(MPM mpm, PetscReal err[][3], PetscInt *no
     rmin = PetscMin(rmin, pts.f[MPM_FIELD_DENSITY][p]);
     if (mpm->exact && MPMExactInWindow(mpm->exact, &pts.f[MPM_FIELD_POSITION][p * d])) {
       const PetscReal V = pts.f[MPM_FIELD_VOLUME][p];
-      PetscReal       ex[MPM_NERR], nu[MPM_NERR], vex[MPM_MAX_DIM] = {0, 0, 0}, dv2 = 0.0, v2 = 0.0;
-      PetscCall(MPMExactEvaluate(mpm->exact, mpm->time, &pts.f[MPM_FIELD_POSITION][p * d], &ex[0], vex, &ex[2], &ex[3]));
+      PetscReal       ex[MPM_NERR], nu[MPM_NERR], vex[MPM_MAX_DIM] = {0, 0, 0}, uex[MPM_MAX_DIM] = {0, 0, 0}, dv2 = 0.0, v2 = 0.0, du2 = 0.0, u2 = 0.0;
+      PetscCall(MPMExactEvaluate(mpm->exact, mpm->time, &pts.f[MPM_FIELD_POSITION][p * d], &pts.f[MPM_FIELD_REFPOSITION][p * d], &ex[0], vex, &ex[2], &ex[3]));
       for (PetscInt k = 0; k < d; k++) {
         dv2 += PetscSqr(pts.f[MPM_FIELD_VELOCITY][p * d + k] - vex[k]);
         v2 += PetscSqr(vex[k]);
@@ -52,6 +58,16 @@ static PetscErrorCode MPMComputeErrors(MPM mpm, PetscReal err[][3], PetscInt *no
       ex[1] = PetscSqrtReal(v2);
       nu[2] = PetscAbsReal(pts.f[MPM_FIELD_PRESSURE][p] - ex[2]);
       nu[3] = PetscAbsReal(pts.f[MPM_FIELD_TEMPERATURE][p] - ex[3]);
+      if (mpm->exact->ops.displacement) {
+        const PetscReal *x = &pts.f[MPM_FIELD_POSITION][p * d], *X = &pts.f[MPM_FIELD_REFPOSITION][p * d];
+        mpm->exact->ops.displacement(mpm->exact->data, mpm->time, X, uex);
+        for (PetscInt k = 0; k < d; k++) {
+          du2 += PetscSqr(x[k] - X[k] - uex[k]);
+          u2 += PetscSqr(uex[k]);
+        }
+      }
+      nu[4] = PetscSqrtReal(du2);
+      ex[4] = PetscSqrtReal(u2);
       for (PetscInt q = 0; q < MPM_NERR; q++) {
         sum[q][0] += V * nu[q];
         sum[q][1] += V * PetscAbsReal(ex[q]);
@@ -110,7 +126,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     PetscPrintf(mpm->comm, "petmpm %s: %" PetscInt_FMT " points, %" PetscInt_FMT " steps to t = %g s in %.3f s (%.3g point-steps/s on %d rank(s))\n", mpm->scene, npoints, mpm->steps, (double)mpm->time, (double)mpm->wall_loop, (double)pss, size));
   PetscCall(PetscPrintf(mpm->comm, "  conservation: mass %.3e, total energy %.3e (relative change); min density %g; %" PetscInt_FMT " non-finite values\n", (double)dmass, (double)denergy, (double)rhomin, nonfinite));
   if (mpm->exact) {
-    for (PetscInt q = 0; q < MPM_NERR; q++) PetscCall(PetscPrintf(mpm->comm, "  %-12s error: L1 %.4e  L2 %.4e  Linf %.4e\n", MPMErrorNames[q], (double)err[q][0], (double)err[q][1], (double)err[q][2]));
+    for (PetscInt q = 0; q < MPMNumErrors(mpm); q++) PetscCall(PetscPrintf(mpm->comm, "  %-12s error: L1 %.4e  L2 %.4e  Linf %.4e\n", MPMErrorNames[q], (double)err[q][0], (double)err[q][1], (double)err[q][2]));
     for (PetscInt c = 0; c < mpm->nchecks; c++)
       PetscCall(PetscPrintf(mpm->comm, "  check %-17s %.6g (exact %.6g, rel. error %.3e)\n", mpm->checks[c].name, (double)mpm->checks[c].value, (double)mpm->checks[c].reference, (double)MPMRelErr(mpm->checks[c].value, mpm->checks[c].reference)));
   }
@@ -132,7 +148,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     fprintf(fp, "  \"particle_steps_per_second\": %.6g,\n  \"particle_steps_per_second_per_rank\": %.6g,\n", (double)pss, (double)(pss / size));
     if (mpm->exact) {
       fprintf(fp, "  \"errors\": {\n");
-      for (PetscInt q = 0; q < MPM_NERR; q++) fprintf(fp, "    \"%s\": {\"L1\": %.10g, \"L2\": %.10g, \"Linf\": %.10g}%s\n", MPMErrorNames[q], (double)err[q][0], (double)err[q][1], (double)err[q][2], q + 1 < MPM_NERR ? "," : "");
+      for (PetscInt q = 0; q < MPMNumErrors(mpm); q++) fprintf(fp, "    \"%s\": {\"L1\": %.10g, \"L2\": %.10g, \"Linf\": %.10g}%s\n", MPMErrorNames[q], (double)err[q][0], (double)err[q][1], (double)err[q][2], q + 1 < MPMNumErrors(mpm) ? "," : "");
       fprintf(fp, "  },\n");
     }
     if (shock_cells >= 0) fprintf(fp, "  \"shock_position_error_cells\": %.6g,\n", (double)shock_cells);

@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* The scene: named materials and the regions that place them.
-     -mpm_materials a,b            materials; each reads -mat_<name>_eos_type and its EOS options
+     -mpm_materials a,b            materials; each reads -mat_<name>_eos_type, -mat_<name>_strength_type and their options
      -mpm_regions r1,r2            regions, seeded in this order (the first region that holds a point wins);
      -region_<r>_material a        its material
      -region_<r>_lo, _hi           its box [cm] (default: the whole domain)
+     -region_<r>_center, _rmin, _rmax  and a spherical shell (annulus in 2D) [cm] (default: everything)
      -region_<r>_density           initial density [g/cm^3] (> 0)
      -region_<r>_temperature       initial temperature [eV] (>= 0)
      -region_<r>_velocity          initial velocity [cm/s] */
@@ -41,11 +42,16 @@ static PetscErrorCode MPMRegionSetFromOptions(MPM mpm, MPMRegion *r)
     r->lo[k] = mpm->grid.lo[k];
     r->hi[k] = mpm->grid.hi[k];
   }
-  r->rho = -1.0;
+  r->rho  = -1.0;
+  r->rmin = 0.0;
+  r->rmax = PETSC_MAX_REAL;
   PetscOptionsBegin(mpm->comm, prefix, "Region of the scene", "MPM");
   PetscCall(PetscOptionsString("-material", "Material that fills the region (one of -mpm_materials)", "", mat, mat, sizeof(mat), &set));
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-lo", "Lower corner of the region's box [cm]", d, r->lo));
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-hi", "Upper corner of the region's box [cm]", d, r->hi));
+  PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-center", "Centre of the region's shell rmin <= |x - center| <= rmax [cm]", d, r->center));
+  PetscCall(PetscOptionsReal("-rmin", "Inner radius of the region's shell [cm], >= 0", "", r->rmin, &r->rmin, NULL));
+  PetscCall(PetscOptionsReal("-rmax", "Outer radius of the region's shell [cm], > rmin", "", r->rmax, &r->rmax, NULL));
   PetscCall(PetscOptionsReal("-density", "Initial density rho [g/cm^3], > 0", "", r->rho, &r->rho, NULL));
   PetscCall(PetscOptionsReal("-temperature", "Initial temperature T [eV], >= 0", "", r->T, &r->T, NULL));
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-velocity", "Initial velocity v [cm/s]", d, r->v));
@@ -60,6 +66,7 @@ static PetscErrorCode MPMRegionSetFromOptions(MPM mpm, MPMRegion *r)
   PetscCall(MPMOptionsCheckRange(opt, r->rho, 0.0, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%stemperature", prefix));
   PetscCall(MPMOptionsCheckRange(opt, r->T, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+  PetscCheck(r->rmin >= 0.0 && r->rmax > r->rmin, mpm->comm, PETSC_ERR_USER_INPUT, "-%srmin %g and -%srmax %g: valid is 0 <= rmin < rmax", prefix, (double)r->rmin, prefix, (double)r->rmax);
   for (PetscInt k = 0; k < d; k++) PetscCheck(r->hi[k] > r->lo[k], mpm->comm, PETSC_ERR_USER_INPUT, "-%shi must exceed -%slo in direction %" PetscInt_FMT, prefix, prefix, k);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -80,6 +87,20 @@ PetscErrorCode MPMSceneSetFromOptions(MPM mpm, PetscOptionItems *PetscOptionsObj
     PetscCall(MPMEOSCreate(mpm->comm, &mpm->mat[i].eos));
     PetscCall(MPMEOSSetOptionsPrefix(mpm->mat[i].eos, prefix));
     PetscCall(MPMEOSSetFromOptions(mpm->mat[i].eos));
+    PetscCall(MPMStrengthCreate(mpm->comm, &mpm->mat[i].strength));
+    PetscCall(MPMStrengthSetOptionsPrefix(mpm->mat[i].strength, prefix));
+    PetscCall(MPMStrengthSetFromOptions(mpm->mat[i].strength));
+    {
+      PetscBool active, noeos;
+      PetscCall(MPMStrengthIsActive(mpm->mat[i].strength, &active));
+      PetscCall(PetscStrcmp(mpm->mat[i].eos->type_name, MPMEOSNONE, &noeos));
+      PetscCheck(active || !noeos || help, mpm->comm, PETSC_ERR_USER_INPUT, "Material %s has neither an equation of state (-%seos_type is none) nor a strength model (-%sstrength_type): it could carry no stress", names[i], prefix, prefix);
+      if (active) {
+        mpm->has_stress = PETSC_TRUE;
+        if (mpm->mat[i].strength->needs_F) mpm->track_F = PETSC_TRUE;
+      } else
+        PetscCall(MPMStrengthDestroy(&mpm->mat[i].strength)); /* a fluid: not in the stress path */
+    }
   }
   PetscCall(MPMSceneNames(PetscOptionsObject, "-mpm_regions", "Names of the regions that place the materials, in seeding priority", MPM_MAX_REGIONS, names, &mpm->nreg));
   if (!help) PetscCheck(mpm->nreg > 0, mpm->comm, PETSC_ERR_USER_INPUT, "The scene places no material: give -mpm_regions name[,name...] and -region_<name>_material");
@@ -98,6 +119,11 @@ PetscErrorCode MPMSceneView(MPM mpm, PetscViewer viewer)
     PetscCall(PetscViewerASCIIUseTabs(viewer, PETSC_FALSE));
     PetscCall(MPMEOSView(mpm->mat[i].eos, viewer));
     PetscCall(PetscViewerASCIIUseTabs(viewer, PETSC_TRUE));
+    if (mpm->mat[i].strength) {
+      PetscCall(PetscViewerASCIIPushTab(viewer));
+      PetscCall(MPMStrengthView(mpm->mat[i].strength, viewer));
+      PetscCall(PetscViewerASCIIPopTab(viewer));
+    }
   }
   for (PetscInt i = 0; i < mpm->nreg; i++) {
     const MPMRegion *r = &mpm->reg[i];

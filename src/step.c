@@ -8,12 +8,17 @@
    With sigma = -(p + q) I the internal force is f_I = int (p + q) grad N_I dV, integrated either point by
    point (sum_p V_p (p_p + q_p) grad N_I(x_p)) or with the volume-averaged pressure of each cell,
    f_I = sum_c V_c P_c grad N_I(x_c), P_c = sum V_p P_p / sum V_p, V_c the cell volume (every occupied cell full):
-   the cell rule does not feel how many points a cell happens to hold, so it has no cell-crossing noise. */
+   the cell rule does not feel how many points a cell happens to hold, so it has no cell-crossing noise.
+   The stress of a strength model, sigma = s - (p + q) I, adds -sum_p V_p s_p grad N_I(x_p) (always point by
+   point), and a manufactured solution's body force sum_p N_I m_p b(X_p, t^n). Stencil entries that mirror a
+   node across a wall carry the reflected vectors (the sign st.s of each component). */
 static PetscErrorCode MPMScatter(MPM mpm, PetscBool force)
 {
   const MPMGrid  *g        = &mpm->grid;
   const PetscInt  d        = g->dim;
   const PetscBool cellrule = (PetscBool)(force && mpm->stress_integration == MPM_STRESS_CELL);
+  const PetscBool stress = (PetscBool)(force && mpm->has_stress), body = (PetscBool)(force && mpm->has_bodyforce);
+  const PetscReal tn = mpm->time - mpm->dt; /* the start of the step */
   MPMStencil      st;
   MPMPoints       pts;
   MPMNode        *node;
@@ -29,17 +34,28 @@ static PetscErrorCode MPMScatter(MPM mpm, PetscBool force)
   {
     const PetscReal *x = pts.f[MPM_FIELD_POSITION], *v = pts.f[MPM_FIELD_VELOCITY], *m = pts.f[MPM_FIELD_MASS];
     const PetscReal *V = pts.f[MPM_FIELD_VOLUME], *pr = pts.f[MPM_FIELD_PRESSURE], *q = pts.f[MPM_FIELD_VISCOSITY];
+    const PetscReal *F = mpm->track_F ? pts.f[MPM_FIELD_DEFGRAD] : NULL, *S = pts.f[MPM_FIELD_STRESS], *X = pts.f[MPM_FIELD_REFPOSITION];
 
     for (PetscInt p = 0; p < pts.n; p++) {
-      const PetscReal P = pr[p] + q[p];
-      MPMShapeEvaluate(mpm->shape, g, &x[p * d], &st);
+      const PetscReal P              = pr[p] + q[p];
+      PetscReal       b[MPM_MAX_DIM] = {0, 0, 0};
+      if (body) mpm->exact->ops.bodyforce(mpm->exact->data, tn, &X[p * d], F ? &F[p * d * d] : NULL, b);
+      MPMShapeEvaluate(mpm->shape, g, &x[p * d], F ? &F[p * d * d] : NULL, &st);
       for (PetscInt a = 0; a < st.n; a++) {
         MPMNode        *nd = &node[st.node[a]];
         const PetscReal wm = st.w[a] * m[p];
         nd->m += wm;
-        for (PetscInt k = 0; k < d; k++) nd->p[k] += wm * v[p * d + k];
+        for (PetscInt k = 0; k < d; k++) nd->p[k] += st.s[a][k] * wm * v[p * d + k];
         if (force && !cellrule)
-          for (PetscInt k = 0; k < d; k++) nd->f[k] += V[p] * P * st.dw[a][k];
+          for (PetscInt k = 0; k < d; k++) nd->f[k] += st.s[a][k] * V[p] * P * st.dw[a][k];
+        if (stress)
+          for (PetscInt k = 0; k < d; k++) {
+            PetscReal sg = 0.0;
+            for (PetscInt j = 0; j < d; j++) sg += S[p * d * d + k * d + j] * st.dw[a][j];
+            nd->f[k] -= st.s[a][k] * V[p] * sg;
+          }
+        if (body)
+          for (PetscInt k = 0; k < d; k++) nd->f[k] += st.s[a][k] * wm * b[k];
       }
       if (cellrule) {
         const PetscInt c = MPMLocalCell(g, &x[p * d]);
@@ -51,15 +67,14 @@ static PetscErrorCode MPMScatter(MPM mpm, PetscBool force)
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   if (cellrule) {
     for (PetscInt c = 0; c < g->ncells; c++) {
-      PetscReal      xc[MPM_MAX_DIM] = {0, 0, 0}, phiV, P;
-      const PetscInt ijk[3]          = {c % g->cm[0], (c / g->cm[0]) % g->cm[1], c / (g->cm[0] * g->cm[1])};
+      const PetscInt ijk[3] = {g->cs[0] + c % g->cm[0], g->cs[1] + (c / g->cm[0]) % g->cm[1], g->cs[2] + c / (g->cm[0] * g->cm[1])};
+      PetscReal      phiV, P;
       if (mpm->cellV[c] <= 0.0) continue;
       phiV = g->vcell;
       P    = mpm->cellS[c] / mpm->cellV[c];
-      for (PetscInt k = 0; k < d; k++) xc[k] = g->lo[k] + (g->cs[k] + ijk[k] + 0.5) * g->h[k];
-      MPMShapeEvaluate(mpm->shape, g, xc, &st);
+      MPMShapeEvaluateCell(mpm->shape, g, ijk, &st);
       for (PetscInt a = 0; a < st.n; a++)
-        for (PetscInt k = 0; k < d; k++) node[st.node[a]].f[k] += phiV * P * st.dw[a][k];
+        for (PetscInt k = 0; k < d; k++) node[st.node[a]].f[k] += st.s[a][k] * phiV * P * st.dw[a][k];
     }
   }
   PetscCall(VecRestoreArray(mpm->lnodes, (PetscScalar **)&node));
@@ -171,18 +186,20 @@ static PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscBool velocity, Petsc
   PetscCall(VecGetArrayRead(mpm->lnodes, (const PetscScalar **)&node));
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   {
-    PetscReal *x = pts.f[MPM_FIELD_POSITION], *v = pts.f[MPM_FIELD_VELOCITY], *L = pts.f[MPM_FIELD_GRADV], *e = pts.f[MPM_FIELD_ENERGY];
+    PetscReal       *x = pts.f[MPM_FIELD_POSITION], *v = pts.f[MPM_FIELD_VELOCITY], *L = pts.f[MPM_FIELD_GRADV], *e = pts.f[MPM_FIELD_ENERGY];
+    const PetscReal *F = mpm->track_F ? pts.f[MPM_FIELD_DEFGRAD] : NULL;
 
     for (PetscInt p = 0; p < pts.n; p++) {
       PetscReal vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, dv2 = 0.0;
-      MPMShapeEvaluate(mpm->shape, g, &x[p * d], &st);
+      MPMShapeEvaluate(mpm->shape, g, &x[p * d], F ? &F[p * d * d] : NULL, &st);
       for (PetscInt a = 0; a < st.n; a++) {
         const MPMNode *nd = &node[st.node[a]];
         for (PetscInt i = 0; i < d; i++) {
-          vpic[i] += st.w[a] * nd->p[i];
-          dv[i] += st.w[a] * (nd->p[i] - nd->v0[i]);
-          dv2 += st.w[a] * PetscSqr(nd->p[i] - nd->v0[i]);
-          for (PetscInt j = 0; j < d; j++) Lp[i * d + j] += nd->p[i] * st.dw[a][j];
+          const PetscReal vI = st.s[a][i] * nd->p[i], dvI = st.s[a][i] * (nd->p[i] - nd->v0[i]); /* mirrored: reflected */
+          vpic[i] += st.w[a] * vI;
+          dv[i] += st.w[a] * dvI;
+          dv2 += st.w[a] * dvI * dvI;
+          for (PetscInt j = 0; j < d; j++) Lp[i * d + j] += vI * st.dw[a][j];
         }
       }
       if (velocity) {
@@ -256,31 +273,56 @@ static inline PetscReal MPMDetIPlusDtL(PetscInt d, PetscReal dt, const PetscReal
    Rankine-Hugoniot jumps (the strong Sod shock sits 3.4 cells ahead with the midpoint rule, 0.2 with this one).
    Midpoint: pbar = (p^n + p^{n+1})/2 from one predictor-corrector pass through the EOS (second order along an
    isentrope, but it does more work on the points than the force did on the grid).
-   A non-physical state stops the run with its diagnosis. */
+   With a strength model, the work of the stress the force used, de = dt s^n : L / rho^n, also enters e, and
+   the model gives s^{n+1} from F^{n+1} = (I + dt L) F^n (tracked only when a model or the shape functions
+   read it). A non-physical state (or a CPDI domain the grid cannot hold) stops the run with its diagnosis. */
 static PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
 {
   const PetscInt  d        = mpm->grid.dim;
   const PetscBool midpoint = (PetscBool)(mpm->energy_update == MPM_ENERGY_MIDPOINT);
   MPMPoints       pts;
+  const PetscBool trackF = mpm->track_F, stress = mpm->has_stress;
   MPMEOS          eos[MPM_MAX_MATERIALS];
-  PetscInt        bad = -1, nbad;
+  MPMStrength     str[MPM_MAX_MATERIALS];
+  MPMShape        shape = mpm->shape;
+  PetscInt        bad   = -1, nbad;
 
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(mpm->log.constitutive, 0, 0, 0, 0));
-  for (PetscInt i = 0; i < mpm->nmat; i++) eos[i] = mpm->mat[i].eos;
+  for (PetscInt i = 0; i < mpm->nmat; i++) {
+    eos[i] = mpm->mat[i].eos;
+    str[i] = mpm->mat[i].strength;
+  }
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   {
     const PetscReal *L = pts.f[MPM_FIELD_GRADV], *m = pts.f[MPM_FIELD_MASS], *q = pts.f[MPM_FIELD_VISCOSITY], *mat = pts.f[MPM_FIELD_MATERIAL];
     PetscReal       *rho = pts.f[MPM_FIELD_DENSITY], *V = pts.f[MPM_FIELD_VOLUME], *e = pts.f[MPM_FIELD_ENERGY], *pr = pts.f[MPM_FIELD_PRESSURE];
-    PetscReal       *c = pts.f[MPM_FIELD_SOUNDSPEED], *T = pts.f[MPM_FIELD_TEMPERATURE];
+    PetscReal       *c = pts.f[MPM_FIELD_SOUNDSPEED], *T = pts.f[MPM_FIELD_TEMPERATURE], *F = pts.f[MPM_FIELD_DEFGRAD], *S = pts.f[MPM_FIELD_STRESS];
 
     for (PetscInt p = 0; p < pts.n; p++) {
-      const MPMEOS    E    = eos[(PetscInt)mat[p]];
-      const PetscReal J    = MPMDetIPlusDtL(d, dt, &L[p * d * d]);
-      const PetscReal rho1 = rho[p] / J, dvol = 1.0 / rho1 - 1.0 / rho[p];
-      PetscReal       e1, ppred, c2;
+      const MPMEOS      E    = eos[(PetscInt)mat[p]];
+      const MPMStrength Str  = str[(PetscInt)mat[p]];
+      const PetscReal   J    = MPMDetIPlusDtL(d, dt, &L[p * d * d]);
+      const PetscReal   rho1 = rho[p] / J, dvol = 1.0 / rho1 - 1.0 / rho[p];
+      PetscReal         e1, ppred, c2, cs2 = 0.0;
 
       e1 = e[p] - (pr[p] + q[p]) * dvol;
+      if (trackF) {
+        PetscReal Fn[MPM_MAX_DIM * MPM_MAX_DIM];
+        for (PetscInt i = 0; i < d; i++)
+          for (PetscInt j = 0; j < d; j++) {
+            Fn[i * d + j] = F[p * d * d + i * d + j];
+            for (PetscInt k = 0; k < d; k++) Fn[i * d + j] += dt * L[p * d * d + i * d + k] * F[p * d * d + k * d + j];
+          }
+        for (PetscInt i = 0; i < d * d; i++) F[p * d * d + i] = Fn[i];
+        if (shape->ops.admissible && bad < 0 && !shape->ops.admissible(shape->data, &mpm->grid, Fn)) bad = p;
+      }
+      if (stress && Str) {
+        PetscReal work = 0.0;
+        for (PetscInt i = 0; i < d * d; i++) work += S[p * d * d + i] * L[p * d * d + i];
+        e1 += dt * work / rho[p];
+        Str->ops.stress(Str->data, d, dt, &L[p * d * d], &F[p * d * d], rho1, &S[p * d * d], &cs2);
+      }
       if (midpoint) {
         MPMEOSPressureKernel(E, rho1, e1, &ppred, &c2); /* predictor */
         e1 = e[p] - (0.5 * (pr[p] + ppred) + q[p]) * dvol;
@@ -290,14 +332,15 @@ static PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
       e[p]   = e1;
       rho[p] = rho1;
       V[p]   = m[p] / rho1;
-      c[p]   = PetscSqrtReal(PetscMax(c2, 0.0));
+      c[p]   = PetscSqrtReal(PetscMax(c2, 0.0) + cs2);
       if (bad < 0 && !(rho1 > 0.0 && PetscIsNormalReal(rho1) && !PetscIsInfOrNanReal(e1) && !PetscIsInfOrNanReal(pr[p]) && c2 >= 0.0)) bad = p;
     }
     if (bad >= 0) {
       PetscMPIInt rank;
       PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
-      PetscCall(PetscPrintf(PETSC_COMM_SELF, "[%d] step %" PetscInt_FMT ", t = %g s: point %.0f at x = %g cm has rho = %g g/cm^3, e = %g erg/g, p = %g dyn/cm^2, c^2 = %g (det(I + dt L) = %g)\n", rank, mpm->steps, (double)mpm->time,
-                            (double)pts.f[MPM_FIELD_ID][bad], (double)pts.f[MPM_FIELD_POSITION][bad * d], (double)rho[bad], (double)e[bad], (double)pr[bad], (double)(c[bad] * c[bad]), (double)MPMDetIPlusDtL(d, dt, &L[bad * d * d])));
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "[%d] step %" PetscInt_FMT ", t = %g s: point %.0f at x = %g cm has rho = %g g/cm^3, e = %g erg/g, p = %g dyn/cm^2, c^2 = %g (det(I + dt L) = %g, det F = %g%s)\n", rank, mpm->steps, (double)mpm->time,
+                            (double)pts.f[MPM_FIELD_ID][bad], (double)pts.f[MPM_FIELD_POSITION][bad * d], (double)rho[bad], (double)e[bad], (double)pr[bad], (double)(c[bad] * c[bad]), (double)MPMDetIPlusDtL(d, dt, &L[bad * d * d]),
+                            (double)(trackF ? MPMDeterminant(d, &F[bad * d * d]) : 1.0), shape->ops.admissible ? "; a CPDI domain must stay inside -mpm_shape_cpdi_reach cells of its point" : ""));
     }
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
@@ -331,6 +374,7 @@ PetscErrorCode MPMProjectToGrid(MPM mpm)
 PetscErrorCode MPMStep(MPM mpm, PetscReal dt)
 {
   PetscFunctionBegin;
+  mpm->dt = dt;
   PetscCall(MPMParticlesToGrid(mpm));                                        /* m_I, (mv)_I, f_I = f_int       */
   if (mpm->has_gravity) PetscCall(MPMGravity(mpm));                          /* f_I += m_I g                   */
   PetscCall(MPMGridAdvance(mpm, dt));                                        /* (mv)_I += dt f_I; walls        */
@@ -345,7 +389,8 @@ PetscErrorCode MPMStep(MPM mpm, PetscReal dt)
 /* Initial internal energy, pressure and sound speed from each point's density and temperature. */
 PetscErrorCode MPMConstitutiveInitialize(MPM mpm)
 {
-  MPMPoints pts;
+  const PetscInt d = mpm->grid.dim;
+  MPMPoints      pts;
 
   PetscFunctionBegin;
   PetscCall(MPMPointsGetArrays(mpm, &pts));
@@ -353,8 +398,11 @@ PetscErrorCode MPMConstitutiveInitialize(MPM mpm)
     const MPMEOS E = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].eos;
     PetscReal    c2;
     MPMEOSEnergyKernel(E, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_TEMPERATURE][p], &pts.f[MPM_FIELD_ENERGY][p]);
+    const MPMStrength S   = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].strength;
+    PetscReal         cs2 = 0.0;
     MPMEOSPressureKernel(E, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_ENERGY][p], &pts.f[MPM_FIELD_PRESSURE][p], &c2);
-    pts.f[MPM_FIELD_SOUNDSPEED][p] = PetscSqrtReal(PetscMax(c2, 0.0));
+    if (S) S->ops.stress(S->data, d, 0.0, &pts.f[MPM_FIELD_GRADV][p * d * d], &pts.f[MPM_FIELD_DEFGRAD][p * d * d], pts.f[MPM_FIELD_DENSITY][p], &pts.f[MPM_FIELD_STRESS][p * d * d], &cs2);
+    pts.f[MPM_FIELD_SOUNDSPEED][p] = PetscSqrtReal(PetscMax(c2, 0.0) + cs2);
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   PetscFunctionReturn(PETSC_SUCCESS);

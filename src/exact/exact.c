@@ -76,10 +76,31 @@ PetscErrorCode MPMExactSetUp(MPMExact exact, MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode MPMExactEvaluate(MPMExact exact, PetscReal t, const PetscReal x[], PetscReal *rho, PetscReal v[], PetscReal *p, PetscReal *T)
+PetscErrorCode MPMExactEvaluate(MPMExact exact, PetscReal t, const PetscReal x[], const PetscReal X[], PetscReal *rho, PetscReal v[], PetscReal *p, PetscReal *T)
 {
   PetscFunctionBegin;
-  exact->ops.evaluate(exact->data, t, x, rho, v, p, T);
+  exact->ops.evaluate(exact->data, t, x, X, rho, v, p, T);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Puts the points in the exact solution's initial state where it does not start at rest on the seeding
+   lattice: x = X + u(X, 0), v, F, and with them V = J V_0 and rho = m / V. Points that changed rank follow. */
+PetscErrorCode MPMExactInitialize(MPMExact exact, MPM mpm)
+{
+  const PetscInt d = mpm->grid.dim;
+  MPMPoints      pts;
+
+  PetscFunctionBegin;
+  if (!exact->ops.initial) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt p = 0; p < pts.n; p++) {
+    PetscReal *F = &pts.f[MPM_FIELD_DEFGRAD][p * d * d];
+    exact->ops.initial(exact->data, &pts.f[MPM_FIELD_REFPOSITION][p * d], &pts.f[MPM_FIELD_POSITION][p * d], &pts.f[MPM_FIELD_VELOCITY][p * d], F);
+    pts.f[MPM_FIELD_VOLUME][p] *= MPMDeterminant(d, F);
+    pts.f[MPM_FIELD_DENSITY][p] = pts.f[MPM_FIELD_MASS][p] / pts.f[MPM_FIELD_VOLUME][p];
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(MPMMigrate(mpm));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

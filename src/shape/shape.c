@@ -30,7 +30,8 @@ PetscErrorCode MPMShapeSetType(MPMShape shape, MPMShapeType type)
   PetscCall(MPMClassSetType(MPMShapeList, "shape function", "-mpm_shape_type", type, (PetscErrorCode(**)(void *)) & create));
   if (shape->ops.destroy) PetscCall(shape->ops.destroy(shape));
   PetscCall(PetscMemzero(&shape->ops, sizeof(shape->ops)));
-  shape->data = NULL;
+  shape->data    = NULL;
+  shape->needs_F = PETSC_FALSE;
   PetscCall(PetscStrncpy(shape->type_name, type, sizeof(shape->type_name)));
   PetscCall(create(shape));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -48,6 +49,53 @@ PetscErrorCode MPMShapeSetFromOptions(MPMShape shape)
   if (shape->ops.setfromoptions) PetscCall(shape->ops.setfromoptions(shape, PetscOptionsObject));
   PetscOptionsEnd();
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Tells the type the grid and the points per cell per direction (GIMP and CPDI size the point domains with it). */
+PetscErrorCode MPMShapeSetUp(MPMShape shape, const MPMGrid *g, PetscInt ppc)
+{
+  PetscFunctionBegin;
+  if (shape->ops.setup) PetscCall(shape->ops.setup(shape, g, ppc));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The cell-averaged shape functions of the global cell ijk, (1/V_c) int_c N_I dx and (1/V_c) int_c grad N_I dx,
+   for the cell-rule internal force and for cell-centred reads of the grid. Per direction the 1D basis is
+   averaged with two-point Gauss rules on each half of the cell: exact for the piecewise polynomials of every
+   type whose breakpoints are on vertices and cell centres (linear, B-splines; for linear it is the value at
+   the centre), and the cell average of the point-domain basis for GIMP. */
+void MPMShapeEvaluateCell(MPMShape shape, const MPMGrid *g, const PetscInt ijk[], MPMStencil *st)
+{
+  const PetscReal gp[2] = {0.5 - 0.5 / PetscSqrtReal(3.0), 0.5 + 0.5 / PetscSqrtReal(3.0)};
+  PetscInt        idx[MPM_MAX_DIM][MPM_MAX_1D], nn[MPM_MAX_DIM];
+  PetscReal       w[MPM_MAX_DIM][MPM_MAX_1D], dw[MPM_MAX_DIM][MPM_MAX_1D], sg[MPM_MAX_DIM][MPM_MAX_1D];
+
+  for (PetscInt k = 0; k < g->dim; k++) {
+    const PetscInt base           = ijk[k] - 3; /* every type touches nodes i-3 .. i+4 at most from cell i */
+    PetscReal      sw[MPM_MAX_1D] = {0}, sdw[MPM_MAX_1D] = {0};
+    PetscInt       lo = MPM_MAX_1D, hi = -1;
+    for (PetscInt half = 0; half < 2; half++)
+      for (PetscInt q = 0; q < 2; q++) {
+        PetscReal wq[MPM_MAX_1D], dwq[MPM_MAX_1D];
+        PetscInt  first, n;
+        shape->ops.basis1d(shape->data, ijk[k] + 0.5 * (half + gp[q]), &first, &n, wq, dwq);
+        for (PetscInt a = 0; a < n; a++) {
+          const PetscInt j = first + a - base;
+          sw[j] += 0.25 * wq[a];
+          sdw[j] += 0.25 * dwq[a];
+          lo = PetscMin(lo, j);
+          hi = PetscMax(hi, j);
+        }
+      }
+    nn[k] = hi - lo + 1;
+    for (PetscInt a = 0; a < nn[k]; a++) {
+      idx[k][a] = base + lo + a;
+      w[k][a]   = sw[lo + a];
+      dw[k][a]  = sdw[lo + a] / g->h[k];
+    }
+    MPMShapeFold1d(g, k, nn[k], idx[k], sg[k]);
+  }
+  MPMShapeTensor(g, nn, idx, w, dw, sg, st);
 }
 
 PetscErrorCode MPMShapeView(MPMShape shape, PetscViewer viewer)

@@ -17,7 +17,7 @@ typedef struct {
   MPMRiemannSolution sol;
 } Exact_Riemann;
 
-static void MPMExactEvaluate_Riemann(void *ctx, PetscReal t, const PetscReal x[], PetscReal *rho, PetscReal v[], PetscReal *p, PetscReal *T)
+static void MPMExactEvaluate_Riemann(void *ctx, PetscReal t, const PetscReal x[], const PetscReal X[], PetscReal *rho, PetscReal v[], PetscReal *p, PetscReal *T)
 {
   const Exact_Riemann *er   = (const Exact_Riemann *)ctx;
   const PetscReal      S    = t > 0 ? (x[0] - er->x0) / t : (x[0] <= er->x0 ? -PETSC_MAX_REAL : PETSC_MAX_REAL);

@@ -10,14 +10,11 @@ static PetscInt MPMShapeSupport_Linear(void *ctx)
   return 1;
 }
 
-static void MPMShapeBasis1d_Linear(void *ctx, PetscReal xi, PetscInt ncells, PetscInt *first, PetscInt *n, PetscReal w[], PetscReal dw[])
+static void MPMShapeBasis1d_Linear(void *ctx, PetscReal xi, PetscInt *first, PetscInt *n, PetscReal w[], PetscReal dw[])
 {
-  PetscInt  i = (PetscInt)PetscFloorReal(xi);
-  PetscReal t;
+  const PetscInt  i = (PetscInt)PetscFloorReal(xi);
+  const PetscReal t = xi - i;
 
-  if (i < 0) i = 0;
-  if (i > ncells - 1) i = ncells - 1;
-  t      = xi - i;
   *first = i;
   *n     = 2;
   w[0]   = 1.0 - t;

@@ -58,22 +58,21 @@ static void LimitedCellJumps(Visc_Limited *lim, MPMShape shape, const MPMGrid *g
 
   for (PetscInt c = 0; c < lim->nc; c++) {
     const PetscInt ijk[3]          = {c % lim->np[0], (c / lim->np[0]) % lim->np[1], c / (lim->np[0] * lim->np[1])};
-    PetscReal      xc[MPM_MAX_DIM] = {0, 0, 0};
+    PetscInt       gc[MPM_MAX_DIM] = {0, 0, 0};
     PetscBool      ok              = PETSC_TRUE;
 
     for (PetscInt k = 0; k < d; k++) {
-      const PetscInt gc = g->cs[k] - LIMITED_PAD + ijk[k];
-      if (gc < 0 || gc >= g->cells[k]) ok = PETSC_FALSE;
-      xc[k] = g->lo[k] + (gc + 0.5) * g->h[k];
+      gc[k] = g->cs[k] - LIMITED_PAD + ijk[k];
+      if (gc[k] < 0 || gc[k] >= g->cells[k]) ok = PETSC_FALSE;
     }
     lim->ok[c] = ok;
     if (!ok) continue;
-    MPMShapeEvaluate(shape, g, xc, &st);
+    MPMShapeEvaluateCell(shape, g, gc, &st); /* the cell average of the velocity gradient */
     for (PetscInt k = 0; k < d; k++) lim->du[c * d + k] = 0.0;
     for (PetscInt a = 0; a < st.n; a++) {
       const MPMNode *nd = &node[st.node[a]];
       if (!(nd->m > 0.0)) lim->ok[c] = PETSC_FALSE;
-      for (PetscInt k = 0; k < d; k++) lim->du[c * d + k] += g->h[k] * nd->p[k] * st.dw[a][k];
+      for (PetscInt k = 0; k < d; k++) lim->du[c * d + k] += g->h[k] * st.s[a][k] * nd->p[k] * st.dw[a][k];
     }
   }
 }

@@ -1,0 +1,177 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* CPDI1, the convected particle domain interpolation of Sadeghirad, Brannon & Burghardt, IJNME 86 (2011)
+   1435, doi:10.1002/nme.3110. The point's domain is the parallelepiped x_p + R [-1, 1]^d, R = F R0 with
+   R0 = diag(h / (2 ppc)): it follows the deformation gradient. The linear grid basis is interpolated from
+   the 2^d corners x_c = x_p + R s_c (s_c in {-1, 1}^d) and averaged over the domain:
+     S_I = 2^-d sum_c N_I(x_c),   grad S_I = 2^-d R^-T sum_c N_I(x_c) s_c
+   (in 1D, (N_I(x_+) - N_I(x_-)) / (2 l)). Partition of unity and linear reproduction hold for any R.
+   The corners must stay within -mpm_shape_cpdi_reach cells of the point's cell (ghost width reach + 1):
+   a point whose domain stretches further stops the run with its diagnosis. */
+#include "../../petmpmimpl.h"
+
+typedef struct {
+  PetscReal l0[MPM_MAX_DIM]; /* undeformed half-width of the domain [cm] */
+  PetscInt  reach;           /* how far the corners may reach beyond the point's cell [cells] */
+} Shape_CPDI;
+
+static PetscInt MPMShapeSupport_CPDI(void *ctx)
+{
+  return ((const Shape_CPDI *)ctx)->reach + 1;
+}
+
+/* The grid basis is linear; the cell rule and cell-centred reads use it. */
+static void MPMShapeBasis1d_CPDI(void *ctx, PetscReal xi, PetscInt *first, PetscInt *n, PetscReal w[], PetscReal dw[])
+{
+  const PetscInt i = (PetscInt)PetscFloorReal(xi);
+
+  *first = i;
+  *n     = 2;
+  w[0]   = 1.0 - (xi - i);
+  w[1]   = xi - i;
+  dw[0]  = -1.0;
+  dw[1]  = 1.0;
+}
+
+/* R = F diag(l0) (F NULL: the identity) and R^-1. */
+static void CPDIDomain(const Shape_CPDI *cp, PetscInt d, const PetscReal F[], PetscReal R[], PetscReal Ri[])
+{
+  PetscReal det;
+
+  for (PetscInt i = 0; i < d; i++)
+    for (PetscInt k = 0; k < d; k++) R[i * d + k] = (F ? F[i * d + k] : (i == k ? 1.0 : 0.0)) * cp->l0[k];
+  det = MPMDeterminant(d, R);
+  if (d == 1) Ri[0] = 1.0 / R[0];
+  else if (d == 2) {
+    Ri[0] = R[3] / det;
+    Ri[1] = -R[1] / det;
+    Ri[2] = -R[2] / det;
+    Ri[3] = R[0] / det;
+  } else {
+    Ri[0] = (R[4] * R[8] - R[5] * R[7]) / det;
+    Ri[1] = (R[2] * R[7] - R[1] * R[8]) / det;
+    Ri[2] = (R[1] * R[5] - R[2] * R[4]) / det;
+    Ri[3] = (R[5] * R[6] - R[3] * R[8]) / det;
+    Ri[4] = (R[0] * R[8] - R[2] * R[6]) / det;
+    Ri[5] = (R[2] * R[3] - R[0] * R[5]) / det;
+    Ri[6] = (R[3] * R[7] - R[4] * R[6]) / det;
+    Ri[7] = (R[1] * R[6] - R[0] * R[7]) / det;
+    Ri[8] = (R[0] * R[4] - R[1] * R[3]) / det;
+  }
+}
+
+static void MPMShapeEvaluate_CPDI(void *ctx, const MPMGrid *g, const PetscReal x[], const PetscReal F[], MPMStencil *st)
+{
+  const Shape_CPDI *cp = (const Shape_CPDI *)ctx;
+  const PetscInt    d = g->dim, nc = 1 << d;
+  const PetscReal   scale = 1.0 / nc;
+  PetscReal         R[MPM_MAX_DIM * MPM_MAX_DIM], Ri[MPM_MAX_DIM * MPM_MAX_DIM];
+
+  CPDIDomain(cp, d, F, R, Ri);
+  st->n = 0;
+  for (PetscInt c = 0; c < nc; c++) {
+    PetscReal s[MPM_MAX_DIM], gs[MPM_MAX_DIM] = {0, 0, 0}, xc[MPM_MAX_DIM];
+    PetscInt  idx[MPM_MAX_DIM][2];
+    PetscReal w[MPM_MAX_DIM][2], sg[MPM_MAX_DIM][2];
+    for (PetscInt k = 0; k < d; k++) s[k] = (c >> k) & 1 ? 1.0 : -1.0;
+    for (PetscInt j = 0; j < d; j++)
+      for (PetscInt k = 0; k < d; k++) gs[j] += Ri[k * d + j] * s[k]; /* (R^-T s)_j */
+    for (PetscInt i = 0; i < d; i++) {
+      PetscInt  first, n;
+      PetscReal dw[2];
+      xc[i] = x[i];
+      for (PetscInt k = 0; k < d; k++) xc[i] += R[i * d + k] * s[k];
+      MPMShapeBasis1d_CPDI(NULL, (xc[i] - g->lo[i]) / g->h[i], &first, &n, w[i], dw);
+      idx[i][0] = first;
+      idx[i][1] = first + 1;
+      MPMShapeFold1d(g, i, 2, idx[i], sg[i]);
+    }
+    for (PetscInt a = 0; a < (1 << d); a++) {
+      PetscReal N    = scale;
+      PetscInt  node = 0;
+      for (PetscInt i = d - 1; i >= 0; i--) {
+        const PetscInt b = (a >> i) & 1;
+        N *= w[i][b];
+        node = node * g->gm[i] + idx[i][b];
+        st->s[st->n][i] = sg[i][b];
+      }
+      st->node[st->n] = node;
+      st->w[st->n]    = N;
+      for (PetscInt j = 0; j < d; j++) st->dw[st->n][j] = N * gs[j];
+      st->n++;
+    }
+  }
+}
+
+/* The domain's corners stay within reach cells of its centre, and it is not inverted. */
+static PetscBool MPMShapeAdmissible_CPDI(void *ctx, const MPMGrid *g, const PetscReal F[])
+{
+  const Shape_CPDI *cp = (const Shape_CPDI *)ctx;
+  const PetscInt    d  = g->dim;
+  PetscReal         R[MPM_MAX_DIM * MPM_MAX_DIM], Ri[MPM_MAX_DIM * MPM_MAX_DIM];
+
+  if (!(MPMDeterminant(d, F) > 0.0)) return PETSC_FALSE;
+  CPDIDomain(cp, d, F, R, Ri);
+  for (PetscInt i = 0; i < d; i++) {
+    PetscReal ext = 0.0;
+    for (PetscInt k = 0; k < d; k++) ext += PetscAbsReal(R[i * d + k]);
+    if (!(ext <= cp->reach * g->h[i])) return PETSC_FALSE;
+  }
+  return PETSC_TRUE;
+}
+
+static PetscErrorCode MPMShapeSetUp_CPDI(MPMShape shape, const MPMGrid *g, PetscInt ppc)
+{
+  Shape_CPDI *cp = (Shape_CPDI *)shape->data;
+
+  PetscFunctionBegin;
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) cp->l0[k] = 0.5 * g->h[k] / ppc;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMShapeSetFromOptions_CPDI(MPMShape shape, PetscOptionItems *PetscOptionsObject)
+{
+  Shape_CPDI *cp = (Shape_CPDI *)shape->data;
+
+  PetscFunctionBegin;
+  PetscOptionsHeadBegin(PetscOptionsObject, "CPDI shape functions");
+  PetscCall(PetscOptionsRangeInt("-mpm_shape_cpdi_reach", "How far a point domain's corners may reach beyond its cell [cells], 1 to 4 (ghost width = reach + 1)", "", cp->reach, &cp->reach, NULL, 1, 4));
+  PetscOptionsHeadEnd();
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMShapeView_CPDI(MPMShape shape, PetscViewer viewer)
+{
+  Shape_CPDI *cp = (Shape_CPDI *)shape->data;
+
+  PetscFunctionBegin;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "  undeformed domain half-width %g cm, corners reach %" PetscInt_FMT " cell(s)\n", (double)cp->l0[0], cp->reach));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMShapeDestroy_CPDI(MPMShape shape)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscFree(shape->data));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMShapeCreate_CPDI(MPMShape shape)
+{
+  Shape_CPDI *cp;
+
+  PetscFunctionBegin;
+  PetscCall(PetscNew(&cp));
+  cp->reach = 2;
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) cp->l0[k] = 0.25; /* until MPMShapeSetUp */
+  shape->data               = cp;
+  shape->needs_F            = PETSC_TRUE;
+  shape->ops.support        = MPMShapeSupport_CPDI;
+  shape->ops.basis1d        = MPMShapeBasis1d_CPDI;
+  shape->ops.evaluate       = MPMShapeEvaluate_CPDI;
+  shape->ops.admissible     = MPMShapeAdmissible_CPDI;
+  shape->ops.setup          = MPMShapeSetUp_CPDI;
+  shape->ops.setfromoptions = MPMShapeSetFromOptions_CPDI;
+  shape->ops.view           = MPMShapeView_CPDI;
+  shape->ops.destroy        = MPMShapeDestroy_CPDI;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -1,0 +1,101 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* Strength-model class: -mat_<name>_strength_type selects the stress a material carries besides its EOS
+   pressure, sigma = s - (p + q) I. Type none (the default) takes the material out of the stress path: a scene
+   whose materials are all fluids never touches a stress tensor. */
+#include "../petmpmimpl.h"
+
+static PetscFunctionList MPMStrengthList = NULL;
+
+PetscErrorCode MPMStrengthRegister(const char name[], PetscErrorCode (*create)(MPMStrength))
+{
+  PetscFunctionBegin;
+  PetscCall(PetscFunctionListAdd(&MPMStrengthList, name, create));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMStrengthCreate(MPI_Comm comm, MPMStrength *str)
+{
+  PetscFunctionBegin;
+  PetscCall(MPMInitializePackage());
+  PetscCall(PetscNew(str));
+  (*str)->comm = comm;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMStrengthSetOptionsPrefix(MPMStrength str, const char prefix[])
+{
+  PetscFunctionBegin;
+  PetscCall(PetscFree(str->prefix));
+  PetscCall(PetscStrallocpy(prefix, &str->prefix));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMStrengthSetType(MPMStrength str, MPMStrengthType type)
+{
+  PetscErrorCode (*create)(MPMStrength);
+  char option[256];
+
+  PetscFunctionBegin;
+  PetscCall(PetscSNPrintf(option, sizeof(option), "-%sstrength_type", str->prefix ? str->prefix : ""));
+  PetscCall(MPMClassSetType(MPMStrengthList, "strength model", option, type, (PetscErrorCode(**)(void *)) & create));
+  if (str->ops.destroy) PetscCall(str->ops.destroy(str));
+  PetscCall(PetscMemzero(&str->ops, sizeof(str->ops)));
+  str->data = NULL;
+  PetscCall(PetscStrncpy(str->type_name, type, sizeof(str->type_name)));
+  PetscCall(create(str));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMStrengthSetFromOptions(MPMStrength str)
+{
+  char      type[MPM_MAX_NAME];
+  PetscBool set;
+
+  PetscFunctionBegin;
+  if (!str->type_name[0]) PetscCall(MPMStrengthSetType(str, MPMSTRENGTHNONE));
+  PetscOptionsBegin(str->comm, str->prefix, "Strength model", "MPMStrength");
+  PetscCall(PetscOptionsFList("-strength_type", "Stress besides the EOS pressure", "MPMStrengthSetType", MPMStrengthList, str->type_name, type, sizeof(type), &set));
+  if (set) PetscCall(MPMStrengthSetType(str, type));
+  if (str->ops.setfromoptions) PetscCall(str->ops.setfromoptions(str, PetscOptionsObject));
+  PetscOptionsEnd();
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Whether the type computes a stress (none does not: the material leaves the stress path). */
+PetscErrorCode MPMStrengthIsActive(MPMStrength str, PetscBool *active)
+{
+  PetscFunctionBegin;
+  *active = (PetscBool)(str->ops.stress != NULL);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMStrengthView(MPMStrength str, PetscViewer viewer)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "Strength: %s\n", str->type_name));
+  if (str->ops.view) {
+    PetscCall(PetscViewerASCIIPushTab(viewer));
+    PetscCall(str->ops.view(str, viewer));
+    PetscCall(PetscViewerASCIIPopTab(viewer));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMStrengthDestroy(MPMStrength *str)
+{
+  PetscFunctionBegin;
+  if (!*str) PetscFunctionReturn(PETSC_SUCCESS);
+  if ((*str)->ops.destroy) PetscCall((*str)->ops.destroy(*str));
+  PetscCall(PetscFree((*str)->prefix));
+  PetscCall(PetscFree(*str));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Pointwise evaluation for tests; the time loop calls the kernel directly. */
+PetscErrorCode MPMStrengthStress(MPMStrength str, PetscInt d, PetscReal dt, const PetscReal L[], const PetscReal F[], PetscReal rho, PetscReal s[], PetscReal *c2)
+{
+  PetscFunctionBegin;
+  PetscCheck(str->ops.stress, str->comm, PETSC_ERR_ARG_WRONGSTATE, "Strength model %s computes no stress", str->type_name);
+  str->ops.stress(str->data, d, dt, L, F, rho, s, c2);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
