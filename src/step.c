@@ -133,8 +133,11 @@ static PetscErrorCode MPMGravity(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* v_I^n = (mv)_I / m_I, (mv)_I += dt f_I, v_I^{n+1} = (mv)_I / m_I, then walls. The new velocity is stored
-   in p (as velocity) for the gather; v0 keeps v_I^n for the FLIP increment. */
+/* v_I^n = (mv)_I / m_I, (mv)_I += dt_kick f_I, v_I^{n+1} = (mv)_I / m_I, then walls. The new velocity is stored
+   in p (as velocity) for the gather; v0 keeps v_I^n for the FLIP increment. The velocities live at half steps
+   (leapfrog: the force at t^n kicks v^{n-1/2} to v^{n+1/2}, which then moves the points from t^n to t^{n+1}),
+   so the kick spans dt_kick = (dt_{n-1} + dt_n)/2, dt_n/2 on the first step (v^{1/2} from v^0). With the
+   plain dt_n a varying CFL step makes the scheme first order in time. */
 static PetscErrorCode MPMGridAdvance(MPM mpm, PetscReal dt)
 {
   const PetscInt d = mpm->grid.dim;
@@ -373,11 +376,13 @@ PetscErrorCode MPMProjectToGrid(MPM mpm)
 /* One explicit MPM step. -log_view shows a row per phase. */
 PetscErrorCode MPMStep(MPM mpm, PetscReal dt)
 {
+  const PetscReal kick = 0.5 * (mpm->dt + dt); /* mpm->dt: the previous step, 0 before the first */
+
   PetscFunctionBegin;
   mpm->dt = dt;
   PetscCall(MPMParticlesToGrid(mpm));                                        /* m_I, (mv)_I, f_I = f_int       */
   if (mpm->has_gravity) PetscCall(MPMGravity(mpm));                          /* f_I += m_I g                   */
-  PetscCall(MPMGridAdvance(mpm, dt));                                        /* (mv)_I += dt f_I; walls        */
+  PetscCall(MPMGridAdvance(mpm, kick));                                      /* (mv)_I += dt_kick f_I; walls   */
   PetscCall(MPMGridToParticles(mpm, dt));                                    /* v_p; USL: x_p, L_p             */
   if (mpm->scheme == MPM_SCHEME_MUSL) PetscCall(MPMRemapMomentum(mpm, dt));  /* MUSL: v_I from v_p; x_p, L_p   */
   if (mpm->viscosity) PetscCall(MPMViscosityApply(mpm->viscosity, mpm, dt)); /* q_p                            */
