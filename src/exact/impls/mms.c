@@ -20,7 +20,7 @@ static const char *const MMSProblems[] = {"axis_aligned", "vortex", "MMSProblem"
 typedef struct {
   MMSProblem problem;
   PetscInt   dim;
-  PetscReal  A, c;           /* amplitude, time frequency             */
+  PetscReal  A, c;             /* amplitude, time frequency             */
   PetscReal  mu, lambda, rho0; /* material [dyn/cm^2], [g/cm^d]        */
 } Exact_MMS;
 
@@ -80,7 +80,8 @@ static void MPMExactDisplacement_MMS(void *ctx, PetscReal t, const PetscReal X[]
   const Exact_MMS *mm = (const Exact_MMS *)ctx;
   PetscReal        v[MPM_MAX_DIM], Fd[MPM_MAX_DIM], x[MPM_MAX_DIM];
 
-  if (mm->problem == MMS_AXIS_ALIGNED) AxisAligned(mm, t, X, u, v, Fd);
+  if (mm->problem == MMS_AXIS_ALIGNED)
+    AxisAligned(mm, t, X, u, v, Fd);
   else {
     Vortex(mm, t, X, x, v, NULL);
     for (PetscInt k = 0; k < 2; k++) u[k] = x[k] - X[k];
@@ -99,7 +100,8 @@ static void MPMExactInitial_MMS(void *ctx, const PetscReal X[], PetscReal x[], P
       x[k] = X[k] + u[k];
       for (PetscInt j = 0; j < d; j++) F[k * d + j] = k == j ? Fd[k] : 0.0;
     }
-  } else Vortex(mm, 0.0, X, x, v, F);
+  } else
+    Vortex(mm, 0.0, X, x, v, F);
 }
 
 /* b(X, t): the exact solution's, not the point's, deformation enters (the force is a given field). */
@@ -118,8 +120,8 @@ static void MPMExactBodyForce_MMS(void *ctx, PetscReal t, const PetscReal X[], c
     const PetscReal al = A * s * a3 * a3 * a5 * a5, beta = PetscAtan2Real(X[1], X[0]) + al;
     const PetscReal br = -R * A * A * c * c * pi * pi * co * co * PetscPowReal(a3, 4) * PetscPowReal(a5, 4) + (2.0 / mm->rho0) * 2048.0 * a5 * a5 * (R - 1.0) * (R - 1.0) * a3 * a3 * A * A * s * s * R * mm->mu;
     const PetscReal bt = -A * s * (R * c * c * pi * pi * a3 * a3 * a5 * a5 + (64.0 * mm->mu / mm->rho0) * (96.0 * R * R * R - 240.0 * R * R + 188.0 * R - 45.0));
-    b[0] = br * PetscCosReal(beta) - bt * PetscSinReal(beta);
-    b[1] = br * PetscSinReal(beta) + bt * PetscCosReal(beta);
+    b[0]               = br * PetscCosReal(beta) - bt * PetscSinReal(beta);
+    b[1]               = br * PetscSinReal(beta) + bt * PetscCosReal(beta);
   }
 }
 

@@ -25,7 +25,8 @@ static void MPMShapeBasis1d_BSpline2(void *ctx, PetscReal xi, PetscInt *first, P
     } else if (ar < 1.5) {
       w[a]  = 0.5 * PetscSqr(1.5 - ar);
       dw[a] = -sgn * (1.5 - ar);
-    } else w[a] = dw[a] = 0.0;
+    } else
+      w[a] = dw[a] = 0.0;
   }
 }
 

@@ -25,7 +25,8 @@ static void MPMShapeBasis1d_BSpline3(void *ctx, PetscReal xi, PetscInt *first, P
     } else if (ar < 2.0) {
       w[a]  = PetscPowReal(2.0 - ar, 3) / 6.0;
       dw[a] = -sgn * 0.5 * PetscSqr(2.0 - ar);
-    } else w[a] = dw[a] = 0.0;
+    } else
+      w[a] = dw[a] = 0.0;
   }
 }
 

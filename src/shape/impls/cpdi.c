@@ -40,7 +40,8 @@ static void CPDIDomain(const Shape_CPDI *cp, PetscInt d, const PetscReal F[], Pe
   for (PetscInt i = 0; i < d; i++)
     for (PetscInt k = 0; k < d; k++) R[i * d + k] = (F ? F[i * d + k] : (i == k ? 1.0 : 0.0)) * cp->l0[k];
   det = MPMDeterminant(d, R);
-  if (d == 1) Ri[0] = 1.0 / R[0];
+  if (d == 1)
+    Ri[0] = 1.0 / R[0];
   else if (d == 2) {
     Ri[0] = R[3] / det;
     Ri[1] = -R[1] / det;
@@ -91,7 +92,7 @@ static void MPMShapeEvaluate_CPDI(void *ctx, const MPMGrid *g, const PetscReal x
       for (PetscInt i = d - 1; i >= 0; i--) {
         const PetscInt b = (a >> i) & 1;
         N *= w[i][b];
-        node = node * g->gm[i] + idx[i][b];
+        node            = node * g->gm[i] + idx[i][b];
         st->s[st->n][i] = sg[i][b];
       }
       st->node[st->n] = node;

@@ -36,7 +36,8 @@ static void MPMShapeBasis1d_GIMP(void *ctx, PetscReal xi, PetscInt *first, Petsc
     } else if (ar < 1.0 + l) {
       w[a]  = PetscSqr(1.0 + l - ar) / (4.0 * l);
       dw[a] = -sgn * (1.0 + l - ar) / (2.0 * l);
-    } else w[a] = dw[a] = 0.0;
+    } else
+      w[a] = dw[a] = 0.0;
   }
 }
 

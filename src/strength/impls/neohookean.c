@@ -15,7 +15,7 @@ typedef struct {
 static void MPMStrengthStress_NeoHookean(void *ctx, PetscInt d, PetscReal dt, const PetscReal L[], const PetscReal F[], PetscReal rho, PetscReal s[], PetscReal *c2)
 {
   const Strength_NeoHookean *nh = (const Strength_NeoHookean *)ctx;
-  const PetscReal            J  = MPMDeterminant(d, F), Jinv = 1.0 / J, vol = nh->lambda * PetscLogReal(J);
+  const PetscReal            J = MPMDeterminant(d, F), Jinv = 1.0 / J, vol = nh->lambda * PetscLogReal(J);
 
   for (PetscInt i = 0; i < d; i++)
     for (PetscInt j = 0; j < d; j++) {
@@ -67,16 +67,16 @@ PetscErrorCode MPMStrengthCreate_NeoHookean(MPMStrength str)
 
   PetscFunctionBegin;
   PetscCall(PetscNew(&nh));
-  nh->E                     = 1.0e4;
-  nh->nu                    = 0.3;
-  nh->mu                    = nh->E / (2.0 * (1.0 + nh->nu));
-  nh->lambda                = nh->E * nh->nu / ((1.0 + nh->nu) * (1.0 - 2.0 * nh->nu));
-  str->data                 = nh;
-  str->needs_F              = PETSC_TRUE;
-  str->ops.stress           = MPMStrengthStress_NeoHookean;
-  str->ops.setfromoptions   = MPMStrengthSetFromOptions_NeoHookean;
-  str->ops.view             = MPMStrengthView_NeoHookean;
-  str->ops.destroy          = MPMStrengthDestroy_NeoHookean;
+  nh->E                   = 1.0e4;
+  nh->nu                  = 0.3;
+  nh->mu                  = nh->E / (2.0 * (1.0 + nh->nu));
+  nh->lambda              = nh->E * nh->nu / ((1.0 + nh->nu) * (1.0 - 2.0 * nh->nu));
+  str->data               = nh;
+  str->needs_F            = PETSC_TRUE;
+  str->ops.stress         = MPMStrengthStress_NeoHookean;
+  str->ops.setfromoptions = MPMStrengthSetFromOptions_NeoHookean;
+  str->ops.view           = MPMStrengthView_NeoHookean;
+  str->ops.destroy        = MPMStrengthDestroy_NeoHookean;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
