@@ -47,6 +47,28 @@ int main(int argc, char **argv)
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s idealgas: sound speed vs isentropic FD rel. error %.2e (tol 1e-6), T round trip %.1e (tol 1e-14), p = (gamma-1) rho Cv T %.1e (tol 1e-14)\n", fails ? "FAILED" : "PASSED", (double)worst_c, (double)worst_T,
                         (double)worst_p));
   PetscCall(MPMEOSDestroy(&eos));
+  {
+    /* neo-Hookean: simple shear F = [[1, g], [0, 1]] gives sigma = mu [[g^2, g], [g, 0]] (J = 1, lambda drops out);
+       uniaxial 1D stretch sigma = (mu (F^2 - 1) + lambda ln F) / F; no stress at F = I */
+    MPMStrength     nh;
+    const PetscReal E = 2.6e4, nu = 0.3, mu = E / (2 * (1 + nu)), lam = E * nu / ((1 + nu) * (1 - 2 * nu)), g = 0.37, F1 = 1.21;
+    PetscReal       F[4] = {1, g, 0, 1}, s[4], c2, err = 0, Id[4] = {1, 0, 0, 1};
+    PetscCall(PetscOptionsSetValue(NULL, "-mat_test_strength_type", "neohookean"));
+    PetscCall(PetscOptionsSetValue(NULL, "-mat_test_strength_neohookean_E", "2.6e4"));
+    PetscCall(MPMStrengthCreate(PETSC_COMM_WORLD, &nh));
+    PetscCall(MPMStrengthSetOptionsPrefix(nh, "mat_test_"));
+    PetscCall(MPMStrengthSetFromOptions(nh));
+    PetscCall(MPMStrengthStress(nh, 2, 0.0, NULL, F, 1.0, s, &c2));
+    err = PetscMax(PetscMax(PetscAbsReal(s[0] - mu * g * g), PetscAbsReal(s[1] - mu * g)), PetscMax(PetscAbsReal(s[2] - mu * g), PetscAbsReal(s[3])));
+    PetscCall(MPMStrengthStress(nh, 1, 0.0, NULL, &F1, 1.0, s, &c2));
+    err = PetscMax(err, PetscAbsReal(s[0] - (mu * (F1 * F1 - 1) + lam * PetscLogReal(F1)) / F1));
+    PetscCall(MPMStrengthStress(nh, 2, 0.0, NULL, Id, 2.0, s, &c2));
+    err = PetscMax(err, PetscAbsReal(s[0]) + PetscAbsReal(s[1]) + PetscAbsReal(s[3]));
+    err /= mu;
+    if (!(err < 1e-14 && PetscAbsReal(c2 - (lam + 2 * mu) / 2.0) < 1e-12 * c2)) fails++;
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s neohookean: simple shear, uniaxial stretch and F = I against closed forms, rel. error %.1e (tol 1e-14); c^2 = (lambda + 2 mu)/rho\n", err < 1e-14 ? "PASSED" : "FAILED", (double)err));
+    PetscCall(MPMStrengthDestroy(&nh));
+  }
   PetscCall(PetscFinalize());
   return fails ? 1 : 0;
 }

@@ -5,7 +5,9 @@
    - anywhere, with a wall (mirror) at the lower faces and free upper faces: the node indices stay on the grid,
      sum N_I = 1 and sum grad N_I = 0 still hold, and near the wall the odd field x_k - lo_k (the normal
      displacement a symmetry plane allows) is reproduced with the reflected signs.
-   CPDI is checked with random deformation gradients (domains sheared, stretched and rotated). */
+   CPDI is checked with random deformation gradients (domains sheared, stretched and rotated). Inside, the
+   cell-averaged functions of the cell rule (MPMShapeEvaluateCell) must also sum to one, have gradients that
+   sum to zero and reproduce the gradient of a linear field. */
 #include "petmpmimpl.h"
 
 static void RandomF(PetscRandom rnd, PetscInt dim, PetscReal F[])
@@ -69,6 +71,26 @@ static PetscErrorCode CheckType(const char type[], PetscInt dim, PetscBool bound
         gsum[k] += st.dw[a][k];
         rx[k] += st.s[a][k] * st.w[a] * xI[k];
         for (PetscInt j = 0; j < dim; j++) G[k][j] += st.s[a][k] * xI[k] * st.dw[a][j];
+      }
+    }
+    if (!boundary) { /* the cell average (cell rule): sum = 1, gradient sum 0, sum x_I (x) avg grad N_I = I */
+      PetscInt   ijk[3] = {0, 0, 0};
+      PetscReal  csum = 0, cg[3] = {0, 0, 0}, CG[3][3] = {{0}};
+      MPMStencil cst;
+      for (PetscInt k = 0; k < dim; k++) ijk[k] = (PetscInt)PetscFloorReal((x[k] - g.lo[k]) / g.h[k]);
+      MPMShapeEvaluateCell(shape, &g, ijk, &cst);
+      for (PetscInt a = 0; a < cst.n; a++) {
+        const PetscInt idx = cst.node[a], ii[3] = {idx % g.gm[0], (idx / g.gm[0]) % g.gm[1], idx / (g.gm[0] * g.gm[1])};
+        csum += cst.w[a];
+        for (PetscInt k = 0; k < dim; k++) {
+          cg[k] += cst.dw[a][k];
+          for (PetscInt j = 0; j < dim; j++) CG[k][j] += ii[k] * g.h[k] * cst.dw[a][j];
+        }
+      }
+      worst[0] = PetscMax(worst[0], PetscAbsReal(csum - 1.0));
+      for (PetscInt k = 0; k < dim; k++) {
+        worst[1] = PetscMax(worst[1], PetscAbsReal(cg[k]) * g.h[k]);
+        for (PetscInt j = 0; j < dim; j++) worst[3] = PetscMax(worst[3], PetscAbsReal(CG[k][j] - (k == j ? 1.0 : 0.0)));
       }
     }
     worst[0] = PetscMax(worst[0], PetscAbsReal(sum - 1.0));
