@@ -372,13 +372,9 @@ def mms_rate(scene, cells, extra, d):
     dim = int(scene[-2])
     errs = []
     for n in cells:
-        r = scene_report(scene, d, ["-mpm_cells", ",".join([str(n)] * dim), *extra])
+        r = scene(scene, d, ["-mpm_cells", ",".join([str(n)] * dim), *extra])
         errs.append(r["errors"]["displacement"]["L2"])
     return errs, -np.polyfit(np.log(cells), np.log(errs), 1)[0]
-
-
-def scene_report(name, out, extra):
-    return scene(name, out, extra)
 
 
 def test_mms():
