@@ -366,13 +366,13 @@ def test_failure():
         check(p.returncode != 0 and "-mpm_dt_min" in text and "set by point" in text and "at x =" in text, f"time-step floor: exit {p.returncode}, names -mpm_dt_min and the point that sets dt")
 
 
-def mms_rate(scene, cells, extra, d):
+def mms_rate(name, cells, extra, d):
     """Displacement errors (relative L2) of a manufactured solution at each resolution and their fitted rate."""
     import numpy as np
-    dim = int(scene[-2])
+    dim = int(name[-2])
     errs = []
     for n in cells:
-        r = scene(scene, d, ["-mpm_cells", ",".join([str(n)] * dim), *extra])
+        r = scene(name, d, ["-mpm_cells", ",".join([str(n)] * dim), *extra])
         errs.append(r["errors"]["displacement"]["L2"])
     return errs, -np.polyfit(np.log(cells), np.log(errs), 1)[0]
 
