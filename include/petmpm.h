@@ -82,6 +82,7 @@ PETSC_EXTERN PetscErrorCode MPMEOSSetOptionsPrefix(MPMEOS, const char[]);
 PETSC_EXTERN PetscErrorCode MPMEOSSetType(MPMEOS, MPMEOSType);
 PETSC_EXTERN PetscErrorCode MPMEOSSetFromOptions(MPMEOS);
 PETSC_EXTERN PetscErrorCode MPMEOSView(MPMEOS, PetscViewer);
+PETSC_EXTERN PetscErrorCode MPMEOSHasPressure(MPMEOS, PetscBool *);
 PETSC_EXTERN PetscErrorCode MPMEOSDestroy(MPMEOS *);
 PETSC_EXTERN PetscErrorCode MPMEOSPressure(MPMEOS, PetscReal, PetscReal, PetscReal *, PetscReal *);
 PETSC_EXTERN PetscErrorCode MPMEOSTemperature(MPMEOS, PetscReal, PetscReal, PetscReal *);

@@ -119,6 +119,7 @@ typedef struct {
 } MPMEOSOps;
 struct _p_MPMEOS {
   MPM_CLASS_HEADER(MPMEOSOps);
+  PetscBool pressureless; /* the type gives no pressure (none): the material needs a strength model */
 };
 
 typedef struct {
@@ -328,6 +329,20 @@ static inline void MPMEOSEnergyKernel(MPMEOS eos, PetscReal rho, PetscReal T, Pe
 }
 
 #define MPM_MAX_1D 8 /* nodes per direction a 1D basis can touch */
+
+/* The tent functions on the cells, N_i = 1 - t, N_{i+1} = t with i = floor(xi), t = xi - i: the linear type's
+   basis and the grid basis CPDI interpolates from its corners. */
+static inline void MPMShapeLinear1d(PetscReal xi, PetscInt *first, PetscInt *n, PetscReal w[], PetscReal dw[])
+{
+  const PetscInt i = (PetscInt)PetscFloorReal(xi);
+
+  *first = i;
+  *n     = 2;
+  w[0]   = 1.0 - (xi - i);
+  w[1]   = xi - i;
+  dw[0]  = -1.0;
+  dw[1]  = 1.0;
+}
 
 /* Maps the global node indices idx[0..n) of direction k that lie outside the grid onto grid nodes, as
    ghosted-local indices, with the sign sg of vector component k: across a wall the node outside is the mirror

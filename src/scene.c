@@ -91,10 +91,10 @@ PetscErrorCode MPMSceneSetFromOptions(MPM mpm, PetscOptionItems *PetscOptionsObj
     PetscCall(MPMStrengthSetOptionsPrefix(mpm->mat[i].strength, prefix));
     PetscCall(MPMStrengthSetFromOptions(mpm->mat[i].strength));
     {
-      PetscBool active, noeos;
+      PetscBool active, pressure;
       PetscCall(MPMStrengthIsActive(mpm->mat[i].strength, &active));
-      PetscCall(PetscStrcmp(mpm->mat[i].eos->type_name, MPMEOSNONE, &noeos));
-      PetscCheck(active || !noeos || help, mpm->comm, PETSC_ERR_USER_INPUT, "Material %s has neither an equation of state (-%seos_type is none) nor a strength model (-%sstrength_type): it could carry no stress", names[i], prefix, prefix);
+      PetscCall(MPMEOSHasPressure(mpm->mat[i].eos, &pressure));
+      PetscCheck(active || pressure || help, mpm->comm, PETSC_ERR_USER_INPUT, "Material %s has neither an equation of state (-%seos_type is none) nor a strength model (-%sstrength_type): it could carry no stress", names[i], prefix, prefix);
       if (active) {
         mpm->has_stress = PETSC_TRUE;
         if (mpm->mat[i].strength->needs_F) mpm->track_F = PETSC_TRUE;

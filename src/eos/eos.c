@@ -39,7 +39,8 @@ PetscErrorCode MPMEOSSetType(MPMEOS eos, MPMEOSType type)
   PetscCall(MPMClassSetType(MPMEOSList, "equation of state", option, type, (PetscErrorCode(**)(void *)) & create));
   if (eos->ops.destroy) PetscCall(eos->ops.destroy(eos));
   PetscCall(PetscMemzero(&eos->ops, sizeof(eos->ops)));
-  eos->data = NULL;
+  eos->data         = NULL;
+  eos->pressureless = PETSC_FALSE;
   PetscCall(PetscStrncpy(eos->type_name, type, sizeof(eos->type_name)));
   PetscCall(create(eos));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -60,6 +61,14 @@ PetscErrorCode MPMEOSSetFromOptions(MPMEOS eos)
   }
   if (eos->ops.setfromoptions) PetscCall(eos->ops.setfromoptions(eos, PetscOptionsObject));
   PetscOptionsEnd();
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Whether the type gives a pressure at all (none does not). */
+PetscErrorCode MPMEOSHasPressure(MPMEOS eos, PetscBool *has)
+{
+  PetscFunctionBegin;
+  *has = (PetscBool)!eos->pressureless;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

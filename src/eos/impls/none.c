@@ -23,6 +23,7 @@ static void MPMEOSEnergy_None(void *ctx, PetscReal rho, PetscReal T, PetscReal *
 PetscErrorCode MPMEOSCreate_None(MPMEOS eos)
 {
   PetscFunctionBegin;
+  eos->pressureless    = PETSC_TRUE;
   eos->ops.pressure    = MPMEOSPressure_None;
   eos->ops.temperature = MPMEOSTemperature_None;
   eos->ops.energy      = MPMEOSEnergy_None;

@@ -22,14 +22,7 @@ static PetscInt MPMShapeSupport_CPDI(void *ctx)
 /* The grid basis is linear; the cell rule and cell-centred reads use it. */
 static void MPMShapeBasis1d_CPDI(void *ctx, PetscReal xi, PetscInt *first, PetscInt *n, PetscReal w[], PetscReal dw[])
 {
-  const PetscInt i = (PetscInt)PetscFloorReal(xi);
-
-  *first = i;
-  *n     = 2;
-  w[0]   = 1.0 - (xi - i);
-  w[1]   = xi - i;
-  dw[0]  = -1.0;
-  dw[1]  = 1.0;
+  MPMShapeLinear1d(xi, first, n, w, dw);
 }
 
 /* R = F diag(l0) (F NULL: the identity) and R^-1. */
@@ -81,7 +74,7 @@ static void MPMShapeEvaluate_CPDI(void *ctx, const MPMGrid *g, const PetscReal x
       PetscReal dw[2];
       xc[i] = x[i];
       for (PetscInt k = 0; k < d; k++) xc[i] += R[i * d + k] * s[k];
-      MPMShapeBasis1d_CPDI(NULL, (xc[i] - g->lo[i]) / g->h[i], &first, &n, w[i], dw);
+      MPMShapeLinear1d((xc[i] - g->lo[i]) / g->h[i], &first, &n, w[i], dw);
       idx[i][0] = first;
       idx[i][1] = first + 1;
       MPMShapeFold1d(g, i, 2, idx[i], sg[i]);

@@ -12,15 +12,7 @@ static PetscInt MPMShapeSupport_Linear(void *ctx)
 
 static void MPMShapeBasis1d_Linear(void *ctx, PetscReal xi, PetscInt *first, PetscInt *n, PetscReal w[], PetscReal dw[])
 {
-  const PetscInt  i = (PetscInt)PetscFloorReal(xi);
-  const PetscReal t = xi - i;
-
-  *first = i;
-  *n     = 2;
-  w[0]   = 1.0 - t;
-  w[1]   = t;
-  dw[0]  = -1.0;
-  dw[1]  = 1.0;
+  MPMShapeLinear1d(xi, first, n, w, dw);
 }
 
 PetscErrorCode MPMShapeCreate_Linear(MPMShape shape)
