@@ -24,7 +24,7 @@ PETSC_EXTERN const char *const MPMSchemes[];
 typedef enum { MPM_STRESS_CELL, MPM_STRESS_POINT } MPMStressIntegration;
 PETSC_EXTERN const char *const MPMStressIntegrations[];
 /* Internal-energy update: with the pressure the force used (compatible) or predictor-corrector midpoint. */
-typedef enum { MPM_ENERGY_COMPATIBLE, MPM_ENERGY_MIDPOINT } MPMEnergyUpdate;
+typedef enum { MPM_ENERGY_COMPATIBLE, MPM_ENERGY_MIDPOINT, MPM_ENERGY_CONSERVATIVE } MPMEnergyUpdate;
 PETSC_EXTERN const char *const MPMEnergyUpdates[];
 
 typedef enum { MPM_BC_WALL, MPM_BC_FREE } MPMBoundaryType;
@@ -40,9 +40,13 @@ typedef const char *MPMShapeType;
 typedef const char *MPMEOSType;
 #define MPMEOSIDEALGAS "idealgas"
 #define MPMEOSNONE "none"
+#define MPMEOSMIEGRUNEISEN "miegruneisen"
 typedef const char *MPMStrengthType;
 #define MPMSTRENGTHNONE "none"
 #define MPMSTRENGTHNEOHOOKEAN "neohookean"
+#define MPMSTRENGTHELASTIC "elastic"
+#define MPMSTRENGTHVONMISES "vonmises"
+#define MPMSTRENGTHJOHNSONCOOK "johnsoncook"
 typedef const char *MPMViscosityType;
 #define MPMVISCOSITYNONE "none"
 #define MPMVISCOSITYVNR "vnr"
@@ -55,6 +59,7 @@ typedef const char *MPMExactType;
 #define MPMEXACTNONE "none"
 #define MPMEXACTRIEMANN "riemann"
 #define MPMEXACTMMS "mms"
+#define MPMEXACTFLYER "flyer"
 
 /* The MPM object */
 PETSC_EXTERN PetscErrorCode MPMInitializePackage(void);
@@ -88,6 +93,7 @@ PETSC_EXTERN PetscErrorCode MPMEOSPressure(MPMEOS, PetscReal, PetscReal, PetscRe
 PETSC_EXTERN PetscErrorCode MPMEOSTemperature(MPMEOS, PetscReal, PetscReal, PetscReal *);
 PETSC_EXTERN PetscErrorCode MPMEOSEnergyFromTemperature(MPMEOS, PetscReal, PetscReal, PetscReal *);
 PETSC_EXTERN PetscErrorCode MPMEOSIdealGasGetParameters(MPMEOS, PetscReal *, PetscReal *);
+PETSC_EXTERN PetscErrorCode MPMEOSMieGruneisenGetReference(MPMEOS, PetscReal *, PetscReal *);
 
 /* Strength models: the stress s besides the EOS pressure, sigma = s - (p + q) I */
 PETSC_EXTERN PetscErrorCode MPMStrengthRegister(const char[], PetscErrorCode (*)(MPMStrength));
@@ -99,7 +105,9 @@ PETSC_EXTERN PetscErrorCode MPMStrengthIsActive(MPMStrength, PetscBool *);
 PETSC_EXTERN PetscErrorCode MPMStrengthView(MPMStrength, PetscViewer);
 PETSC_EXTERN PetscErrorCode MPMStrengthDestroy(MPMStrength *);
 PETSC_EXTERN PetscErrorCode MPMStrengthNeoHookeanGetParameters(MPMStrength, PetscReal *, PetscReal *);
-PETSC_EXTERN PetscErrorCode MPMStrengthStress(MPMStrength, PetscInt, PetscReal, const PetscReal[], const PetscReal[], PetscReal, PetscReal[], PetscReal *);
+PETSC_EXTERN PetscErrorCode MPMStrengthStress(MPMStrength, PetscInt, PetscReal, const PetscReal[], const PetscReal[], PetscReal, PetscReal, PetscReal[], PetscReal *, PetscReal *);
+PETSC_EXTERN PetscErrorCode MPMStrengthGetShearModulus(MPMStrength, PetscReal *);
+PETSC_EXTERN PetscErrorCode MPMStrengthFlowStress(MPMStrength, PetscReal, PetscReal, PetscReal, PetscReal *);
 
 /* Artificial viscosity */
 PETSC_EXTERN PetscErrorCode MPMViscosityRegister(const char[], PetscErrorCode (*)(MPMViscosity));

@@ -5,7 +5,7 @@
 
 const char *const MPMSchemes[]            = {"usl", "musl", "MPMScheme", "MPM_SCHEME_", NULL};
 const char *const MPMStressIntegrations[] = {"cell", "point", "MPMStressIntegration", "MPM_STRESS_", NULL};
-const char *const MPMEnergyUpdates[]      = {"compatible", "midpoint", "MPMEnergyUpdate", "MPM_ENERGY_", NULL};
+const char *const MPMEnergyUpdates[]      = {"compatible", "midpoint", "conservative", "MPMEnergyUpdate", "MPM_ENERGY_", NULL};
 const char *const MPMBoundaryTypes[]      = {"wall", "free", "MPMBoundaryType", "MPM_BC_", NULL};
 
 PETSC_EXTERN PetscErrorCode MPMShapeCreate_Linear(MPMShape);
@@ -15,8 +15,12 @@ PETSC_EXTERN PetscErrorCode MPMShapeCreate_BSpline2(MPMShape);
 PETSC_EXTERN PetscErrorCode MPMShapeCreate_BSpline3(MPMShape);
 PETSC_EXTERN PetscErrorCode MPMEOSCreate_IdealGas(MPMEOS);
 PETSC_EXTERN PetscErrorCode MPMEOSCreate_None(MPMEOS);
+PETSC_EXTERN PetscErrorCode MPMEOSCreate_MieGruneisen(MPMEOS);
 PETSC_EXTERN PetscErrorCode MPMStrengthCreate_None(MPMStrength);
 PETSC_EXTERN PetscErrorCode MPMStrengthCreate_NeoHookean(MPMStrength);
+PETSC_EXTERN PetscErrorCode MPMStrengthCreate_Elastic(MPMStrength);
+PETSC_EXTERN PetscErrorCode MPMStrengthCreate_VonMises(MPMStrength);
+PETSC_EXTERN PetscErrorCode MPMStrengthCreate_JohnsonCook(MPMStrength);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_MMS(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMViscosityCreate_None(MPMViscosity);
 PETSC_EXTERN PetscErrorCode MPMViscosityCreate_VNR(MPMViscosity);
@@ -26,6 +30,7 @@ PETSC_EXTERN PetscErrorCode MPMUpdateCreate_FLIP(MPMUpdate);
 PETSC_EXTERN PetscErrorCode MPMUpdateCreate_Blend(MPMUpdate);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_None(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_Riemann(MPMExact);
+PETSC_EXTERN PetscErrorCode MPMExactCreate_Flyer(MPMExact);
 
 static PetscBool    MPMPackageInitialized = PETSC_FALSE;
 static PetscClassId MPM_CLASSID;
@@ -44,8 +49,12 @@ PetscErrorCode MPMInitializePackage(void)
   PetscCall(MPMShapeRegister(MPMSHAPEBSPLINE3, MPMShapeCreate_BSpline3));
   PetscCall(MPMEOSRegister(MPMEOSIDEALGAS, MPMEOSCreate_IdealGas));
   PetscCall(MPMEOSRegister(MPMEOSNONE, MPMEOSCreate_None));
+  PetscCall(MPMEOSRegister(MPMEOSMIEGRUNEISEN, MPMEOSCreate_MieGruneisen));
   PetscCall(MPMStrengthRegister(MPMSTRENGTHNONE, MPMStrengthCreate_None));
   PetscCall(MPMStrengthRegister(MPMSTRENGTHNEOHOOKEAN, MPMStrengthCreate_NeoHookean));
+  PetscCall(MPMStrengthRegister(MPMSTRENGTHELASTIC, MPMStrengthCreate_Elastic));
+  PetscCall(MPMStrengthRegister(MPMSTRENGTHVONMISES, MPMStrengthCreate_VonMises));
+  PetscCall(MPMStrengthRegister(MPMSTRENGTHJOHNSONCOOK, MPMStrengthCreate_JohnsonCook));
   PetscCall(MPMViscosityRegister(MPMVISCOSITYNONE, MPMViscosityCreate_None));
   PetscCall(MPMViscosityRegister(MPMVISCOSITYVNR, MPMViscosityCreate_VNR));
   PetscCall(MPMViscosityRegister(MPMVISCOSITYLIMITED, MPMViscosityCreate_Limited));
@@ -55,6 +64,7 @@ PetscErrorCode MPMInitializePackage(void)
   PetscCall(MPMExactRegister(MPMEXACTNONE, MPMExactCreate_None));
   PetscCall(MPMExactRegister(MPMEXACTRIEMANN, MPMExactCreate_Riemann));
   PetscCall(MPMExactRegister(MPMEXACTMMS, MPMExactCreate_MMS));
+  PetscCall(MPMExactRegister(MPMEXACTFLYER, MPMExactCreate_Flyer));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -132,6 +142,10 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   for (PetscInt k = 0; k < g->dim; k++) mpm->has_gravity = (PetscBool)(mpm->has_gravity || mpm->gravity[k] != 0.0);
   PetscCall(PetscOptionsString("-mpm_output", "Output directory DIR (DIR/petmpm.h5, DIR/petmpm.xmf)", "", mpm->outdir, mpm->outdir, sizeof(mpm->outdir), NULL));
   PetscCall(PetscOptionsBoundedInt("-mpm_output_interval", "Steps between outputs; 0: first and last state only", "", mpm->output_interval, &mpm->output_interval, NULL, 0));
+  mpm->ntout = MPM_MAX_OUTPUT_TIMES;
+  PetscCall(PetscOptionsRealArray("-mpm_output_times", "Times t1,t2,... [s] the steps land on, with an output and the exact solution's checks at each", "", mpm->tout, &mpm->ntout, &set));
+  if (!set) mpm->ntout = 0;
+  for (PetscInt i = 0; i < mpm->ntout; i++) PetscCheck(mpm->tout[i] > 0.0 && (i == 0 || mpm->tout[i] > mpm->tout[i - 1]), mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_output_times: %g; valid are increasing times > 0 s", (double)mpm->tout[i]);
   PetscCall(PetscOptionsString("-mpm_report", "JSON report FILE (errors, conservation, cost)", "", mpm->report, mpm->report, sizeof(mpm->report), NULL));
   PetscCall(PetscOptionsBool("-mpm_view", "Print the configuration of the run", "", mpm->view, &mpm->view, NULL));
   PetscCall(MPMSceneSetFromOptions(mpm, PetscOptionsObject));

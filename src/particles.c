@@ -16,8 +16,10 @@ const MPMFieldInfo MPMFieldTable[MPM_NUM_FIELDS] = {
   {"soundspeed", 1, "cm/s", "sound speed c_p", PETSC_FALSE},
   {"viscosity", 1, "dyn/cm^2", "artificial viscous pressure q_p", PETSC_TRUE},
   {"gradv", -1, "1/s", "velocity gradient L_p = dv/dx, row-major", PETSC_FALSE},
+  {"work", 1, "erg/g", "specific stress work of the step from the kick-averaged grid velocity (conservative energy update)", PETSC_FALSE},
   {"defgrad", -1, "-", "deformation gradient F_p = dx/dX, row-major", PETSC_TRUE},
   {"stress", -1, "dyn/cm^2", "stress s_p besides the pressure (strength model), row-major", PETSC_TRUE},
+  {"plasticstrain", 1, "-", "equivalent plastic strain eps_p (plastic strength models)", PETSC_TRUE},
   {"refposition", 0, "cm", "reference (initial lattice) position X_p", PETSC_TRUE},
   {"material", 1, "-", "material index", PETSC_TRUE},
   {"id", 1, "-", "persistent id: the point's seeding lattice index", PETSC_TRUE},
@@ -119,13 +121,15 @@ PetscErrorCode MPMCreatePoints(MPM mpm)
         pts.f[MPM_FIELD_STRESS][n * d * d + k]  = 0.0;
         pts.f[MPM_FIELD_DEFGRAD][n * d * d + k] = k % (d + 1) == 0 ? 1.0 : 0.0;
       }
-      pts.f[MPM_FIELD_VOLUME][n]      = g->vcell / npd;
-      pts.f[MPM_FIELD_DENSITY][n]     = reg->rho;
-      pts.f[MPM_FIELD_MASS][n]        = reg->rho * g->vcell / npd;
-      pts.f[MPM_FIELD_TEMPERATURE][n] = reg->T;
-      pts.f[MPM_FIELD_VISCOSITY][n]   = 0.0;
-      pts.f[MPM_FIELD_MATERIAL][n]    = (PetscReal)reg->material;
-      pts.f[MPM_FIELD_ID][n]          = id;
+      pts.f[MPM_FIELD_VOLUME][n]        = g->vcell / npd;
+      pts.f[MPM_FIELD_DENSITY][n]       = reg->rho;
+      pts.f[MPM_FIELD_MASS][n]          = reg->rho * g->vcell / npd;
+      pts.f[MPM_FIELD_TEMPERATURE][n]   = reg->T;
+      pts.f[MPM_FIELD_VISCOSITY][n]     = 0.0;
+      pts.f[MPM_FIELD_PLASTICSTRAIN][n] = 0.0;
+      pts.f[MPM_FIELD_WORK][n]          = 0.0;
+      pts.f[MPM_FIELD_MATERIAL][n]      = (PetscReal)reg->material;
+      pts.f[MPM_FIELD_ID][n]            = id;
       n++;
     }
   }

@@ -4,7 +4,8 @@
 #include <petmpm.h>
 
 #define MPM_MAX_NAME 64
-#define MPM_MAX_STENCIL 216 /* nodes a point can touch: 6^3 covers every planned shape type */
+#define MPM_KELVIN_PER_EV 11604.518 /* temperatures are in eV; material tables quote kelvin */
+#define MPM_MAX_STENCIL 216         /* nodes a point can touch: 6^3 covers every planned shape type */
 
 /* Generic class header, in the PETSc pattern: a type name, an options prefix and the type's data. */
 #define MPM_CLASS_HEADER(Ops)       \
@@ -70,8 +71,10 @@ typedef enum {
   MPM_FIELD_SOUNDSPEED,
   MPM_FIELD_VISCOSITY,
   MPM_FIELD_GRADV,
+  MPM_FIELD_WORK,
   MPM_FIELD_DEFGRAD,
   MPM_FIELD_STRESS,
+  MPM_FIELD_PLASTICSTRAIN,
   MPM_FIELD_REFPOSITION,
   MPM_FIELD_MATERIAL,
   MPM_FIELD_ID,
@@ -123,14 +126,16 @@ struct _p_MPMEOS {
 };
 
 typedef struct {
-  void (*stress)(void *, PetscInt, PetscReal, const PetscReal[], const PetscReal[], PetscReal, PetscReal[], PetscReal *); /* (d, dt, L, F, rho) -> s (row-major d x d, in/out) [dyn/cm^2], c^2 [cm^2/s^2] */
+  void (*stress)(void *, PetscInt, PetscReal, const PetscReal[], const PetscReal[], PetscReal, PetscReal, PetscReal[], PetscReal *, PetscReal *); /* (d, dt, L, F, rho, T) -> s (row-major d x d) [dyn/cm^2] and eps_p [-] (in/out), c^2 [cm^2/s^2] */
+  PetscReal (*flow)(void *, PetscReal, PetscReal, PetscReal);                                                                                     /* (eps_p, deps_p/dt [1/s], T [eV]) -> yield stress [dyn/cm^2]; NULL: never yields */
   PetscErrorCode (*setfromoptions)(MPMStrength, PetscOptionItems *);
   PetscErrorCode (*view)(MPMStrength, PetscViewer);
   PetscErrorCode (*destroy)(MPMStrength);
 } MPMStrengthOps;
 struct _p_MPMStrength {
   MPM_CLASS_HEADER(MPMStrengthOps);
-  PetscBool needs_F; /* the model reads the deformation gradient */
+  PetscBool needs_F; /* the model reads the deformation gradient           */
+  PetscReal G;       /* shear modulus of the hypoelastic types [dyn/cm^2] */
 };
 
 typedef struct {
@@ -192,6 +197,7 @@ typedef struct {
 #define MPM_MAX_MATERIALS 16
 #define MPM_MAX_REGIONS 32
 #define MPM_MAX_CHECKS 16
+#define MPM_MAX_OUTPUT_TIMES 64
 
 typedef struct {
   char      name[MPM_MAX_NAME];
@@ -211,10 +217,12 @@ struct _p_MPM {
   char                 outdir[PETSC_MAX_PATH_LEN]; /* output directory                                  */
   char                 report[PETSC_MAX_PATH_LEN]; /* JSON report file, empty for none                  */
   MPMGrid              grid;
-  PetscInt             ppc;             /* points per cell per direction                     */
-  PetscReal            cfl;             /* Courant number                                    */
-  PetscReal            dtmin;           /* smallest time step before the run is stopped [s]  */
-  PetscInt             output_interval; /* steps between outputs, 0: start and end only      */
+  PetscInt             ppc;                        /* points per cell per direction                     */
+  PetscReal            cfl;                        /* Courant number                                    */
+  PetscReal            dtmin;                      /* smallest time step before the run is stopped [s]  */
+  PetscInt             output_interval;            /* steps between outputs, 0: start and end only      */
+  PetscReal            tout[MPM_MAX_OUTPUT_TIMES]; /* -mpm_output_times: steps land on them [s] */
+  PetscInt             ntout, itout;               /* their number, the next one                */
   MPMScheme            scheme;
   MPMStressIntegration stress_integration;
   MPMEnergyUpdate      energy_update;
@@ -294,6 +302,7 @@ PETSC_INTERN PetscBool      MPMExactInWindow(MPMExact, const PetscReal[]);
 PETSC_INTERN PetscErrorCode MPMAddCheck(MPM, const char[], PetscReal, PetscReal);
 PETSC_INTERN PetscErrorCode MPMViscosityApply(MPMViscosity, MPM, PetscReal);
 PETSC_INTERN PetscErrorCode MPMXProfile(MPM, PetscInt, PetscReal[], PetscReal[]);
+PETSC_INTERN PetscReal      MPMProfileCrossing(PetscInt, const PetscReal[], const PetscReal[], PetscReal, PetscReal);
 PETSC_INTERN PetscErrorCode MPMClassSetType(PetscFunctionList, const char[], const char[], const char[], PetscErrorCode (**)(void *));
 PETSC_INTERN PetscErrorCode MPMClassTypeList(PetscFunctionList, char[], size_t);
 

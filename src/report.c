@@ -16,14 +16,25 @@ static PetscInt MPMNumErrors(MPM mpm)
   return mpm->exact && mpm->exact->ops.displacement ? MPM_NERR : MPM_NERR - 1;
 }
 
+/* Adds a named check, or replaces the value of the check of that name (checks are computed at every time in
+   -mpm_output_times and at the end; each keeps its latest value). */
 PetscErrorCode MPMAddCheck(MPM mpm, const char name[], PetscReal value, PetscReal reference)
 {
+  PetscInt c;
+
   PetscFunctionBegin;
-  PetscCheck(mpm->nchecks < MPM_MAX_CHECKS, mpm->comm, PETSC_ERR_ARG_OUTOFRANGE, "Too many checks");
-  PetscCall(PetscStrncpy(mpm->checks[mpm->nchecks].name, name, MPM_MAX_NAME));
-  mpm->checks[mpm->nchecks].value     = value;
-  mpm->checks[mpm->nchecks].reference = reference;
-  mpm->nchecks++;
+  for (c = 0; c < mpm->nchecks; c++) {
+    PetscBool is;
+    PetscCall(PetscStrcmp(mpm->checks[c].name, name, &is));
+    if (is) break;
+  }
+  if (c == mpm->nchecks) {
+    PetscCheck(mpm->nchecks < MPM_MAX_CHECKS, mpm->comm, PETSC_ERR_ARG_OUTOFRANGE, "Too many checks");
+    PetscCall(PetscStrncpy(mpm->checks[c].name, name, MPM_MAX_NAME));
+    mpm->nchecks++;
+  }
+  mpm->checks[c].value     = value;
+  mpm->checks[c].reference = reference;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -111,7 +122,6 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   PetscCall(DMSwarmGetSize(mpm->swarm, &npoints));
   PetscCall(MPMComputeErrors(mpm, err, &nonfinite, &rhomin));
   PetscCall(MPMGlobalSums(mpm, &mass, &energy, mom));
-  mpm->nchecks = 0;
   if (mpm->exact) PetscCall(MPMExactComputeChecks(mpm->exact, mpm));
   for (PetscInt c = 0; c < mpm->nchecks; c++) {
     PetscBool is;

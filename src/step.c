@@ -175,7 +175,7 @@ static PetscErrorCode MPMGridAdvance(MPM mpm, PetscReal dt)
    which is sum_p m_p sum_I N_I (v_p . dv_I + |dv_I|^2 / 2) since m_I v_I^n = sum_p N_I m_p v_p. The point's share
    minus the kinetic energy it actually gains is what the map discards (for FLIP (sum N |dv|^2 - |sum N dv|^2)/2 >= 0,
    the variance of dv over the stencil); it goes into e_p, so total energy follows the grid's exactly. */
-static PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscBool velocity, PetscBool kinematics)
+static PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool velocity, PetscBool kinematics)
 {
   const MPMGrid  *g     = &mpm->grid;
   const PetscInt  d     = g->dim;
@@ -189,11 +189,14 @@ static PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscBool velocity, Petsc
   PetscCall(VecGetArrayRead(mpm->lnodes, (const PetscScalar **)&node));
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   {
-    PetscReal       *x = pts.f[MPM_FIELD_POSITION], *v = pts.f[MPM_FIELD_VELOCITY], *L = pts.f[MPM_FIELD_GRADV], *e = pts.f[MPM_FIELD_ENERGY];
-    const PetscReal *F = mpm->track_F ? pts.f[MPM_FIELD_DEFGRAD] : NULL;
+    PetscReal       *x = pts.f[MPM_FIELD_POSITION], *v = pts.f[MPM_FIELD_VELOCITY], *L = pts.f[MPM_FIELD_GRADV], *e = pts.f[MPM_FIELD_ENERGY], *w = pts.f[MPM_FIELD_WORK];
+    const PetscReal *pr = pts.f[MPM_FIELD_PRESSURE], *q = pts.f[MPM_FIELD_VISCOSITY], *S = pts.f[MPM_FIELD_STRESS], *rho = pts.f[MPM_FIELD_DENSITY];
+    const PetscBool  work = (PetscBool)(velocity && mpm->energy_update == MPM_ENERGY_CONSERVATIVE), stress = mpm->has_stress;
+    const PetscReal  wfac = 0.5 * kick;
+    const PetscReal *F    = mpm->track_F ? pts.f[MPM_FIELD_DEFGRAD] : NULL;
 
     for (PetscInt p = 0; p < pts.n; p++) {
-      PetscReal vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, dv2 = 0.0;
+      PetscReal vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Lb[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, dv2 = 0.0;
       MPMShapeEvaluate(mpm->shape, g, &x[p * d], F ? &F[p * d * d] : NULL, &st);
       for (PetscInt a = 0; a < st.n; a++) {
         const MPMNode *nd = &node[st.node[a]];
@@ -203,6 +206,8 @@ static PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscBool velocity, Petsc
           dv[i] += st.w[a] * dvI;
           dv2 += st.w[a] * dvI * dvI;
           for (PetscInt j = 0; j < d; j++) Lp[i * d + j] += vI * st.dw[a][j];
+          if (work)
+            for (PetscInt j = 0; j < d; j++) Lb[i * d + j] += (2.0 * vI - dvI) * st.dw[a][j];
         }
       }
       if (velocity) {
@@ -214,6 +219,13 @@ static PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscBool velocity, Petsc
           v[p * d + i] = vn;
         }
         if (kefix) e[p] += share - gain;
+        if (work) { /* the work the grid's forces did over the kick, sum_p V_p sigma_p : Lbar_p dt_kick = sum_I f_I . vbar_I dt_kick */
+          PetscReal sL = 0.0, div = 0.0;
+          for (PetscInt i = 0; i < d; i++) div += Lb[i * d + i];
+          if (stress)
+            for (PetscInt i = 0; i < d * d; i++) sL += S[p * d * d + i] * Lb[i];
+          w[p] = wfac * (sL - (pr[p] + q[p]) * div) / rho[p];
+        }
       }
       if (kinematics) {
         for (PetscInt i = 0; i < d; i++) x[p * d + i] += dt * vpic[i];
@@ -226,11 +238,11 @@ static PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscBool velocity, Petsc
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MPMGridToParticles(MPM mpm, PetscReal dt)
+static PetscErrorCode MPMGridToParticles(MPM mpm, PetscReal dt, PetscReal kick)
 {
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(mpm->log.g2p, 0, 0, 0, 0));
-  PetscCall(MPMGather(mpm, dt, PETSC_TRUE, (PetscBool)(mpm->scheme == MPM_SCHEME_USL)));
+  PetscCall(MPMGather(mpm, dt, kick, PETSC_TRUE, (PetscBool)(mpm->scheme == MPM_SCHEME_USL)));
   PetscCall(PetscLogEventEnd(mpm->log.g2p, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -255,7 +267,7 @@ static PetscErrorCode MPMRemapMomentum(MPM mpm, PetscReal dt)
   }
   PetscCall(VecRestoreArray(mpm->nodes, (PetscScalar **)&node));
   PetscCall(DMGlobalToLocal(mpm->da, mpm->nodes, INSERT_VALUES, mpm->lnodes));
-  PetscCall(MPMGather(mpm, dt, PETSC_FALSE, PETSC_TRUE));
+  PetscCall(MPMGather(mpm, dt, dt, PETSC_FALSE, PETSC_TRUE));
   PetscCall(PetscLogEventEnd(mpm->log.remap, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -282,7 +294,7 @@ static inline PetscReal MPMDetIPlusDtL(PetscInt d, PetscReal dt, const PetscReal
 static PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
 {
   const PetscInt  d        = mpm->grid.dim;
-  const PetscBool midpoint = (PetscBool)(mpm->energy_update == MPM_ENERGY_MIDPOINT);
+  const PetscBool midpoint = (PetscBool)(mpm->energy_update == MPM_ENERGY_MIDPOINT), conservative = (PetscBool)(mpm->energy_update == MPM_ENERGY_CONSERVATIVE);
   MPMPoints       pts;
   const PetscBool trackF = mpm->track_F, stress = mpm->has_stress;
   MPMEOS          eos[MPM_MAX_MATERIALS];
@@ -298,9 +310,10 @@ static PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
   }
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   {
-    const PetscReal *L = pts.f[MPM_FIELD_GRADV], *m = pts.f[MPM_FIELD_MASS], *q = pts.f[MPM_FIELD_VISCOSITY], *mat = pts.f[MPM_FIELD_MATERIAL];
+    const PetscReal *L = pts.f[MPM_FIELD_GRADV], *w = pts.f[MPM_FIELD_WORK], *m = pts.f[MPM_FIELD_MASS], *q = pts.f[MPM_FIELD_VISCOSITY], *mat = pts.f[MPM_FIELD_MATERIAL];
     PetscReal       *rho = pts.f[MPM_FIELD_DENSITY], *V = pts.f[MPM_FIELD_VOLUME], *e = pts.f[MPM_FIELD_ENERGY], *pr = pts.f[MPM_FIELD_PRESSURE];
     PetscReal       *c = pts.f[MPM_FIELD_SOUNDSPEED], *T = pts.f[MPM_FIELD_TEMPERATURE], *F = pts.f[MPM_FIELD_DEFGRAD], *S = pts.f[MPM_FIELD_STRESS];
+    PetscReal       *ep = pts.f[MPM_FIELD_PLASTICSTRAIN];
 
     for (PetscInt p = 0; p < pts.n; p++) {
       const MPMEOS      E    = eos[(PetscInt)mat[p]];
@@ -309,7 +322,7 @@ static PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
       const PetscReal   rho1 = rho[p] / J, dvol = 1.0 / rho1 - 1.0 / rho[p];
       PetscReal         e1, ppred, c2, cs2 = 0.0;
 
-      e1 = e[p] - (pr[p] + q[p]) * dvol;
+      e1 = conservative ? e[p] + w[p] : e[p] - (pr[p] + q[p]) * dvol;
       if (trackF) {
         PetscReal Fn[MPM_MAX_DIM * MPM_MAX_DIM];
         for (PetscInt i = 0; i < d; i++)
@@ -323,8 +336,8 @@ static PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
       if (stress && Str) {
         PetscReal work = 0.0;
         for (PetscInt i = 0; i < d * d; i++) work += S[p * d * d + i] * L[p * d * d + i];
-        e1 += dt * work / rho[p];
-        Str->ops.stress(Str->data, d, dt, &L[p * d * d], &F[p * d * d], rho1, &S[p * d * d], &cs2);
+        if (!conservative) e1 += dt * work / rho[p];
+        Str->ops.stress(Str->data, d, dt, &L[p * d * d], &F[p * d * d], rho1, T[p], &S[p * d * d], &ep[p], &cs2);
       }
       if (midpoint) {
         MPMEOSPressureKernel(E, rho1, e1, &ppred, &c2); /* predictor */
@@ -383,7 +396,7 @@ PetscErrorCode MPMStep(MPM mpm, PetscReal dt)
   PetscCall(MPMParticlesToGrid(mpm));                                        /* m_I, (mv)_I, f_I = f_int       */
   if (mpm->has_gravity) PetscCall(MPMGravity(mpm));                          /* f_I += m_I g                   */
   PetscCall(MPMGridAdvance(mpm, kick));                                      /* (mv)_I += dt_kick f_I; walls   */
-  PetscCall(MPMGridToParticles(mpm, dt));                                    /* v_p; USL: x_p, L_p             */
+  PetscCall(MPMGridToParticles(mpm, dt, kick));                              /* v_p; USL: x_p, L_p             */
   if (mpm->scheme == MPM_SCHEME_MUSL) PetscCall(MPMRemapMomentum(mpm, dt));  /* MUSL: v_I from v_p; x_p, L_p   */
   if (mpm->viscosity) PetscCall(MPMViscosityApply(mpm->viscosity, mpm, dt)); /* q_p                            */
   PetscCall(MPMConstitutive(mpm, dt));                                       /* rho_p, e_p, p_p, c_p, T_p      */
@@ -406,7 +419,9 @@ PetscErrorCode MPMConstitutiveInitialize(MPM mpm)
     const MPMStrength S   = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].strength;
     PetscReal         cs2 = 0.0;
     MPMEOSPressureKernel(E, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_ENERGY][p], &pts.f[MPM_FIELD_PRESSURE][p], &c2);
-    if (S) S->ops.stress(S->data, d, 0.0, &pts.f[MPM_FIELD_GRADV][p * d * d], &pts.f[MPM_FIELD_DEFGRAD][p * d * d], pts.f[MPM_FIELD_DENSITY][p], &pts.f[MPM_FIELD_STRESS][p * d * d], &cs2);
+    if (S)
+      S->ops.stress(S->data, d, 0.0, &pts.f[MPM_FIELD_GRADV][p * d * d], &pts.f[MPM_FIELD_DEFGRAD][p * d * d], pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_TEMPERATURE][p], &pts.f[MPM_FIELD_STRESS][p * d * d], &pts.f[MPM_FIELD_PLASTICSTRAIN][p],
+                    &cs2);
     pts.f[MPM_FIELD_SOUNDSPEED][p] = PetscSqrtReal(PetscMax(c2, 0.0) + cs2);
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));

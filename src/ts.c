@@ -30,7 +30,8 @@ static PetscErrorCode MPMTSPreStep(TS ts)
     PetscCall(MPMOutputWrite(mpm, step, t));
     SETERRQ(mpm->comm, PETSC_ERR_NOT_CONVERGED, "Step %" PetscInt_FMT ", t = %g s: CFL time step %g s fell below -mpm_dt_min %g s; last state written to %s", step, (double)t, (double)dt, (double)mpm->dtmin, mpm->outdir);
   }
-  if (t + dt * (1.0 + 1e-6) >= tmax) dt = tmax - t; /* land on the final time, never leave a sliver */
+  if (t + dt * (1.0 + 1e-6) >= tmax) dt = tmax - t;                                                              /* land on the final time, never leave a sliver */
+  if (mpm->itout < mpm->ntout && t + dt * (1.0 + 1e-6) >= mpm->tout[mpm->itout]) dt = mpm->tout[mpm->itout] - t; /* and on the output times */
   PetscCall(TSSetTimeStep(ts, dt));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -54,7 +55,14 @@ static PetscErrorCode MPMTSPostStep(TS ts)
   mpm->steps = step;
   mpm->time  = t;
   PetscCall(MPMStep(mpm, dt));
-  if (mpm->output_interval > 0 && step % mpm->output_interval == 0) PetscCall(MPMOutputWrite(mpm, step, t));
+  if (mpm->itout < mpm->ntout && PetscAbsReal(t - mpm->tout[mpm->itout]) <= 1e-9 * mpm->tout[mpm->itout]) {
+    mpm->itout++;
+    if (PetscAbsReal(t - tmax) > 1e-12 * PetscAbsReal(tmax)) { /* the final state is written and checked after the loop */
+      PetscCall(MPMOutputWrite(mpm, step, t));
+      if (mpm->exact) PetscCall(MPMExactComputeChecks(mpm->exact, mpm));
+    }
+  } else if (mpm->output_interval > 0 && step % mpm->output_interval == 0)
+    PetscCall(MPMOutputWrite(mpm, step, t));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -58,11 +58,11 @@ int main(int argc, char **argv)
     PetscCall(MPMStrengthCreate(PETSC_COMM_WORLD, &nh));
     PetscCall(MPMStrengthSetOptionsPrefix(nh, "mat_test_"));
     PetscCall(MPMStrengthSetFromOptions(nh));
-    PetscCall(MPMStrengthStress(nh, 2, 0.0, NULL, F, 1.0, s, &c2));
+    PetscCall(MPMStrengthStress(nh, 2, 0.0, NULL, F, 1.0, 0.0, s, NULL, &c2));
     err = PetscMax(PetscMax(PetscAbsReal(s[0] - mu * g * g), PetscAbsReal(s[1] - mu * g)), PetscMax(PetscAbsReal(s[2] - mu * g), PetscAbsReal(s[3])));
-    PetscCall(MPMStrengthStress(nh, 1, 0.0, NULL, &F1, 1.0, s, &c2));
+    PetscCall(MPMStrengthStress(nh, 1, 0.0, NULL, &F1, 1.0, 0.0, s, NULL, &c2));
     err = PetscMax(err, PetscAbsReal(s[0] - (mu * (F1 * F1 - 1) + lam * PetscLogReal(F1)) / F1));
-    PetscCall(MPMStrengthStress(nh, 2, 0.0, NULL, Id, 2.0, s, &c2));
+    PetscCall(MPMStrengthStress(nh, 2, 0.0, NULL, Id, 2.0, 0.0, s, NULL, &c2));
     err = PetscMax(err, PetscAbsReal(s[0]) + PetscAbsReal(s[1]) + PetscAbsReal(s[3]));
     err /= mu;
     if (!(err < 1e-14 && PetscAbsReal(c2 - (lam + 2 * mu) / 2.0) < 1e-12 * c2)) fails++;

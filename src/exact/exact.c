@@ -109,6 +109,21 @@ PetscBool MPMExactInWindow(MPMExact exact, const PetscReal x[])
   return (PetscBool)(x[0] > exact->window[0] && x[0] < exact->window[1]);
 }
 
+/* The crossing of level by the binned profile f (bin centres xc) nearest to xref, by linear interpolation. */
+PetscReal MPMProfileCrossing(PetscInt n, const PetscReal xc[], const PetscReal f[], PetscReal level, PetscReal xref)
+{
+  PetscReal best = PETSC_MAX_REAL;
+
+  for (PetscInt i = 0; i + 1 < n; i++) {
+    const PetscReal a = f[i] - level, b = f[i + 1] - level;
+    if ((a <= 0) != (b <= 0)) { /* f - level changes sign between the two bin centres */
+      const PetscReal x = xc[i] + (xc[i + 1] - xc[i]) * a / (a - b);
+      if (PetscAbsReal(x - xref) < PetscAbsReal(best - xref)) best = x;
+    }
+  }
+  return best;
+}
+
 PetscErrorCode MPMExactComputeChecks(MPMExact exact, MPM mpm)
 {
   PetscFunctionBegin;

@@ -41,6 +41,7 @@ PetscErrorCode MPMStrengthSetType(MPMStrength str, MPMStrengthType type)
   if (str->ops.destroy) PetscCall(str->ops.destroy(str));
   PetscCall(PetscMemzero(&str->ops, sizeof(str->ops)));
   str->data = NULL;
+  str->G    = 0.0;
   PetscCall(PetscStrncpy(str->type_name, type, sizeof(str->type_name)));
   PetscCall(create(str));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -92,10 +93,29 @@ PetscErrorCode MPMStrengthDestroy(MPMStrength *str)
 }
 
 /* Pointwise evaluation for tests; the time loop calls the kernel directly. */
-PetscErrorCode MPMStrengthStress(MPMStrength str, PetscInt d, PetscReal dt, const PetscReal L[], const PetscReal F[], PetscReal rho, PetscReal s[], PetscReal *c2)
+PetscErrorCode MPMStrengthStress(MPMStrength str, PetscInt d, PetscReal dt, const PetscReal L[], const PetscReal F[], PetscReal rho, PetscReal T, PetscReal s[], PetscReal *epsp, PetscReal *c2)
 {
   PetscFunctionBegin;
   PetscCheck(str->ops.stress, str->comm, PETSC_ERR_ARG_WRONGSTATE, "Strength model %s computes no stress", str->type_name);
-  str->ops.stress(str->data, d, dt, L, F, rho, s, c2);
+  str->ops.stress(str->data, d, dt, L, F, rho, T, s, epsp, c2);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Shear modulus G of a hypoelastic type (elastic, vonmises, johnsoncook). */
+PetscErrorCode MPMStrengthGetShearModulus(MPMStrength str, PetscReal *G)
+{
+  PetscFunctionBegin;
+  PetscCheck(str->G > 0.0, str->comm, PETSC_ERR_ARG_WRONG, "-%sstrength_type %s has no shear modulus; the hypoelastic types %s, %s and %s have one", str->prefix ? str->prefix : "", str->type_name, MPMSTRENGTHELASTIC, MPMSTRENGTHVONMISES,
+             MPMSTRENGTHJOHNSONCOOK);
+  *G = str->G;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Yield stress at equivalent plastic strain eps_p, plastic strain rate [1/s] and temperature T [eV];
+   PETSC_MAX_REAL for a type that never yields. */
+PetscErrorCode MPMStrengthFlowStress(MPMStrength str, PetscReal epsp, PetscReal rate, PetscReal T, PetscReal *Y)
+{
+  PetscFunctionBegin;
+  *Y = str->ops.flow ? str->ops.flow(str->data, epsp, rate, T) : PETSC_MAX_REAL;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -66,21 +66,6 @@ static PetscErrorCode MPMExactSetUp_Riemann(MPMExact exact, MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The crossing of level by the binned profile f (bin centres xc) nearest to xref, by linear interpolation. */
-static PetscReal ProfileCrossing(PetscInt n, const PetscReal xc[], const PetscReal f[], PetscReal level, PetscReal xref)
-{
-  PetscReal best = PETSC_MAX_REAL;
-
-  for (PetscInt i = 0; i + 1 < n; i++) {
-    const PetscReal a = f[i] - level, b = f[i + 1] - level;
-    if ((a <= 0) != (b <= 0)) { /* f - level changes sign between the two bin centres */
-      const PetscReal x = xc[i] + (xc[i + 1] - xc[i]) * a / (a - b);
-      if (PetscAbsReal(x - xref) < PetscAbsReal(best - xref)) best = x;
-    }
-  }
-  return best;
-}
-
 static PetscErrorCode MPMExactChecks_Riemann(MPMExact exact, MPM mpm)
 {
   Exact_Riemann            *er = (Exact_Riemann *)exact->data;
@@ -94,15 +79,15 @@ static PetscErrorCode MPMExactChecks_Riemann(MPMExact exact, MPM mpm)
   PetscCall(MPMXProfile(mpm, n, xc, rho));
   if (s->shockR) {
     const PetscReal xs = er->x0 + s->SR * t;
-    PetscCall(MPMAddCheck(mpm, "shock_position", ProfileCrossing(n, xc, rho, 0.5 * (s->rhostarR + s->R.rho), xs), xs));
+    PetscCall(MPMAddCheck(mpm, "shock_position", MPMProfileCrossing(n, xc, rho, 0.5 * (s->rhostarR + s->R.rho), xs), xs));
   }
   if (s->shockL) {
     const PetscReal xs = er->x0 + s->SL * t;
-    PetscCall(MPMAddCheck(mpm, s->shockR ? "left_shock_position" : "shock_position", ProfileCrossing(n, xc, rho, 0.5 * (s->rhostarL + s->L.rho), xs), xs));
+    PetscCall(MPMAddCheck(mpm, s->shockR ? "left_shock_position" : "shock_position", MPMProfileCrossing(n, xc, rho, 0.5 * (s->rhostarL + s->L.rho), xs), xs));
   }
   if (PetscAbsReal(s->rhostarL - s->rhostarR) > 1e-3 * PetscMax(s->rhostarL, s->rhostarR)) { /* a contact with a density jump */
     const PetscReal xcon = er->x0 + s->ustar * t;
-    PetscCall(MPMAddCheck(mpm, "contact_position", ProfileCrossing(n, xc, rho, 0.5 * (s->rhostarL + s->rhostarR), xcon), xcon));
+    PetscCall(MPMAddCheck(mpm, "contact_position", MPMProfileCrossing(n, xc, rho, 0.5 * (s->rhostarL + s->rhostarR), xcon), xcon));
   }
   {
     const PetscReal xa = er->x0 + s->STL * t, xb = er->x0 + s->STR * t, xm = er->x0 + s->ustar * t, w = xb - xa, wl = xm - xa;

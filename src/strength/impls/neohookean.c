@@ -12,7 +12,7 @@ typedef struct {
   PetscReal mu, lambda; /* Lame constants [dyn/cm^2]                       */
 } Strength_NeoHookean;
 
-static void MPMStrengthStress_NeoHookean(void *ctx, PetscInt d, PetscReal dt, const PetscReal L[], const PetscReal F[], PetscReal rho, PetscReal s[], PetscReal *c2)
+static void MPMStrengthStress_NeoHookean(void *ctx, PetscInt d, PetscReal dt, const PetscReal L[], const PetscReal F[], PetscReal rho, PetscReal T, PetscReal s[], PetscReal *epsp, PetscReal *c2)
 {
   const Strength_NeoHookean *nh = (const Strength_NeoHookean *)ctx;
   const PetscReal            J = MPMDeterminant(d, F), Jinv = 1.0 / J, vol = nh->lambda * PetscLogReal(J);

@@ -1,0 +1,201 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* Mie-Gruneisen EOS on a linear Us-up Hugoniot (Steinberg, UCRL-MA-106439, 1996; CTH's MGR form), in CGS with T
+   in eV. The reference state is (rho0, T0) with e = 0 and p = 0 there:
+     eta = 1 - rho0/rho,  P_H = rho0 c0^2 eta / (1 - s eta)^2,  e_H = P_H eta / (2 rho0),
+     p(rho, e) = P_H + rho0 G (e - e_H),  G = Gamma0 + b mu,  mu = rho/rho0 - 1,
+   so rho Gamma = rho0 (Gamma0 + b mu): b is the first-order volume correction of Steinberg's table (the LS-DYNA
+   Gruneisen form); b = 0 gives rho Gamma = rho0 Gamma0, the form of ../shared/reference/copper.md.
+   Temperature from a constant Cv, thermodynamically consistent with Gamma(rho): at fixed rho, de = Cv dT, so
+     T = T_s(rho) + (e - e_s(rho)) / Cv,  T_s = T0 exp(Gamma0 eta + b (ln(rho/rho0) - eta)),
+   where e_s is the isentrope through the reference state, de_s/drho = p(rho, e_s)/rho^2, tabulated at set-up.
+   Sound speed c^2 = dp/drho|_e + p/rho^2 dp/de|_rho. Compressions with s eta >= 1 (beyond the Hugoniot's
+   asymptote) have no state: p and c^2 come back NaN, and the run stops with its diagnosis.
+   The defaults are OFHC copper (copper.md). Options -mat_<name>_eos_miegruneisen_{rho0,c0,s,gamma0,b,cv,T0}. */
+#include "../../petmpmimpl.h"
+
+#define MG_TABLE 4097 /* isentrope table size over rho/rho0 in [MG_RLO, MG_RHI s/(s-1)) */
+#define MG_RLO 0.5
+
+typedef struct {
+  PetscReal rho0;   /* reference density [g/cm^3]                         */
+  PetscReal c0;     /* bulk sound speed, Us intercept [cm/s]              */
+  PetscReal s;      /* Us-up slope [-]                                    */
+  PetscReal gamma0; /* Gruneisen parameter at rho0 [-]                    */
+  PetscReal b;      /* first-order volume correction of rho Gamma [-]     */
+  PetscReal cv;     /* specific heat [erg/(g eV)]                         */
+  PetscReal T0;     /* reference temperature, e = 0 at (rho0, T0) [eV]    */
+  PetscReal rhi;    /* upper end of the isentrope table, rho/rho0 [-]     */
+  PetscReal es[MG_TABLE];
+} EOS_MG;
+
+/* Hugoniot pressure, its derivative dP_H/deta and energy; NaN beyond the asymptote s eta >= 1. */
+static inline void MGHugoniot(const EOS_MG *mg, PetscReal eta, PetscReal *PH, PetscReal *dPH, PetscReal *eH)
+{
+  const PetscReal den = 1.0 - mg->s * eta, k = mg->rho0 * mg->c0 * mg->c0;
+
+  if (!(den > 0.0)) {
+    *PH = *dPH = *eH = (PetscReal)NAN;
+    return;
+  }
+  *PH  = k * eta / (den * den);
+  *dPH = k * (1.0 + mg->s * eta) / (den * den * den);
+  *eH  = *PH * eta / (2.0 * mg->rho0);
+}
+
+static void MPMEOSPressure_MG(void *ctx, PetscReal rho, PetscReal e, PetscReal *p, PetscReal *c2)
+{
+  const EOS_MG   *mg  = (const EOS_MG *)ctx;
+  const PetscReal eta = 1.0 - mg->rho0 / rho, mu = rho / mg->rho0 - 1.0, G = mg->gamma0 + mg->b * mu, r2 = mg->rho0 / (rho * rho);
+  PetscReal       PH, dPH, eH, deH, dpdrho;
+
+  MGHugoniot(mg, eta, &PH, &dPH, &eH);
+  deH    = (PH + eta * dPH) / (2.0 * mg->rho0);
+  *p     = PH + mg->rho0 * G * (e - eH);
+  dpdrho = (dPH - mg->rho0 * G * deH) * r2 + mg->b * (e - eH);
+  *c2    = dpdrho + *p * G * r2;
+}
+
+static inline PetscReal MGIsentropeTemperature(const EOS_MG *mg, PetscReal rho)
+{
+  const PetscReal eta = 1.0 - mg->rho0 / rho;
+  return mg->T0 * PetscExpReal(mg->gamma0 * eta + mg->b * (PetscLogReal(rho / mg->rho0) - eta));
+}
+
+/* e_s(rho) by linear interpolation in the table (linear extrapolation outside it, for temperatures only). */
+static inline PetscReal MGIsentropeEnergy(const EOS_MG *mg, PetscReal rho)
+{
+  const PetscReal r = rho / mg->rho0, dr = (mg->rhi - MG_RLO) / (MG_TABLE - 1);
+  PetscInt        i = (PetscInt)PetscFloorReal((r - MG_RLO) / dr);
+
+  i = PetscMax(0, PetscMin(MG_TABLE - 2, i));
+  return mg->es[i] + (mg->es[i + 1] - mg->es[i]) * (r - MG_RLO - i * dr) / dr;
+}
+
+static void MPMEOSTemperature_MG(void *ctx, PetscReal rho, PetscReal e, PetscReal *T)
+{
+  const EOS_MG *mg = (const EOS_MG *)ctx;
+  *T               = MGIsentropeTemperature(mg, rho) + (e - MGIsentropeEnergy(mg, rho)) / mg->cv;
+}
+
+static void MPMEOSEnergy_MG(void *ctx, PetscReal rho, PetscReal T, PetscReal *e)
+{
+  const EOS_MG *mg = (const EOS_MG *)ctx;
+  *e               = MGIsentropeEnergy(mg, rho) + mg->cv * (T - MGIsentropeTemperature(mg, rho));
+}
+
+/* de_s/drho = p(rho, e_s)/rho^2 from e_s(rho0) = 0, by RK4 outwards from rho0 on the table's nodes (rho0 is a node). */
+static PetscErrorCode MGTabulateIsentrope(EOS_MG *mg)
+{
+  PetscReal dr;
+  PetscInt  i0;
+
+  PetscFunctionBegin;
+  mg->rhi = 0.98 * mg->s / (mg->s - 1.0); /* s eta < 1 <=> rho/rho0 < s/(s-1) */
+  i0      = (PetscInt)PetscFloorReal((1.0 - MG_RLO) / (mg->rhi - MG_RLO) * (MG_TABLE - 1) + 0.5);
+  mg->rhi = MG_RLO + (1.0 - MG_RLO) * (MG_TABLE - 1) / (PetscReal)i0; /* put rho0 on node i0 */
+  dr      = (mg->rhi - MG_RLO) / (MG_TABLE - 1) * mg->rho0;
+  mg->es[i0] = 0.0;
+  for (PetscInt dir = -1; dir <= 1; dir += 2) {
+    for (PetscInt i = i0; i + dir >= 0 && i + dir < MG_TABLE; i += dir) {
+      const PetscReal h = dir * dr, rho = mg->rho0 * (MG_RLO + i * dr / mg->rho0);
+      PetscReal       k[4], p, c2, e = mg->es[i];
+      MPMEOSPressure_MG(mg, rho, e, &p, &c2);
+      k[0] = p / (rho * rho);
+      MPMEOSPressure_MG(mg, rho + 0.5 * h, e + 0.5 * h * k[0], &p, &c2);
+      k[1] = p / PetscSqr(rho + 0.5 * h);
+      MPMEOSPressure_MG(mg, rho + 0.5 * h, e + 0.5 * h * k[1], &p, &c2);
+      k[2] = p / PetscSqr(rho + 0.5 * h);
+      MPMEOSPressure_MG(mg, rho + h, e + h * k[2], &p, &c2);
+      k[3]            = p / PetscSqr(rho + h);
+      mg->es[i + dir] = e + h * (k[0] + 2.0 * k[1] + 2.0 * k[2] + k[3]) / 6.0;
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMEOSSetFromOptions_MG(MPMEOS eos, PetscOptionItems *PetscOptionsObject)
+{
+  EOS_MG    *mg = (EOS_MG *)eos->data;
+  const char pre[] = "eos_miegruneisen_";
+  char       opt[256];
+  struct {
+    const char *name, *text;
+    PetscReal  *v, lo, hi;
+    PetscBool   strictlo;
+  } par[] = {
+    {"rho0",   "Reference density rho0 [g/cm^3], > 0",                           &mg->rho0,   0.0, PETSC_MAX_REAL, PETSC_TRUE },
+    {"c0",     "Bulk sound speed c0, Us = c0 + s up [cm/s], > 0",                &mg->c0,     0.0, PETSC_MAX_REAL, PETSC_TRUE },
+    {"s",      "Us-up slope s [-], > 1",                                         &mg->s,      1.0, PETSC_MAX_REAL, PETSC_TRUE },
+    {"gamma0", "Gruneisen parameter Gamma0 [-], >= 0",                           &mg->gamma0, 0.0, PETSC_MAX_REAL, PETSC_FALSE},
+    {"b",      "First-order volume correction b of rho Gamma = rho0 (Gamma0 + b mu) [-], >= 0", &mg->b, 0.0, PETSC_MAX_REAL, PETSC_FALSE},
+    {"cv",     "Specific heat Cv [erg/(g eV)], > 0",                             &mg->cv,     0.0, PETSC_MAX_REAL, PETSC_TRUE },
+    {"T0",     "Reference temperature T0 [eV] (e = 0, p = 0 at rho0, T0), > 0",  &mg->T0,     0.0, PETSC_MAX_REAL, PETSC_TRUE },
+  };
+
+  PetscFunctionBegin;
+  PetscOptionsHeadBegin(PetscOptionsObject, "Mie-Gruneisen EOS");
+  for (size_t i = 0; i < sizeof(par) / sizeof(par[0]); i++) {
+    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%s%s", pre, par[i].name));
+    PetscCall(PetscOptionsReal(opt, par[i].text, "", *par[i].v, par[i].v, NULL));
+  }
+  PetscOptionsHeadEnd();
+  for (size_t i = 0; i < sizeof(par) / sizeof(par[0]); i++) {
+    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%s%s%s", eos->prefix ? eos->prefix : "", pre, par[i].name));
+    PetscCall(MPMOptionsCheckRange(opt, *par[i].v, par[i].lo, par[i].hi, par[i].strictlo, PETSC_FALSE));
+  }
+  PetscCall(MGTabulateIsentrope(mg));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMEOSView_MG(MPMEOS eos, PetscViewer viewer)
+{
+  EOS_MG *mg = (EOS_MG *)eos->data;
+
+  PetscFunctionBegin;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "rho0 %g g/cm^3, c0 %g cm/s, s %g, Gamma0 %g, b %g, Cv %g erg/(g eV), T0 %g eV\n", (double)mg->rho0, (double)mg->c0, (double)mg->s, (double)mg->gamma0, (double)mg->b, (double)mg->cv, (double)mg->T0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMEOSDestroy_MG(MPMEOS eos)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscFree(eos->data));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Exact solutions of solid problems need the reference state. */
+PetscErrorCode MPMEOSMieGruneisenGetReference(MPMEOS eos, PetscReal *rho0, PetscReal *T0)
+{
+  PetscBool is;
+
+  PetscFunctionBegin;
+  PetscCall(PetscStrcmp(eos->type_name, MPMEOSMIEGRUNEISEN, &is));
+  PetscCheck(is, eos->comm, PETSC_ERR_ARG_WRONG, "-%seos_type is %s; this needs %s", eos->prefix ? eos->prefix : "", eos->type_name, MPMEOSMIEGRUNEISEN);
+  if (rho0) *rho0 = ((EOS_MG *)eos->data)->rho0;
+  if (T0) *T0 = ((EOS_MG *)eos->data)->T0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMEOSCreate_MieGruneisen(MPMEOS eos)
+{
+  EOS_MG *mg;
+
+  PetscFunctionBegin;
+  PetscCall(PetscNew(&mg));
+  mg->rho0                = 8.93;    /* OFHC copper, ../shared/reference/copper.md */
+  mg->c0                  = 3.94e5;
+  mg->s                   = 1.489;
+  mg->gamma0              = 2.02;
+  mg->b                   = 0.47;
+  mg->cv                  = 4.445e10;
+  mg->T0                  = 298.0 / MPM_KELVIN_PER_EV; /* 298 K */
+  eos->data               = mg;
+  eos->ops.pressure       = MPMEOSPressure_MG;
+  eos->ops.temperature    = MPMEOSTemperature_MG;
+  eos->ops.energy         = MPMEOSEnergy_MG;
+  eos->ops.setfromoptions = MPMEOSSetFromOptions_MG;
+  eos->ops.view           = MPMEOSView_MG;
+  eos->ops.destroy        = MPMEOSDestroy_MG;
+  PetscCall(MGTabulateIsentrope(mg));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

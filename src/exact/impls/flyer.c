@@ -1,0 +1,271 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* Exact solution of the 1D flyer plate (../shared/reference/copper.md): a rod X in [lo, lo + L0] (the scene's
+   first region, at density rho0 and temperature T0) moving at -up onto the symmetry wall at x = lo, in uniaxial
+   strain, for any EOS and a strength model none or elastic (hypoelastic: s_xx = (4/3) G ln(rho0/rho) whatever the
+   path). The longitudinal stress P_xx = p - s_xx (compression positive).
+   1. The shock (t < t1 = L0/Us): the Rankine-Hugoniot jumps from the state ahead (P0, e0, moving at -up) to rest,
+      P_xx1 = P0 + rho0 Us up, e1 = e0 + (P_xx1 + P0) eta / (2 rho0), eta = 1 - rho0/rho1 = up/Us, closed by
+      P_xx(rho1, e1) = P_xx1 and solved for eta by bisection. A point is shocked when X - lo < Us t.
+   2. The release (t > t1): a centred simple wave from the free end into the shocked rod, along its isentrope
+      de = P_xx drho / rho^2 (RK4 from the shocked state down to P_xx = 0, tabulated). In the mass coordinate from
+      the free end, h = rho0 (lo + L0 - X), the state with Lagrangian impedance z = rho c_L (c_L^2 = dP_xx/drho
+      along the isentrope) sits at h = z (t - t1), and the velocity away from the wall is u = int dP_xx / z.
+      The tail state (P_xx = 0) is the free-surface velocity. Valid until the head reaches the wall,
+      t2 = t1 + rho0 L0 / z_H; later times have no exact solution here (their error norms are meaningless).
+   Checks, each at the output times where it applies (-mpm_output_times; the last computation is reported):
+     shock_speed           (t < 0.95 t1) Us from the crossing x_s of (rho0 + rho1)/2 on the binned density
+                           profile, Us = (x_s - lo)/t + up [cm/s],
+     stress_plateau        (t < 0.95 t1) volume-weighted mean P_xx + q of the points with x - lo in
+                           [0.25, 0.75] (x_s - lo), against P_xx1 [dyn/cm^2],
+     density_plateau       the same for the density, against rho1 [g/cm^3],
+     free_surface_velocity (t1 < t < t2) mass-weighted mean velocity of the points in the outer half of the
+                           released tail, h < z_f (t - t1) / 2, against the tail velocity [cm/s]. */
+#include "../../petmpmimpl.h"
+
+#define FLYER_TABLE 4001
+
+typedef struct {
+  MPMEOS    eos;
+  PetscReal G;                  /* shear modulus, 0 for a fluid [dyn/cm^2]          */
+  PetscReal lo, L0, up;         /* wall, rod length [cm], impact speed [cm/s]        */
+  PetscReal rho0, e0, P0;       /* state ahead of the shock                          */
+  PetscReal rho1, e1, P1, Us;   /* shocked state: P1 is P_xx                         */
+  PetscReal t1, t2;             /* shock at the free end; release head at the wall   */
+  PetscReal rho[FLYER_TABLE], e[FLYER_TABLE], P[FLYER_TABLE], z[FLYER_TABLE], u[FLYER_TABLE]; /* release isentrope, rho decreasing */
+  PetscInt  n;                  /* table entries used                                 */
+} Exact_Flyer;
+
+/* Longitudinal stress P_xx = p(rho, e) - s_xx(rho), s_xx = (4/3) G ln(rho0/rho). */
+static PetscReal FlyerPxx(const Exact_Flyer *ef, PetscReal rho, PetscReal e)
+{
+  PetscReal p, c2;
+  MPMEOSPressureKernel(ef->eos, rho, e, &p, &c2);
+  return p + 4.0 * ef->G / 3.0 * PetscLogReal(rho / ef->rho0);
+}
+
+/* P_xx(rho(eta), e(eta)) minus the Rayleigh-line stress for compression eta; NaN counts as too compressed. */
+static PetscReal FlyerHugoniotResidual(const Exact_Flyer *ef, PetscReal eta)
+{
+  const PetscReal P1 = ef->P0 + ef->rho0 * ef->up * ef->up / eta, e1 = ef->e0 + 0.5 * (P1 + ef->P0) * eta / ef->rho0;
+  const PetscReal r  = FlyerPxx(ef, ef->rho0 / (1.0 - eta), e1) - P1;
+  return PetscIsInfOrNanReal(r) ? PETSC_MAX_REAL : r;
+}
+
+static PetscErrorCode FlyerSolve(MPMExact exact)
+{
+  Exact_Flyer *ef = (Exact_Flyer *)exact->data;
+  PetscReal    a = 1e-9, b = 0.99, dr;
+
+  PetscFunctionBegin;
+  PetscCheck(FlyerHugoniotResidual(ef, a) < 0.0 && FlyerHugoniotResidual(ef, b) > 0.0, exact->comm, PETSC_ERR_USER_INPUT, "Flyer plate: no shocked state of the material for the impact speed %g cm/s", (double)ef->up);
+  for (PetscInt it = 0; it < 200 && b - a > 1e-15; it++) {
+    const PetscReal c = 0.5 * (a + b);
+    if (FlyerHugoniotResidual(ef, c) < 0.0) a = c;
+    else b = c;
+  }
+  {
+    const PetscReal eta = 0.5 * (a + b);
+    ef->Us   = ef->up / eta;
+    ef->rho1 = ef->rho0 / (1.0 - eta);
+    ef->P1   = ef->P0 + ef->rho0 * ef->up * ef->Us;
+    ef->e1   = ef->e0 + 0.5 * (ef->P1 + ef->P0) * eta / ef->rho0;
+  }
+  /* Release isentrope from rho1 downwards until P_xx = 0 (first by coarse steps to find the end, then tabulated). */
+  {
+    PetscReal rhoend = ef->rho1, e = ef->e1;
+    dr = 1e-4 * ef->rho1;
+    while (FlyerPxx(ef, rhoend, e) > 0.0 && rhoend > 0.5 * ef->rho0) {
+      e += -dr * FlyerPxx(ef, rhoend, e) / (rhoend * rhoend); /* Euler, only to bracket the end */
+      rhoend -= dr;
+    }
+    PetscCheck(rhoend > 0.5 * ef->rho0, exact->comm, PETSC_ERR_USER_INPUT, "Flyer plate: the release isentrope does not reach zero stress");
+    for (PetscInt pass = 0; pass < 3; pass++) { /* refine rhoend: RK4 to it, then a Newton step on P_xx = 0 */
+      const PetscInt N = FLYER_TABLE - 1;
+      const PetscReal h = (rhoend - ef->rho1) / N;
+      ef->rho[0] = ef->rho1;
+      ef->e[0]   = ef->e1;
+      for (PetscInt i = 0; i < N; i++) {
+        const PetscReal r = ef->rho[i], ee = ef->e[i];
+        PetscReal       k1, k2, k3, k4;
+        k1             = FlyerPxx(ef, r, ee) / (r * r);
+        k2             = FlyerPxx(ef, r + 0.5 * h, ee + 0.5 * h * k1) / PetscSqr(r + 0.5 * h);
+        k3             = FlyerPxx(ef, r + 0.5 * h, ee + 0.5 * h * k2) / PetscSqr(r + 0.5 * h);
+        k4             = FlyerPxx(ef, r + h, ee + h * k3) / PetscSqr(r + h);
+        ef->rho[i + 1] = r + h;
+        ef->e[i + 1]   = ee + h * (k1 + 2 * k2 + 2 * k3 + k4) / 6.0;
+      }
+      for (PetscInt i = 0; i <= N; i++) ef->P[i] = FlyerPxx(ef, ef->rho[i], ef->e[i]);
+      rhoend -= ef->P[N] * h / (ef->P[N] - ef->P[N - 1]);
+    }
+    ef->n = FLYER_TABLE;
+  }
+  /* Impedance z = rho c_L = rho sqrt(dP/drho) by central differences, and u = int dP / z from the shocked end. */
+  for (PetscInt i = 0; i < ef->n; i++) {
+    const PetscInt  a0 = PetscMax(0, i - 1), a1 = PetscMin(ef->n - 1, i + 1);
+    const PetscReal c2 = (ef->P[a1] - ef->P[a0]) / (ef->rho[a1] - ef->rho[a0]);
+    ef->z[i]           = ef->rho[i] * PetscSqrtReal(PetscMax(c2, 0.0));
+  }
+  ef->u[0] = 0.0;
+  for (PetscInt i = 1; i < ef->n; i++) ef->u[i] = ef->u[i - 1] + (ef->P[i - 1] - ef->P[i]) * 0.5 * (1.0 / ef->z[i - 1] + 1.0 / ef->z[i]);
+  ef->t1 = ef->L0 / ef->Us;
+  ef->t2 = ef->t1 + ef->rho0 * ef->L0 / ef->z[0];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Index i and weight w of the release state at mass coordinate h after time tau: z(i) >= h/tau >= z(i+1). */
+static void FlyerFan(const Exact_Flyer *ef, PetscReal h, PetscReal tau, PetscInt *i, PetscReal *w)
+{
+  const PetscReal zz = h / tau;
+  PetscInt        a = 0, b = ef->n - 1;
+
+  if (zz >= ef->z[0]) {
+    *i = 0;
+    *w = 0.0;
+    return;
+  }
+  if (zz <= ef->z[b]) {
+    *i = b - 1;
+    *w = 1.0;
+    return;
+  }
+  while (b - a > 1) { /* z decreases along the table */
+    const PetscInt c = (a + b) / 2;
+    if (ef->z[c] >= zz) a = c;
+    else b = c;
+  }
+  *i = a;
+  *w = (ef->z[a] - zz) / (ef->z[a] - ef->z[b]);
+}
+
+static void MPMExactEvaluate_Flyer(void *ctx, PetscReal t, const PetscReal x[], const PetscReal X[], PetscReal *rho, PetscReal v[], PetscReal *p, PetscReal *T)
+{
+  const Exact_Flyer *ef = (const Exact_Flyer *)ctx;
+  PetscReal          r, e, c2;
+
+  v[0] = v[1] = v[2] = 0.0;
+  if (t <= ef->t1) {
+    const PetscBool shocked = (PetscBool)(X[0] - ef->lo < ef->Us * t);
+    r                       = shocked ? ef->rho1 : ef->rho0;
+    e                       = shocked ? ef->e1 : ef->e0;
+    v[0]                    = shocked ? 0.0 : -ef->up;
+  } else {
+    PetscInt  i;
+    PetscReal w;
+    FlyerFan(ef, ef->rho0 * (ef->lo + ef->L0 - X[0]), t - ef->t1, &i, &w);
+    r    = (1 - w) * ef->rho[i] + w * ef->rho[i + 1];
+    e    = (1 - w) * ef->e[i] + w * ef->e[i + 1];
+    v[0] = (1 - w) * ef->u[i] + w * ef->u[i + 1];
+  }
+  *rho = r;
+  MPMEOSPressureKernel(ef->eos, r, e, p, &c2);
+  MPMEOSTemperatureKernel(ef->eos, r, e, T);
+}
+
+static PetscErrorCode MPMExactSetUp_Flyer(MPMExact exact, MPM mpm)
+{
+  Exact_Flyer     *ef  = (Exact_Flyer *)exact->data;
+  const MPMRegion *reg = &mpm->reg[0];
+  MPMStrength      str;
+  PetscReal        c2;
+
+  PetscFunctionBegin;
+  PetscCheck(mpm->grid.dim == 1 && mpm->nreg >= 1, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer needs a 1D scene whose first region is the rod");
+  PetscCheck(mpm->bc_lo[0] == MPM_BC_WALL, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer needs -mpm_bc_lo wall (the symmetry wall the rod hits)");
+  ef->lo   = mpm->grid.lo[0];
+  ef->L0   = PetscMin(reg->hi[0], mpm->grid.hi[0]) - ef->lo;
+  ef->up   = -reg->v[0];
+  ef->rho0 = reg->rho;
+  PetscCheck(PetscAbsReal(reg->lo[0] - ef->lo) <= 1e-12 * ef->L0, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer: the rod (-region_%s_lo %g) must start at the wall -mpm_lo %g", reg->name, (double)reg->lo[0], (double)ef->lo);
+  PetscCheck(ef->up > 0.0, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer: the rod must move towards the wall, -region_%s_velocity < 0 (got %g)", reg->name, (double)reg->v[0]);
+  ef->eos = mpm->mat[reg->material].eos;
+  str     = mpm->mat[reg->material].strength;
+  ef->G   = 0.0;
+  if (str) {
+    PetscBool elastic;
+    PetscCall(PetscStrcmp(str->type_name, MPMSTRENGTHELASTIC, &elastic));
+    PetscCheck(elastic, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer knows the solution for -%sstrength_type none or %s, not %s", str->prefix, MPMSTRENGTHELASTIC, str->type_name);
+    PetscCall(MPMStrengthGetShearModulus(str, &ef->G));
+  }
+  PetscCall(MPMEOSEnergyFromTemperature(ef->eos, ef->rho0, reg->T, &ef->e0));
+  PetscCall(MPMEOSPressure(ef->eos, ef->rho0, ef->e0, &ef->P0, &c2));
+  PetscCall(FlyerSolve(exact));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMExactChecks_Flyer(MPMExact exact, MPM mpm)
+{
+  Exact_Flyer    *ef = (Exact_Flyer *)exact->data;
+  const PetscReal t  = mpm->time;
+  MPMPoints       pts;
+
+  PetscFunctionBegin;
+  if (t > 0.0 && t < 0.95 * ef->t1) {
+    const PetscInt n = mpm->grid.cells[0];
+    PetscReal     *xc, *rho, xs, sum[3] = {0, 0, 0};
+    PetscCall(PetscMalloc2(n, &xc, n, &rho));
+    PetscCall(MPMXProfile(mpm, n, xc, rho));
+    xs = MPMProfileCrossing(n, xc, rho, 0.5 * (ef->rho0 + ef->rho1), ef->lo + (ef->Us - ef->up) * t);
+    PetscCall(PetscFree2(xc, rho));
+    PetscCall(MPMAddCheck(mpm, "shock_speed", (xs - ef->lo) / t + ef->up, ef->Us));
+    PetscCall(MPMPointsGetArrays(mpm, &pts));
+    for (PetscInt p = 0; p < pts.n; p++) {
+      const PetscReal x = pts.f[MPM_FIELD_POSITION][p] - ef->lo, V = pts.f[MPM_FIELD_VOLUME][p];
+      if (x > 0.25 * (xs - ef->lo) && x < 0.75 * (xs - ef->lo)) {
+        sum[0] += V * (pts.f[MPM_FIELD_PRESSURE][p] + pts.f[MPM_FIELD_VISCOSITY][p] - (mpm->has_stress ? pts.f[MPM_FIELD_STRESS][p] : 0.0));
+        sum[1] += V * pts.f[MPM_FIELD_DENSITY][p];
+        sum[2] += V;
+      }
+    }
+    PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, sum, 3, MPIU_REAL, MPIU_SUM, mpm->comm));
+    PetscCheck(sum[2] > 0.0, mpm->comm, PETSC_ERR_PLIB, "Flyer plate: no point in the shocked plateau at t = %g s", (double)t);
+    PetscCall(MPMAddCheck(mpm, "stress_plateau", sum[0] / sum[2], ef->P1));
+    PetscCall(MPMAddCheck(mpm, "density_plateau", sum[1] / sum[2], ef->rho1));
+  } else if (t > ef->t1 && t < ef->t2) {
+    const PetscReal hmax = 0.5 * ef->z[ef->n - 1] * (t - ef->t1);
+    PetscReal       sum[2] = {0, 0};
+    PetscCall(MPMPointsGetArrays(mpm, &pts));
+    for (PetscInt p = 0; p < pts.n; p++) {
+      if (ef->rho0 * (ef->lo + ef->L0 - pts.f[MPM_FIELD_REFPOSITION][p]) < hmax) {
+        sum[0] += pts.f[MPM_FIELD_MASS][p] * pts.f[MPM_FIELD_VELOCITY][p];
+        sum[1] += pts.f[MPM_FIELD_MASS][p];
+      }
+    }
+    PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, sum, 2, MPIU_REAL, MPIU_SUM, mpm->comm));
+    if (sum[1] > 0.0) PetscCall(MPMAddCheck(mpm, "free_surface_velocity", sum[0] / sum[1], ef->u[ef->n - 1]));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMExactView_Flyer(MPMExact exact, PetscViewer viewer)
+{
+  Exact_Flyer *ef = (Exact_Flyer *)exact->data;
+
+  PetscFunctionBegin;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "rod %g cm at %g cm/s, G %g: Us %.6g cm/s, P_xx %.6g dyn/cm^2, rho %.6g g/cm^3, e %.6g erg/g; free end reached at %.4g s, release %.6g cm/s, valid to %.4g s\n", (double)ef->L0, (double)ef->up, (double)ef->G, (double)ef->Us,
+                                   (double)ef->P1, (double)ef->rho1, (double)ef->e1, (double)ef->t1, (double)ef->u[ef->n - 1], (double)ef->t2));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMExactDestroy_Flyer(MPMExact exact)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscFree(exact->data));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMExactCreate_Flyer(MPMExact exact)
+{
+  Exact_Flyer *ef;
+
+  PetscFunctionBegin;
+  PetscCall(PetscNew(&ef));
+  exact->data         = ef;
+  exact->ops.setup    = MPMExactSetUp_Flyer;
+  exact->ops.evaluate = MPMExactEvaluate_Flyer;
+  exact->ops.checks   = MPMExactChecks_Flyer;
+  exact->ops.view     = MPMExactView_Flyer;
+  exact->ops.destroy  = MPMExactDestroy_Flyer;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

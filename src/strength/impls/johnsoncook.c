@@ -1,0 +1,114 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* Johnson-Cook plasticity (Johnson & Cook, 7th Int. Symp. Ballistics, 1983) on the hypoelastic Jaumann-rate trial
+   deviator (src/strength/hypoelastic.h), with the radial return solved for the hardening flow stress
+     Y = (A + B eps_p^n) (1 + C ln(max(epsdot_p / epsdot0, 1))) (1 - T*^m),  T* = (T - Tr)/(Tm - Tr) in [0, 1],
+   at the end-of-increment plastic strain and the plastic strain rate of the step (an implicit return). T is the
+   point's temperature from its EOS at the start of the step. Plastic work heating: the stress work s : L dt / rho,
+   elastic and plastic, enters the internal energy e, so the dissipated plastic work raises T through the EOS and
+   softens the flow stress (a Taylor-Quinney factor of 1).
+   Options -mat_<name>_strength_johnsoncook_{G,A,B,n,C,m,Tm,Tr,epsdot0}, with the OFHC copper defaults of
+   ../shared/reference/copper.md: G 4.77e11, A 9.0e8, B 2.92e9 dyn/cm^2, n 0.31, C 0.025, m 1.09,
+   Tm 1356 K, Tr 298 K (in eV), epsdot0 1 1/s. */
+#include "../hypoelastic.h"
+
+typedef struct {
+  PetscReal G, A, B, n, C, m, Tm, Tr, epsdot0;
+} Strength_JC;
+
+static PetscReal MPMStrengthFlow_JC(void *ctx, PetscReal epsp, PetscReal rate, PetscReal T)
+{
+  const Strength_JC *jc    = (const Strength_JC *)ctx;
+  const PetscReal    Tstar = PetscMin(1.0, PetscMax(0.0, (T - jc->Tr) / (jc->Tm - jc->Tr)));
+  const PetscReal    r     = rate / jc->epsdot0;
+
+  return (jc->A + (epsp > 0.0 ? jc->B * PetscPowReal(epsp, jc->n) : 0.0)) * (1.0 + (r > 1.0 ? jc->C * PetscLogReal(r) : 0.0)) * (1.0 - (Tstar > 0.0 ? PetscPowReal(Tstar, jc->m) : 0.0));
+}
+
+static void MPMStrengthStress_JC(void *ctx, PetscInt d, PetscReal dt, const PetscReal L[], const PetscReal F[], PetscReal rho, PetscReal T, PetscReal s[], PetscReal *epsp, PetscReal *c2)
+{
+  const Strength_JC *jc = (const Strength_JC *)ctx;
+
+  MPMHypoelasticTrial(d, dt, jc->G, L, s);
+  (void)MPMRadialReturn(d, dt, jc->G, MPMStrengthFlow_JC, ctx, T, s, epsp);
+  *c2 = MPMHypoelasticWaveSpeed2(jc->G, rho);
+}
+
+static PetscErrorCode MPMStrengthSetFromOptions_JC(MPMStrength str, PetscOptionItems *PetscOptionsObject)
+{
+  Strength_JC *jc = (Strength_JC *)str->data;
+  const char   pre[] = "strength_johnsoncook_";
+  char         opt[256];
+  struct {
+    const char *name, *text;
+    PetscReal  *v;
+    PetscBool   positive; /* > 0, else >= 0 */
+  } par[] = {
+    {"G",       "Shear modulus G [dyn/cm^2], > 0",                     &jc->G,       PETSC_TRUE },
+    {"A",       "Initial yield stress A [dyn/cm^2], > 0",              &jc->A,       PETSC_TRUE },
+    {"B",       "Hardening modulus B [dyn/cm^2], >= 0",                &jc->B,       PETSC_FALSE},
+    {"n",       "Hardening exponent n [-], > 0",                       &jc->n,       PETSC_TRUE },
+    {"C",       "Strain-rate coefficient C [-], >= 0",                 &jc->C,       PETSC_FALSE},
+    {"m",       "Thermal softening exponent m [-], > 0",               &jc->m,       PETSC_TRUE },
+    {"Tm",      "Melting temperature Tm [eV], > Tr",                   &jc->Tm,      PETSC_TRUE },
+    {"Tr",      "Reference (room) temperature Tr [eV], >= 0",          &jc->Tr,      PETSC_FALSE},
+    {"epsdot0", "Reference plastic strain rate epsdot0 [1/s], > 0",    &jc->epsdot0, PETSC_TRUE },
+  };
+
+  PetscFunctionBegin;
+  PetscOptionsHeadBegin(PetscOptionsObject, "Johnson-Cook plasticity");
+  for (size_t i = 0; i < sizeof(par) / sizeof(par[0]); i++) {
+    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%s%s", pre, par[i].name));
+    PetscCall(PetscOptionsReal(opt, par[i].text, "", *par[i].v, par[i].v, NULL));
+  }
+  PetscOptionsHeadEnd();
+  for (size_t i = 0; i < sizeof(par) / sizeof(par[0]); i++) {
+    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%s%s%s", str->prefix ? str->prefix : "", pre, par[i].name));
+    PetscCall(MPMOptionsCheckRange(opt, *par[i].v, 0.0, PETSC_MAX_REAL, par[i].positive, PETSC_FALSE));
+  }
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%s%sTm", str->prefix ? str->prefix : "", pre));
+  PetscCall(MPMOptionsCheckRange(opt, jc->Tm, jc->Tr, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
+  str->G = jc->G;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMStrengthView_JC(MPMStrength str, PetscViewer viewer)
+{
+  Strength_JC *jc = (Strength_JC *)str->data;
+
+  PetscFunctionBegin;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "G %g, A %g, B %g dyn/cm^2, n %g, C %g (epsdot0 %g 1/s), m %g, Tm %g eV, Tr %g eV\n", (double)jc->G, (double)jc->A, (double)jc->B, (double)jc->n, (double)jc->C, (double)jc->epsdot0, (double)jc->m, (double)jc->Tm,
+                                   (double)jc->Tr));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMStrengthDestroy_JC(MPMStrength str)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscFree(str->data));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMStrengthCreate_JohnsonCook(MPMStrength str)
+{
+  Strength_JC *jc;
+
+  PetscFunctionBegin;
+  PetscCall(PetscNew(&jc));
+  jc->G                   = 4.77e11; /* OFHC copper, ../shared/reference/copper.md */
+  jc->A                   = 9.0e8;
+  jc->B                   = 2.92e9;
+  jc->n                   = 0.31;
+  jc->C                   = 0.025;
+  jc->m                   = 1.09;
+  jc->Tm                  = 1356.0 / MPM_KELVIN_PER_EV;
+  jc->Tr                  = 298.0 / MPM_KELVIN_PER_EV;
+  jc->epsdot0             = 1.0;
+  str->data               = jc;
+  str->G                  = jc->G;
+  str->ops.stress         = MPMStrengthStress_JC;
+  str->ops.flow           = MPMStrengthFlow_JC;
+  str->ops.setfromoptions = MPMStrengthSetFromOptions_JC;
+  str->ops.view           = MPMStrengthView_JC;
+  str->ops.destroy        = MPMStrengthDestroy_JC;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
