@@ -31,7 +31,8 @@ static inline PetscReal MPMVonMisesStress(PetscInt d, const PetscReal s[])
 {
   PetscReal ss = 0.0;
 
-  if (d == 1) ss = 1.5 * s[0] * s[0];
+  if (d == 1)
+    ss = 1.5 * s[0] * s[0];
   else {
     for (PetscInt i = 0; i < d * d; i++) ss += s[i] * s[i];
     if (d == 2) ss += PetscSqr(s[0] + s[3]);

@@ -90,10 +90,10 @@ static PetscErrorCode MGTabulateIsentrope(EOS_MG *mg)
   PetscInt  i0;
 
   PetscFunctionBegin;
-  mg->rhi = 0.98 * mg->s / (mg->s - 1.0); /* s eta < 1 <=> rho/rho0 < s/(s-1) */
-  i0      = (PetscInt)PetscFloorReal((1.0 - MG_RLO) / (mg->rhi - MG_RLO) * (MG_TABLE - 1) + 0.5);
-  mg->rhi = MG_RLO + (1.0 - MG_RLO) * (MG_TABLE - 1) / (PetscReal)i0; /* put rho0 on node i0 */
-  dr      = (mg->rhi - MG_RLO) / (MG_TABLE - 1) * mg->rho0;
+  mg->rhi    = 0.98 * mg->s / (mg->s - 1.0); /* s eta < 1 <=> rho/rho0 < s/(s-1) */
+  i0         = (PetscInt)PetscFloorReal((1.0 - MG_RLO) / (mg->rhi - MG_RLO) * (MG_TABLE - 1) + 0.5);
+  mg->rhi    = MG_RLO + (1.0 - MG_RLO) * (MG_TABLE - 1) / (PetscReal)i0; /* put rho0 on node i0 */
+  dr         = (mg->rhi - MG_RLO) / (MG_TABLE - 1) * mg->rho0;
   mg->es[i0] = 0.0;
   for (PetscInt dir = -1; dir <= 1; dir += 2) {
     for (PetscInt i = i0; i + dir >= 0 && i + dir < MG_TABLE; i += dir) {
@@ -115,7 +115,7 @@ static PetscErrorCode MGTabulateIsentrope(EOS_MG *mg)
 
 static PetscErrorCode MPMEOSSetFromOptions_MG(MPMEOS eos, PetscOptionItems *PetscOptionsObject)
 {
-  EOS_MG    *mg = (EOS_MG *)eos->data;
+  EOS_MG    *mg    = (EOS_MG *)eos->data;
   const char pre[] = "eos_miegruneisen_";
   char       opt[256];
   struct {
@@ -123,13 +123,13 @@ static PetscErrorCode MPMEOSSetFromOptions_MG(MPMEOS eos, PetscOptionItems *Pets
     PetscReal  *v, lo, hi;
     PetscBool   strictlo;
   } par[] = {
-    {"rho0",   "Reference density rho0 [g/cm^3], > 0",                           &mg->rho0,   0.0, PETSC_MAX_REAL, PETSC_TRUE },
-    {"c0",     "Bulk sound speed c0, Us = c0 + s up [cm/s], > 0",                &mg->c0,     0.0, PETSC_MAX_REAL, PETSC_TRUE },
-    {"s",      "Us-up slope s [-], > 1",                                         &mg->s,      1.0, PETSC_MAX_REAL, PETSC_TRUE },
-    {"gamma0", "Gruneisen parameter Gamma0 [-], >= 0",                           &mg->gamma0, 0.0, PETSC_MAX_REAL, PETSC_FALSE},
-    {"b",      "First-order volume correction b of rho Gamma = rho0 (Gamma0 + b mu) [-], >= 0", &mg->b, 0.0, PETSC_MAX_REAL, PETSC_FALSE},
-    {"cv",     "Specific heat Cv [erg/(g eV)], > 0",                             &mg->cv,     0.0, PETSC_MAX_REAL, PETSC_TRUE },
-    {"T0",     "Reference temperature T0 [eV] (e = 0, p = 0 at rho0, T0), > 0",  &mg->T0,     0.0, PETSC_MAX_REAL, PETSC_TRUE },
+    {"rho0", "Reference density rho0 [g/cm^3], > 0", &mg->rho0, 0.0, PETSC_MAX_REAL, PETSC_TRUE},
+    {"c0", "Bulk sound speed c0, Us = c0 + s up [cm/s], > 0", &mg->c0, 0.0, PETSC_MAX_REAL, PETSC_TRUE},
+    {"s", "Us-up slope s [-], > 1", &mg->s, 1.0, PETSC_MAX_REAL, PETSC_TRUE},
+    {"gamma0", "Gruneisen parameter Gamma0 [-], >= 0", &mg->gamma0, 0.0, PETSC_MAX_REAL, PETSC_FALSE},
+    {"b", "First-order volume correction b of rho Gamma = rho0 (Gamma0 + b mu) [-], >= 0", &mg->b, 0.0, PETSC_MAX_REAL, PETSC_FALSE},
+    {"cv", "Specific heat Cv [erg/(g eV)], > 0", &mg->cv, 0.0, PETSC_MAX_REAL, PETSC_TRUE},
+    {"T0", "Reference temperature T0 [eV] (e = 0, p = 0 at rho0, T0), > 0", &mg->T0, 0.0, PETSC_MAX_REAL, PETSC_TRUE},
   };
 
   PetscFunctionBegin;
@@ -182,7 +182,7 @@ PetscErrorCode MPMEOSCreate_MieGruneisen(MPMEOS eos)
 
   PetscFunctionBegin;
   PetscCall(PetscNew(&mg));
-  mg->rho0                = 8.93;    /* OFHC copper, ../shared/reference/copper.md */
+  mg->rho0                = 8.93; /* OFHC copper, ../shared/reference/copper.md */
   mg->c0                  = 3.94e5;
   mg->s                   = 1.489;
   mg->gamma0              = 2.02;

@@ -26,13 +26,13 @@
 
 typedef struct {
   MPMEOS    eos;
-  PetscReal G;                  /* shear modulus, 0 for a fluid [dyn/cm^2]          */
-  PetscReal lo, L0, up;         /* wall, rod length [cm], impact speed [cm/s]        */
-  PetscReal rho0, e0, P0;       /* state ahead of the shock                          */
-  PetscReal rho1, e1, P1, Us;   /* shocked state: P1 is P_xx                         */
-  PetscReal t1, t2;             /* shock at the free end; release head at the wall   */
+  PetscReal G;                                                                                /* shear modulus, 0 for a fluid [dyn/cm^2]          */
+  PetscReal lo, L0, up;                                                                       /* wall, rod length [cm], impact speed [cm/s]        */
+  PetscReal rho0, e0, P0;                                                                     /* state ahead of the shock                          */
+  PetscReal rho1, e1, P1, Us;                                                                 /* shocked state: P1 is P_xx                         */
+  PetscReal t1, t2;                                                                           /* shock at the free end; release head at the wall   */
   PetscReal rho[FLYER_TABLE], e[FLYER_TABLE], P[FLYER_TABLE], z[FLYER_TABLE], u[FLYER_TABLE]; /* release isentrope, rho decreasing */
-  PetscInt  n;                  /* table entries used                                 */
+  PetscInt  n;                                                                                /* table entries used                                 */
 } Exact_Flyer;
 
 /* Longitudinal stress P_xx = p(rho, e) - s_xx(rho), s_xx = (4/3) G ln(rho0/rho). */
@@ -47,7 +47,7 @@ static PetscReal FlyerPxx(const Exact_Flyer *ef, PetscReal rho, PetscReal e)
 static PetscReal FlyerHugoniotResidual(const Exact_Flyer *ef, PetscReal eta)
 {
   const PetscReal P1 = ef->P0 + ef->rho0 * ef->up * ef->up / eta, e1 = ef->e0 + 0.5 * (P1 + ef->P0) * eta / ef->rho0;
-  const PetscReal r  = FlyerPxx(ef, ef->rho0 / (1.0 - eta), e1) - P1;
+  const PetscReal r = FlyerPxx(ef, ef->rho0 / (1.0 - eta), e1) - P1;
   return PetscIsInfOrNanReal(r) ? PETSC_MAX_REAL : r;
 }
 
@@ -60,15 +60,17 @@ static PetscErrorCode FlyerSolve(MPMExact exact)
   PetscCheck(FlyerHugoniotResidual(ef, a) < 0.0 && FlyerHugoniotResidual(ef, b) > 0.0, exact->comm, PETSC_ERR_USER_INPUT, "Flyer plate: no shocked state of the material for the impact speed %g cm/s", (double)ef->up);
   for (PetscInt it = 0; it < 200 && b - a > 1e-15; it++) {
     const PetscReal c = 0.5 * (a + b);
-    if (FlyerHugoniotResidual(ef, c) < 0.0) a = c;
-    else b = c;
+    if (FlyerHugoniotResidual(ef, c) < 0.0)
+      a = c;
+    else
+      b = c;
   }
   {
     const PetscReal eta = 0.5 * (a + b);
-    ef->Us   = ef->up / eta;
-    ef->rho1 = ef->rho0 / (1.0 - eta);
-    ef->P1   = ef->P0 + ef->rho0 * ef->up * ef->Us;
-    ef->e1   = ef->e0 + 0.5 * (ef->P1 + ef->P0) * eta / ef->rho0;
+    ef->Us              = ef->up / eta;
+    ef->rho1            = ef->rho0 / (1.0 - eta);
+    ef->P1              = ef->P0 + ef->rho0 * ef->up * ef->Us;
+    ef->e1              = ef->e0 + 0.5 * (ef->P1 + ef->P0) * eta / ef->rho0;
   }
   /* Release isentrope from rho1 downwards until P_xx = 0 (first by coarse steps to find the end, then tabulated). */
   {
@@ -80,10 +82,10 @@ static PetscErrorCode FlyerSolve(MPMExact exact)
     }
     PetscCheck(rhoend > 0.5 * ef->rho0, exact->comm, PETSC_ERR_USER_INPUT, "Flyer plate: the release isentrope does not reach zero stress");
     for (PetscInt pass = 0; pass < 3; pass++) { /* refine rhoend: RK4 to it, then a Newton step on P_xx = 0 */
-      const PetscInt N = FLYER_TABLE - 1;
+      const PetscInt  N = FLYER_TABLE - 1;
       const PetscReal h = (rhoend - ef->rho1) / N;
-      ef->rho[0] = ef->rho1;
-      ef->e[0]   = ef->e1;
+      ef->rho[0]        = ef->rho1;
+      ef->e[0]          = ef->e1;
       for (PetscInt i = 0; i < N; i++) {
         const PetscReal r = ef->rho[i], ee = ef->e[i];
         PetscReal       k1, k2, k3, k4;
@@ -130,8 +132,10 @@ static void FlyerFan(const Exact_Flyer *ef, PetscReal h, PetscReal tau, PetscInt
   }
   while (b - a > 1) { /* z decreases along the table */
     const PetscInt c = (a + b) / 2;
-    if (ef->z[c] >= zz) a = c;
-    else b = c;
+    if (ef->z[c] >= zz)
+      a = c;
+    else
+      b = c;
   }
   *i = a;
   *w = (ef->z[a] - zz) / (ef->z[a] - ef->z[b]);
@@ -222,7 +226,7 @@ static PetscErrorCode MPMExactChecks_Flyer(MPMExact exact, MPM mpm)
     PetscCall(MPMAddCheck(mpm, "stress_plateau", sum[0] / sum[2], ef->P1));
     PetscCall(MPMAddCheck(mpm, "density_plateau", sum[1] / sum[2], ef->rho1));
   } else if (t > ef->t1 && t < ef->t2) {
-    const PetscReal hmax = 0.5 * ef->z[ef->n - 1] * (t - ef->t1);
+    const PetscReal hmax   = 0.5 * ef->z[ef->n - 1] * (t - ef->t1);
     PetscReal       sum[2] = {0, 0};
     PetscCall(MPMPointsGetArrays(mpm, &pts));
     for (PetscInt p = 0; p < pts.n; p++) {
@@ -243,8 +247,8 @@ static PetscErrorCode MPMExactView_Flyer(MPMExact exact, PetscViewer viewer)
   Exact_Flyer *ef = (Exact_Flyer *)exact->data;
 
   PetscFunctionBegin;
-  PetscCall(PetscViewerASCIIPrintf(viewer, "rod %g cm at %g cm/s, G %g: Us %.6g cm/s, P_xx %.6g dyn/cm^2, rho %.6g g/cm^3, e %.6g erg/g; free end reached at %.4g s, release %.6g cm/s, valid to %.4g s\n", (double)ef->L0, (double)ef->up, (double)ef->G, (double)ef->Us,
-                                   (double)ef->P1, (double)ef->rho1, (double)ef->e1, (double)ef->t1, (double)ef->u[ef->n - 1], (double)ef->t2));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "rod %g cm at %g cm/s, G %g: Us %.6g cm/s, P_xx %.6g dyn/cm^2, rho %.6g g/cm^3, e %.6g erg/g; free end reached at %.4g s, release %.6g cm/s, valid to %.4g s\n", (double)ef->L0, (double)ef->up, (double)ef->G,
+                                   (double)ef->Us, (double)ef->P1, (double)ef->rho1, (double)ef->e1, (double)ef->t1, (double)ef->u[ef->n - 1], (double)ef->t2));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -2,7 +2,7 @@
 /* Hypoelastic deviatoric stress with the Jaumann rate, perfectly elastic (no yield):
      ds/dt = 2 G D' + W s - s W,  sigma = s - (p + q) I,
    with the pressure p from the material's EOS (src/strength/hypoelastic.h). Adds (4/3) G / rho to c^2.
-   Option: -mat_<name>_strength_elastic_G, the shear modulus [dyn/cm^2] (> 0; default 4.77e11, copper). */
+   Option: -mat_<name>_strength_G, the shear modulus [dyn/cm^2] (> 0; default 4.77e11, copper). */
 #include "../hypoelastic.h"
 
 typedef struct {
@@ -24,9 +24,9 @@ static PetscErrorCode MPMStrengthSetFromOptions_Elastic(MPMStrength str, PetscOp
 
   PetscFunctionBegin;
   PetscOptionsHeadBegin(PetscOptionsObject, "Hypoelastic solid");
-  PetscCall(PetscOptionsReal("-strength_elastic_G", "Shear modulus G [dyn/cm^2], > 0", "", el->G, &el->G, NULL));
+  PetscCall(PetscOptionsReal("-strength_G", "Shear modulus G [dyn/cm^2], > 0", "", el->G, &el->G, NULL));
   PetscOptionsHeadEnd();
-  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sstrength_elastic_G", str->prefix ? str->prefix : ""));
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sstrength_G", str->prefix ? str->prefix : ""));
   PetscCall(MPMOptionsCheckRange(opt, el->G, 0.0, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
   str->G = el->G;
   PetscFunctionReturn(PETSC_SUCCESS);

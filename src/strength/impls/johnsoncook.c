@@ -6,7 +6,7 @@
    point's temperature from its EOS at the start of the step. Plastic work heating: the stress work s : L dt / rho,
    elastic and plastic, enters the internal energy e, so the dissipated plastic work raises T through the EOS and
    softens the flow stress (a Taylor-Quinney factor of 1).
-   Options -mat_<name>_strength_johnsoncook_{G,A,B,n,C,m,Tm,Tr,epsdot0}, with the OFHC copper defaults of
+   Options -mat_<name>_strength_G (shared by the hypoelastic types) and -mat_<name>_strength_johnsoncook_{A,B,n,C,m,Tm,Tr,epsdot0}, with the OFHC copper defaults of
    ../shared/reference/copper.md: G 4.77e11, A 9.0e8, B 2.92e9 dyn/cm^2, n 0.31, C 0.025, m 1.09,
    Tm 1356 K, Tr 298 K (in eV), epsdot0 1 1/s. */
 #include "../hypoelastic.h"
@@ -35,7 +35,7 @@ static void MPMStrengthStress_JC(void *ctx, PetscInt d, PetscReal dt, const Pets
 
 static PetscErrorCode MPMStrengthSetFromOptions_JC(MPMStrength str, PetscOptionItems *PetscOptionsObject)
 {
-  Strength_JC *jc = (Strength_JC *)str->data;
+  Strength_JC *jc    = (Strength_JC *)str->data;
   const char   pre[] = "strength_johnsoncook_";
   char         opt[256];
   struct {
@@ -43,19 +43,19 @@ static PetscErrorCode MPMStrengthSetFromOptions_JC(MPMStrength str, PetscOptionI
     PetscReal  *v;
     PetscBool   positive; /* > 0, else >= 0 */
   } par[] = {
-    {"G",       "Shear modulus G [dyn/cm^2], > 0",                     &jc->G,       PETSC_TRUE },
-    {"A",       "Initial yield stress A [dyn/cm^2], > 0",              &jc->A,       PETSC_TRUE },
-    {"B",       "Hardening modulus B [dyn/cm^2], >= 0",                &jc->B,       PETSC_FALSE},
-    {"n",       "Hardening exponent n [-], > 0",                       &jc->n,       PETSC_TRUE },
-    {"C",       "Strain-rate coefficient C [-], >= 0",                 &jc->C,       PETSC_FALSE},
-    {"m",       "Thermal softening exponent m [-], > 0",               &jc->m,       PETSC_TRUE },
-    {"Tm",      "Melting temperature Tm [eV], > Tr",                   &jc->Tm,      PETSC_TRUE },
-    {"Tr",      "Reference (room) temperature Tr [eV], >= 0",          &jc->Tr,      PETSC_FALSE},
-    {"epsdot0", "Reference plastic strain rate epsdot0 [1/s], > 0",    &jc->epsdot0, PETSC_TRUE },
+    {"A", "Initial yield stress A [dyn/cm^2], > 0", &jc->A, PETSC_TRUE},
+    {"B", "Hardening modulus B [dyn/cm^2], >= 0", &jc->B, PETSC_FALSE},
+    {"n", "Hardening exponent n [-], > 0", &jc->n, PETSC_TRUE},
+    {"C", "Strain-rate coefficient C [-], >= 0", &jc->C, PETSC_FALSE},
+    {"m", "Thermal softening exponent m [-], > 0", &jc->m, PETSC_TRUE},
+    {"Tm", "Melting temperature Tm [eV], > Tr", &jc->Tm, PETSC_TRUE},
+    {"Tr", "Reference (room) temperature Tr [eV], >= 0", &jc->Tr, PETSC_FALSE},
+    {"epsdot0", "Reference plastic strain rate epsdot0 [1/s], > 0", &jc->epsdot0, PETSC_TRUE},
   };
 
   PetscFunctionBegin;
   PetscOptionsHeadBegin(PetscOptionsObject, "Johnson-Cook plasticity");
+  PetscCall(PetscOptionsReal("-strength_G", "Shear modulus G [dyn/cm^2], > 0", "", jc->G, &jc->G, NULL));
   for (size_t i = 0; i < sizeof(par) / sizeof(par[0]); i++) {
     PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%s%s", pre, par[i].name));
     PetscCall(PetscOptionsReal(opt, par[i].text, "", *par[i].v, par[i].v, NULL));
@@ -65,6 +65,8 @@ static PetscErrorCode MPMStrengthSetFromOptions_JC(MPMStrength str, PetscOptionI
     PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%s%s%s", str->prefix ? str->prefix : "", pre, par[i].name));
     PetscCall(MPMOptionsCheckRange(opt, *par[i].v, 0.0, PETSC_MAX_REAL, par[i].positive, PETSC_FALSE));
   }
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sstrength_G", str->prefix ? str->prefix : ""));
+  PetscCall(MPMOptionsCheckRange(opt, jc->G, 0.0, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%s%sTm", str->prefix ? str->prefix : "", pre));
   PetscCall(MPMOptionsCheckRange(opt, jc->Tm, jc->Tr, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
   str->G = jc->G;
@@ -76,8 +78,8 @@ static PetscErrorCode MPMStrengthView_JC(MPMStrength str, PetscViewer viewer)
   Strength_JC *jc = (Strength_JC *)str->data;
 
   PetscFunctionBegin;
-  PetscCall(PetscViewerASCIIPrintf(viewer, "G %g, A %g, B %g dyn/cm^2, n %g, C %g (epsdot0 %g 1/s), m %g, Tm %g eV, Tr %g eV\n", (double)jc->G, (double)jc->A, (double)jc->B, (double)jc->n, (double)jc->C, (double)jc->epsdot0, (double)jc->m, (double)jc->Tm,
-                                   (double)jc->Tr));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "G %g, A %g, B %g dyn/cm^2, n %g, C %g (epsdot0 %g 1/s), m %g, Tm %g eV, Tr %g eV\n", (double)jc->G, (double)jc->A, (double)jc->B, (double)jc->n, (double)jc->C, (double)jc->epsdot0, (double)jc->m,
+                                   (double)jc->Tm, (double)jc->Tr));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

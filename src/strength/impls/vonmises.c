@@ -2,7 +2,7 @@
 /* Hypoelastic, perfectly plastic von Mises solid: the Jaumann-rate trial deviator (src/strength/hypoelastic.h) is
    returned radially onto sqrt(3/2 s:s) = Y when it lies outside; the equivalent plastic strain eps_p grows by
    (sigma_eq^trial - Y) / (3 G). The plastic work enters e through the stress work s : L / rho of the step.
-   Options: -mat_<name>_strength_vonmises_G [dyn/cm^2] (> 0; default 4.77e11, copper),
+   Options: -mat_<name>_strength_G [dyn/cm^2] (> 0; default 4.77e11, copper),
             -mat_<name>_strength_vonmises_Y, the yield stress [dyn/cm^2] (> 0; default 9.0e8, JC's A for copper). */
 #include "../hypoelastic.h"
 
@@ -31,10 +31,10 @@ static PetscErrorCode MPMStrengthSetFromOptions_VonMises(MPMStrength str, PetscO
 
   PetscFunctionBegin;
   PetscOptionsHeadBegin(PetscOptionsObject, "Perfectly plastic von Mises solid");
-  PetscCall(PetscOptionsReal("-strength_vonmises_G", "Shear modulus G [dyn/cm^2], > 0", "", vm->G, &vm->G, NULL));
+  PetscCall(PetscOptionsReal("-strength_G", "Shear modulus G [dyn/cm^2], > 0", "", vm->G, &vm->G, NULL));
   PetscCall(PetscOptionsReal("-strength_vonmises_Y", "Yield stress Y [dyn/cm^2], > 0", "", vm->Y, &vm->Y, NULL));
   PetscOptionsHeadEnd();
-  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sstrength_vonmises_G", str->prefix ? str->prefix : ""));
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sstrength_G", str->prefix ? str->prefix : ""));
   PetscCall(MPMOptionsCheckRange(opt, vm->G, 0.0, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sstrength_vonmises_Y", str->prefix ? str->prefix : ""));
   PetscCall(MPMOptionsCheckRange(opt, vm->Y, 0.0, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
