@@ -15,6 +15,7 @@ import xml.etree.ElementTree as ET
 BUILD, SRC, NAME = sys.argv[1], sys.argv[2], sys.argv[3]
 EXE = os.path.join(BUILD, "petmpm")
 SCENE = os.path.join(SRC, "inputs", "sod_weak.opts")
+FLYER = os.path.join(SRC, "inputs", "flyer_plate.opts")
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMPI_MCA_rmaps_base_oversubscribe="1")
 failures = []
@@ -179,6 +180,11 @@ def test_bad_input():
             (["-options_file", SCENE, "-mpm_cfl", "1.5", "-mpm_output", d], "-mpm_cfl"),
             (["-options_file", SCENE, "-region_left_material", "steel", "-mpm_output", d], "-region_left_material"),
             (["-options_file", SCENE, "-mpm_cells", "64,64", "-mpm_output", d], "-mpm_cells"),
+            (["-options_file", FLYER, "-mat_copper_eos_miegruneisen_s", "0.9", "-mpm_output", d], "-mat_copper_eos_miegruneisen_s"),
+            (["-options_file", FLYER, "-mat_copper_strength_G", "-1", "-mpm_output", d], "-mat_copper_strength_G"),
+            (["-options_file", FLYER, "-mat_copper_strength_type", "johnsoncook", "-mat_copper_strength_johnsoncook_Tm", "0.01", "-mpm_exact_type", "none", "-mpm_output", d], "-mat_copper_strength_johnsoncook_Tm"),
+            (["-options_file", FLYER, "-mat_copper_strength_type", "vonmises", "-mpm_output", d], "-mat_copper_strength_type"),
+            (["-options_file", FLYER, "-mpm_output_times", "3e-5,2e-5", "-mpm_output", d], "-mpm_output_times"),
         ]
         for args, needle in cases:
             p = run(args, expect_ok=False)
@@ -209,6 +215,13 @@ def test_help():
               "-mpm_exact_window", "-mpm_dt_min"]
     missing = [n for n in needed if n not in p.stdout]
     check(not missing, f"-help lists the options (missing: {missing})")
+    flyer = os.path.join(SRC, "inputs", "flyer_plate.opts")
+    for model, opts in [("elastic", ["-mat_copper_strength_G"]), ("vonmises", ["-mat_copper_strength_vonmises_Y"]),
+                        ("johnsoncook", ["-mat_copper_strength_johnsoncook_A", "-mat_copper_strength_johnsoncook_Tm", "-mat_copper_strength_johnsoncook_epsdot0"])]:
+        p = run(["-options_file", flyer, "-mat_copper_strength_type", model, "-mpm_exact_type", "none", "-help"])
+        needed = opts + ["-mat_copper_eos_miegruneisen_c0", "-mat_copper_eos_miegruneisen_b", "-mat_copper_eos_miegruneisen_T0", "-mpm_output_times"]
+        missing = [n for n in needed if n not in p.stdout]
+        check(not missing, f"-help of the flyer plate with {model} lists its options (missing: {missing})")
 
 
 def scene(name, out, extra=(), ranks=1):
