@@ -480,6 +480,10 @@ def test_flyer():
             check(abs(np.mean(pxx[outer])) < 0.01 * P1, f"{name}: no mean tension at the free surface, mean P_xx {np.mean(pxx[outer]):.3e} within 1% of {P1:.3e}")
             check(pxx.min() > -0.1 * P1, f"{name}: no point in tension beyond 10% of the shock stress: min P_xx {pxx.min():.3e}")
             check(f["position"][-1] < 12.0 and f["position"][0] >= 0.0, f"{name}: every point in the domain ([{f['position'][0]:.4f}, {f['position'][-1]:.4f}] cm)")
+            if name == "flyer_plate":
+                r2 = scene(name, d, ranks=2)
+                dev = max(abs(c2["value"] / c[c2["name"]]["value"] - 1) for c2 in r2["checks"])
+                check(dev < 1e-10 and r2["particles"] == 4096, f"{name}: 2 ranks give the checks of 1 rank (largest relative difference {dev:.1e})")
 
     # plasticity in the same scene (no exact solution here: an elastic precursor runs ahead of the plastic shock)
     import h5py
