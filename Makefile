@@ -7,7 +7,7 @@ NP    ?= 1
 PY    ?= /usr/bin/python3
 MPIEXEC = mpiexec --allow-run-as-root --oversubscribe
 
-.PHONY: all deps configure build run test bench clean format
+.PHONY: all deps configure build run test bench verification clean format
 all: build
 
 deps:
@@ -33,6 +33,14 @@ test: build
 
 bench: build
 	$(PY) scripts/bench.py
+
+# The study definitions of scripts/studies/ into docs/studies/NAME (cases already there are skipped; FRESH=1
+# measures again), then docs/verification.md from their results.
+STUDIES = $(basename $(notdir $(wildcard scripts/studies/*.json)))
+verification: build
+	$(if $(FRESH),rm -rf $(addprefix docs/studies/,$(STUDIES)))
+	for s in $(STUDIES); do $(PY) scripts/study --study scripts/studies/$$s.json --out docs/studies/$$s || exit 1; done
+	$(PY) scripts/study --summary $(addprefix docs/studies/,$(STUDIES)) --markdown docs/verification.md
 
 format:
 	clang-format -i $$(git ls-files '*.c' '*.h')

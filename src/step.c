@@ -174,7 +174,11 @@ static PetscErrorCode MPMGridAdvance(MPM mpm, PetscReal dt)
    Kinetic energy fix (-mpm_ke_fix): the grid gains sum_I m_I (v_I^n . dv_I + |dv_I|^2 / 2), dv_I = v_I - v_I^n,
    which is sum_p m_p sum_I N_I (v_p . dv_I + |dv_I|^2 / 2) since m_I v_I^n = sum_p N_I m_p v_p. The point's share
    minus the kinetic energy it actually gains is what the map discards (for FLIP (sum N |dv|^2 - |sum N dv|^2)/2 >= 0,
-   the variance of dv over the stencil); it goes into e_p, so total energy follows the grid's exactly. */
+   the variance of dv over the stencil); it goes into e_p, so total energy follows the grid's exactly. The PIC part
+   of the update also discards what the points-to-grid map smoothed away; the zero-sum term (1 - alpha) R_p,
+   R_p = sum_I N_I (v_I^n - v_p) . v_I (sum_p m_p R_p = 0 since m_I v_I^n = sum_p N_I m_p v_p), moves it to the
+   points it came from: for PIC the point then gains (sum N |v_p - v_I^n|^2 + sum N |v_I|^2 - |sum N v_I|^2)/2 >= 0,
+   where without it a cold point beside a strong shock could be handed a negative energy. */
 static PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool velocity, PetscBool kinematics)
 {
   const MPMGrid  *g     = &mpm->grid;
@@ -196,7 +200,7 @@ static PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool
     const PetscReal *F    = mpm->track_F ? pts.f[MPM_FIELD_DEFGRAD] : NULL;
 
     for (PetscInt p = 0; p < pts.n; p++) {
-      PetscReal vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Lb[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, dv2 = 0.0;
+      PetscReal vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Lb[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, dv2 = 0.0, R = 0.0;
       MPMShapeEvaluate(mpm->shape, g, &x[p * d], F ? &F[p * d * d] : NULL, &st);
       for (PetscInt a = 0; a < st.n; a++) {
         const MPMNode *nd = &node[st.node[a]];
@@ -205,6 +209,7 @@ static PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool
           vpic[i] += st.w[a] * vI;
           dv[i] += st.w[a] * dvI;
           dv2 += st.w[a] * dvI * dvI;
+          R += st.w[a] * (vI - dvI - v[p * d + i]) * vI; /* (v_I^n - v_p) . v_I */
           for (PetscInt j = 0; j < d; j++) Lp[i * d + j] += vI * st.dw[a][j];
           if (work)
             for (PetscInt j = 0; j < d; j++) Lb[i * d + j] += (2.0 * vI - dvI) * st.dw[a][j];
@@ -218,7 +223,7 @@ static PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool
           gain += 0.5 * (vn * vn - v[p * d + i] * v[p * d + i]);
           v[p * d + i] = vn;
         }
-        if (kefix) e[p] += share - gain;
+        if (kefix) e[p] += share - gain + (1.0 - alpha) * R;
         if (work) { /* the work the grid's forces did over the kick, sum_p V_p sigma_p : Lbar_p dt_kick = sum_I f_I . vbar_I dt_kick */
           PetscReal sL = 0.0, div = 0.0;
           for (PetscInt i = 0; i < d; i++) div += Lb[i * d + i];
