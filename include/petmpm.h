@@ -93,7 +93,6 @@ PETSC_EXTERN PetscErrorCode MPMEOSPressure(MPMEOS, PetscReal, PetscReal, PetscRe
 PETSC_EXTERN PetscErrorCode MPMEOSTemperature(MPMEOS, PetscReal, PetscReal, PetscReal *);
 PETSC_EXTERN PetscErrorCode MPMEOSEnergyFromTemperature(MPMEOS, PetscReal, PetscReal, PetscReal *);
 PETSC_EXTERN PetscErrorCode MPMEOSIdealGasGetParameters(MPMEOS, PetscReal *, PetscReal *);
-PETSC_EXTERN PetscErrorCode MPMEOSMieGruneisenGetReference(MPMEOS, PetscReal *, PetscReal *);
 
 /* Strength models: the stress s besides the EOS pressure, sigma = s - (p + q) I */
 PETSC_EXTERN PetscErrorCode MPMStrengthRegister(const char[], PetscErrorCode (*)(MPMStrength));

@@ -163,19 +163,6 @@ static PetscErrorCode MPMEOSDestroy_MG(MPMEOS eos)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Exact solutions of solid problems need the reference state. */
-PetscErrorCode MPMEOSMieGruneisenGetReference(MPMEOS eos, PetscReal *rho0, PetscReal *T0)
-{
-  PetscBool is;
-
-  PetscFunctionBegin;
-  PetscCall(PetscStrcmp(eos->type_name, MPMEOSMIEGRUNEISEN, &is));
-  PetscCheck(is, eos->comm, PETSC_ERR_ARG_WRONG, "-%seos_type is %s; this needs %s", eos->prefix ? eos->prefix : "", eos->type_name, MPMEOSMIEGRUNEISEN);
-  if (rho0) *rho0 = ((EOS_MG *)eos->data)->rho0;
-  if (T0) *T0 = ((EOS_MG *)eos->data)->T0;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode MPMEOSCreate_MieGruneisen(MPMEOS eos)
 {
   EOS_MG *mg;

@@ -184,10 +184,11 @@ static PetscErrorCode MPMExactSetUp_Flyer(MPMExact exact, MPM mpm)
   ef->eos = mpm->mat[reg->material].eos;
   str     = mpm->mat[reg->material].strength;
   ef->G   = 0.0;
-  if (str) {
-    PetscBool elastic;
-    PetscCall(PetscStrcmp(str->type_name, MPMSTRENGTHELASTIC, &elastic));
-    PetscCheck(elastic, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer knows the solution for -%sstrength_type none or %s, not %s", str->prefix, MPMSTRENGTHELASTIC, str->type_name);
+  if (str) { /* a hypoelastic model that never yields */
+    PetscReal Y;
+    PetscCall(MPMStrengthFlowStress(str, 0.0, 0.0, 0.0, &Y));
+    PetscCheck(str->G > 0.0 && Y == PETSC_MAX_REAL, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer knows the solution for -%sstrength_type none or %s, not %s (an elastic-plastic rod sends two waves)", str->prefix, MPMSTRENGTHELASTIC,
+               str->type_name);
     PetscCall(MPMStrengthGetShearModulus(str, &ef->G));
   }
   PetscCall(MPMEOSEnergyFromTemperature(ef->eos, ef->rho0, reg->T, &ef->e0));
