@@ -68,7 +68,7 @@ def test_sod_weak():
 
 
 def test_sod_pic_musl():
-    """PIC, MUSL and blend also approach the exact solution (measured at 256 cells: PIC 3.3%, MUSL 1.9%, blend 1.3%)."""
+    """PIC, MUSL and blend also approach the exact solution (measured at 256 cells: PIC 2.0%, MUSL 1.4%, blend 1.2%)."""
     with tempfile.TemporaryDirectory() as d:
         r, _ = sod(d, ["-mpm_cells", "256", "-mpm_update_type", "pic"])
         e = r["errors"]["density"]["L1"]
