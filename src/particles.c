@@ -16,7 +16,6 @@ const MPMFieldInfo MPMFieldTable[MPM_NUM_FIELDS] = {
   {"soundspeed", 1, "cm/s", "sound speed c_p", PETSC_FALSE},
   {"viscosity", 1, "dyn/cm^2", "artificial viscous pressure q_p", PETSC_TRUE},
   {"gradv", -1, "1/s", "velocity gradient L_p = dv/dx, row-major", PETSC_FALSE},
-  {"work", 1, "erg/g", "specific stress work of the step from the kick-averaged grid velocity (conservative energy update)", PETSC_FALSE},
   {"defgrad", -1, "-", "deformation gradient F_p = dx/dX, row-major", PETSC_TRUE},
   {"stress", -1, "dyn/cm^2", "stress s_p besides the pressure (strength model), row-major", PETSC_TRUE},
   {"plasticstrain", 1, "-", "equivalent plastic strain eps_p (plastic strength models)", PETSC_TRUE},
@@ -127,7 +126,6 @@ PetscErrorCode MPMCreatePoints(MPM mpm)
       pts.f[MPM_FIELD_TEMPERATURE][n]   = reg->T;
       pts.f[MPM_FIELD_VISCOSITY][n]     = 0.0;
       pts.f[MPM_FIELD_PLASTICSTRAIN][n] = 0.0;
-      pts.f[MPM_FIELD_WORK][n]          = 0.0;
       pts.f[MPM_FIELD_MATERIAL][n]      = (PetscReal)reg->material;
       pts.f[MPM_FIELD_ID][n]            = id;
       n++;

@@ -71,7 +71,6 @@ typedef enum {
   MPM_FIELD_SOUNDSPEED,
   MPM_FIELD_VISCOSITY,
   MPM_FIELD_GRADV,
-  MPM_FIELD_WORK,
   MPM_FIELD_DEFGRAD,
   MPM_FIELD_STRESS,
   MPM_FIELD_PLASTICSTRAIN,
@@ -319,6 +318,16 @@ static inline PetscReal MPMDeterminant(PetscInt d, const PetscReal A[])
   if (d == 1) return A[0];
   if (d == 2) return A[0] * A[3] - A[1] * A[2];
   return A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6]) + A[2] * (A[3] * A[7] - A[4] * A[6]);
+}
+
+/* One RK4 step along an isentrope, de/drho = P(rho, e) / rho^2, from (rho, e) to rho + h: e at rho + h. P is the
+   stress that does the work (the EOS pressure, or the longitudinal stress P_xx of a solid in uniaxial strain). */
+static inline PetscReal MPMIsentropeStep(PetscReal (*P)(void *, PetscReal, PetscReal), void *ctx, PetscReal rho, PetscReal e, PetscReal h)
+{
+  const PetscReal rm = rho + 0.5 * h, r1 = rho + h;
+  const PetscReal k1 = P(ctx, rho, e) / (rho * rho), k2 = P(ctx, rm, e + 0.5 * h * k1) / (rm * rm);
+  const PetscReal k3 = P(ctx, rm, e + 0.5 * h * k2) / (rm * rm), k4 = P(ctx, r1, e + h * k3) / (r1 * r1);
+  return e + h * (k1 + 2.0 * k2 + 2.0 * k3 + k4) / 6.0;
 }
 
 /* EOS kernels for the batched loops: the ops table is read once per call site. */

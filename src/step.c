@@ -193,7 +193,7 @@ static PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool
   PetscCall(VecGetArrayRead(mpm->lnodes, (const PetscScalar **)&node));
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   {
-    PetscReal       *x = pts.f[MPM_FIELD_POSITION], *v = pts.f[MPM_FIELD_VELOCITY], *L = pts.f[MPM_FIELD_GRADV], *e = pts.f[MPM_FIELD_ENERGY], *w = pts.f[MPM_FIELD_WORK];
+    PetscReal       *x = pts.f[MPM_FIELD_POSITION], *v = pts.f[MPM_FIELD_VELOCITY], *L = pts.f[MPM_FIELD_GRADV], *e = pts.f[MPM_FIELD_ENERGY];
     const PetscReal *pr = pts.f[MPM_FIELD_PRESSURE], *q = pts.f[MPM_FIELD_VISCOSITY], *S = pts.f[MPM_FIELD_STRESS], *rho = pts.f[MPM_FIELD_DENSITY];
     const PetscBool  work = (PetscBool)(velocity && mpm->energy_update == MPM_ENERGY_CONSERVATIVE), stress = mpm->has_stress;
     const PetscReal  wfac = 0.5 * kick;
@@ -229,7 +229,7 @@ static PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool
           for (PetscInt i = 0; i < d; i++) div += Lb[i * d + i];
           if (stress)
             for (PetscInt i = 0; i < d * d; i++) sL += S[p * d * d + i] * Lb[i];
-          w[p] = wfac * (sL - (pr[p] + q[p]) * div) / rho[p];
+          e[p] += wfac * (sL - (pr[p] + q[p]) * div) / rho[p];
         }
       }
       if (kinematics) {
@@ -315,7 +315,7 @@ static PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
   }
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   {
-    const PetscReal *L = pts.f[MPM_FIELD_GRADV], *w = pts.f[MPM_FIELD_WORK], *m = pts.f[MPM_FIELD_MASS], *q = pts.f[MPM_FIELD_VISCOSITY], *mat = pts.f[MPM_FIELD_MATERIAL];
+    const PetscReal *L = pts.f[MPM_FIELD_GRADV], *m = pts.f[MPM_FIELD_MASS], *q = pts.f[MPM_FIELD_VISCOSITY], *mat = pts.f[MPM_FIELD_MATERIAL];
     PetscReal       *rho = pts.f[MPM_FIELD_DENSITY], *V = pts.f[MPM_FIELD_VOLUME], *e = pts.f[MPM_FIELD_ENERGY], *pr = pts.f[MPM_FIELD_PRESSURE];
     PetscReal       *c = pts.f[MPM_FIELD_SOUNDSPEED], *T = pts.f[MPM_FIELD_TEMPERATURE], *F = pts.f[MPM_FIELD_DEFGRAD], *S = pts.f[MPM_FIELD_STRESS];
     PetscReal       *ep = pts.f[MPM_FIELD_PLASTICSTRAIN];
@@ -327,7 +327,7 @@ static PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
       const PetscReal   rho1 = rho[p] / J, dvol = 1.0 / rho1 - 1.0 / rho[p];
       PetscReal         e1, ppred, c2, cs2 = 0.0;
 
-      e1 = conservative ? e[p] + w[p] : e[p] - (pr[p] + q[p]) * dvol;
+      e1 = conservative ? e[p] : e[p] - (pr[p] + q[p]) * dvol; /* conservative: the gather added the work already */
       if (trackF) {
         PetscReal Fn[MPM_MAX_DIM * MPM_MAX_DIM];
         for (PetscInt i = 0; i < d; i++)
@@ -339,9 +339,11 @@ static PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
         if (shape->ops.admissible && bad < 0 && !shape->ops.admissible(shape->data, &mpm->grid, Fn)) bad = p;
       }
       if (stress && Str) {
-        PetscReal work = 0.0;
-        for (PetscInt i = 0; i < d * d; i++) work += S[p * d * d + i] * L[p * d * d + i];
-        if (!conservative) e1 += dt * work / rho[p];
+        if (!conservative) {
+          PetscReal work = 0.0;
+          for (PetscInt i = 0; i < d * d; i++) work += S[p * d * d + i] * L[p * d * d + i];
+          e1 += dt * work / rho[p];
+        }
         Str->ops.stress(Str->data, d, dt, &L[p * d * d], &F[p * d * d], rho1, T[p], &S[p * d * d], &ep[p], &cs2);
       }
       if (midpoint) {

@@ -55,6 +55,13 @@ static void MPMEOSPressure_MG(void *ctx, PetscReal rho, PetscReal e, PetscReal *
   *c2    = dpdrho + *p * G * r2;
 }
 
+static PetscReal MGPressure(void *ctx, PetscReal rho, PetscReal e)
+{
+  PetscReal p, c2;
+  MPMEOSPressure_MG(ctx, rho, e, &p, &c2);
+  return p;
+}
+
 static inline PetscReal MGIsentropeTemperature(const EOS_MG *mg, PetscReal rho)
 {
   const PetscReal eta = 1.0 - mg->rho0 / rho;
@@ -97,17 +104,8 @@ static PetscErrorCode MGTabulateIsentrope(EOS_MG *mg)
   mg->es[i0] = 0.0;
   for (PetscInt dir = -1; dir <= 1; dir += 2) {
     for (PetscInt i = i0; i + dir >= 0 && i + dir < MG_TABLE; i += dir) {
-      const PetscReal h = dir * dr, rho = mg->rho0 * (MG_RLO + i * dr / mg->rho0);
-      PetscReal       k[4], p, c2, e = mg->es[i];
-      MPMEOSPressure_MG(mg, rho, e, &p, &c2);
-      k[0] = p / (rho * rho);
-      MPMEOSPressure_MG(mg, rho + 0.5 * h, e + 0.5 * h * k[0], &p, &c2);
-      k[1] = p / PetscSqr(rho + 0.5 * h);
-      MPMEOSPressure_MG(mg, rho + 0.5 * h, e + 0.5 * h * k[1], &p, &c2);
-      k[2] = p / PetscSqr(rho + 0.5 * h);
-      MPMEOSPressure_MG(mg, rho + h, e + h * k[2], &p, &c2);
-      k[3]            = p / PetscSqr(rho + h);
-      mg->es[i + dir] = e + h * (k[0] + 2.0 * k[1] + 2.0 * k[2] + k[3]) / 6.0;
+      const PetscReal rho = mg->rho0 * (MG_RLO + i * dr / mg->rho0);
+      mg->es[i + dir]     = MPMIsentropeStep(MGPressure, mg, rho, mg->es[i], dir * dr);
     }
   }
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -36,15 +36,16 @@ typedef struct {
 } Exact_Flyer;
 
 /* Longitudinal stress P_xx = p(rho, e) - s_xx(rho), s_xx = (4/3) G ln(rho0/rho). */
-static PetscReal FlyerPxx(const Exact_Flyer *ef, PetscReal rho, PetscReal e)
+static PetscReal FlyerPxx(void *ctx, PetscReal rho, PetscReal e)
 {
-  PetscReal p, c2;
+  const Exact_Flyer *ef = (const Exact_Flyer *)ctx;
+  PetscReal          p, c2;
   MPMEOSPressureKernel(ef->eos, rho, e, &p, &c2);
   return p + 4.0 * ef->G / 3.0 * PetscLogReal(rho / ef->rho0);
 }
 
 /* P_xx(rho(eta), e(eta)) minus the Rayleigh-line stress for compression eta; NaN counts as too compressed. */
-static PetscReal FlyerHugoniotResidual(const Exact_Flyer *ef, PetscReal eta)
+static PetscReal FlyerHugoniotResidual(Exact_Flyer *ef, PetscReal eta)
 {
   const PetscReal P1 = ef->P0 + ef->rho0 * ef->up * ef->up / eta, e1 = ef->e0 + 0.5 * (P1 + ef->P0) * eta / ef->rho0;
   const PetscReal r = FlyerPxx(ef, ef->rho0 / (1.0 - eta), e1) - P1;
@@ -87,14 +88,8 @@ static PetscErrorCode FlyerSolve(MPMExact exact)
       ef->rho[0]        = ef->rho1;
       ef->e[0]          = ef->e1;
       for (PetscInt i = 0; i < N; i++) {
-        const PetscReal r = ef->rho[i], ee = ef->e[i];
-        PetscReal       k1, k2, k3, k4;
-        k1             = FlyerPxx(ef, r, ee) / (r * r);
-        k2             = FlyerPxx(ef, r + 0.5 * h, ee + 0.5 * h * k1) / PetscSqr(r + 0.5 * h);
-        k3             = FlyerPxx(ef, r + 0.5 * h, ee + 0.5 * h * k2) / PetscSqr(r + 0.5 * h);
-        k4             = FlyerPxx(ef, r + h, ee + h * k3) / PetscSqr(r + h);
-        ef->rho[i + 1] = r + h;
-        ef->e[i + 1]   = ee + h * (k1 + 2 * k2 + 2 * k3 + k4) / 6.0;
+        ef->rho[i + 1] = ef->rho[i] + h;
+        ef->e[i + 1]   = MPMIsentropeStep(FlyerPxx, ef, ef->rho[i], ef->e[i], h);
       }
       for (PetscInt i = 0; i <= N; i++) ef->P[i] = FlyerPxx(ef, ef->rho[i], ef->e[i]);
       rhoend -= ef->P[N] * h / (ef->P[N] - ef->P[N - 1]);
