@@ -196,9 +196,21 @@ static PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool
     PetscReal       *x = pts.f[MPM_FIELD_POSITION], *v = pts.f[MPM_FIELD_VELOCITY], *L = pts.f[MPM_FIELD_GRADV], *e = pts.f[MPM_FIELD_ENERGY];
     const PetscReal *pr = pts.f[MPM_FIELD_PRESSURE], *q = pts.f[MPM_FIELD_VISCOSITY], *S = pts.f[MPM_FIELD_STRESS], *rho = pts.f[MPM_FIELD_DENSITY];
     const PetscBool  work = (PetscBool)(velocity && mpm->energy_update == MPM_ENERGY_CONSERVATIVE), stress = mpm->has_stress;
-    const PetscReal  wfac = 0.5 * kick;
-    const PetscReal *F    = mpm->track_F ? pts.f[MPM_FIELD_DEFGRAD] : NULL;
+    const PetscBool  cellwork = (PetscBool)(work && mpm->stress_integration == MPM_STRESS_CELL);
+    const PetscReal  wfac     = 0.5 * kick;
+    const PetscReal *F        = mpm->track_F ? pts.f[MPM_FIELD_DEFGRAD] : NULL;
 
+    if (cellwork) { /* cellS[c] <- (V_c / sum_p V_p) div vbar at the cell rule's point: the cell's work per unit P_p V_p */
+      for (PetscInt c = 0; c < g->ncells; c++) {
+        const PetscInt ijk[3] = {g->cs[0] + c % g->cm[0], g->cs[1] + (c / g->cm[0]) % g->cm[1], g->cs[2] + c / (g->cm[0] * g->cm[1])};
+        PetscReal      div    = 0.0;
+        if (mpm->cellV[c] <= 0.0) continue;
+        MPMShapeEvaluateCell(mpm->shape, g, ijk, &st);
+        for (PetscInt a = 0; a < st.n; a++)
+          for (PetscInt k = 0; k < d; k++) div += st.s[a][k] * (node[st.node[a]].p[k] + node[st.node[a]].v0[k]) * st.dw[a][k]; /* v^{n+1/2} + v^{n-1/2} */
+        mpm->cellS[c] = g->vcell / mpm->cellV[c] * div;
+      }
+    }
     for (PetscInt p = 0; p < pts.n; p++) {
       PetscReal vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Lb[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, dv2 = 0.0, R = 0.0;
       MPMShapeEvaluate(mpm->shape, g, &x[p * d], F ? &F[p * d * d] : NULL, &st);
@@ -226,7 +238,9 @@ static PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool
         if (kefix) e[p] += share - gain + (1.0 - alpha) * R;
         if (work) { /* the work the grid's forces did over the kick, sum_p V_p sigma_p : Lbar_p dt_kick = sum_I f_I . vbar_I dt_kick */
           PetscReal sL = 0.0, div = 0.0;
-          for (PetscInt i = 0; i < d; i++) div += Lb[i * d + i];
+          if (cellwork) div = mpm->cellS[MPMLocalCell(g, &x[p * d])];
+          else
+            for (PetscInt i = 0; i < d; i++) div += Lb[i * d + i];
           if (stress)
             for (PetscInt i = 0; i < d * d; i++) sL += S[p * d * d + i] * Lb[i];
           e[p] += wfac * (sL - (pr[p] + q[p]) * div) / rho[p];
