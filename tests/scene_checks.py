@@ -385,6 +385,17 @@ def test_stability():
         check(dc < 1.0, f"stationary contact: contact position error {dc:.2f} cells < 1")
         check(c["plateau_pressure"]["rel_error"] < 0.01, f"stationary contact: plateau pressure rel. error {c['plateau_pressure']['rel_error']:.2e} < 1e-2")
 
+        r = scene("toro_collide", os.path.join(d, "collide"))
+        stable(r, 6144, "colliding shocks", 1e-12)
+        c = checks_of(r)
+        check(abs(c["plateau_pressure"]["reference"] - 1.69165e13) < 1e9, f"colliding shocks: exact p* {c['plateau_pressure']['reference']:.6e} (Toro: 1691.64 x 1e10)")
+        for k in ("shock_position", "left_shock_position", "contact_position"):
+            e = abs(c[k]["value"] - c[k]["reference"]) / (3.0 / 1536)
+            check(e < 1.0, f"colliding shocks: {k} error {e:.2f} cells < 1 (0.15, 0.40, 0.43 measured)")
+        check(c["plateau_pressure"]["rel_error"] < 0.01 and c["star_density_left"]["rel_error"] < 0.01,
+              f"colliding shocks: p* and rho*_L within 1% ({c['plateau_pressure']['rel_error']:.1e}, {c['star_density_left']['rel_error']:.1e})")
+        check(r["errors"]["density"]["L1"] < 0.04, f"colliding shocks: relative L1 density error {r['errors']['density']['L1']:.3e} < 4e-2 (2.2% measured)")
+
         r = scene("noh", os.path.join(d, "noh"))
         stable(r, 2048, "Noh", 5e-3)
         c = checks_of(r)
