@@ -246,7 +246,7 @@ struct _p_MPM {
   DM         swarm;         /* material points, DMSWARM_BASIC                            */
   Vec        nodes;         /* global nodal vector                                       */
   Vec        lnodes;        /* ghosted local nodal vector                                */
-  PetscReal *cellV, *cellS; /* per owned cell: sum V_p, sum V_p (p_p + q_p)      */
+  PetscReal *cellV, *cellS; /* per local cell: sum V_p, sum V_p (p_p + q_p); in the gather of the conservative update with the cell rule, cellS is the cell's work per unit P_p V_p */
   TS         ts;
   Vec        tsu; /* the TS state: empty; the MPM state lives in the grid and swarm */
   /* output */

@@ -4,6 +4,14 @@
    a PetscLogEvent; modules the scene did not ask for are not in the step. */
 #include "petmpmimpl.h"
 
+/* Global (i, j, k) of the c-th cell of the local cell range (the numbering of MPMLocalCell). */
+static inline void MPMLocalCellIndex(const MPMGrid *g, PetscInt c, PetscInt ijk[])
+{
+  ijk[0] = g->cs[0] + c % g->cm[0];
+  ijk[1] = g->cs[1] + (c / g->cm[0]) % g->cm[1];
+  ijk[2] = g->cs[2] + c / (g->cm[0] * g->cm[1]);
+}
+
 /* m_I = sum_p N_I m_p, (mv)_I = sum_p N_I m_p v_p and, with the force, f_I = -int sigma . grad N_I dV.
    With sigma = -(p + q) I the internal force is f_I = int (p + q) grad N_I dV, integrated either point by
    point (sum_p V_p (p_p + q_p) grad N_I(x_p)) or with the volume-averaged pressure of each cell,
@@ -67,9 +75,10 @@ static PetscErrorCode MPMScatter(MPM mpm, PetscBool force)
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   if (cellrule) {
     for (PetscInt c = 0; c < g->ncells; c++) {
-      const PetscInt ijk[3] = {g->cs[0] + c % g->cm[0], g->cs[1] + (c / g->cm[0]) % g->cm[1], g->cs[2] + c / (g->cm[0] * g->cm[1])};
-      PetscReal      phiV, P;
+      PetscInt  ijk[3];
+      PetscReal phiV, P;
       if (mpm->cellV[c] <= 0.0) continue;
+      MPMLocalCellIndex(g, c, ijk);
       phiV = g->vcell;
       P    = mpm->cellS[c] / mpm->cellV[c];
       MPMShapeEvaluateCell(mpm->shape, g, ijk, &st);
@@ -178,7 +187,12 @@ static PetscErrorCode MPMGridAdvance(MPM mpm, PetscReal dt)
    of the update also discards what the points-to-grid map smoothed away; the zero-sum term (1 - alpha) R_p,
    R_p = sum_I N_I (v_I^n - v_p) . v_I (sum_p m_p R_p = 0 since m_I v_I^n = sum_p N_I m_p v_p), moves it to the
    points it came from: for PIC the point then gains (sum N |v_p - v_I^n|^2 + sum N |v_I|^2 - |sum N v_I|^2)/2 >= 0,
-   where without it a cold point beside a strong shock could be handed a negative energy. */
+   where without it a cold point beside a strong shock could be handed a negative energy.
+   Conservative energy update: e_p += dt_kick (s_p : Lbar_p - (p_p + q_p) tr Lbar_p) / rho_p, Lbar_p from
+   vbar_I = (v_I^{n-1/2} + v_I^{n+1/2})/2, the work of the force of MPMScatter. With the cell rule the pressure part
+   of that force is per cell, so the point takes its share P_p V_p / sum_{p in c} V_p of its cell's work
+   V_c P_c tr Lbar_c: tr Lbar_p is replaced by (V_c / sum_{p in c} V_p) tr Lbar_c. Either way sum_p m_p de_p is
+   the grid's kinetic energy loss to round-off. */
 static PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool velocity, PetscBool kinematics)
 {
   const MPMGrid  *g     = &mpm->grid;
@@ -202,9 +216,10 @@ static PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool
 
     if (cellwork) { /* cellS[c] <- (V_c / sum_p V_p) div vbar at the cell rule's point: the cell's work per unit P_p V_p */
       for (PetscInt c = 0; c < g->ncells; c++) {
-        const PetscInt ijk[3] = {g->cs[0] + c % g->cm[0], g->cs[1] + (c / g->cm[0]) % g->cm[1], g->cs[2] + c / (g->cm[0] * g->cm[1])};
-        PetscReal      div    = 0.0;
+        PetscInt  ijk[3];
+        PetscReal div = 0.0;
         if (mpm->cellV[c] <= 0.0) continue;
+        MPMLocalCellIndex(g, c, ijk);
         MPMShapeEvaluateCell(mpm->shape, g, ijk, &st);
         for (PetscInt a = 0; a < st.n; a++)
           for (PetscInt k = 0; k < d; k++) div += st.s[a][k] * (node[st.node[a]].p[k] + node[st.node[a]].v0[k]) * st.dw[a][k]; /* v^{n+1/2} + v^{n-1/2} */
