@@ -136,8 +136,8 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   /* point integration: the conservative update is exact and converges (weak Sod L1 rate 0.9 against 0.6 with compatible) */
   if (mpm->stress_integration == MPM_STRESS_POINT) mpm->energy_update = MPM_ENERGY_CONSERVATIVE;
   PetscCall(PetscOptionsEnum("-mpm_energy_update",
-                             "Internal energy: de = -(p^n + q) d(1/rho) (compatible, the cell rule's default), the grid forces' work with the time-centred velocity (conservative, point integration's default) or (p^n + p^{n+1})/2 (midpoint)", "", MPMEnergyUpdates,
-                             (PetscEnum)mpm->energy_update, (PetscEnum *)&mpm->energy_update, NULL));
+                             "Internal energy: de = -(p^n + q) d(1/rho) (compatible, the cell rule's default), the grid forces' work with the time-centred velocity (conservative, point integration's default) or (p^n + p^{n+1})/2 (midpoint)", "",
+                             MPMEnergyUpdates, (PetscEnum)mpm->energy_update, (PetscEnum *)&mpm->energy_update, NULL));
   PetscCall(PetscOptionsBool("-mpm_ke_fix", "Turn the kinetic energy the grid-to-point velocity map discards into internal energy of the point", "", mpm->ke_fix, &mpm->ke_fix, NULL));
   PetscCall(MPMOptionsDimEnums(PetscOptionsObject, "-mpm_bc_lo", "Boundary at the lower face of each direction", MPMBoundaryTypes, g->dim, (PetscEnum *)mpm->bc_lo));
   PetscCall(MPMOptionsDimEnums(PetscOptionsObject, "-mpm_bc_hi", "Boundary at the upper face of each direction", MPMBoundaryTypes, g->dim, (PetscEnum *)mpm->bc_hi));

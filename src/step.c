@@ -253,7 +253,8 @@ static PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool
         if (kefix) e[p] += share - gain + (1.0 - alpha) * R;
         if (work) { /* the work the grid's forces did over the kick, sum_p V_p sigma_p : Lbar_p dt_kick = sum_I f_I . vbar_I dt_kick */
           PetscReal sL = 0.0, div = 0.0;
-          if (cellwork) div = mpm->cellS[MPMLocalCell(g, &x[p * d])];
+          if (cellwork)
+            div = mpm->cellS[MPMLocalCell(g, &x[p * d])];
           else
             for (PetscInt i = 0; i < d; i++) div += Lb[i * d + i];
           if (stress)
