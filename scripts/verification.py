@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: BSD-2-Clause
 """Shock-capturing study of issue 3: weak and strong Sod at 128 to 2048 cells with the artificial viscosities
-none, vnr and limited, plus the contact energy spike before (midpoint energy update, no kinetic energy fix) and
-after (the defaults). Writes docs/verification_sod.md and its PNG plots.
+none, vnr and limited, in the scenes' configuration (linear, 4 ppc, cell rule) and with CPDI at one point per
+cell and point integration, plus the contact energy spike before (midpoint energy update, no kinetic energy fix)
+and after (the defaults). Writes docs/verification_sod.md and its PNG plots.
 
 usage: scripts/verification.py [BUILD_DIR] [DOCS_DIR]      (about a minute on one core)
 """
