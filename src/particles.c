@@ -80,17 +80,15 @@ static void MPMSiteAt(const MPMGrid *g, PetscInt ppc, PetscInt s, PetscReal x[],
 
 /* Seeding. Each cell holds ppc^d lattice sites, boxes of half-widths h / (2 ppc). A site that one region
    covers, as judged at its centre and its 2^d corners, seeds one point at its centre with that region's state
-   (none where no region holds its centre). A site that a region's boundary cuts is bisected, MPM_SEED_DEPTH
-   times at most, wherever a box's centre and corners disagree, and each final box goes to the region at its
-   centre (a planar cut along x is resolved to 1/64 of a site alike in 1, 2 and 3D). It seeds one point per
-   material present, at the centroid of that material's part and with its volume. The regions of one material
-   merge: each part is brought along its isentrope to the merged density, then mass, momentum and energy are
-   summed (merging at constant energy instead would add the entropy of mixing: a temperature spike at every
-   contact). So a discontinuity between regions sits where the scene puts it, not at the nearest lattice face
-   up to half a site away (an O(h) error in every wave position whose sign changed with resolution), and a
-   partly filled site carries its part of the mass. A part under 2% of the site is left out; a feature thinner
-   than a site that misses the centre and corners of its boxes is not seen. GIMP and CPDI give each point the
-   whole site's domain. The points of one site share the site's id. */
+   (none where no region holds its centre). A site that a region's boundary cuts is bisected (MPMBoxSeed) and
+   seeds one point per material present, at the centroid of that material's part and with its volume. The
+   regions of one material merge: each part is brought along its isentrope to the merged density, then mass,
+   momentum and energy are summed (merging at constant energy would add the entropy of mixing, a temperature
+   spike at every contact). So a discontinuity between regions sits where the scene puts it, not at the nearest
+   lattice face up to half a site away (an O(h) error in every wave position whose sign changed with
+   resolution), and a partly filled site carries its part of the mass. A part under 2% of the site is left
+   out; a feature thinner than a site that misses the centre and corners of its boxes is not seen. GIMP and
+   CPDI give each point the whole site's domain. The points of one site share the site's id. */
 #define MPM_SEED_DEPTH 6
 
 typedef struct {
@@ -122,39 +120,55 @@ static void MPMPieceAdd(MPM mpm, PetscInt r, const PetscReal x[], PetscReal dV, 
   vol[r] += dV;
 }
 
-/* The region at the centre x of a box of half-widths hs, or -2 if one of its corners lies in another. */
-static PetscInt MPMBoxRegion(MPM mpm, const PetscReal x[], const PetscReal hs[])
+/* The axes that cut the box of centre x and half-widths hs (bit k: two corners that differ only in x_k lie in
+   different regions; every axis if only the centre differs from the corners), 0 if one region holds it; *r
+   the region at its centre. */
+static PetscInt MPMBoxCuts(MPM mpm, const PetscReal x[], const PetscReal hs[], PetscInt *r)
 {
-  const PetscInt d = mpm->grid.dim, r = MPMRegionAt(mpm, x);
+  const PetscInt d = mpm->grid.dim;
+  PetscInt       rc[1 << MPM_MAX_DIM], cuts = 0;
 
+  *r = MPMRegionAt(mpm, x);
   for (PetscInt c = 0; c < (1 << d); c++) {
     PetscReal xc[MPM_MAX_DIM] = {0.0, 0.0, 0.0};
     for (PetscInt k = 0; k < d; k++) xc[k] = x[k] + ((c >> k) & 1 ? 1.0 : -1.0) * hs[k] * (1.0 - 1e-9); /* a boundary on a face does not cut */
-    if (MPMRegionAt(mpm, xc) != r) return -2;
+    rc[c] = MPMRegionAt(mpm, xc);
   }
-  return r;
+  for (PetscInt c = 0; c < (1 << d); c++)
+    for (PetscInt k = 0; k < d; k++)
+      if (!((c >> k) & 1) && rc[c] != rc[c | (1 << k)]) cuts |= 1 << k;
+  for (PetscInt c = 0; c < (1 << d) && !cuts; c++)
+    if (rc[c] != *r) cuts = (1 << d) - 1;
+  return cuts;
 }
 
+/* Bisects the box along the axes that cut it, MPM_SEED_DEPTH times where one axis does (a cut along x is
+   resolved to 1/64 of a site alike in 1, 2 and 3D), 3 times where several do (an oblique or curved cut costs
+   at most 8^d boxes), and adds each final box to the region at its centre. */
 static void MPMBoxSeed(MPM mpm, const PetscReal x[], const PetscReal hs[], PetscInt depth, PetscReal vol[], MPMPiece pc[], PetscInt *np)
 {
-  const PetscInt d  = mpm->grid.dim;
-  PetscInt       r  = MPMBoxRegion(mpm, x, hs);
+  const PetscInt d = mpm->grid.dim;
+  PetscInt       r, cuts = MPMBoxCuts(mpm, x, hs, &r), naxes = 0;
   PetscReal      dV = 1.0;
 
-  for (PetscInt k = 0; k < d; k++) dV *= 2.0 * hs[k];
-  if (r == -2 && depth < MPM_SEED_DEPTH)
+  for (PetscInt k = 0; k < d; k++) {
+    dV *= 2.0 * hs[k];
+    naxes += (cuts >> k) & 1;
+  }
+  if (cuts && depth < (naxes == 1 ? MPM_SEED_DEPTH : 3))
     for (PetscInt c = 0; c < (1 << d); c++) {
       PetscReal xc[MPM_MAX_DIM] = {0.0, 0.0, 0.0}, hc[MPM_MAX_DIM] = {0.0, 0.0, 0.0};
+      PetscBool dup = PETSC_FALSE;
       for (PetscInt k = 0; k < d; k++) {
-        hc[k] = 0.5 * hs[k];
-        xc[k] = x[k] + ((c >> k) & 1 ? 1.0 : -1.0) * hc[k];
+        const PetscBool split = (PetscBool)((cuts >> k) & 1);
+        dup                   = (PetscBool)(dup || (!split && ((c >> k) & 1))); /* one child per combination of the cut axes */
+        hc[k]                 = split ? 0.5 * hs[k] : hs[k];
+        xc[k]                 = split ? x[k] + ((c >> k) & 1 ? 1.0 : -1.0) * hc[k] : x[k];
       }
-      MPMBoxSeed(mpm, xc, hc, depth + 1, vol, pc, np);
+      if (!dup) MPMBoxSeed(mpm, xc, hc, depth + 1, vol, pc, np);
     }
-  else {
-    if (r == -2) r = MPMRegionAt(mpm, x);
-    if (r >= 0) MPMPieceAdd(mpm, r, x, dV, vol, pc, np);
-  }
+  else if (r >= 0)
+    MPMPieceAdd(mpm, r, x, dV, vol, pc, np);
 }
 
 static PetscReal MPMEOSPressureOf(void *ctx, PetscReal rho, PetscReal e)
