@@ -260,7 +260,7 @@ def checks_of(r):
 def test_sod_strong():
     """Strong Sod (sod.md) at 512 cells x 4 points, VNR: stable, positive, shock within one cell and monotone: the
     cell-binned density falls monotonically through the shock and overshoots the exact plateau by less than 8%.
-    Measured: L1 density 0.64%, shock 0.66 cells, plateau pressure 0.08%, 4-cell shock, overshoot 5.0%."""
+    Measured: L1 density 0.64%, shock 0.72 cells, plateau pressure 0.005%, 5-cell shock, overshoot 4.5%."""
     import numpy as np
     with tempfile.TemporaryDirectory() as d:
         r = scene("sod_strong", d, ["-mpm_cells", "512"])
@@ -348,7 +348,7 @@ def test_sod_material():
     """The weak tube as two materials: with equal constants it is the one-material answer to round-off (at 250
     cells, where x = 8 lies on a lattice face: a site that the interface cuts seeds one merged point of one
     material but a point of each of two); with gamma 1.4 | 1.67 the waves sit where the two-gamma exact solver
-    puts them (measured: shock 0.3 cells, contact 1.4 cells, plateau pressure 0.1%, L1 density 0.6% at 1024
+    puts them (measured: shock 0.05 cells, contact 0.9 cells, plateau pressure 0.006%, L1 density 0.6% at 1024
     cells)."""
     with tempfile.TemporaryDirectory() as d:
         r1, _ = sod(os.path.join(d, "one"), ["-mpm_cells", "250"])
@@ -368,7 +368,7 @@ def test_sod_material():
 
 def test_limited():
     """Christensen's limited viscosity: stable on the weak and strong tubes, converging to the exact solution
-    (measured L1 density 1.7% weak, 1.5% strong at 1024 cells), and its per-direction limiter reduces exactly to
+    (measured L1 density 1.8% weak, 1.9% strong at 1024 cells), and its per-direction limiter reduces exactly to
     the 1D one on a 2D grid and across ranks (the neighbour cells come from the widened ghost region)."""
     with tempfile.TemporaryDirectory() as d:
         lim = ["-mpm_viscosity_type", "limited"]
@@ -395,15 +395,15 @@ def test_stability():
         r = scene("toro123", os.path.join(d, "123"))
         stable(r, 3072, "123 near vacuum", 2e-3)
         check(r["min_density"] < 0.05, f"123: the near vacuum forms (min density {r['min_density']:.4f} < 0.05, exact 0.0219)")
-        check(r["errors"]["density"]["L1"] < 0.05, f"123: relative L1 density error {r['errors']['density']['L1']:.3e} < 5e-2 (2.6% measured)")
-        check(r["errors"]["velocity"]["L1"] < 0.1, f"123: relative L1 velocity error {r['errors']['velocity']['L1']:.3e} < 1e-1 (6.8% measured)")
+        check(r["errors"]["density"]["L1"] < 0.05, f"123: relative L1 density error {r['errors']['density']['L1']:.3e} < 5e-2 (2.4% measured)")
+        check(r["errors"]["velocity"]["L1"] < 0.1, f"123: relative L1 velocity error {r['errors']['velocity']['L1']:.3e} < 1e-1 (6.2% measured)")
 
         r = scene("toro_blast", os.path.join(d, "blast"))
         stable(r, 2048, "blast (p ratio 1e5)", 3e-3)
         c = checks_of(r)
         check(r["shock_position_error_cells"] < 1.5, f"blast: shock position error {r['shock_position_error_cells']:.2f} cells < 1.5")
         check(c["plateau_pressure"]["rel_error"] < 0.01, f"blast: plateau pressure rel. error {c['plateau_pressure']['rel_error']:.2e} < 1e-2")
-        check(r["errors"]["density"]["L1"] < 0.05, f"blast: relative L1 density error {r['errors']['density']['L1']:.3e} < 5e-2 (2.9% measured)")
+        check(r["errors"]["density"]["L1"] < 0.05, f"blast: relative L1 density error {r['errors']['density']['L1']:.3e} < 5e-2 (3.0% measured)")
 
         r = scene("toro_contact", os.path.join(d, "contact"))
         stable(r, 6144, "stationary contact, strong shock", 3e-3)
@@ -419,7 +419,7 @@ def test_stability():
         check(abs(c["plateau_pressure"]["reference"] - 1.69165e13) < 1e9, f"colliding shocks: exact p* {c['plateau_pressure']['reference']:.6e} (Toro: 1691.64 x 1e10)")
         for k in ("shock_position", "left_shock_position", "contact_position"):
             e = abs(c[k]["value"] - c[k]["reference"]) / (3.0 / 1536)
-            check(e < 1.0, f"colliding shocks: {k} error {e:.2f} cells < 1 (0.15, 0.40, 0.43 measured)")
+            check(e < 1.0, f"colliding shocks: {k} error {e:.2f} cells < 1 (0.20, 0.40, 0.48 measured)")
         check(c["plateau_pressure"]["rel_error"] < 0.01 and c["star_density_left"]["rel_error"] < 0.01,
               f"colliding shocks: p* and rho*_L within 1% ({c['plateau_pressure']['rel_error']:.1e}, {c['star_density_left']['rel_error']:.1e})")
         check(r["errors"]["density"]["L1"] < 0.04, f"colliding shocks: relative L1 density error {r['errors']['density']['L1']:.3e} < 4e-2 (2.2% measured)")
