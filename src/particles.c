@@ -93,7 +93,7 @@ static void MPMSiteAt(const MPMGrid *g, PetscInt ppc, PetscInt s, PetscReal x[],
 
 typedef struct {
   PetscInt  material, region;                      /* region: the only region of the part, -1 if several */
-  PetscReal x[MPM_MAX_DIM], V, m, mv[MPM_MAX_DIM]; /* centroid, volume, mass, momentum                  */
+  PetscReal x[MPM_MAX_DIM], V, m, mv[MPM_MAX_DIM]; /* centroid, volume, mass, momentum (velocity when done) */
 } MPMPiece;
 
 /* Adds the box of centre x and volume dV, which region r holds, to the site's part of r's material. */
