@@ -179,7 +179,8 @@ static PetscReal MPMEOSPressureOf(void *ctx, PetscReal rho, PetscReal e)
   return p;
 }
 
-/* The parts (at most one per material) that the site centred at xs seeds, their states in rho[], e[]. */
+/* The parts (at most one per material) that the site centred at xs seeds, their densities in rho[] and, for
+   merged parts, their specific internal energies in e[]. */
 static PetscInt MPMSiteSeed(MPM mpm, const PetscReal xs[], MPMPiece pc[], PetscReal rho[], PetscReal e[])
 {
   const MPMGrid *g               = &mpm->grid;
@@ -197,22 +198,22 @@ static PetscInt MPMSiteSeed(MPM mpm, const PetscReal xs[], MPMPiece pc[], PetscR
     PetscReal    E = 0.0, v2 = 0.0;
     if (pc[i].V < 0.02 * Vs) continue;
     rho[n] = pc[i].m / pc[i].V;
-    for (PetscInt r = 0; r < mpm->nreg; r++) {
-      const MPMRegion *reg = &mpm->reg[r];
-      PetscReal        er, w2 = 0.0;
-      if (!vol[r] || reg->material != pc[i].material) continue;
-      MPMEOSEnergyKernel(eos, reg->rho, reg->T, &er);
-      if (pc[i].region < 0)
-        for (PetscInt s = 0; s < 8; s++) er = MPMIsentropeStep(MPMEOSPressureOf, eos, reg->rho + s * (rho[n] - reg->rho) / 8, er, (rho[n] - reg->rho) / 8);
-      for (PetscInt k = 0; k < d; k++) w2 += PetscSqr(reg->v[k]);
-      E += reg->rho * vol[r] * (er + 0.5 * w2);
-    }
     for (PetscInt k = 0; k < d; k++) {
       pc[i].x[k] = pc[i].region >= 0 && pc[i].V == Vs ? xs[k] : pc[i].x[k] / pc[i].V; /* a whole site: its centre */
       pc[i].mv[k] /= pc[i].m;
       v2 += PetscSqr(pc[i].mv[k]);
     }
-    e[n]    = E / pc[i].m - 0.5 * v2;
+    e[n] = 0.0;                                                    /* a part of one region takes that region's state */
+    for (PetscInt r = 0; r < mpm->nreg && pc[i].region < 0; r++) { /* merged: along each isentrope to rho */
+      const MPMRegion *reg = &mpm->reg[r];
+      PetscReal        er, w2 = 0.0;
+      if (!vol[r] || reg->material != pc[i].material) continue;
+      MPMEOSEnergyKernel(eos, reg->rho, reg->T, &er);
+      for (PetscInt s = 0; s < 8; s++) er = MPMIsentropeStep(MPMEOSPressureOf, eos, reg->rho + s * (rho[n] - reg->rho) / 8, er, (rho[n] - reg->rho) / 8);
+      for (PetscInt k = 0; k < d; k++) w2 += PetscSqr(reg->v[k]);
+      E += reg->rho * vol[r] * (er + 0.5 * w2);
+      e[n] = E / pc[i].m - 0.5 * v2;
+    }
     pc[n++] = pc[i];
   }
   return n;
@@ -237,6 +238,8 @@ PetscErrorCode MPMCreatePoints(MPM mpm)
   PetscCall(DMSwarmFinalizeFieldRegister(mpm->swarm));
 
   for (PetscInt k = 0; k < d; k++) npd *= mpm->ppc;
+  /* seed twice, to count and to fill: cheaper in memory than keeping every part, and a fraction of the setup
+     (48^3 cells x 8 with a sphere cut: 0.67 s in all, 0.49 s without the cut) */
   for (PetscInt s = 0; s < g->ncells * npd; s++) {
     PetscReal x[MPM_MAX_DIM], id;
     MPMSiteAt(g, mpm->ppc, s, x, &id);
