@@ -2,10 +2,12 @@
 /* The MPM object: owns the DMDA background grid, the DMSwarm of material points, the TS that drives the
    explicit steps, the materials and the physics the scene selects. */
 #include "petmpmimpl.h"
+#include "transfer/transfer.h"
 
 const char *const MPMSchemes[]            = {"usl", "musl", "MPMScheme", "MPM_SCHEME_", NULL};
 const char *const MPMStressIntegrations[] = {"cell", "point", "MPMStressIntegration", "MPM_STRESS_", NULL};
 const char *const MPMEnergyUpdates[]      = {"compatible", "midpoint", "conservative", "MPMEnergyUpdate", "MPM_ENERGY_", NULL};
+const char *const MPMTransferKernelTypes[]     = {"specialised", "generic", "MPMTransferKernel", "MPM_TRANSFER_", NULL};
 const char *const MPMBoundaryTypes[]      = {"wall", "free", "MPMBoundaryType", "MPM_BC_", NULL};
 
 PETSC_EXTERN PetscErrorCode MPMShapeCreate_Linear(MPMShape);
@@ -138,6 +140,8 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscCall(PetscOptionsEnum("-mpm_energy_update",
                              "Internal energy: de = -(p^n + q) d(1/rho) (compatible, the cell rule's default), the grid forces' work with the time-centred velocity (conservative, point integration's default) or (p^n + p^{n+1})/2 (midpoint)", "",
                              MPMEnergyUpdates, (PetscEnum)mpm->energy_update, (PetscEnum *)&mpm->energy_update, NULL));
+  PetscCall(PetscOptionsEnum("-mpm_transfer_kernel", "Point-grid transfer kernels: specialised for the dimension and shape family (where the family has them) or the generic reference", "", MPMTransferKernelTypes, (PetscEnum)mpm->transfer_kernel,
+                             (PetscEnum *)&mpm->transfer_kernel, NULL));
   PetscCall(PetscOptionsBool("-mpm_ke_fix", "Turn the kinetic energy the grid-to-point velocity map discards into internal energy of the point", "", mpm->ke_fix, &mpm->ke_fix, NULL));
   PetscCall(MPMOptionsDimEnums(PetscOptionsObject, "-mpm_bc_lo", "Boundary at the lower face of each direction", MPMBoundaryTypes, g->dim, (PetscEnum *)mpm->bc_lo));
   PetscCall(MPMOptionsDimEnums(PetscOptionsObject, "-mpm_bc_hi", "Boundary at the upper face of each direction", MPMBoundaryTypes, g->dim, (PetscEnum *)mpm->bc_hi));
@@ -209,6 +213,7 @@ PetscErrorCode MPMSetUp(MPM mpm)
 
   PetscCall(MPMCreateGrid(mpm));
   PetscCall(MPMShapeSetUp(mpm->shape, &mpm->grid, mpm->ppc));
+  mpm->kern = mpm->transfer_kernel == MPM_TRANSFER_SPECIALISED && mpm->shape->kernels ? &mpm->shape->kernels[mpm->grid.dim - 1] : NULL;
   PetscCall(MPMCreatePoints(mpm));
   PetscCall(MPMExactSetUp(mpm->exact, mpm));
   PetscCall(MPMExactInitialize(mpm->exact, mpm));

@@ -96,6 +96,8 @@ typedef struct {
 } MPMPoints;
 
 /* ------------------------------------------------------------------ classes */
+typedef struct _MPMTransferKernels MPMTransferKernels; /* src/transfer/transfer.h */
+
 typedef struct {
   PetscInt (*support)(void *);                                                                   /* ghost width the type needs [cells] */
   void (*basis1d)(void *, PetscReal, PetscInt *, PetscInt *, PetscReal[], PetscReal[]);          /* xi = (x-lo)/h -> first node (may lie outside the grid), count, N, dN/dxi */
@@ -108,7 +110,8 @@ typedef struct {
 } MPMShapeOps;
 struct _p_MPMShape {
   MPM_CLASS_HEADER(MPMShapeOps);
-  PetscBool needs_F; /* the type reads the points' deformation gradient */
+  PetscBool                 needs_F; /* the type reads the points' deformation gradient */
+  const MPMTransferKernels *kernels; /* specialised transfer kernels for d = 1, 2, 3 (kernels.h), NULL: generic only */
 };
 
 typedef struct {
@@ -237,7 +240,9 @@ struct _p_MPM {
   MPMMaterial          mat[MPM_MAX_MATERIALS];
   MPMRegion            reg[MPM_MAX_REGIONS];
   /* physics */
-  MPMShape     shape;
+  MPMShape                  shape;
+  MPMTransferKernel         transfer_kernel; /* -mpm_transfer_kernel                                  */
+  const MPMTransferKernels *kern;            /* the shape's specialised kernels for d, or NULL: generic */
   MPMUpdate    update;
   MPMViscosity viscosity; /* NULL when the scene asks for none: not in the step */
   MPMExact     exact;     /* NULL when the scene has no exact solution          */

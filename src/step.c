@@ -3,6 +3,7 @@
    modified update-stress-last as in Nairn, CMES 4 (2003) 649 and Buzzi et al., 2008). Every phase is
    a PetscLogEvent; modules the scene did not ask for are not in the step. */
 #include "petmpmimpl.h"
+#include "transfer/transfer.h"
 
 /* Global (i, j, k) of the c-th cell of the local cell range (the numbering of MPMLocalCell). */
 static inline void MPMLocalCellIndex(const MPMGrid *g, PetscInt c, PetscInt ijk[])
@@ -44,6 +45,17 @@ static PetscErrorCode MPMScatter(MPM mpm, PetscBool force)
     const PetscReal *V = pts.f[MPM_FIELD_VOLUME], *pr = pts.f[MPM_FIELD_PRESSURE], *q = pts.f[MPM_FIELD_VISCOSITY];
     const PetscReal *F = mpm->track_F ? pts.f[MPM_FIELD_DEFGRAD] : NULL, *S = pts.f[MPM_FIELD_STRESS], *X = pts.f[MPM_FIELD_REFPOSITION];
 
+    if (mpm->kern && !body) { /* the specialised kernel, then the cell sums of the cell rule */
+      const MPMTransferArgs A = {.n = pts.n, .x = (PetscReal *)x, .v = (PetscReal *)v, .m = m, .V = V, .pr = pr, .q = q, .S = S};
+      mpm->kern->p2g[(force && !cellrule ? MPM_P2G_PRESSURE : 0) | (stress ? MPM_P2G_STRESS : 0)](g, mpm->shape->data, &A, node);
+      if (cellrule)
+        for (PetscInt p = 0; p < pts.n; p++) {
+          const PetscReal P = pr[p] + q[p];
+          const PetscInt  c = MPMLocalCell(g, &x[p * d]);
+          mpm->cellV[c] += V[p];
+          mpm->cellS[c] += V[p] * P;
+        }
+    } else
     for (PetscInt p = 0; p < pts.n; p++) {
       const PetscReal P              = pr[p] + q[p];
       PetscReal       b[MPM_MAX_DIM] = {0, 0, 0};
@@ -226,6 +238,10 @@ static PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool
         mpm->cellS[c] = g->vcell / mpm->cellV[c] * div;
       }
     }
+    if (mpm->kern) {
+      const MPMTransferArgs A = {.n = pts.n, .x = x, .v = v, .L = L, .e = e, .pr = pr, .q = q, .S = S, .rho = rho, .cellwork = cellwork ? mpm->cellS : NULL, .alpha = alpha, .kefix = kefix, .stress = stress, .dt = dt, .wfac = wfac};
+      mpm->kern->g2p[(velocity ? MPM_G2P_VELOCITY : 0) | (kinematics ? MPM_G2P_KINEMATICS : 0) | (work ? MPM_G2P_WORK : 0)](g, mpm->shape->data, &A, node);
+    } else
     for (PetscInt p = 0; p < pts.n; p++) {
       PetscReal vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Lb[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, dv2 = 0.0, R = 0.0;
       MPMShapeEvaluate(mpm->shape, g, &x[p * d], F ? &F[p * d * d] : NULL, &st);

@@ -32,6 +32,7 @@ PetscErrorCode MPMShapeSetType(MPMShape shape, MPMShapeType type)
   PetscCall(PetscMemzero(&shape->ops, sizeof(shape->ops)));
   shape->data    = NULL;
   shape->needs_F = PETSC_FALSE;
+  shape->kernels = NULL;
   PetscCall(PetscStrncpy(shape->type_name, type, sizeof(shape->type_name)));
   PetscCall(create(shape));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -4,7 +4,7 @@
      |r| < 1/2:        N = 3/4 - r^2
      1/2 <= |r| < 3/2: N = (3/2 - |r|)^2 / 2
    C1, three nodes per direction, reproduces linear fields. Support 3/2 cells: ghost width 2. */
-#include "../../petmpmimpl.h"
+#include "bspline.h"
 
 static PetscInt MPMShapeSupport_BSpline2(void *ctx)
 {
@@ -13,27 +13,19 @@ static PetscInt MPMShapeSupport_BSpline2(void *ctx)
 
 static void MPMShapeBasis1d_BSpline2(void *ctx, PetscReal xi, PetscInt *first, PetscInt *n, PetscReal w[], PetscReal dw[])
 {
-  const PetscInt f = (PetscInt)PetscFloorReal(xi + 0.5) - 1;
-
-  *first = f;
-  *n     = 3;
-  for (PetscInt a = 0; a < 3; a++) {
-    const PetscReal r = xi - (f + a), ar = PetscAbsReal(r), sgn = r < 0.0 ? -1.0 : 1.0;
-    if (ar < 0.5) {
-      w[a]  = 0.75 - r * r;
-      dw[a] = -2.0 * r;
-    } else if (ar < 1.5) {
-      w[a]  = 0.5 * PetscSqr(1.5 - ar);
-      dw[a] = -sgn * (1.5 - ar);
-    } else
-      w[a] = dw[a] = 0.0;
-  }
+  MPMShapeBSpline2_1d(xi, first, n, w, dw);
 }
+
+#define MPM_KNAME  BSpline2
+#define MPM_KNB    3
+#define MPM_KBASIS MPMShapeBSpline2_1d
+#include "../../transfer/kernels.h"
 
 PetscErrorCode MPMShapeCreate_BSpline2(MPMShape shape)
 {
   PetscFunctionBegin;
   shape->ops.support = MPMShapeSupport_BSpline2;
   shape->ops.basis1d = MPMShapeBasis1d_BSpline2;
+  shape->kernels     = MPMTransferKernels_BSpline2;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -4,7 +4,7 @@
      |r| < 1:      N = 2/3 - r^2 + |r|^3 / 2
      1 <= |r| < 2: N = (2 - |r|)^3 / 6
    C2, four nodes per direction, reproduces linear fields. Support 2 cells: ghost width 2. */
-#include "../../petmpmimpl.h"
+#include "bspline.h"
 
 static PetscInt MPMShapeSupport_BSpline3(void *ctx)
 {
@@ -13,27 +13,19 @@ static PetscInt MPMShapeSupport_BSpline3(void *ctx)
 
 static void MPMShapeBasis1d_BSpline3(void *ctx, PetscReal xi, PetscInt *first, PetscInt *n, PetscReal w[], PetscReal dw[])
 {
-  const PetscInt f = (PetscInt)PetscFloorReal(xi) - 1;
-
-  *first = f;
-  *n     = 4;
-  for (PetscInt a = 0; a < 4; a++) {
-    const PetscReal r = xi - (f + a), ar = PetscAbsReal(r), sgn = r < 0.0 ? -1.0 : 1.0;
-    if (ar < 1.0) {
-      w[a]  = 2.0 / 3.0 - r * r + 0.5 * ar * ar * ar;
-      dw[a] = -2.0 * r + 1.5 * r * ar;
-    } else if (ar < 2.0) {
-      w[a]  = PetscPowReal(2.0 - ar, 3) / 6.0;
-      dw[a] = -sgn * 0.5 * PetscSqr(2.0 - ar);
-    } else
-      w[a] = dw[a] = 0.0;
-  }
+  MPMShapeBSpline3_1d(xi, first, n, w, dw);
 }
+
+#define MPM_KNAME  BSpline3
+#define MPM_KNB    4
+#define MPM_KBASIS MPMShapeBSpline3_1d
+#include "../../transfer/kernels.h"
 
 PetscErrorCode MPMShapeCreate_BSpline3(MPMShape shape)
 {
   PetscFunctionBegin;
   shape->ops.support = MPMShapeSupport_BSpline3;
   shape->ops.basis1d = MPMShapeBasis1d_BSpline3;
+  shape->kernels     = MPMTransferKernels_BSpline3;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

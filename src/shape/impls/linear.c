@@ -15,10 +15,16 @@ static void MPMShapeBasis1d_Linear(void *ctx, PetscReal xi, PetscInt *first, Pet
   MPMShapeLinear1d(xi, first, n, w, dw);
 }
 
+#define MPM_KNAME  Linear
+#define MPM_KNB    2
+#define MPM_KBASIS MPMShapeLinear1d
+#include "../../transfer/kernels.h"
+
 PetscErrorCode MPMShapeCreate_Linear(MPMShape shape)
 {
   PetscFunctionBegin;
   shape->ops.support = MPMShapeSupport_Linear;
   shape->ops.basis1d = MPMShapeBasis1d_Linear;
+  shape->kernels     = MPMTransferKernels_Linear;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -1,0 +1,174 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* The body of the transfer kernels for dimension MPM_KD (see kernels.h). Each kernel evaluates exactly the
+   expressions of the generic reference (src/step.c MPMScatter, MPMGather) in the same order, with the dimension,
+   the stencil width and the mode known to the compiler: no function pointer, no run-time dimension loop and no
+   mode branch inside the loop over points. */
+#if MPM_KD == 1
+  #define MPM_KS (MPM_KNB)
+#elif MPM_KD == 2
+  #define MPM_KS (MPM_KNB * MPM_KNB)
+#else
+  #define MPM_KS (MPM_KNB * MPM_KNB * MPM_KNB)
+#endif
+
+/* N_I(x_p), grad N_I(x_p) and the mirror signs of one point: MPMShapeEvaluate for this family and dimension. */
+MPM_KINLINE void MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const PetscReal *x, PetscInt node[MPM_KS], PetscReal W[MPM_KS], PetscReal DW[MPM_KS][MPM_KD], PetscReal SG[MPM_KS][MPM_KD])
+{
+  PetscInt  idx[MPM_KD][MPM_KNB];
+  PetscReal w[MPM_KD][MPM_KNB], dw[MPM_KD][MPM_KNB], sg[MPM_KD][MPM_KNB];
+
+  for (PetscInt k = 0; k < MPM_KD; k++) {
+    const PetscReal hinv = 1.0 / g->h[k];
+    PetscInt        first, n;
+    MPM_KBASIS((x[k] - g->lo[k]) * hinv, &first, &n, w[k], dw[k]);
+    for (PetscInt a = 0; a < MPM_KNB; a++) {
+      dw[k][a] *= hinv;
+      idx[k][a] = first + a;
+    }
+    MPMShapeFold1d(g, k, MPM_KNB, idx[k], sg[k]);
+  }
+#if MPM_KD == 1
+  for (PetscInt a = 0; a < MPM_KNB; a++) {
+    node[a]  = idx[0][a];
+    W[a]     = w[0][a];
+    DW[a][0] = dw[0][a];
+    SG[a][0] = sg[0][a];
+  }
+#elif MPM_KD == 2
+  for (PetscInt b = 0, s = 0; b < MPM_KNB; b++)
+    for (PetscInt a = 0; a < MPM_KNB; a++, s++) {
+      node[s]  = idx[1][b] * g->gm[0] + idx[0][a];
+      W[s]     = w[0][a] * w[1][b];
+      DW[s][0] = dw[0][a] * w[1][b];
+      DW[s][1] = w[0][a] * dw[1][b];
+      SG[s][0] = sg[0][a];
+      SG[s][1] = sg[1][b];
+    }
+#else
+  for (PetscInt c = 0, s = 0; c < MPM_KNB; c++)
+    for (PetscInt b = 0; b < MPM_KNB; b++)
+      for (PetscInt a = 0; a < MPM_KNB; a++, s++) {
+        node[s]  = (idx[2][c] * g->gm[1] + idx[1][b]) * g->gm[0] + idx[0][a];
+        W[s]     = w[0][a] * w[1][b] * w[2][c];
+        DW[s][0] = dw[0][a] * w[1][b] * w[2][c];
+        DW[s][1] = w[0][a] * dw[1][b] * w[2][c];
+        DW[s][2] = w[0][a] * w[1][b] * dw[2][c];
+        SG[s][0] = sg[0][a];
+        SG[s][1] = sg[1][b];
+        SG[s][2] = sg[2][c];
+      }
+#endif
+}
+
+/* m_I += N_I m_p, (mv)_I += N_I m_p v_p and, by mode, the point pressure force and the stress force. */
+MPM_KINLINE void MPM_KCAT(MPMKP2G, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const MPMTransferArgs *A, MPMNode *nodes, const int mode)
+{
+  const PetscInt   D = MPM_KD;
+  const PetscReal *x = A->x, *v = A->v, *m = A->m, *V = A->V, *pr = A->pr, *q = A->q, *S = A->S;
+
+  for (PetscInt p = 0; p < A->n; p++) {
+    PetscInt  node[MPM_KS];
+    PetscReal W[MPM_KS], DW[MPM_KS][MPM_KD], SG[MPM_KS][MPM_KD];
+    MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(g, &x[p * D], node, W, DW, SG);
+    for (PetscInt a = 0; a < MPM_KS; a++) {
+      MPMNode        *nd = &nodes[node[a]];
+      const PetscReal wm = W[a] * m[p];
+      nd->m += wm;
+      for (PetscInt k = 0; k < D; k++) nd->p[k] += SG[a][k] * wm * v[p * D + k];
+      if (mode & MPM_P2G_PRESSURE) {
+        const PetscReal P = pr[p] + q[p];
+        for (PetscInt k = 0; k < D; k++) nd->f[k] += SG[a][k] * V[p] * P * DW[a][k];
+      }
+      if (mode & MPM_P2G_STRESS)
+        for (PetscInt k = 0; k < D; k++) {
+          PetscReal sgr = 0.0;
+          for (PetscInt j = 0; j < D; j++) sgr += S[p * D * D + k * D + j] * DW[a][j];
+          nd->f[k] -= SG[a][k] * V[p] * sgr;
+        }
+    }
+  }
+}
+
+/* The grid velocity back to the points, by mode (see MPMGather for the formulas). */
+MPM_KINLINE void MPM_KCAT(MPMKG2P, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const MPMTransferArgs *A, const MPMNode *nodes, const int mode)
+{
+  const PetscInt   D = MPM_KD;
+  const PetscBool  velocity = (PetscBool)(mode & MPM_G2P_VELOCITY), kinematics = (PetscBool)(mode & MPM_G2P_KINEMATICS), work = (PetscBool)(mode & MPM_G2P_WORK);
+  PetscReal       *x = A->x, *v = A->v, *L = A->L, *e = A->e;
+  const PetscReal *pr = A->pr, *q = A->q, *S = A->S, *rho = A->rho, alpha = A->alpha;
+
+  for (PetscInt p = 0; p < A->n; p++) {
+    PetscInt  node[MPM_KS];
+    PetscReal W[MPM_KS], DW[MPM_KS][MPM_KD], SG[MPM_KS][MPM_KD];
+    PetscReal vpic[MPM_KD] = {0}, dv[MPM_KD] = {0}, Lp[MPM_KD * MPM_KD] = {0}, Lb[MPM_KD * MPM_KD] = {0}, dv2 = 0.0, R = 0.0;
+    MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(g, &x[p * D], node, W, DW, SG);
+    for (PetscInt a = 0; a < MPM_KS; a++) {
+      const MPMNode *nd = &nodes[node[a]];
+      for (PetscInt i = 0; i < D; i++) {
+        const PetscReal vI = SG[a][i] * nd->p[i];
+        vpic[i] += W[a] * vI;
+        if (velocity || work) {
+          const PetscReal dvI = SG[a][i] * (nd->p[i] - nd->v0[i]);
+          if (velocity) {
+            dv[i] += W[a] * dvI;
+            dv2 += W[a] * dvI * dvI;
+            R += W[a] * (vI - dvI - v[p * D + i]) * vI;
+          }
+          if (work)
+            for (PetscInt j = 0; j < D; j++) Lb[i * D + j] += (2.0 * vI - dvI) * DW[a][j];
+        }
+        if (kinematics)
+          for (PetscInt j = 0; j < D; j++) Lp[i * D + j] += vI * DW[a][j];
+      }
+    }
+    if (velocity) {
+      PetscReal share = 0.5 * dv2, gain = 0.0;
+      for (PetscInt i = 0; i < D; i++) {
+        const PetscReal vn = alpha * (v[p * D + i] + dv[i]) + (1.0 - alpha) * vpic[i];
+        share += v[p * D + i] * dv[i];
+        gain += 0.5 * (vn * vn - v[p * D + i] * v[p * D + i]);
+        v[p * D + i] = vn;
+      }
+      if (A->kefix) e[p] += share - gain + (1.0 - alpha) * R;
+      if (work) {
+        PetscReal sL = 0.0, div = 0.0;
+        if (A->cellwork) div = A->cellwork[MPMLocalCell(g, &x[p * D])];
+        else
+          for (PetscInt i = 0; i < D; i++) div += Lb[i * D + i];
+        if (A->stress)
+          for (PetscInt i = 0; i < D * D; i++) sL += S[p * D * D + i] * Lb[i];
+        e[p] += A->wfac * (sL - (pr[p] + q[p]) * div) / rho[p];
+      }
+    }
+    if (kinematics) {
+      for (PetscInt i = 0; i < D; i++) x[p * D + i] += A->dt * vpic[i];
+      for (PetscInt i = 0; i < D * D; i++) L[p * D * D + i] = Lp[i];
+    }
+  }
+}
+
+#define MPM_KP2G(M) \
+  static void MPM_KCAT(MPMP2G, MPM_KNAME, MPM_KD, _##M)(const MPMGrid *g, const void *ctx, const MPMTransferArgs *A, MPMNode *nodes) \
+  { \
+    MPM_KCAT(MPMKP2G, MPM_KNAME, MPM_KD, d)(g, A, nodes, M); \
+  }
+#define MPM_KG2P(M) \
+  static void MPM_KCAT(MPMG2P, MPM_KNAME, MPM_KD, _##M)(const MPMGrid *g, const void *ctx, const MPMTransferArgs *A, const MPMNode *nodes) \
+  { \
+    MPM_KCAT(MPMKG2P, MPM_KNAME, MPM_KD, d)(g, A, nodes, M); \
+  }
+MPM_KP2G(0)
+MPM_KP2G(1)
+MPM_KP2G(2)
+MPM_KP2G(3)
+MPM_KG2P(0)
+MPM_KG2P(1)
+MPM_KG2P(2)
+MPM_KG2P(3)
+MPM_KG2P(4)
+MPM_KG2P(5)
+MPM_KG2P(6)
+MPM_KG2P(7)
+#undef MPM_KP2G
+#undef MPM_KG2P
+#undef MPM_KS

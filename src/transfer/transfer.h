@@ -1,0 +1,44 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* Single-purpose transfer kernels between the points and the grid, specialised at compile time for one space
+   dimension and one tensor-product shape family (the PETSc BAIJ pattern: one body, kernels.h, instantiated by
+   each shape type that wants a fast path, for d = 1, 2, 3; chosen once at set-up). The generic path in
+   src/step.c (MPMScatter, MPMGather) stays as the reference: `-mpm_transfer_kernel generic` selects it, and
+   the specialised kernels must reproduce it bit for bit (they evaluate the same expressions in the same order;
+   tests/scene_checks.py test_kernels and scripts/regress check it). */
+#pragma once
+#include "../petmpmimpl.h"
+
+/* What a points-to-grid kernel scatters besides m_I and (mv)_I: a bit mask indexing MPMTransferKernels::p2g. */
+enum {
+  MPM_P2G_PRESSURE = 1, /* f_I += V_p (p_p + q_p) grad N_I(x_p): point-by-point pressure force */
+  MPM_P2G_STRESS   = 2, /* f_I -= V_p s_p . grad N_I(x_p): a strength model's stress           */
+  MPM_P2G_NMODES   = 4
+};
+
+/* What a grid-to-points kernel updates: a bit mask indexing MPMTransferKernels::g2p. */
+enum {
+  MPM_G2P_VELOCITY   = 1, /* v_p (FLIP/PIC blend) and the kinetic-energy fix                   */
+  MPM_G2P_KINEMATICS = 2, /* x_p += dt v_pic, L_p = sum v_I (x) grad N_I                        */
+  MPM_G2P_WORK       = 4, /* conservative energy update: e_p += the work of the grid's forces   */
+  MPM_G2P_NMODES     = 8
+};
+
+/* The point arrays a kernel reads and writes; entries a mode does not use may be NULL. */
+typedef struct {
+  PetscInt         n;                /* number of points                                            */
+  PetscReal       *x, *v, *L, *e;    /* position, velocity, velocity gradient, internal energy       */
+  const PetscReal *m, *V, *pr, *q;   /* mass, volume, pressure, artificial viscosity                 */
+  const PetscReal *S, *rho;          /* deviatoric stress (d x d), density                           */
+  const PetscReal *cellwork;         /* conservative update with the cell rule: work per unit P V of each local cell, else NULL */
+  PetscReal        alpha;            /* FLIP fraction                                               */
+  PetscBool        kefix, stress;    /* kinetic-energy fix; the stress enters the work               */
+  PetscReal        dt, wfac;         /* step, half the kick (the work's time factor)                 */
+} MPMTransferArgs;
+
+typedef void (*MPMP2GKernel)(const MPMGrid *, const void *, const MPMTransferArgs *, MPMNode *);
+typedef void (*MPMG2PKernel)(const MPMGrid *, const void *, const MPMTransferArgs *, const MPMNode *);
+
+struct _MPMTransferKernels {
+  MPMP2GKernel p2g[MPM_P2G_NMODES];
+  MPMG2PKernel g2p[MPM_G2P_NMODES];
+};
