@@ -288,7 +288,7 @@ PetscErrorCode MPMCreatePoints(MPM mpm)
 PetscErrorCode MPMMigrate(MPM mpm)
 {
   const MPMGrid *g = &mpm->grid;
-  PetscMPIInt    rank;
+  PetscMPIInt    rank, size;
   PetscInt       n, nmove = 0, nout = 0, ntotal;
   PetscReal     *x, *id;
   PetscInt      *owner;
@@ -296,6 +296,7 @@ PetscErrorCode MPMMigrate(MPM mpm)
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(mpm->log.migrate, 0, 0, 0, 0));
   PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
+  PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
   PetscCall(DMSwarmGetLocalSize(mpm->swarm, &n));
   PetscCall(DMSwarmGetField(mpm->swarm, MPMFieldTable[MPM_FIELD_POSITION].name, NULL, NULL, (void **)&x));
   PetscCall(DMSwarmGetField(mpm->swarm, MPMFieldTable[MPM_FIELD_ID].name, NULL, NULL, (void **)&id));
@@ -306,7 +307,7 @@ PetscErrorCode MPMMigrate(MPM mpm)
     for (PetscInt k = 0; k < g->dim; k++) in = (PetscBool)(in && xp[k] >= g->lo[k] && xp[k] <= g->hi[k]);
     if (!in && !nout++)
       PetscCall(PetscPrintf(PETSC_COMM_SELF, "[%d] step %" PetscInt_FMT ": point %.0f left the domain at x = (%g, %g, %g)\n", rank, mpm->steps, (double)id[p], (double)xp[0], (double)(g->dim > 1 ? xp[1] : 0), (double)(g->dim > 2 ? xp[2] : 0)));
-    owner[p] = MPMOwnerRank(g, xp);
+    owner[p] = size > 1 ? MPMOwnerRank(g, xp) : 0;
     if (owner[p] != rank) nmove++;
   }
   PetscCall(DMSwarmRestoreField(mpm->swarm, DMSwarmField_rank, NULL, NULL, (void **)&owner));

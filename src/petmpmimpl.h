@@ -98,6 +98,16 @@ typedef struct {
 /* ------------------------------------------------------------------ classes */
 typedef struct _MPMTransferKernels MPMTransferKernels; /* src/transfer/transfer.h */
 
+#define MPM_MAX_1D 8 /* nodes per direction a 1D basis can touch */
+
+/* The cell average of a 1D basis over one cell: ghosted-local node indices, weights, derivatives [1/cm], mirror signs. */
+typedef struct {
+  PetscInt  n;
+  PetscInt  idx[MPM_MAX_1D];
+  PetscReal w[MPM_MAX_1D], dw[MPM_MAX_1D], sg[MPM_MAX_1D];
+} MPMShapeCell;
+
+
 typedef struct {
   PetscInt (*support)(void *);                                                                   /* ghost width the type needs [cells] */
   void (*basis1d)(void *, PetscReal, PetscInt *, PetscInt *, PetscReal[], PetscReal[]);          /* xi = (x-lo)/h -> first node (may lie outside the grid), count, N, dN/dxi */
@@ -112,6 +122,9 @@ struct _p_MPMShape {
   MPM_CLASS_HEADER(MPMShapeOps);
   PetscBool                 needs_F; /* the type reads the points' deformation gradient */
   const MPMTransferKernels *kernels; /* specialised transfer kernels for d = 1, 2, 3 (kernels.h), NULL: generic only */
+  MPMShapeCell             *cell1d[MPM_MAX_DIM];    /* cell-averaged 1D bases of the ghosted cells gs..gs+gm per direction */
+  PetscInt                  cell1d_lo[MPM_MAX_DIM]; /* the global cell of entry 0                                          */
+  PetscInt                  ncell1d[MPM_MAX_DIM];   /* entries                                                             */
 };
 
 typedef struct {
@@ -350,8 +363,6 @@ static inline void MPMEOSEnergyKernel(MPMEOS eos, PetscReal rho, PetscReal T, Pe
 {
   eos->ops.energy(eos->data, rho, T, e);
 }
-
-#define MPM_MAX_1D 8 /* nodes per direction a 1D basis can touch */
 
 /* The tent functions on the cells, N_i = 1 - t, N_{i+1} = t with i = floor(xi), t = xi - i: the linear type's
    basis and the grid basis CPDI interpolates from its corners. */

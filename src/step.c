@@ -403,7 +403,7 @@ static PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
       rho[p] = rho1;
       V[p]   = m[p] / rho1;
       c[p]   = PetscSqrtReal(PetscMax(c2, 0.0) + cs2);
-      if (bad < 0 && !(rho1 > 0.0 && PetscIsNormalReal(rho1) && !PetscIsInfOrNanReal(e1) && !PetscIsInfOrNanReal(pr[p]) && c2 >= 0.0)) bad = p;
+      if (bad < 0 && !(rho1 > 0.0 && isnormal(rho1) && isfinite(e1) && isfinite(pr[p]) && c2 >= 0.0)) bad = p; /* C99 classification, inline (PETSc's are library calls) */
     }
     if (bad >= 0) {
       PetscMPIInt rank;

@@ -52,11 +52,53 @@ PetscErrorCode MPMShapeSetFromOptions(MPMShape shape)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Tells the type the grid and the points per cell per direction (GIMP and CPDI size the point domains with it). */
+/* The cell average of the 1D basis over global cell i of direction k (see MPMShapeEvaluateCell), folded at the walls. */
+static void MPMShapeCell1d(MPMShape shape, const MPMGrid *g, PetscInt k, PetscInt i, MPMShapeCell *c)
+{
+  const PetscReal gp[2]          = {0.5 - 0.5 / PetscSqrtReal(3.0), 0.5 + 0.5 / PetscSqrtReal(3.0)};
+  const PetscInt  base           = i - 3; /* every type touches nodes i-3 .. i+4 at most from cell i */
+  PetscReal       sw[MPM_MAX_1D] = {0}, sdw[MPM_MAX_1D] = {0};
+  PetscInt        lo = MPM_MAX_1D, hi = -1;
+
+  for (PetscInt half = 0; half < 2; half++)
+    for (PetscInt q = 0; q < 2; q++) {
+      PetscReal wq[MPM_MAX_1D], dwq[MPM_MAX_1D];
+      PetscInt  first, n;
+      shape->ops.basis1d(shape->data, i + 0.5 * (half + gp[q]), &first, &n, wq, dwq);
+      for (PetscInt a = 0; a < n; a++) {
+        const PetscInt j = first + a - base;
+        sw[j] += 0.25 * wq[a];
+        sdw[j] += 0.25 * dwq[a];
+        lo = PetscMin(lo, j);
+        hi = PetscMax(hi, j);
+      }
+    }
+  c->n = hi - lo + 1;
+  for (PetscInt a = 0; a < c->n; a++) {
+    c->idx[a] = base + lo + a;
+    c->w[a]   = sw[lo + a];
+    c->dw[a]  = sdw[lo + a] / g->h[k];
+  }
+  MPMShapeFold1d(g, k, c->n, c->idx, c->sg);
+}
+
+/* Tells the type the grid and the points per cell per direction (GIMP and CPDI size the point domains with it),
+   and tabulates the cell-averaged 1D bases of the rank's ghosted cells: the cell rule reads them every step. */
 PetscErrorCode MPMShapeSetUp(MPMShape shape, const MPMGrid *g, PetscInt ppc)
 {
   PetscFunctionBegin;
   if (shape->ops.setup) PetscCall(shape->ops.setup(shape, g, ppc));
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
+    PetscCall(PetscFree(shape->cell1d[k]));
+    shape->ncell1d[k] = 0;
+  }
+  if (!shape->ops.basis1d) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt k = 0; k < g->dim; k++) {
+    shape->cell1d_lo[k] = g->gs[k];
+    shape->ncell1d[k]   = g->gm[k];
+    PetscCall(PetscMalloc1(g->gm[k], &shape->cell1d[k]));
+    for (PetscInt i = 0; i < g->gm[k]; i++) MPMShapeCell1d(shape, g, k, g->gs[k] + i, &shape->cell1d[k][i]);
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -67,34 +109,21 @@ PetscErrorCode MPMShapeSetUp(MPMShape shape, const MPMGrid *g, PetscInt ppc)
    the centre), and the cell average of the point-domain basis for GIMP. */
 void MPMShapeEvaluateCell(MPMShape shape, const MPMGrid *g, const PetscInt ijk[], MPMStencil *st)
 {
-  const PetscReal gp[2] = {0.5 - 0.5 / PetscSqrtReal(3.0), 0.5 + 0.5 / PetscSqrtReal(3.0)};
-  PetscInt        idx[MPM_MAX_DIM][MPM_MAX_1D], nn[MPM_MAX_DIM];
-  PetscReal       w[MPM_MAX_DIM][MPM_MAX_1D], dw[MPM_MAX_DIM][MPM_MAX_1D], sg[MPM_MAX_DIM][MPM_MAX_1D];
+  PetscInt  idx[MPM_MAX_DIM][MPM_MAX_1D], nn[MPM_MAX_DIM];
+  PetscReal w[MPM_MAX_DIM][MPM_MAX_1D], dw[MPM_MAX_DIM][MPM_MAX_1D], sg[MPM_MAX_DIM][MPM_MAX_1D];
 
   for (PetscInt k = 0; k < g->dim; k++) {
-    const PetscInt base           = ijk[k] - 3; /* every type touches nodes i-3 .. i+4 at most from cell i */
-    PetscReal      sw[MPM_MAX_1D] = {0}, sdw[MPM_MAX_1D] = {0};
-    PetscInt       lo = MPM_MAX_1D, hi = -1;
-    for (PetscInt half = 0; half < 2; half++)
-      for (PetscInt q = 0; q < 2; q++) {
-        PetscReal wq[MPM_MAX_1D], dwq[MPM_MAX_1D];
-        PetscInt  first, n;
-        shape->ops.basis1d(shape->data, ijk[k] + 0.5 * (half + gp[q]), &first, &n, wq, dwq);
-        for (PetscInt a = 0; a < n; a++) {
-          const PetscInt j = first + a - base;
-          sw[j] += 0.25 * wq[a];
-          sdw[j] += 0.25 * dwq[a];
-          lo = PetscMin(lo, j);
-          hi = PetscMax(hi, j);
-        }
-      }
-    nn[k] = hi - lo + 1;
-    for (PetscInt a = 0; a < nn[k]; a++) {
-      idx[k][a] = base + lo + a;
-      w[k][a]   = sw[lo + a];
-      dw[k][a]  = sdw[lo + a] / g->h[k];
+    const PetscInt i = ijk[k] - shape->cell1d_lo[k];
+    MPMShapeCell   c;
+    if (i < 0 || i >= shape->ncell1d[k]) MPMShapeCell1d(shape, g, k, ijk[k], &c); /* outside the table */
+    else c = shape->cell1d[k][i];
+    nn[k] = c.n;
+    for (PetscInt a = 0; a < c.n; a++) {
+      idx[k][a] = c.idx[a];
+      w[k][a]   = c.w[a];
+      dw[k][a]  = c.dw[a];
+      sg[k][a]  = c.sg[a];
     }
-    MPMShapeFold1d(g, k, nn[k], idx[k], sg[k]);
   }
   MPMShapeTensor(g, nn, idx, w, dw, sg, st);
 }
@@ -119,6 +148,7 @@ PetscErrorCode MPMShapeDestroy(MPMShape *shape)
   PetscFunctionBegin;
   if (!*shape) PetscFunctionReturn(PETSC_SUCCESS);
   if ((*shape)->ops.destroy) PetscCall((*shape)->ops.destroy(*shape));
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) PetscCall(PetscFree((*shape)->cell1d[k]));
   PetscCall(PetscFree(*shape));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
