@@ -1,72 +1,148 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 # SPDX-License-Identifier: BSD-2-Clause
-"""Benchmark figures for docs/performance.md: weak Sod at 1024 cells x 4 points for PIC and FLIP on 1 and 2
-ranks (best of --repeat runs), the -log_view phase breakdown, and the density error convergence table.
+"""Benchmark figures for docs/performance.md: petmpm beside the hand-written reference kernels of ../shared/bench,
+interleaved in one run on the same machine, so that every figure is also a ratio.
 
-usage: bench.py [--build build] [--repeat 3] [--out output/bench]
+usage: bench.py [--build build] [--before OTHER/petmpm] [--repeat 3] [--ranks 1,2] [--quick] [--markdown FILE]
+
+Cases (point-steps per second, median of --repeat runs, each case's runs interleaved with the reference's):
+  sod        weak Sod, 1D, linear, 4 points per cell, 1024 cells          vs  mpm1d sod (the same problem)
+  block8     3D copper block impact (bar_impact_3d.opts), linear, 8 points per cell, USL, about 1e6 points
+             (--quick: 1.3e5), Mie-Gruneisen + Johnson-Cook                vs  mpm3d cell (J2 block, 1e6 points)
+  block8q    the same with quadratic B-splines                              vs  mpm3d_quad
+  bar1       the 3D bar, linear, 1 point per cell, MUSL, 2e5 points           vs  mpm3d cell
+  bar2d      the 2D bar (bar_impact_2d.opts), linear, 1 point per cell, MUSL, 2.5e5 points
+Each case on every rank count of --ranks; with --before, the same runs with another petmpm (the code before a
+change) interleaved too, and the speed-up. The -log_view phase shares of each case on one rank, and the memory
+per point in 3D: the marginal process memory per point between two sizes (PETSc's -memory_view maximum).
 """
 import argparse
-import json
-import math
 import os
 import re
+import statistics
 import subprocess
+import sys
 
-ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-           OMPI_MCA_rmaps_base_oversubscribe="1")
-
-
-def run(exe, out, extra, ranks=1, log=False):
-    rep = os.path.join(out, "report.json")
-    cmd = ([] if ranks == 1 else ["mpiexec", "--bind-to", "core", "-n", str(ranks)]) + [exe, "-options_file", "inputs/sod_weak.opts",
-                                                          "-mpm_output", out, "-mpm_report", rep] + extra + (["-log_view"] if log else [])
-    p = subprocess.run(cmd, capture_output=True, text=True, env=ENV, check=True)
-    return json.load(open(rep)), p.stdout
+SRC = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+REF = os.path.join(os.path.dirname(SRC), "shared", "bench")
+ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMPI_MCA_rmaps_base_oversubscribe="1")
+REFFLAGS = {"mpm1d": ["-DBLOCK"], "mpm3d": ["-DBLOCK"], "mpm3d_quad": ["-DQUAD"]}
 
 
-def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--build", default="build")
-    ap.add_argument("--repeat", type=int, default=3)
-    ap.add_argument("--out", default="output/bench")
-    a = ap.parse_args()
-    exe = os.path.join(a.build, "petmpm")
-    os.makedirs(a.out, exist_ok=True)
+def build_reference(outdir):
+    """Compiles the reference kernels with the flags of their Makefile into outdir (../shared is read-only)."""
+    if not os.path.isdir(REF):
+        return {}
+    os.makedirs(outdir, exist_ok=True)
+    exes = {}
+    for name, flags in REFFLAGS.items():
+        src = os.path.join(REF, "mpm1d.c" if name == "mpm1d" else "mpm3d.c")
+        exe = os.path.join(outdir, name)
+        if not os.path.exists(exe) or os.path.getmtime(exe) < os.path.getmtime(src):
+            subprocess.run(["gcc", "-O3", "-march=native", "-fno-math-errno", "-fopenmp", *flags, src, "-o", exe, "-lm"], check=True)
+        exes[name] = exe
+    return exes
 
-    print("| update | ranks | steps | wall [s] | point-steps/s | per rank | L1 density | L2 density |")
-    print("|---|---|---|---|---|---|---|---|")
-    for upd in ("pic", "flip"):
-        for ranks in (1, 2):
-            best = min((run(exe, a.out, ["-mpm_update_type", upd], ranks)[0] for _ in range(a.repeat)),
-                       key=lambda r: r["wall_seconds"])
-            e = best["errors"]["density"]
-            print(f"| {upd} | {ranks} | {best['steps']} | {best['wall_seconds']:.3f} | {best['particle_steps_per_second']:.3g} | "
-                  f"{best['particle_steps_per_second_per_rank']:.3g} | {e['L1']:.3e} | {e['L2']:.3e} |")
 
-    _, log = run(exe, a.out, [], 1, log=True)
-    print("\n-log_view, FLIP, 1 rank (time loop stage):\n")
-    print("| event | count | time [s] | % of stage |")
-    print("|---|---|---|---|")
-    stage = None
+def run_reference(exe, args):
+    env = dict(ENV, OMP_NUM_THREADS="1")
+    out = subprocess.run([exe, *args], capture_output=True, text=True, env=env, check=True).stdout
+    return float(re.search(r"Mpart-steps/s: wall ([0-9.]+)", out).group(1)) * 1e6
+
+
+def run_petmpm(exe, scene, extra, ranks, outdir, log=False, memory=False):
+    cmd = ([] if ranks == 1 else ["mpiexec", "--bind-to", "core", "-n", str(ranks)]) + [exe, "-options_file", os.path.join(SRC, "inputs", scene),
+                                                                                     "-mpm_output", outdir, *extra]
+    cmd += ["-log_view"] if log else []
+    cmd += ["-memory_view"] if memory else []
+    p = subprocess.run(cmd, capture_output=True, text=True, env=ENV)
+    if p.returncode:
+        raise SystemExit("bench: failed: " + " ".join(cmd) + "\n" + p.stdout[-2000:] + p.stderr[-2000:])
+    m = re.search(r"petmpm \S+: (\d+) points, (\d+) steps .* in ([0-9.]+) s \(([0-9.e+]+) point-steps/s", p.stdout)
+    res = {"points": int(m.group(1)), "steps": int(m.group(2)), "wall": float(m.group(3)), "rate": float(m.group(4)), "log": p.stdout}
+    mm = re.search(r"Maximum \(over computational time\) process memory:\s+total ([0-9.e+]+)", p.stdout)
+    if mm:
+        res["memory"] = float(mm.group(1))
+    return res
+
+
+def phases(log):
+    """(event, share of the time-loop stage in %) of the MPM events, largest first."""
+    out, stage = [], None
     for line in log.splitlines():
         if line.startswith("--- Event Stage"):
             stage = line
-        m = re.match(r"^(MPM\w+|DMSwarmMigrate)\s+(\d+)\s+\S+\s+(\S+)", line)
+        m = re.match(r"^(MPM\w+|DMSwarmMigrate|VecScatterBegin|VecSet|DMLocalToGlobal\w*)\s+(\d+)\s", line)
         if m and stage and "time loop" in stage:
-            fields = line.split()
-            print(f"| {m.group(1)} | {m.group(2)} | {float(m.group(3)):.4f} | {fields[-6]} |")
+            out.append((m.group(1), float(line.split()[-6])))
+    return sorted(out, key=lambda e: -e[1])
 
-    print("\nConvergence, weak Sod, FLIP, 4 points per cell:\n")
-    print("| cells | L1 density | rate | L2 density | rate | shock error [cells] | wall [s] |")
-    print("|---|---|---|---|---|---|---|")
-    prev = None
-    for n in (128, 256, 512, 1024, 2048):
-        r, _ = run(exe, a.out, ["-mpm_cells", str(n)])
-        e = r["errors"]["density"]
-        rates = ("", "") if prev is None else (f"{math.log(prev[0] / e['L1'], 2):.2f}", f"{math.log(prev[1] / e['L2'], 2):.2f}")
-        print(f"| {n} | {e['L1']:.3e} | {rates[0]} | {e['L2']:.3e} | {rates[1]} | {r['shock_position_error_cells']:.2f} | {r['wall_seconds']:.3f} |")
-        prev = (e["L1"], e["L2"])
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--build", default="build")
+    ap.add_argument("--before", default="", help="another petmpm executable to compare with (the code before a change)")
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--ranks", default="1,2")
+    ap.add_argument("--quick", action="store_true", help="smaller 3D block (1.3e5 points) and fewer steps")
+    ap.add_argument("--markdown", default="")
+    ap.add_argument("--out", default=os.path.join("output", "bench"))
+    a = ap.parse_args()
+    exe = os.path.abspath(os.path.join(a.build, "petmpm"))
+    ref = build_reference(os.path.join(a.build, "bench-ref"))
+    ranks = [int(r) for r in a.ranks.split(",")]
+    blk = "25,25,105" if a.quick else "50,50,210"  # the 0.4 x 0.4 x 2.4 bar in a 0.6 x 0.6 x 2.6 box: 8 points per cell
+    cases = [
+        ("sod", "weak Sod 1D, linear, 4 ppc, 1024 cells", "sod_weak.opts", [], "mpm1d", ["sod", "5"]),
+        ("block8", "3D block, linear, 8 ppc, USL, MG + JC", "bar_impact_3d.opts",
+         ["-mpm_cells", blk, "-mpm_ppc", "2", "-mpm_scheme", "usl", "-ts_max_steps", "5" if a.quick else "10"], "mpm3d", ["cell", "10"]),
+        ("block8q", "3D block, bspline2, 8 ppc, USL, MG + JC", "bar_impact_3d.opts",
+         ["-mpm_cells", blk, "-mpm_ppc", "2", "-mpm_scheme", "usl", "-mpm_shape_type", "bspline2", "-ts_max_steps", "3" if a.quick else "6"], "mpm3d_quad", ["cell", "6"]),
+        ("bar1", "3D bar, linear, 1 ppc, MUSL, MG + JC", "bar_impact_3d.opts", ["-mpm_cells", "36,36,156", "-ts_max_steps", "20"], "mpm3d", ["cell", "10"]),
+        ("bar2d", "2D bar, linear, 1 ppc, MUSL, MG + JC", "bar_impact_2d.opts", ["-mpm_cells", "600,2600", "-ts_max_steps", "20"], None, None),
+    ]
+    lines = []
+    say = lambda s="": (print(s, flush=True), lines.append(s))
+    say(f"Point-steps per second, median of {a.repeat} interleaved runs; ratio = petmpm / reference kernel (../shared/bench)"
+        + (f"; speed-up = petmpm / before ({a.before})" if a.before else "") + ".")
+    say()
+    say("| case | what | ranks | points | petmpm | reference | ratio | " + ("before | speed-up |" if a.before else ""))
+    say("|---|---|---|---|---|---|---|" + ("---|---|" if a.before else ""))
+    logs = {}
+    for key, what, scene, extra, refname, refargs in cases:
+        for r in ranks:
+            rates, refs, befores, pts = [], [], [], 0
+            for _ in range(a.repeat):
+                res = run_petmpm(exe, scene, extra, r, os.path.join(a.out, key))
+                rates.append(res["rate"])
+                pts = res["points"]
+                if a.before:
+                    befores.append(run_petmpm(a.before, scene, extra, r, os.path.join(a.out, key + "_before"))["rate"])
+                if refname in ref and r == 1:
+                    refs.append(run_reference(ref[refname], refargs))
+            pm = statistics.median(rates)
+            rm = statistics.median(refs) if refs else None
+            row = f"| {key} | {what} | {r} | {pts} | {pm:.3g} | " + (f"{rm:.3g} | {pm / rm:.3f} |" if rm else "- | - |")
+            if a.before:
+                bm = statistics.median(befores)
+                row += f" {bm:.3g} | {pm / bm:.2f} |"
+            say(row)
+        logs[key] = run_petmpm(exe, scene, extra, 1, os.path.join(a.out, key), log=True)["log"]
+    say()
+    say("-log_view, one rank, share of the time-loop stage [%]:")
+    say()
+    for key, *_ in cases:
+        say(f"- {key}: " + ", ".join(f"{e} {s:.0f}" for e, s in phases(logs[key]) if s >= 1))
+    m1 = run_petmpm(exe, "bar_impact_3d.opts", ["-mpm_cells", "24,24,104", "-mpm_ppc", "2", "-ts_max_steps", "2"], 1, os.path.join(a.out, "mem"), memory=True)
+    m2 = run_petmpm(exe, "bar_impact_3d.opts", ["-mpm_cells", "48,48,208", "-mpm_ppc", "2", "-ts_max_steps", "2"], 1, os.path.join(a.out, "mem"), memory=True)
+    say()
+    say(f"Memory in 3D (8 ppc, -memory_view maximum): {m1['memory'] / 1e6:.0f} MB with {m1['points']} points, {m2['memory'] / 1e6:.0f} MB with "
+        f"{m2['points']} points: {(m2['memory'] - m1['memory']) / (m2['points'] - m1['points']):.0f} bytes per additional point (grid included).")
+    if a.markdown:
+        with open(a.markdown, "w") as f:
+            f.write("\n".join(lines) + "\n")
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())
