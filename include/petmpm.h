@@ -27,6 +27,10 @@ PETSC_EXTERN const char *const MPMStressIntegrations[];
 typedef enum { MPM_ENERGY_COMPATIBLE, MPM_ENERGY_MIDPOINT, MPM_ENERGY_CONSERVATIVE } MPMEnergyUpdate;
 PETSC_EXTERN const char *const MPMEnergyUpdates[];
 
+/* Transfer kernels: the shape family's specialised kernels where it has them, or the generic reference. */
+typedef enum { MPM_TRANSFER_SPECIALISED, MPM_TRANSFER_GENERIC } MPMTransferKernel;
+PETSC_EXTERN const char *const MPMTransferKernelTypes[];
+
 typedef enum { MPM_BC_WALL, MPM_BC_FREE } MPMBoundaryType;
 PETSC_EXTERN const char *const MPMBoundaryTypes[];
 
@@ -75,6 +79,8 @@ PETSC_EXTERN PetscErrorCode MPMDestroy(MPM *);
 PETSC_EXTERN PetscErrorCode MPMShapeRegister(const char[], PetscErrorCode (*)(MPMShape));
 PETSC_EXTERN PetscErrorCode MPMShapeCreate(MPI_Comm, MPMShape *);
 PETSC_EXTERN PetscErrorCode MPMShapeSetType(MPMShape, MPMShapeType);
+PETSC_EXTERN PetscErrorCode MPMShapeGetType(MPMShape, MPMShapeType *);
+PETSC_EXTERN PetscErrorCode MPMShapeSetOptionsPrefix(MPMShape, const char[]);
 PETSC_EXTERN PetscErrorCode MPMShapeSetFromOptions(MPMShape);
 PETSC_EXTERN PetscErrorCode MPMShapeView(MPMShape, PetscViewer);
 PETSC_EXTERN PetscErrorCode MPMShapeGetGhostWidth(MPMShape, PetscInt *);
@@ -85,6 +91,7 @@ PETSC_EXTERN PetscErrorCode MPMEOSRegister(const char[], PetscErrorCode (*)(MPME
 PETSC_EXTERN PetscErrorCode MPMEOSCreate(MPI_Comm, MPMEOS *);
 PETSC_EXTERN PetscErrorCode MPMEOSSetOptionsPrefix(MPMEOS, const char[]);
 PETSC_EXTERN PetscErrorCode MPMEOSSetType(MPMEOS, MPMEOSType);
+PETSC_EXTERN PetscErrorCode MPMEOSGetType(MPMEOS, MPMEOSType *);
 PETSC_EXTERN PetscErrorCode MPMEOSSetFromOptions(MPMEOS);
 PETSC_EXTERN PetscErrorCode MPMEOSView(MPMEOS, PetscViewer);
 PETSC_EXTERN PetscErrorCode MPMEOSHasPressure(MPMEOS, PetscBool *);
@@ -99,6 +106,7 @@ PETSC_EXTERN PetscErrorCode MPMStrengthRegister(const char[], PetscErrorCode (*)
 PETSC_EXTERN PetscErrorCode MPMStrengthCreate(MPI_Comm, MPMStrength *);
 PETSC_EXTERN PetscErrorCode MPMStrengthSetOptionsPrefix(MPMStrength, const char[]);
 PETSC_EXTERN PetscErrorCode MPMStrengthSetType(MPMStrength, MPMStrengthType);
+PETSC_EXTERN PetscErrorCode MPMStrengthGetType(MPMStrength, MPMStrengthType *);
 PETSC_EXTERN PetscErrorCode MPMStrengthSetFromOptions(MPMStrength);
 PETSC_EXTERN PetscErrorCode MPMStrengthIsActive(MPMStrength, PetscBool *);
 PETSC_EXTERN PetscErrorCode MPMStrengthView(MPMStrength, PetscViewer);
@@ -112,6 +120,8 @@ PETSC_EXTERN PetscErrorCode MPMStrengthFlowStress(MPMStrength, PetscReal, PetscR
 PETSC_EXTERN PetscErrorCode MPMViscosityRegister(const char[], PetscErrorCode (*)(MPMViscosity));
 PETSC_EXTERN PetscErrorCode MPMViscosityCreate(MPI_Comm, MPMViscosity *);
 PETSC_EXTERN PetscErrorCode MPMViscositySetType(MPMViscosity, MPMViscosityType);
+PETSC_EXTERN PetscErrorCode MPMViscosityGetType(MPMViscosity, MPMViscosityType *);
+PETSC_EXTERN PetscErrorCode MPMViscositySetOptionsPrefix(MPMViscosity, const char[]);
 PETSC_EXTERN PetscErrorCode MPMViscositySetFromOptions(MPMViscosity);
 PETSC_EXTERN PetscErrorCode MPMViscosityView(MPMViscosity, PetscViewer);
 PETSC_EXTERN PetscErrorCode MPMViscosityIsActive(MPMViscosity, PetscBool *);
@@ -121,6 +131,8 @@ PETSC_EXTERN PetscErrorCode MPMViscosityDestroy(MPMViscosity *);
 PETSC_EXTERN PetscErrorCode MPMUpdateRegister(const char[], PetscErrorCode (*)(MPMUpdate));
 PETSC_EXTERN PetscErrorCode MPMUpdateCreate(MPI_Comm, MPMUpdate *);
 PETSC_EXTERN PetscErrorCode MPMUpdateSetType(MPMUpdate, MPMUpdateType);
+PETSC_EXTERN PetscErrorCode MPMUpdateGetType(MPMUpdate, MPMUpdateType *);
+PETSC_EXTERN PetscErrorCode MPMUpdateSetOptionsPrefix(MPMUpdate, const char[]);
 PETSC_EXTERN PetscErrorCode MPMUpdateSetFromOptions(MPMUpdate);
 PETSC_EXTERN PetscErrorCode MPMUpdateView(MPMUpdate, PetscViewer);
 PETSC_EXTERN PetscErrorCode MPMUpdateGetFLIPFraction(MPMUpdate, PetscReal *);
@@ -130,6 +142,8 @@ PETSC_EXTERN PetscErrorCode MPMUpdateDestroy(MPMUpdate *);
 PETSC_EXTERN PetscErrorCode MPMExactRegister(const char[], PetscErrorCode (*)(MPMExact));
 PETSC_EXTERN PetscErrorCode MPMExactCreate(MPI_Comm, MPMExact *);
 PETSC_EXTERN PetscErrorCode MPMExactSetType(MPMExact, MPMExactType);
+PETSC_EXTERN PetscErrorCode MPMExactGetType(MPMExact, MPMExactType *);
+PETSC_EXTERN PetscErrorCode MPMExactSetOptionsPrefix(MPMExact, const char[]);
 PETSC_EXTERN PetscErrorCode MPMExactSetFromOptions(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMExactView(MPMExact, PetscViewer);
 PETSC_EXTERN PetscErrorCode MPMExactDestroy(MPMExact *);

@@ -87,3 +87,119 @@ PetscErrorCode MPMOptionsDimEnums(PetscOptionItems *PetscOptionsObject, const ch
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) v[k] = vals[n == 1 ? 0 : PetscMin(k, n - 1)];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+/* ------------------------------------------------------------------ the class base
+   Every class object starts with MPM_CLASS_HEADER and its ops table with MPM_CLASS_OPS, so these functions,
+   written once, serve them all; the class files keep only their public names and their own operations. */
+
+PetscErrorCode MPMObjectCreate(MPI_Comm comm, const MPMClass *cls, size_t size, void *newobj)
+{
+  MPMObject obj;
+
+  PetscFunctionBegin;
+  PetscCall(MPMInitializePackage());
+  PetscCall(PetscMalloc(size, &obj));
+  PetscCall(PetscMemzero(obj, size));
+  obj->comm                = comm;
+  obj->cls                 = cls;
+  *(MPMObject *)newobj     = obj;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The option that names the type, -<prefix><key>_type, for messages. */
+static PetscErrorCode MPMObjectTypeOption(MPMObject obj, char option[], size_t len)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscSNPrintf(option, len, "-%s%s_type", obj->prefix ? obj->prefix : "", obj->cls->key));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Destroys the old type's data and ops (nothing when the type is unchanged) and creates the new one. */
+PetscErrorCode MPMObjectSetType(void *o, const char type[])
+{
+  MPMObject obj = (MPMObject)o;
+  PetscErrorCode (*create)(void *);
+  char      option[256];
+  PetscBool same;
+
+  PetscFunctionBegin;
+  PetscCall(PetscStrcmp(obj->type_name, type, &same));
+  if (same) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MPMObjectTypeOption(obj, option, sizeof(option)));
+  PetscCall(MPMClassSetType(*obj->cls->list, obj->cls->name, option, type, &create));
+  if (obj->ops.destroy) PetscCall(obj->ops.destroy(obj));
+  PetscCall(PetscMemzero(&obj->ops, obj->cls->opssize));
+  obj->data = NULL;
+  if (obj->cls->reset) PetscCall(obj->cls->reset(obj));
+  PetscCall(PetscStrncpy(obj->type_name, type, sizeof(obj->type_name)));
+  PetscCall(create(obj));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMObjectGetType(void *o, const char **type)
+{
+  PetscFunctionBegin;
+  *type = ((MPMObject)o)->type_name;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMObjectSetOptionsPrefix(void *o, const char prefix[])
+{
+  MPMObject obj = (MPMObject)o;
+
+  PetscFunctionBegin;
+  PetscCall(PetscFree(obj->prefix));
+  PetscCall(PetscStrallocpy(prefix, &obj->prefix));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* One options block under the object's prefix: the type (-<prefix><key>_type; the class default where none is
+   set, an error naming the option where the class has none), the type's own options, then the class's. */
+PetscErrorCode MPMObjectSetFromOptions(void *o)
+{
+  MPMObject obj = (MPMObject)o;
+  char      type[MPM_MAX_NAME], option[MPM_MAX_NAME + 8], valid[1024];
+  PetscBool set;
+
+  PetscFunctionBegin;
+  if (!obj->type_name[0] && obj->cls->deftype) PetscCall(MPMObjectSetType(obj, obj->cls->deftype));
+  PetscCall(PetscSNPrintf(option, sizeof(option), "-%s_type", obj->cls->key));
+  PetscOptionsBegin(obj->comm, obj->prefix, obj->cls->title, obj->cls->manpage);
+  PetscCall(PetscOptionsFList(option, obj->cls->help, "", *obj->cls->list, obj->type_name, type, sizeof(type), &set));
+  if (set) PetscCall(MPMObjectSetType(obj, type));
+  if (!obj->type_name[0]) {
+    PetscCall(MPMObjectTypeOption(obj, option, sizeof(option)));
+    PetscCall(MPMClassTypeList(*obj->cls->list, valid, sizeof(valid)));
+    SETERRQ(obj->comm, PETSC_ERR_USER_INPUT, "%s needs a %s: set %s (valid: %s)", obj->prefix ? obj->prefix : "MPM", obj->cls->name, option, valid);
+  }
+  if (obj->ops.setfromoptions) PetscCall(obj->ops.setfromoptions(obj, PetscOptionsObject));
+  if (obj->cls->setfromoptions) PetscCall(obj->cls->setfromoptions(obj, PetscOptionsObject));
+  PetscOptionsEnd();
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* "<title>: <type>", the class's lines, then the type's, indented. */
+PetscErrorCode MPMObjectView(void *o, PetscViewer viewer)
+{
+  MPMObject obj = (MPMObject)o;
+
+  PetscFunctionBegin;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "%s: %s\n", obj->cls->title, obj->type_name));
+  PetscCall(PetscViewerASCIIPushTab(viewer));
+  if (obj->cls->view) PetscCall(obj->cls->view(obj, viewer));
+  if (obj->ops.view) PetscCall(obj->ops.view(obj, viewer));
+  PetscCall(PetscViewerASCIIPopTab(viewer));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMObjectDestroy(void *o)
+{
+  MPMObject *obj = (MPMObject *)o;
+
+  PetscFunctionBegin;
+  if (!*obj) PetscFunctionReturn(PETSC_SUCCESS);
+  if ((*obj)->ops.destroy) PetscCall((*obj)->ops.destroy(*obj));
+  PetscCall(PetscFree((*obj)->prefix));
+  PetscCall(PetscFree(*obj));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -7,13 +7,51 @@
 #define MPM_KELVIN_PER_EV 11604.518 /* temperatures are in eV; material tables quote kelvin */
 #define MPM_MAX_STENCIL 216         /* nodes a point can touch: 6^3 covers every planned shape type */
 
-/* Generic class header, in the PETSc pattern: a type name, an options prefix and the type's data. */
+/* What a class is: its name, its options and its registry. One instance per class (MPMShapeClass, ...); the
+   operations every class shares (create, set type, get type, options prefix, set-from-options, view, destroy)
+   are written once against it in src/class.c. */
+typedef struct {
+  const char         *name;    /* for messages: "shape function"                                           */
+  const char         *key;     /* its options are -<prefix><key>_type and -<prefix><key>_<type>_...        */
+  const char         *title;   /* options block title (-help) and view heading: "Shape functions"          */
+  const char         *manpage; /* "MPMShape"                                                                */
+  const char         *help;    /* help of the type option                                                   */
+  const char         *deftype; /* type set by SetFromOptions when none is set; NULL: the user must set one  */
+  PetscFunctionList  *list;    /* the registered types                                                      */
+  size_t              opssize; /* bytes of the class's ops table, cleared when the type changes             */
+  PetscErrorCode (*reset)(void *);                              /* clears the class's own fields on a change of type, may be NULL */
+  PetscErrorCode (*setfromoptions)(void *, PetscOptionItems *); /* class-level options after the type's, may be NULL              */
+  PetscErrorCode (*view)(void *, PetscViewer);                  /* class-level view lines before the type's, may be NULL          */
+} MPMClass;
+
+/* Generic class header, in the PETSc pattern: the class, a type name, an options prefix, the type's data and an ops
+   table that starts with MPM_CLASS_OPS, so that src/class.c can reach every object as an MPMObject. */
 #define MPM_CLASS_HEADER(Ops)       \
-  MPI_Comm comm;                    \
-  char     type_name[MPM_MAX_NAME]; \
-  char    *prefix;                  \
-  Ops      ops;                     \
-  void    *data
+  MPI_Comm        comm;             \
+  const MPMClass *cls;              \
+  char            type_name[MPM_MAX_NAME]; \
+  char           *prefix;           \
+  void           *data;             \
+  Ops             ops
+#define MPM_CLASS_OPS(Obj) \
+  PetscErrorCode (*setfromoptions)(Obj, PetscOptionItems *); \
+  PetscErrorCode (*view)(Obj, PetscViewer); \
+  PetscErrorCode (*destroy)(Obj)
+
+typedef struct {
+  MPM_CLASS_OPS(void *);
+} MPMObjectOps;
+typedef struct {
+  MPM_CLASS_HEADER(MPMObjectOps);
+} *MPMObject;
+
+PETSC_INTERN PetscErrorCode MPMObjectCreate(MPI_Comm, const MPMClass *, size_t, void *);
+PETSC_INTERN PetscErrorCode MPMObjectSetType(void *, const char[]);
+PETSC_INTERN PetscErrorCode MPMObjectGetType(void *, const char **);
+PETSC_INTERN PetscErrorCode MPMObjectSetOptionsPrefix(void *, const char[]);
+PETSC_INTERN PetscErrorCode MPMObjectSetFromOptions(void *);
+PETSC_INTERN PetscErrorCode MPMObjectView(void *, PetscViewer);
+PETSC_INTERN PetscErrorCode MPMObjectDestroy(void *);
 
 /* ------------------------------------------------------------------ grid */
 typedef struct {
@@ -109,14 +147,12 @@ typedef struct {
 
 
 typedef struct {
+  MPM_CLASS_OPS(MPMShape);
   PetscInt (*support)(void *);                                                                   /* ghost width the type needs [cells] */
   void (*basis1d)(void *, PetscReal, PetscInt *, PetscInt *, PetscReal[], PetscReal[]);          /* xi = (x-lo)/h -> first node (may lie outside the grid), count, N, dN/dxi */
   void (*evaluate)(void *, const MPMGrid *, const PetscReal[], const PetscReal[], MPMStencil *); /* (x, F) -> stencil, for types that are not tensor products */
   PetscBool (*admissible)(void *, const MPMGrid *, const PetscReal[]);                           /* can the type evaluate a point with deformation gradient F? */
   PetscErrorCode (*setup)(MPMShape, const MPMGrid *, PetscInt);                                  /* grid and points per cell per direction */
-  PetscErrorCode (*setfromoptions)(MPMShape, PetscOptionItems *);
-  PetscErrorCode (*view)(MPMShape, PetscViewer);
-  PetscErrorCode (*destroy)(MPMShape);
 } MPMShapeOps;
 struct _p_MPMShape {
   MPM_CLASS_HEADER(MPMShapeOps);
@@ -128,12 +164,10 @@ struct _p_MPMShape {
 };
 
 typedef struct {
+  MPM_CLASS_OPS(MPMEOS);
   void (*pressure)(void *, PetscReal, PetscReal, PetscReal *, PetscReal *); /* (rho, e) -> p, c^2     */
   void (*temperature)(void *, PetscReal, PetscReal, PetscReal *);           /* (rho, e) -> T          */
   void (*energy)(void *, PetscReal, PetscReal, PetscReal *);                /* (rho, T) -> e          */
-  PetscErrorCode (*setfromoptions)(MPMEOS, PetscOptionItems *);
-  PetscErrorCode (*view)(MPMEOS, PetscViewer);
-  PetscErrorCode (*destroy)(MPMEOS);
 } MPMEOSOps;
 struct _p_MPMEOS {
   MPM_CLASS_HEADER(MPMEOSOps);
@@ -141,11 +175,9 @@ struct _p_MPMEOS {
 };
 
 typedef struct {
+  MPM_CLASS_OPS(MPMStrength);
   void (*stress)(void *, PetscInt, PetscReal, const PetscReal[], const PetscReal[], PetscReal, PetscReal, PetscReal[], PetscReal *, PetscReal *); /* (d, dt, L, F, rho, T) -> s (row-major d x d) [dyn/cm^2] and eps_p [-] (in/out), c^2 [cm^2/s^2] */
   PetscReal (*flow)(void *, PetscReal, PetscReal, PetscReal);                                                                                     /* (eps_p, deps_p/dt [1/s], T [eV]) -> yield stress [dyn/cm^2]; NULL: never yields */
-  PetscErrorCode (*setfromoptions)(MPMStrength, PetscOptionItems *);
-  PetscErrorCode (*view)(MPMStrength, PetscViewer);
-  PetscErrorCode (*destroy)(MPMStrength);
 } MPMStrengthOps;
 struct _p_MPMStrength {
   MPM_CLASS_HEADER(MPMStrengthOps);
@@ -154,10 +186,8 @@ struct _p_MPMStrength {
 };
 
 typedef struct {
+  MPM_CLASS_OPS(MPMViscosity);
   PetscErrorCode (*apply)(MPMViscosity, MPM, PetscReal); /* fills the particle field q [dyn/cm^2] */
-  PetscErrorCode (*setfromoptions)(MPMViscosity, PetscOptionItems *);
-  PetscErrorCode (*view)(MPMViscosity, PetscViewer);
-  PetscErrorCode (*destroy)(MPMViscosity);
 } MPMViscosityOps;
 struct _p_MPMViscosity {
   MPM_CLASS_HEADER(MPMViscosityOps);
@@ -165,9 +195,7 @@ struct _p_MPMViscosity {
 };
 
 typedef struct {
-  PetscErrorCode (*setfromoptions)(MPMUpdate, PetscOptionItems *);
-  PetscErrorCode (*view)(MPMUpdate, PetscViewer);
-  PetscErrorCode (*destroy)(MPMUpdate);
+  MPM_CLASS_OPS(MPMUpdate);
 } MPMUpdateOps;
 struct _p_MPMUpdate {
   MPM_CLASS_HEADER(MPMUpdateOps);
@@ -176,15 +204,13 @@ struct _p_MPMUpdate {
 
 /* An exact solution knows the fields at a point and the scene's named scalar checks. */
 typedef struct {
+  MPM_CLASS_OPS(MPMExact);
   PetscErrorCode (*setup)(MPMExact, MPM);
   void (*evaluate)(void *, PetscReal, const PetscReal[], const PetscReal[], PetscReal *, PetscReal[], PetscReal *, PetscReal *); /* (t, x, X) -> rho, v, p, T */
   void (*initial)(void *, const PetscReal[], PetscReal[], PetscReal[], PetscReal[]);                                             /* X -> x, v, F at t = 0 (points that do not start at rest on their lattice site) */
   void (*bodyforce)(void *, PetscReal, const PetscReal[], const PetscReal[], PetscReal[]);                                       /* (t, X, F) -> b [cm/s^2], applied as m_p b */
   void (*displacement)(void *, PetscReal, const PetscReal[], PetscReal[]);                                                       /* (t, X) -> u [cm]                      */
   PetscErrorCode (*checks)(MPMExact, MPM);
-  PetscErrorCode (*setfromoptions)(MPMExact, PetscOptionItems *);
-  PetscErrorCode (*view)(MPMExact, PetscViewer);
-  PetscErrorCode (*destroy)(MPMExact);
 } MPMExactOps;
 struct _p_MPMExact {
   MPM_CLASS_HEADER(MPMExactOps);

@@ -5,6 +5,15 @@
 
 static PetscFunctionList MPMEOSList = NULL;
 
+static PetscErrorCode MPMEOSReset(void *obj)
+{
+  PetscFunctionBegin;
+  ((MPMEOS)obj)->pressureless = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static const MPMClass MPMEOSClass = {"equation of state", "eos", "Equation of state", "MPMEOS", "Equation of state p(rho, e)", NULL, &MPMEOSList, sizeof(MPMEOSOps), MPMEOSReset, NULL, NULL};
+
 PetscErrorCode MPMEOSRegister(const char name[], PetscErrorCode (*create)(MPMEOS))
 {
   PetscFunctionBegin;
@@ -15,52 +24,36 @@ PetscErrorCode MPMEOSRegister(const char name[], PetscErrorCode (*create)(MPMEOS
 PetscErrorCode MPMEOSCreate(MPI_Comm comm, MPMEOS *eos)
 {
   PetscFunctionBegin;
-  PetscCall(MPMInitializePackage());
-  PetscCall(PetscNew(eos));
-  (*eos)->comm = comm;
+  PetscCall(MPMObjectCreate(comm, &MPMEOSClass, sizeof(struct _p_MPMEOS), eos));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+
+PetscErrorCode MPMEOSSetType(MPMEOS eos, MPMEOSType type)
+{
+  PetscFunctionBegin;
+  PetscCall(MPMObjectSetType(eos, type));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMEOSGetType(MPMEOS eos, MPMEOSType *type)
+{
+  PetscFunctionBegin;
+  PetscCall(MPMObjectGetType(eos, type));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode MPMEOSSetOptionsPrefix(MPMEOS eos, const char prefix[])
 {
   PetscFunctionBegin;
-  PetscCall(PetscFree(eos->prefix));
-  PetscCall(PetscStrallocpy(prefix, &eos->prefix));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMEOSSetType(MPMEOS eos, MPMEOSType type)
-{
-  PetscErrorCode (*create)(MPMEOS);
-  char option[256];
-
-  PetscFunctionBegin;
-  PetscCall(PetscSNPrintf(option, sizeof(option), "-%seos_type", eos->prefix ? eos->prefix : ""));
-  PetscCall(MPMClassSetType(MPMEOSList, "equation of state", option, type, (PetscErrorCode(**)(void *)) & create));
-  if (eos->ops.destroy) PetscCall(eos->ops.destroy(eos));
-  PetscCall(PetscMemzero(&eos->ops, sizeof(eos->ops)));
-  eos->data         = NULL;
-  eos->pressureless = PETSC_FALSE;
-  PetscCall(PetscStrncpy(eos->type_name, type, sizeof(eos->type_name)));
-  PetscCall(create(eos));
+  PetscCall(MPMObjectSetOptionsPrefix(eos, prefix));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode MPMEOSSetFromOptions(MPMEOS eos)
 {
-  char      type[MPM_MAX_NAME], valid[1024];
-  PetscBool set;
-
   PetscFunctionBegin;
-  PetscOptionsBegin(eos->comm, eos->prefix, "Equation of state", "MPMEOS");
-  PetscCall(PetscOptionsFList("-eos_type", "Equation of state p(rho, e)", "MPMEOSSetType", MPMEOSList, eos->type_name, type, sizeof(type), &set));
-  if (set) PetscCall(MPMEOSSetType(eos, type));
-  if (!eos->ops.pressure) {
-    PetscCall(MPMClassTypeList(MPMEOSList, valid, sizeof(valid)));
-    SETERRQ(eos->comm, PETSC_ERR_USER_INPUT, "Material needs an equation of state: set -%seos_type (valid: %s)", eos->prefix ? eos->prefix : "", valid);
-  }
-  if (eos->ops.setfromoptions) PetscCall(eos->ops.setfromoptions(eos, PetscOptionsObject));
-  PetscOptionsEnd();
+  PetscCall(MPMObjectSetFromOptions(eos));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -75,22 +68,14 @@ PetscErrorCode MPMEOSHasPressure(MPMEOS eos, PetscBool *has)
 PetscErrorCode MPMEOSView(MPMEOS eos, PetscViewer viewer)
 {
   PetscFunctionBegin;
-  PetscCall(PetscViewerASCIIPrintf(viewer, "EOS: %s\n", eos->type_name));
-  if (eos->ops.view) {
-    PetscCall(PetscViewerASCIIPushTab(viewer));
-    PetscCall(eos->ops.view(eos, viewer));
-    PetscCall(PetscViewerASCIIPopTab(viewer));
-  }
+  PetscCall(MPMObjectView(eos, viewer));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode MPMEOSDestroy(MPMEOS *eos)
 {
   PetscFunctionBegin;
-  if (!*eos) PetscFunctionReturn(PETSC_SUCCESS);
-  if ((*eos)->ops.destroy) PetscCall((*eos)->ops.destroy(*eos));
-  PetscCall(PetscFree((*eos)->prefix));
-  PetscCall(PetscFree(*eos));
+  PetscCall(MPMObjectDestroy(eos));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

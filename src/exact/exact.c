@@ -5,6 +5,21 @@
 
 static PetscFunctionList MPMExactList = NULL;
 
+/* Class-level option, read after the type's: where the error norms are taken. */
+static PetscErrorCode MPMExactSetFromOptionsClass(void *obj, PetscOptionItems *PetscOptionsObject)
+{
+  MPMExact  exact = (MPMExact)obj;
+  PetscInt  n     = 2;
+  PetscBool set;
+
+  PetscFunctionBegin;
+  PetscCall(PetscOptionsRealArray("-exact_window", "Error norms only for points with lo < x < hi [cm] (waves from the domain ends never reach there)", "", exact->window, &n, &set));
+  PetscCheck(!set || (n == 2 && exact->window[0] < exact->window[1]), exact->comm, PETSC_ERR_USER_INPUT, "-%sexact_window needs two values lo,hi with lo < hi", exact->prefix ? exact->prefix : "");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static const MPMClass MPMExactClass = {"exact solution", "exact", "Exact solution for the self-check", "MPMExact", "Exact solution of the scene", MPMEXACTNONE, &MPMExactList, sizeof(MPMExactOps), NULL, MPMExactSetFromOptionsClass, NULL};
+
 PetscErrorCode MPMExactRegister(const char name[], PetscErrorCode (*create)(MPMExact))
 {
   PetscFunctionBegin;
@@ -15,9 +30,8 @@ PetscErrorCode MPMExactRegister(const char name[], PetscErrorCode (*create)(MPME
 PetscErrorCode MPMExactCreate(MPI_Comm comm, MPMExact *exact)
 {
   PetscFunctionBegin;
-  PetscCall(MPMInitializePackage());
-  PetscCall(PetscNew(exact));
-  (*exact)->comm      = comm;
+  PetscCall(MPMObjectCreate(comm, &MPMExactClass, sizeof(struct _p_MPMExact), exact));
+  PetscCall(MPMObjectSetOptionsPrefix(*exact, "mpm_"));
   (*exact)->window[0] = PETSC_MIN_REAL;
   (*exact)->window[1] = PETSC_MAX_REAL;
   PetscCall(MPMExactSetType(*exact, MPMEXACTNONE));
@@ -26,46 +40,36 @@ PetscErrorCode MPMExactCreate(MPI_Comm comm, MPMExact *exact)
 
 PetscErrorCode MPMExactSetType(MPMExact exact, MPMExactType type)
 {
-  PetscErrorCode (*create)(MPMExact);
-
   PetscFunctionBegin;
-  PetscCall(MPMClassSetType(MPMExactList, "exact solution", "-mpm_exact_type", type, (PetscErrorCode(**)(void *)) & create));
-  if (exact->ops.destroy) PetscCall(exact->ops.destroy(exact));
-  PetscCall(PetscMemzero(&exact->ops, sizeof(exact->ops)));
-  exact->data = NULL;
-  PetscCall(PetscStrncpy(exact->type_name, type, sizeof(exact->type_name)));
-  PetscCall(create(exact));
+  PetscCall(MPMObjectSetType(exact, type));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMExactGetType(MPMExact exact, MPMExactType *type)
+{
+  PetscFunctionBegin;
+  PetscCall(MPMObjectGetType(exact, type));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMExactSetOptionsPrefix(MPMExact exact, const char prefix[])
+{
+  PetscFunctionBegin;
+  PetscCall(MPMObjectSetOptionsPrefix(exact, prefix));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode MPMExactSetFromOptions(MPMExact exact)
 {
-  char      type[MPM_MAX_NAME];
-  PetscBool set;
-
   PetscFunctionBegin;
-  PetscOptionsBegin(exact->comm, NULL, "Exact solution for the self-check", "MPMExact");
-  PetscCall(PetscOptionsFList("-mpm_exact_type", "Exact solution of the scene", "MPMExactSetType", MPMExactList, exact->type_name, type, sizeof(type), &set));
-  if (set) PetscCall(MPMExactSetType(exact, type));
-  {
-    PetscInt n = 2;
-    PetscCall(PetscOptionsRealArray("-mpm_exact_window", "Error norms only for points with lo < x < hi [cm] (waves from the domain ends never reach there)", "", exact->window, &n, &set));
-    PetscCheck(!set || (n == 2 && exact->window[0] < exact->window[1]), exact->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_window needs two values lo,hi with lo < hi");
-  }
-  if (exact->ops.setfromoptions) PetscCall(exact->ops.setfromoptions(exact, PetscOptionsObject));
-  PetscOptionsEnd();
+  PetscCall(MPMObjectSetFromOptions(exact));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode MPMExactView(MPMExact exact, PetscViewer viewer)
 {
   PetscFunctionBegin;
-  PetscCall(PetscViewerASCIIPrintf(viewer, "Exact solution: %s\n", exact->type_name));
-  if (exact->ops.view) {
-    PetscCall(PetscViewerASCIIPushTab(viewer));
-    PetscCall(exact->ops.view(exact, viewer));
-    PetscCall(PetscViewerASCIIPopTab(viewer));
-  }
+  PetscCall(MPMObjectView(exact, viewer));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -134,8 +138,6 @@ PetscErrorCode MPMExactComputeChecks(MPMExact exact, MPM mpm)
 PetscErrorCode MPMExactDestroy(MPMExact *exact)
 {
   PetscFunctionBegin;
-  if (!*exact) PetscFunctionReturn(PETSC_SUCCESS);
-  if ((*exact)->ops.destroy) PetscCall((*exact)->ops.destroy(*exact));
-  PetscCall(PetscFree(*exact));
+  PetscCall(MPMObjectDestroy(exact));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

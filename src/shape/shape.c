@@ -5,6 +5,27 @@
 
 static PetscFunctionList MPMShapeList = NULL;
 
+static PetscErrorCode MPMShapeReset(void *obj)
+{
+  MPMShape shape = (MPMShape)obj;
+
+  PetscFunctionBegin;
+  shape->needs_F = PETSC_FALSE;
+  shape->kernels = NULL;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMShapeViewClass(void *obj, PetscViewer viewer)
+{
+  MPMShape shape = (MPMShape)obj;
+
+  PetscFunctionBegin;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "ghost width %" PetscInt_FMT " cells, %s transfer kernels\n", shape->ops.support(shape->data), shape->kernels ? "specialised" : "generic"));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static const MPMClass MPMShapeClass = {"shape function", "shape", "Shape functions", "MPMShape", "Shape function N_I(x)", MPMSHAPELINEAR, &MPMShapeList, sizeof(MPMShapeOps), MPMShapeReset, NULL, MPMShapeViewClass};
+
 PetscErrorCode MPMShapeRegister(const char name[], PetscErrorCode (*create)(MPMShape))
 {
   PetscFunctionBegin;
@@ -15,40 +36,37 @@ PetscErrorCode MPMShapeRegister(const char name[], PetscErrorCode (*create)(MPMS
 PetscErrorCode MPMShapeCreate(MPI_Comm comm, MPMShape *shape)
 {
   PetscFunctionBegin;
-  PetscCall(MPMInitializePackage());
-  PetscCall(PetscNew(shape));
-  (*shape)->comm = comm;
+  PetscCall(MPMObjectCreate(comm, &MPMShapeClass, sizeof(struct _p_MPMShape), shape));
+  PetscCall(MPMObjectSetOptionsPrefix(*shape, "mpm_"));
   PetscCall(MPMShapeSetType(*shape, MPMSHAPELINEAR));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode MPMShapeSetType(MPMShape shape, MPMShapeType type)
 {
-  PetscErrorCode (*create)(MPMShape);
-
   PetscFunctionBegin;
-  PetscCall(MPMClassSetType(MPMShapeList, "shape function", "-mpm_shape_type", type, (PetscErrorCode(**)(void *)) & create));
-  if (shape->ops.destroy) PetscCall(shape->ops.destroy(shape));
-  PetscCall(PetscMemzero(&shape->ops, sizeof(shape->ops)));
-  shape->data    = NULL;
-  shape->needs_F = PETSC_FALSE;
-  shape->kernels = NULL;
-  PetscCall(PetscStrncpy(shape->type_name, type, sizeof(shape->type_name)));
-  PetscCall(create(shape));
+  PetscCall(MPMObjectSetType(shape, type));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMShapeGetType(MPMShape shape, MPMShapeType *type)
+{
+  PetscFunctionBegin;
+  PetscCall(MPMObjectGetType(shape, type));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMShapeSetOptionsPrefix(MPMShape shape, const char prefix[])
+{
+  PetscFunctionBegin;
+  PetscCall(MPMObjectSetOptionsPrefix(shape, prefix));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode MPMShapeSetFromOptions(MPMShape shape)
 {
-  char      type[MPM_MAX_NAME];
-  PetscBool set;
-
   PetscFunctionBegin;
-  PetscOptionsBegin(shape->comm, NULL, "Shape functions", "MPMShape");
-  PetscCall(PetscOptionsFList("-mpm_shape_type", "Shape function N_I(x)", "MPMShapeSetType", MPMShapeList, shape->type_name, type, sizeof(type), &set));
-  if (set) PetscCall(MPMShapeSetType(shape, type));
-  if (shape->ops.setfromoptions) PetscCall(shape->ops.setfromoptions(shape, PetscOptionsObject));
-  PetscOptionsEnd();
+  PetscCall(MPMObjectSetFromOptions(shape));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -131,8 +149,7 @@ void MPMShapeEvaluateCell(MPMShape shape, const MPMGrid *g, const PetscInt ijk[]
 PetscErrorCode MPMShapeView(MPMShape shape, PetscViewer viewer)
 {
   PetscFunctionBegin;
-  PetscCall(PetscViewerASCIIPrintf(viewer, "Shape functions: %s (ghost width %" PetscInt_FMT ")\n", shape->type_name, shape->ops.support(shape->data)));
-  if (shape->ops.view) PetscCall(shape->ops.view(shape, viewer));
+  PetscCall(MPMObjectView(shape, viewer));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -146,9 +163,8 @@ PetscErrorCode MPMShapeGetGhostWidth(MPMShape shape, PetscInt *width)
 PetscErrorCode MPMShapeDestroy(MPMShape *shape)
 {
   PetscFunctionBegin;
-  if (!*shape) PetscFunctionReturn(PETSC_SUCCESS);
-  if ((*shape)->ops.destroy) PetscCall((*shape)->ops.destroy(*shape));
-  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) PetscCall(PetscFree((*shape)->cell1d[k]));
-  PetscCall(PetscFree(*shape));
+  if (*shape)
+    for (PetscInt k = 0; k < MPM_MAX_DIM; k++) PetscCall(PetscFree((*shape)->cell1d[k]));
+  PetscCall(MPMObjectDestroy(shape));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

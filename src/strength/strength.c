@@ -6,6 +6,16 @@
 
 static PetscFunctionList MPMStrengthList = NULL;
 
+static PetscErrorCode MPMStrengthReset(void *obj)
+{
+  PetscFunctionBegin;
+  ((MPMStrength)obj)->G       = 0.0;
+  ((MPMStrength)obj)->needs_F = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static const MPMClass MPMStrengthClass = {"strength model", "strength", "Strength model", "MPMStrength", "Stress besides the EOS pressure", MPMSTRENGTHNONE, &MPMStrengthList, sizeof(MPMStrengthOps), MPMStrengthReset, NULL, NULL};
+
 PetscErrorCode MPMStrengthRegister(const char name[], PetscErrorCode (*create)(MPMStrength))
 {
   PetscFunctionBegin;
@@ -16,49 +26,36 @@ PetscErrorCode MPMStrengthRegister(const char name[], PetscErrorCode (*create)(M
 PetscErrorCode MPMStrengthCreate(MPI_Comm comm, MPMStrength *str)
 {
   PetscFunctionBegin;
-  PetscCall(MPMInitializePackage());
-  PetscCall(PetscNew(str));
-  (*str)->comm = comm;
+  PetscCall(MPMObjectCreate(comm, &MPMStrengthClass, sizeof(struct _p_MPMStrength), str));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+
+PetscErrorCode MPMStrengthSetType(MPMStrength str, MPMStrengthType type)
+{
+  PetscFunctionBegin;
+  PetscCall(MPMObjectSetType(str, type));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMStrengthGetType(MPMStrength str, MPMStrengthType *type)
+{
+  PetscFunctionBegin;
+  PetscCall(MPMObjectGetType(str, type));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode MPMStrengthSetOptionsPrefix(MPMStrength str, const char prefix[])
 {
   PetscFunctionBegin;
-  PetscCall(PetscFree(str->prefix));
-  PetscCall(PetscStrallocpy(prefix, &str->prefix));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMStrengthSetType(MPMStrength str, MPMStrengthType type)
-{
-  PetscErrorCode (*create)(MPMStrength);
-  char option[256];
-
-  PetscFunctionBegin;
-  PetscCall(PetscSNPrintf(option, sizeof(option), "-%sstrength_type", str->prefix ? str->prefix : ""));
-  PetscCall(MPMClassSetType(MPMStrengthList, "strength model", option, type, (PetscErrorCode(**)(void *)) & create));
-  if (str->ops.destroy) PetscCall(str->ops.destroy(str));
-  PetscCall(PetscMemzero(&str->ops, sizeof(str->ops)));
-  str->data = NULL;
-  str->G    = 0.0;
-  PetscCall(PetscStrncpy(str->type_name, type, sizeof(str->type_name)));
-  PetscCall(create(str));
+  PetscCall(MPMObjectSetOptionsPrefix(str, prefix));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode MPMStrengthSetFromOptions(MPMStrength str)
 {
-  char      type[MPM_MAX_NAME];
-  PetscBool set;
-
   PetscFunctionBegin;
-  if (!str->type_name[0]) PetscCall(MPMStrengthSetType(str, MPMSTRENGTHNONE));
-  PetscOptionsBegin(str->comm, str->prefix, "Strength model", "MPMStrength");
-  PetscCall(PetscOptionsFList("-strength_type", "Stress besides the EOS pressure", "MPMStrengthSetType", MPMStrengthList, str->type_name, type, sizeof(type), &set));
-  if (set) PetscCall(MPMStrengthSetType(str, type));
-  if (str->ops.setfromoptions) PetscCall(str->ops.setfromoptions(str, PetscOptionsObject));
-  PetscOptionsEnd();
+  PetscCall(MPMObjectSetFromOptions(str));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -73,22 +70,14 @@ PetscErrorCode MPMStrengthIsActive(MPMStrength str, PetscBool *active)
 PetscErrorCode MPMStrengthView(MPMStrength str, PetscViewer viewer)
 {
   PetscFunctionBegin;
-  PetscCall(PetscViewerASCIIPrintf(viewer, "Strength: %s\n", str->type_name));
-  if (str->ops.view) {
-    PetscCall(PetscViewerASCIIPushTab(viewer));
-    PetscCall(str->ops.view(str, viewer));
-    PetscCall(PetscViewerASCIIPopTab(viewer));
-  }
+  PetscCall(MPMObjectView(str, viewer));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode MPMStrengthDestroy(MPMStrength *str)
 {
   PetscFunctionBegin;
-  if (!*str) PetscFunctionReturn(PETSC_SUCCESS);
-  if ((*str)->ops.destroy) PetscCall((*str)->ops.destroy(*str));
-  PetscCall(PetscFree((*str)->prefix));
-  PetscCall(PetscFree(*str));
+  PetscCall(MPMObjectDestroy(str));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

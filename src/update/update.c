@@ -7,6 +7,15 @@
 
 static PetscFunctionList MPMUpdateList = NULL;
 
+static PetscErrorCode MPMUpdateViewClass(void *obj, PetscViewer viewer)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "FLIP fraction %g\n", (double)((MPMUpdate)obj)->alpha));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static const MPMClass MPMUpdateClass = {"particle update", "update", "Particle update", "MPMUpdate", "Particle velocity update", MPMUPDATEFLIP, &MPMUpdateList, sizeof(MPMUpdateOps), NULL, NULL, MPMUpdateViewClass};
+
 PetscErrorCode MPMUpdateRegister(const char name[], PetscErrorCode (*create)(MPMUpdate))
 {
   PetscFunctionBegin;
@@ -17,45 +26,44 @@ PetscErrorCode MPMUpdateRegister(const char name[], PetscErrorCode (*create)(MPM
 PetscErrorCode MPMUpdateCreate(MPI_Comm comm, MPMUpdate *update)
 {
   PetscFunctionBegin;
-  PetscCall(MPMInitializePackage());
-  PetscCall(PetscNew(update));
-  (*update)->comm = comm;
+  PetscCall(MPMObjectCreate(comm, &MPMUpdateClass, sizeof(struct _p_MPMUpdate), update));
+  PetscCall(MPMObjectSetOptionsPrefix(*update, "mpm_"));
   PetscCall(MPMUpdateSetType(*update, MPMUPDATEFLIP));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode MPMUpdateSetType(MPMUpdate update, MPMUpdateType type)
 {
-  PetscErrorCode (*create)(MPMUpdate);
-
   PetscFunctionBegin;
-  PetscCall(MPMClassSetType(MPMUpdateList, "particle update", "-mpm_update_type", type, (PetscErrorCode(**)(void *)) & create));
-  if (update->ops.destroy) PetscCall(update->ops.destroy(update));
-  PetscCall(PetscMemzero(&update->ops, sizeof(update->ops)));
-  update->data = NULL;
-  PetscCall(PetscStrncpy(update->type_name, type, sizeof(update->type_name)));
-  PetscCall(create(update));
+  PetscCall(MPMObjectSetType(update, type));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMUpdateGetType(MPMUpdate update, MPMUpdateType *type)
+{
+  PetscFunctionBegin;
+  PetscCall(MPMObjectGetType(update, type));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMUpdateSetOptionsPrefix(MPMUpdate update, const char prefix[])
+{
+  PetscFunctionBegin;
+  PetscCall(MPMObjectSetOptionsPrefix(update, prefix));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode MPMUpdateSetFromOptions(MPMUpdate update)
 {
-  char      type[MPM_MAX_NAME];
-  PetscBool set;
-
   PetscFunctionBegin;
-  PetscOptionsBegin(update->comm, NULL, "Particle update", "MPMUpdate");
-  PetscCall(PetscOptionsFList("-mpm_update_type", "Particle velocity update", "MPMUpdateSetType", MPMUpdateList, update->type_name, type, sizeof(type), &set));
-  if (set) PetscCall(MPMUpdateSetType(update, type));
-  if (update->ops.setfromoptions) PetscCall(update->ops.setfromoptions(update, PetscOptionsObject));
-  PetscOptionsEnd();
+  PetscCall(MPMObjectSetFromOptions(update));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode MPMUpdateView(MPMUpdate update, PetscViewer viewer)
 {
   PetscFunctionBegin;
-  PetscCall(PetscViewerASCIIPrintf(viewer, "Particle update: %s (FLIP fraction %g)\n", update->type_name, (double)update->alpha));
+  PetscCall(MPMObjectView(update, viewer));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -69,8 +77,6 @@ PetscErrorCode MPMUpdateGetFLIPFraction(MPMUpdate update, PetscReal *alpha)
 PetscErrorCode MPMUpdateDestroy(MPMUpdate *update)
 {
   PetscFunctionBegin;
-  if (!*update) PetscFunctionReturn(PETSC_SUCCESS);
-  if ((*update)->ops.destroy) PetscCall((*update)->ops.destroy(*update));
-  PetscCall(PetscFree(*update));
+  PetscCall(MPMObjectDestroy(update));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -6,6 +6,15 @@
 
 static PetscFunctionList MPMViscosityList = NULL;
 
+static PetscErrorCode MPMViscosityReset(void *obj)
+{
+  PetscFunctionBegin;
+  ((MPMViscosity)obj)->ghost = 0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static const MPMClass MPMViscosityClass = {"artificial viscosity", "viscosity", "Artificial viscosity", "MPMViscosity", "Artificial viscosity q", MPMVISCOSITYNONE, &MPMViscosityList, sizeof(MPMViscosityOps), MPMViscosityReset, NULL, NULL};
+
 PetscErrorCode MPMViscosityRegister(const char name[], PetscErrorCode (*create)(MPMViscosity))
 {
   PetscFunctionBegin;
@@ -16,51 +25,44 @@ PetscErrorCode MPMViscosityRegister(const char name[], PetscErrorCode (*create)(
 PetscErrorCode MPMViscosityCreate(MPI_Comm comm, MPMViscosity *visc)
 {
   PetscFunctionBegin;
-  PetscCall(MPMInitializePackage());
-  PetscCall(PetscNew(visc));
-  (*visc)->comm = comm;
+  PetscCall(MPMObjectCreate(comm, &MPMViscosityClass, sizeof(struct _p_MPMViscosity), visc));
+  PetscCall(MPMObjectSetOptionsPrefix(*visc, "mpm_"));
   PetscCall(MPMViscositySetType(*visc, MPMVISCOSITYNONE));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode MPMViscositySetType(MPMViscosity visc, MPMViscosityType type)
 {
-  PetscErrorCode (*create)(MPMViscosity);
-
   PetscFunctionBegin;
-  PetscCall(MPMClassSetType(MPMViscosityList, "artificial viscosity", "-mpm_viscosity_type", type, (PetscErrorCode(**)(void *)) & create));
-  if (visc->ops.destroy) PetscCall(visc->ops.destroy(visc));
-  PetscCall(PetscMemzero(&visc->ops, sizeof(visc->ops)));
-  visc->data  = NULL;
-  visc->ghost = 0;
-  PetscCall(PetscStrncpy(visc->type_name, type, sizeof(visc->type_name)));
-  PetscCall(create(visc));
+  PetscCall(MPMObjectSetType(visc, type));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMViscosityGetType(MPMViscosity visc, MPMViscosityType *type)
+{
+  PetscFunctionBegin;
+  PetscCall(MPMObjectGetType(visc, type));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMViscositySetOptionsPrefix(MPMViscosity visc, const char prefix[])
+{
+  PetscFunctionBegin;
+  PetscCall(MPMObjectSetOptionsPrefix(visc, prefix));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode MPMViscositySetFromOptions(MPMViscosity visc)
 {
-  char      type[MPM_MAX_NAME];
-  PetscBool set;
-
   PetscFunctionBegin;
-  PetscOptionsBegin(visc->comm, NULL, "Artificial viscosity", "MPMViscosity");
-  PetscCall(PetscOptionsFList("-mpm_viscosity_type", "Artificial viscosity q", "MPMViscositySetType", MPMViscosityList, visc->type_name, type, sizeof(type), &set));
-  if (set) PetscCall(MPMViscositySetType(visc, type));
-  if (visc->ops.setfromoptions) PetscCall(visc->ops.setfromoptions(visc, PetscOptionsObject));
-  PetscOptionsEnd();
+  PetscCall(MPMObjectSetFromOptions(visc));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode MPMViscosityView(MPMViscosity visc, PetscViewer viewer)
 {
   PetscFunctionBegin;
-  PetscCall(PetscViewerASCIIPrintf(viewer, "Artificial viscosity: %s\n", visc->type_name));
-  if (visc->ops.view) {
-    PetscCall(PetscViewerASCIIPushTab(viewer));
-    PetscCall(visc->ops.view(visc, viewer));
-    PetscCall(PetscViewerASCIIPopTab(viewer));
-  }
+  PetscCall(MPMObjectView(visc, viewer));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -84,8 +86,6 @@ PetscErrorCode MPMViscosityApply(MPMViscosity visc, MPM mpm, PetscReal dt)
 PetscErrorCode MPMViscosityDestroy(MPMViscosity *visc)
 {
   PetscFunctionBegin;
-  if (!*visc) PetscFunctionReturn(PETSC_SUCCESS);
-  if ((*visc)->ops.destroy) PetscCall((*visc)->ops.destroy(*visc));
-  PetscCall(PetscFree(*visc));
+  PetscCall(MPMObjectDestroy(visc));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

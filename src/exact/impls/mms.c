@@ -144,9 +144,9 @@ static PetscErrorCode MPMExactSetFromOptions_MMS(MPMExact exact, PetscOptionItem
 
   PetscFunctionBegin;
   PetscOptionsHeadBegin(PetscOptionsObject, "Manufactured solution");
-  PetscCall(PetscOptionsEnum("-mpm_exact_mms_problem", "Manufactured displacement field", "", MMSProblems, (PetscEnum)mm->problem, (PetscEnum *)&mm->problem, NULL));
-  PetscCall(PetscOptionsReal("-mpm_exact_mms_amplitude", "Amplitude A [cm] (axis_aligned) or [rad] (vortex), > 0", "", mm->A, &mm->A, NULL));
-  PetscCall(PetscOptionsReal("-mpm_exact_mms_frequency", "Time frequency c in sin(c pi t) [1/s], > 0", "", mm->c, &mm->c, NULL));
+  PetscCall(PetscOptionsEnum("-exact_mms_problem", "Manufactured displacement field", "", MMSProblems, (PetscEnum)mm->problem, (PetscEnum *)&mm->problem, NULL));
+  PetscCall(PetscOptionsReal("-exact_mms_amplitude", "Amplitude A [cm] (axis_aligned) or [rad] (vortex), > 0", "", mm->A, &mm->A, NULL));
+  PetscCall(PetscOptionsReal("-exact_mms_frequency", "Time frequency c in sin(c pi t) [1/s], > 0", "", mm->c, &mm->c, NULL));
   PetscOptionsHeadEnd();
   PetscCall(MPMOptionsCheckRange("-mpm_exact_mms_amplitude", mm->A, 0.0, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
   PetscCall(MPMOptionsCheckRange("-mpm_exact_mms_frequency", mm->c, 0.0, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));

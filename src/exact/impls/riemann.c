@@ -121,7 +121,7 @@ static PetscErrorCode MPMExactSetFromOptions_Riemann(MPMExact exact, PetscOption
 
   PetscFunctionBegin;
   PetscOptionsHeadBegin(PetscOptionsObject, "Exact Riemann solution");
-  PetscCall(PetscOptionsReal("-mpm_exact_riemann_x0", "Initial discontinuity x0 [cm]", "", er->x0, &er->x0, NULL));
+  PetscCall(PetscOptionsReal("-exact_riemann_x0", "Initial discontinuity x0 [cm]", "", er->x0, &er->x0, NULL));
   PetscOptionsHeadEnd();
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -7,7 +7,7 @@ static PetscErrorCode MPMUpdateSetFromOptions_Blend(MPMUpdate update, PetscOptio
 {
   PetscFunctionBegin;
   PetscOptionsHeadBegin(PetscOptionsObject, "FLIP/PIC blend");
-  PetscCall(PetscOptionsReal("-mpm_update_blend_alpha", "FLIP fraction alpha in v = alpha FLIP + (1 - alpha) PIC [-], in [0, 1]", "", update->alpha, &update->alpha, NULL));
+  PetscCall(PetscOptionsReal("-update_blend_alpha", "FLIP fraction alpha in v = alpha FLIP + (1 - alpha) PIC [-], in [0, 1]", "", update->alpha, &update->alpha, NULL));
   PetscOptionsHeadEnd();
   PetscCall(MPMOptionsCheckRange("-mpm_update_blend_alpha", update->alpha, 0.0, 1.0, PETSC_FALSE, PETSC_FALSE));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -131,8 +131,8 @@ static PetscErrorCode MPMViscositySetFromOptions_Limited(MPMViscosity visc, Pets
 
   PetscFunctionBegin;
   PetscOptionsHeadBegin(PetscOptionsObject, "Christensen limited viscosity");
-  PetscCall(PetscOptionsReal("-mpm_viscosity_limited_bl", "Linear coefficient B_l in q = -rho/2 (B_l c du (1-phi) + B_q |du| du (1-phi^2)) [-], >= 0", "", lim->bl, &lim->bl, NULL));
-  PetscCall(PetscOptionsReal("-mpm_viscosity_limited_bq", "Quadratic coefficient B_q [-], >= 0", "", lim->bq, &lim->bq, NULL));
+  PetscCall(PetscOptionsReal("-viscosity_limited_bl", "Linear coefficient B_l in q = -rho/2 (B_l c du (1-phi) + B_q |du| du (1-phi^2)) [-], >= 0", "", lim->bl, &lim->bl, NULL));
+  PetscCall(PetscOptionsReal("-viscosity_limited_bq", "Quadratic coefficient B_q [-], >= 0", "", lim->bq, &lim->bq, NULL));
   PetscOptionsHeadEnd();
   PetscCall(MPMOptionsCheckRange("-mpm_viscosity_limited_bl", lim->bl, 0.0, 100.0, PETSC_FALSE, PETSC_FALSE));
   PetscCall(MPMOptionsCheckRange("-mpm_viscosity_limited_bq", lim->bq, 0.0, 100.0, PETSC_FALSE, PETSC_FALSE));

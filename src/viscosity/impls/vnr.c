@@ -48,8 +48,8 @@ static PetscErrorCode MPMViscositySetFromOptions_VNR(MPMViscosity visc, PetscOpt
 
   PetscFunctionBegin;
   PetscOptionsHeadBegin(PetscOptionsObject, "Von Neumann-Richtmyer viscosity");
-  PetscCall(PetscOptionsReal("-mpm_viscosity_vnr_cq", "Quadratic coefficient C_q in q = rho (C_q (h div v)^2 - C_l c h div v) [-], >= 0", "", vnr->cq, &vnr->cq, NULL));
-  PetscCall(PetscOptionsReal("-mpm_viscosity_vnr_cl", "Linear coefficient C_l [-], >= 0", "", vnr->cl, &vnr->cl, NULL));
+  PetscCall(PetscOptionsReal("-viscosity_vnr_cq", "Quadratic coefficient C_q in q = rho (C_q (h div v)^2 - C_l c h div v) [-], >= 0", "", vnr->cq, &vnr->cq, NULL));
+  PetscCall(PetscOptionsReal("-viscosity_vnr_cl", "Linear coefficient C_l [-], >= 0", "", vnr->cl, &vnr->cl, NULL));
   PetscOptionsHeadEnd();
   PetscCall(MPMOptionsCheckRange("-mpm_viscosity_vnr_cq", vnr->cq, 0.0, 100.0, PETSC_FALSE, PETSC_FALSE));
   PetscCall(MPMOptionsCheckRange("-mpm_viscosity_vnr_cl", vnr->cl, 0.0, 100.0, PETSC_FALSE, PETSC_FALSE));
