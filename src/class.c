@@ -170,7 +170,7 @@ PetscErrorCode MPMObjectSetFromOptions(void *o)
   if (!obj->type_name[0]) {
     PetscCall(MPMObjectTypeOption(obj, option, sizeof(option)));
     PetscCall(MPMClassTypeList(*obj->cls->list, valid, sizeof(valid)));
-    SETERRQ(obj->comm, PETSC_ERR_USER_INPUT, "%s needs a %s: set %s (valid: %s)", obj->prefix ? obj->prefix : "MPM", obj->cls->name, option, valid);
+    SETERRQ(obj->comm, PETSC_ERR_USER_INPUT, "No %s given: set %s (valid: %s)", obj->cls->name, option, valid);
   }
   if (obj->ops.setfromoptions) PetscCall(obj->ops.setfromoptions(obj, PetscOptionsObject));
   if (obj->cls->setfromoptions) PetscCall(obj->cls->setfromoptions(obj, PetscOptionsObject));

@@ -10,66 +10,6 @@ const char *const MPMEnergyUpdates[]      = {"compatible", "midpoint", "conserva
 const char *const MPMTransferKernelTypes[]     = {"specialised", "generic", "MPMTransferKernel", "MPM_TRANSFER_", NULL};
 const char *const MPMBoundaryTypes[]      = {"wall", "free", "MPMBoundaryType", "MPM_BC_", NULL};
 
-PETSC_EXTERN PetscErrorCode MPMShapeCreate_Linear(MPMShape);
-PETSC_EXTERN PetscErrorCode MPMShapeCreate_GIMP(MPMShape);
-PETSC_EXTERN PetscErrorCode MPMShapeCreate_CPDI(MPMShape);
-PETSC_EXTERN PetscErrorCode MPMShapeCreate_BSpline2(MPMShape);
-PETSC_EXTERN PetscErrorCode MPMShapeCreate_BSpline3(MPMShape);
-PETSC_EXTERN PetscErrorCode MPMEOSCreate_IdealGas(MPMEOS);
-PETSC_EXTERN PetscErrorCode MPMEOSCreate_None(MPMEOS);
-PETSC_EXTERN PetscErrorCode MPMEOSCreate_MieGruneisen(MPMEOS);
-PETSC_EXTERN PetscErrorCode MPMStrengthCreate_None(MPMStrength);
-PETSC_EXTERN PetscErrorCode MPMStrengthCreate_NeoHookean(MPMStrength);
-PETSC_EXTERN PetscErrorCode MPMStrengthCreate_Elastic(MPMStrength);
-PETSC_EXTERN PetscErrorCode MPMStrengthCreate_VonMises(MPMStrength);
-PETSC_EXTERN PetscErrorCode MPMStrengthCreate_JohnsonCook(MPMStrength);
-PETSC_EXTERN PetscErrorCode MPMExactCreate_MMS(MPMExact);
-PETSC_EXTERN PetscErrorCode MPMViscosityCreate_None(MPMViscosity);
-PETSC_EXTERN PetscErrorCode MPMViscosityCreate_VNR(MPMViscosity);
-PETSC_EXTERN PetscErrorCode MPMViscosityCreate_Limited(MPMViscosity);
-PETSC_EXTERN PetscErrorCode MPMUpdateCreate_PIC(MPMUpdate);
-PETSC_EXTERN PetscErrorCode MPMUpdateCreate_FLIP(MPMUpdate);
-PETSC_EXTERN PetscErrorCode MPMUpdateCreate_Blend(MPMUpdate);
-PETSC_EXTERN PetscErrorCode MPMExactCreate_None(MPMExact);
-PETSC_EXTERN PetscErrorCode MPMExactCreate_Riemann(MPMExact);
-PETSC_EXTERN PetscErrorCode MPMExactCreate_Flyer(MPMExact);
-
-static PetscBool    MPMPackageInitialized = PETSC_FALSE;
-static PetscClassId MPM_CLASSID;
-
-/* Registers every type of every class: a new type is one file plus one line here. */
-PetscErrorCode MPMInitializePackage(void)
-{
-  PetscFunctionBegin;
-  if (MPMPackageInitialized) PetscFunctionReturn(PETSC_SUCCESS);
-  MPMPackageInitialized = PETSC_TRUE;
-  PetscCall(PetscClassIdRegister("MPM", &MPM_CLASSID));
-  PetscCall(MPMShapeRegister(MPMSHAPELINEAR, MPMShapeCreate_Linear));
-  PetscCall(MPMShapeRegister(MPMSHAPEGIMP, MPMShapeCreate_GIMP));
-  PetscCall(MPMShapeRegister(MPMSHAPECPDI, MPMShapeCreate_CPDI));
-  PetscCall(MPMShapeRegister(MPMSHAPEBSPLINE2, MPMShapeCreate_BSpline2));
-  PetscCall(MPMShapeRegister(MPMSHAPEBSPLINE3, MPMShapeCreate_BSpline3));
-  PetscCall(MPMEOSRegister(MPMEOSIDEALGAS, MPMEOSCreate_IdealGas));
-  PetscCall(MPMEOSRegister(MPMEOSNONE, MPMEOSCreate_None));
-  PetscCall(MPMEOSRegister(MPMEOSMIEGRUNEISEN, MPMEOSCreate_MieGruneisen));
-  PetscCall(MPMStrengthRegister(MPMSTRENGTHNONE, MPMStrengthCreate_None));
-  PetscCall(MPMStrengthRegister(MPMSTRENGTHNEOHOOKEAN, MPMStrengthCreate_NeoHookean));
-  PetscCall(MPMStrengthRegister(MPMSTRENGTHELASTIC, MPMStrengthCreate_Elastic));
-  PetscCall(MPMStrengthRegister(MPMSTRENGTHVONMISES, MPMStrengthCreate_VonMises));
-  PetscCall(MPMStrengthRegister(MPMSTRENGTHJOHNSONCOOK, MPMStrengthCreate_JohnsonCook));
-  PetscCall(MPMViscosityRegister(MPMVISCOSITYNONE, MPMViscosityCreate_None));
-  PetscCall(MPMViscosityRegister(MPMVISCOSITYVNR, MPMViscosityCreate_VNR));
-  PetscCall(MPMViscosityRegister(MPMVISCOSITYLIMITED, MPMViscosityCreate_Limited));
-  PetscCall(MPMUpdateRegister(MPMUPDATEPIC, MPMUpdateCreate_PIC));
-  PetscCall(MPMUpdateRegister(MPMUPDATEFLIP, MPMUpdateCreate_FLIP));
-  PetscCall(MPMUpdateRegister(MPMUPDATEBLEND, MPMUpdateCreate_Blend));
-  PetscCall(MPMExactRegister(MPMEXACTNONE, MPMExactCreate_None));
-  PetscCall(MPMExactRegister(MPMEXACTRIEMANN, MPMExactCreate_Riemann));
-  PetscCall(MPMExactRegister(MPMEXACTMMS, MPMExactCreate_MMS));
-  PetscCall(MPMExactRegister(MPMEXACTFLYER, MPMExactCreate_Flyer));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
 {
   MPM m;
@@ -192,24 +132,10 @@ PetscErrorCode MPMSetUp(MPM mpm)
   PetscReal t0 = MPI_Wtime();
 
   PetscFunctionBegin;
-  PetscCall(PetscLogStageRegister("MPM set-up", &mpm->log.setup));
-  PetscCall(PetscLogStageRegister("MPM time loop", &mpm->log.loop));
-  PetscCall(PetscLogStageRegister("MPM output", &mpm->log.io));
-  PetscCall(PetscLogStagePush(mpm->log.setup));
-  PetscCall(PetscLogEventRegister("MPMParticlesToGrid", MPM_CLASSID, &mpm->log.p2g));
-  PetscCall(PetscLogEventRegister("MPMGridAdvance", MPM_CLASSID, &mpm->log.advance));
-  PetscCall(PetscLogEventRegister("MPMGridToParticles", MPM_CLASSID, &mpm->log.g2p));
-  PetscCall(PetscLogEventRegister("MPMConstitutive", MPM_CLASSID, &mpm->log.constitutive));
-  PetscCall(PetscLogEventRegister("MPMMigrate", MPM_CLASSID, &mpm->log.migrate));
-  PetscCall(PetscLogEventRegister("MPMTimeStep", MPM_CLASSID, &mpm->log.timestep));
-  PetscCall(PetscLogEventRegister("MPMOutput", MPM_CLASSID, &mpm->log.output));
-  if (mpm->scheme == MPM_SCHEME_MUSL) PetscCall(PetscLogEventRegister("MPMRemapMomentum", MPM_CLASSID, &mpm->log.remap));
-  if (mpm->has_gravity) PetscCall(PetscLogEventRegister("MPMGravity", MPM_CLASSID, &mpm->log.gravity));
   PetscCall(MPMViscosityIsActive(mpm->viscosity, &active));
-  if (active)
-    PetscCall(PetscLogEventRegister("MPMViscosity", MPM_CLASSID, &mpm->log.viscosity));
-  else
-    PetscCall(MPMViscosityDestroy(&mpm->viscosity)); /* none: the module is not in the step */
+  if (!active) PetscCall(MPMViscosityDestroy(&mpm->viscosity)); /* none: the module is not in the step */
+  PetscCall(MPMLogRegister(mpm));
+  PetscCall(PetscLogStagePush(mpm->log.setup));
 
   PetscCall(MPMCreateGrid(mpm));
   PetscCall(MPMShapeSetUp(mpm->shape, &mpm->grid, mpm->ppc));

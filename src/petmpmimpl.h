@@ -313,6 +313,8 @@ struct _p_MPM {
 };
 
 /* Internal API */
+PETSC_INTERN PetscClassId MPM_CLASSID; /* log events of petmpm (src/init.c) */
+PETSC_INTERN PetscErrorCode MPMLogRegister(MPM);
 PETSC_INTERN PetscErrorCode MPMOptionsCheckRange(const char[], PetscReal, PetscReal, PetscReal, PetscBool, PetscBool);
 PETSC_INTERN PetscErrorCode MPMOptionsDimReals(PetscOptionItems *, const char[], const char[], PetscInt, PetscReal[]);
 PETSC_INTERN PetscErrorCode MPMOptionsDimEnums(PetscOptionItems *, const char[], const char[], const char *const[], PetscInt, PetscEnum[]);
