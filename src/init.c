@@ -64,8 +64,8 @@ PetscErrorCode MPMInitializePackage(void)
 }
 
 
-/* The stages and the step's log events; a module the scene did not ask for (MUSL remap, gravity, viscosity) is not
-   registered, so -log_view has no row for it. */
+/* The stages and the step's phase events; each module registers its own event when the scene adds it
+   (MPMModuleAdd), so a module the scene did not ask for has no -log_view row. */
 PetscErrorCode MPMLogRegister(MPM mpm)
 {
   PetscFunctionBegin;
@@ -79,8 +79,5 @@ PetscErrorCode MPMLogRegister(MPM mpm)
   PetscCall(PetscLogEventRegister("MPMMigrate", MPM_CLASSID, &mpm->log.migrate));
   PetscCall(PetscLogEventRegister("MPMTimeStep", MPM_CLASSID, &mpm->log.timestep));
   PetscCall(PetscLogEventRegister("MPMOutput", MPM_CLASSID, &mpm->log.output));
-  if (mpm->scheme == MPM_SCHEME_MUSL) PetscCall(PetscLogEventRegister("MPMRemapMomentum", MPM_CLASSID, &mpm->log.remap));
-  if (mpm->has_gravity) PetscCall(PetscLogEventRegister("MPMGravity", MPM_CLASSID, &mpm->log.gravity));
-  if (mpm->viscosity) PetscCall(PetscLogEventRegister("MPMViscosity", MPM_CLASSID, &mpm->log.viscosity));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

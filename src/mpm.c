@@ -136,6 +136,14 @@ PetscErrorCode MPMSetUp(MPM mpm)
   if (!active) PetscCall(MPMViscosityDestroy(&mpm->viscosity)); /* none: the module is not in the step */
   PetscCall(MPMLogRegister(mpm));
   PetscCall(PetscLogStagePush(mpm->log.setup));
+  { /* the step's modules, in the order they run within each phase */
+    PetscBool walls = PETSC_FALSE;
+    for (PetscInt k = 0; k < mpm->grid.dim; k++) walls = (PetscBool)(walls || mpm->bc_lo[k] == MPM_BC_WALL || mpm->bc_hi[k] == MPM_BC_WALL);
+    if (mpm->has_gravity) PetscCall(MPMModuleAdd(mpm, "MPMGravity", MPM_PHASE_GRID_FORCE, MPMGravityApply, NULL));
+    if (walls) PetscCall(MPMModuleAdd(mpm, "MPMWalls", MPM_PHASE_GRID_VELOCITY, MPMWallsApply, NULL));
+    if (mpm->scheme == MPM_SCHEME_MUSL) PetscCall(MPMModuleAdd(mpm, "MPMRemapMomentum", MPM_PHASE_POINT_KINEMATICS, MPMRemapApply, NULL));
+    if (mpm->viscosity) PetscCall(MPMModuleAdd(mpm, "MPMViscosity", MPM_PHASE_POINT_STATE, MPMViscosityModuleApply, NULL));
+  }
 
   PetscCall(MPMCreateGrid(mpm));
   PetscCall(MPMShapeSetUp(mpm->shape, &mpm->grid, mpm->ppc));
@@ -171,6 +179,7 @@ PetscErrorCode MPMView(MPM mpm, PetscViewer viewer)
   PetscCall(PetscViewerASCIIPrintf(viewer, "%" PetscInt_FMT " points (%" PetscInt_FMT " per cell per direction), CFL %g, scheme %s, stress integration %s\n", mpm->npoints0, mpm->ppc, (double)mpm->cfl, MPMSchemes[mpm->scheme],
                                    MPMStressIntegrations[mpm->stress_integration]));
   PetscCall(PetscViewerASCIIPrintf(viewer, "energy update %s, kinetic energy fix %s\n", MPMEnergyUpdates[mpm->energy_update], mpm->ke_fix ? "on" : "off"));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "transfer kernels: %s\n", mpm->kern ? "specialised" : "generic"));
   if (mpm->has_gravity) PetscCall(PetscViewerASCIIPrintf(viewer, "gravity (%g, %g, %g) cm/s^2\n", (double)mpm->gravity[0], (double)mpm->gravity[1], (double)mpm->gravity[2]));
   PetscCall(MPMShapeView(mpm->shape, viewer));
   PetscCall(MPMUpdateView(mpm->update, viewer));
@@ -207,6 +216,7 @@ PetscErrorCode MPMDestroy(MPM *mpm)
   PetscCall(MPMUpdateDestroy(&m->update));
   PetscCall(MPMViscosityDestroy(&m->viscosity));
   PetscCall(MPMExactDestroy(&m->exact));
+  PetscCall(MPMModulesDestroy(m));
   PetscCall(PetscFree(m->output_times));
   PetscCall(PetscFree(m));
   *mpm = NULL;

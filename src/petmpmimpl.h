@@ -245,11 +245,36 @@ typedef struct {
   PetscReal value, reference;
 } MPMCheck;
 
-/* Log events, one per step phase; module events are registered only when the scene enables the module. */
+/* Log events, one per step phase (modules register their own when the scene adds them). */
 typedef struct {
-  PetscLogEvent p2g, advance, g2p, remap, viscosity, constitutive, migrate, gravity, output, timestep;
+  PetscLogEvent p2g, advance, g2p, constitutive, migrate, output, timestep;
   PetscLogStage setup, loop, io;
 } MPMLog;
+
+/* ------------------------------------------------------------------ the step: phases and modules */
+/* Where in the step a module runs. Grid phases get the owned nodes of the global nodal vector. */
+typedef enum {
+  MPM_PHASE_GRID_FORCE,       /* after points to grid: external nodal forces (gravity)                           */
+  MPM_PHASE_GRID_VELOCITY,    /* wherever nodal velocities are formed (advance, MUSL remap): walls, later rigid bodies and contact */
+  MPM_PHASE_POINT_KINEMATICS, /* after grid to points: the MUSL remap                                            */
+  MPM_PHASE_POINT_STATE,      /* before the constitutive update: artificial viscosity                            */
+  MPM_NUM_PHASES
+} MPMPhase;
+
+/* Time, carried explicitly through a step: t^n, the step dt_n and the leapfrog kick (dt_{n-1} + dt_n)/2 [s]. */
+typedef struct {
+  PetscReal tn, dt, kick;
+} MPMStepContext;
+
+typedef struct _p_MPMModule *MPMModule;
+struct _p_MPMModule {
+  char          name[MPM_MAX_NAME]; /* its -log_view event                 */
+  MPMPhase      phase;
+  PetscLogEvent event;
+  PetscErrorCode (*apply)(MPMModule, MPM, const MPMStepContext *, MPMNode *); /* the owned nodes in grid phases, else NULL */
+  void     *ctx;
+  MPMModule next;
+};
 
 struct _p_MPM {
   MPI_Comm comm;
@@ -310,6 +335,9 @@ struct _p_MPM {
   PetscInt   nchecks;
   MPMCheck   checks[MPM_MAX_CHECKS];
   MPMLog     log;
+  MPMModule  modules[MPM_NUM_PHASES]; /* the step's modules, per phase, in order              */
+  PetscBool  failed;                  /* the run cannot go on (MPMSetFailure)                 */
+  char       failure[1024];           /* why                                                  */
 };
 
 /* Internal API */
@@ -327,7 +355,20 @@ PETSC_INTERN PetscErrorCode MPMMigrate(MPM);
 PETSC_INTERN PetscInt       MPMLocalCell(const MPMGrid *, const PetscReal[]);
 PETSC_INTERN PetscMPIInt    MPMOwnerRank(const MPMGrid *, const PetscReal[]);
 PETSC_INTERN PetscInt       MPMRegionAt(MPM, const PetscReal[]);
-PETSC_INTERN PetscErrorCode MPMStep(MPM, PetscReal);
+PETSC_INTERN PetscErrorCode MPMStep(MPM, PetscReal, PetscReal);
+PETSC_INTERN PetscErrorCode MPMSetFailure(MPM, const char[], ...);
+PETSC_INTERN PetscErrorCode MPMModuleAdd(MPM, const char[], MPMPhase, PetscErrorCode (*)(MPMModule, MPM, const MPMStepContext *, MPMNode *), void *);
+PETSC_INTERN PetscErrorCode MPMModulesApply(MPM, MPMPhase, const MPMStepContext *);
+PETSC_INTERN PetscErrorCode MPMModulesDestroy(MPM);
+PETSC_INTERN PetscErrorCode MPMWallsApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
+PETSC_INTERN PetscErrorCode MPMGravityApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
+PETSC_INTERN PetscErrorCode MPMRemapApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
+PETSC_INTERN PetscErrorCode MPMViscosityModuleApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
+PETSC_INTERN PetscErrorCode MPMScatter(MPM, PetscBool, PetscReal);
+PETSC_INTERN PetscErrorCode MPMGather(MPM, PetscReal, PetscReal, PetscBool, PetscBool);
+PETSC_INTERN PetscErrorCode MPMParticlesToGrid(MPM, const MPMStepContext *);
+PETSC_INTERN PetscErrorCode MPMGridToParticles(MPM, const MPMStepContext *);
+PETSC_INTERN PetscErrorCode MPMConstitutive(MPM, PetscReal);
 PETSC_INTERN PetscErrorCode MPMProjectToGrid(MPM);
 PETSC_INTERN PetscErrorCode MPMOutputWriteExact(MPM);
 PETSC_INTERN PetscErrorCode MPMConstitutiveInitialize(MPM);
@@ -345,11 +386,16 @@ PETSC_INTERN PetscErrorCode MPMExactInitialize(MPMExact, MPM);
 PETSC_INTERN PetscErrorCode MPMExactComputeChecks(MPMExact, MPM);
 PETSC_INTERN PetscBool      MPMExactInWindow(MPMExact, const PetscReal[]);
 PETSC_INTERN PetscErrorCode MPMAddCheck(MPM, const char[], PetscReal, PetscReal);
-PETSC_INTERN PetscErrorCode MPMViscosityApply(MPMViscosity, MPM, PetscReal);
 PETSC_INTERN PetscErrorCode MPMXProfile(MPM, PetscInt, PetscReal[], PetscReal[]);
 PETSC_INTERN PetscReal      MPMProfileCrossing(PetscInt, const PetscReal[], const PetscReal[], PetscReal, PetscReal);
 PETSC_INTERN PetscErrorCode MPMClassSetType(PetscFunctionList, const char[], const char[], const char[], PetscErrorCode (**)(void *));
 PETSC_INTERN PetscErrorCode MPMClassTypeList(PetscFunctionList, char[], size_t);
+
+/* Owned nodes of the global nodal vector (the box xs .. xs + xm; unused directions have xm = 1). */
+static inline PetscInt MPMNumOwnedNodes(const MPMGrid *g)
+{
+  return g->xm[0] * g->xm[1] * g->xm[2];
+}
 
 /* Global cell index of x in direction k, clamped to the domain. */
 static inline PetscInt MPMCellIndex(const MPMGrid *g, PetscInt k, PetscReal x)

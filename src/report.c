@@ -180,3 +180,30 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+/* Total mass sum m_p, total energy sum m_p (e_p + |v_p|^2 / 2) and momentum sum m_p v_p over all ranks. */
+PetscErrorCode MPMGlobalSums(MPM mpm, PetscReal *mass, PetscReal *energy, PetscReal momentum[])
+{
+  const PetscInt d                  = mpm->grid.dim;
+  PetscReal      s[2 + MPM_MAX_DIM] = {0, 0, 0, 0, 0};
+  MPMPoints      pts;
+
+  PetscFunctionBegin;
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt p = 0; p < pts.n; p++) {
+    const PetscReal m = pts.f[MPM_FIELD_MASS][p], *v = &pts.f[MPM_FIELD_VELOCITY][p * d];
+    PetscReal       v2 = 0.0;
+    for (PetscInt k = 0; k < d; k++) {
+      v2 += v[k] * v[k];
+      s[2 + k] += m * v[k];
+    }
+    s[0] += m;
+    s[1] += m * (pts.f[MPM_FIELD_ENERGY][p] + 0.5 * v2);
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 2 + MPM_MAX_DIM, MPIU_REAL, MPIU_SUM, mpm->comm));
+  *mass   = s[0];
+  *energy = s[1];
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) momentum[k] = s[2 + k];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -25,10 +25,10 @@ static PetscErrorCode MPMTSPreStep(TS ts)
   PetscCall(TSGetMaxTime(ts, &tmax));
   PetscCall(TSGetStepNumber(ts, &step));
   PetscCall(MPMComputeTimeStep(mpm, PETSC_FALSE, &dt));
-  if (dt < mpm->dtmin) {
+  if (dt < mpm->dtmin) { /* the post-step stops the loop without a step */
     PetscCall(MPMComputeTimeStep(mpm, PETSC_TRUE, &dt));
-    PetscCall(MPMOutputWrite(mpm, step, t));
-    SETERRQ(mpm->comm, PETSC_ERR_NOT_CONVERGED, "Step %" PetscInt_FMT ", t = %g s: CFL time step %g s fell below -mpm_dt_min %g s; last state written to %s", step, (double)t, (double)dt, (double)mpm->dtmin, mpm->outdir);
+    PetscCall(MPMSetFailure(mpm, "Step %" PetscInt_FMT ", t = %g s: CFL time step %g s fell below -mpm_dt_min %g s", step, (double)t, (double)dt, (double)mpm->dtmin));
+    PetscFunctionReturn(PETSC_SUCCESS);
   }
   if (t + dt * (1.0 + 1e-6) >= tmax) dt = tmax - t;                                                              /* land on the final time, never leave a sliver */
   if (mpm->itout < mpm->ntout && t + dt * (1.0 + 1e-6) >= mpm->tout[mpm->itout]) dt = mpm->tout[mpm->itout] - t; /* and on the output times */
@@ -48,13 +48,21 @@ static PetscErrorCode MPMTSPostStep(TS ts)
   PetscCall(TSGetMaxTime(ts, &tmax));
   PetscCall(TSGetTimeStep(ts, &dt));
   PetscCall(TSGetStepNumber(ts, &step));
+  if (mpm->failed) { /* set by the pre-step: no step */
+    PetscCall(TSSetConvergedReason(ts, TS_DIVERGED_STEP_REJECTED));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   if (PetscAbsReal(t - tmax) <= 1e-12 * PetscAbsReal(tmax)) {
     t = tmax; /* the trimmed last step: report the final time exactly */
     PetscCall(TSSetTime(ts, t));
   }
   mpm->steps = step;
   mpm->time  = t;
-  PetscCall(MPMStep(mpm, dt));
+  PetscCall(MPMStep(mpm, t, dt));
+  if (mpm->failed) { /* set by the step: stop the loop, MPMSolve writes the last state */
+    PetscCall(TSSetConvergedReason(ts, TS_DIVERGED_STEP_REJECTED));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   if (mpm->itout < mpm->ntout && PetscAbsReal(t - mpm->tout[mpm->itout]) <= 1e-9 * mpm->tout[mpm->itout]) {
     mpm->itout++;
     if (PetscAbsReal(t - tmax) > 1e-12 * PetscAbsReal(tmax)) { /* the final state is written and checked after the loop */
@@ -81,6 +89,7 @@ PetscErrorCode MPMCreateTS(MPM mpm)
   PetscCall(TSSetExactFinalTime(mpm->ts, TS_EXACTFINALTIME_STEPOVER));
   PetscCall(TSSetPreStep(mpm->ts, MPMTSPreStep));
   PetscCall(TSSetPostStep(mpm->ts, MPMTSPostStep));
+  PetscCall(TSSetErrorIfStepFails(mpm->ts, PETSC_FALSE)); /* a failed run raises its own error, with its diagnosis */
   PetscCall(TSSetFromOptions(mpm->ts));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -99,6 +108,12 @@ PetscErrorCode MPMSolve(MPM mpm)
   PetscCall(TSSolve(mpm->ts, mpm->tsu));
   mpm->wall_loop = MPI_Wtime() - t0 - (mpm->wall_output - out0); /* the time loop without its outputs */
   PetscCall(PetscLogStagePop());
+  if (mpm->failed) { /* the one place that writes the last state of a run that cannot go on */
+    PetscCall(PetscLogStagePush(mpm->log.io));
+    PetscCall(MPMOutputWrite(mpm, mpm->steps, mpm->time));
+    PetscCall(PetscLogStagePop());
+    SETERRQ(mpm->comm, PETSC_ERR_NOT_CONVERGED, "%s; last state written to %s", mpm->failure, mpm->outdir);
+  }
   PetscCall(TSGetStepNumber(mpm->ts, &mpm->steps));
   PetscCall(TSGetTime(mpm->ts, &mpm->time));
   PetscCall(PetscLogStagePush(mpm->log.io));

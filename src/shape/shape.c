@@ -20,7 +20,7 @@ static PetscErrorCode MPMShapeViewClass(void *obj, PetscViewer viewer)
   MPMShape shape = (MPMShape)obj;
 
   PetscFunctionBegin;
-  PetscCall(PetscViewerASCIIPrintf(viewer, "ghost width %" PetscInt_FMT " cells, %s transfer kernels\n", shape->ops.support(shape->data), shape->kernels ? "specialised" : "generic"));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "ghost width %" PetscInt_FMT " cells%s\n", shape->ops.support(shape->data), shape->kernels ? ", specialised transfer kernels for 1D, 2D and 3D" : ""));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

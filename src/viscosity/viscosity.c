@@ -74,12 +74,11 @@ PetscErrorCode MPMViscosityIsActive(MPMViscosity visc, PetscBool *active)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode MPMViscosityApply(MPMViscosity visc, MPM mpm, PetscReal dt)
+/* The viscosity module (phase MPM_PHASE_POINT_STATE): q_p from the velocity gradient of the step. */
+PetscErrorCode MPMViscosityModuleApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
 {
   PetscFunctionBegin;
-  PetscCall(PetscLogEventBegin(mpm->log.viscosity, 0, 0, 0, 0));
-  PetscCall(visc->ops.apply(visc, mpm, dt));
-  PetscCall(PetscLogEventEnd(mpm->log.viscosity, 0, 0, 0, 0));
+  PetscCall(mpm->viscosity->ops.apply(mpm->viscosity, mpm, ctx->dt));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

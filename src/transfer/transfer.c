@@ -1,0 +1,238 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* Point-grid transfers: points to grid (m_I, (mv)_I, f_I), grid to points (v_p, x_p, L_p, the energy work), and the
+   projection of the point state for output. Each dispatches to the shape family's specialised kernel (kernels.h)
+   where it has one, and otherwise runs the generic reference below, which the specialised kernels reproduce bit
+   for bit. */
+#include "transfer.h"
+
+/* Global (i, j, k) of the c-th cell of the local cell range (the numbering of MPMLocalCell). */
+static inline void MPMLocalCellIndex(const MPMGrid *g, PetscInt c, PetscInt ijk[])
+{
+  ijk[0] = g->cs[0] + c % g->cm[0];
+  ijk[1] = g->cs[1] + (c / g->cm[0]) % g->cm[1];
+  ijk[2] = g->cs[2] + c / (g->cm[0] * g->cm[1]);
+}
+
+/* m_I = sum_p N_I m_p, (mv)_I = sum_p N_I m_p v_p and, with the force, f_I = -int sigma . grad N_I dV.
+   With sigma = -(p + q) I the internal force is f_I = int (p + q) grad N_I dV, integrated either point by
+   point (sum_p V_p (p_p + q_p) grad N_I(x_p)) or with the volume-averaged pressure of each cell,
+   f_I = sum_c V_c P_c grad N_I(x_c), P_c = sum V_p P_p / sum V_p, V_c the cell volume (every occupied cell full):
+   the cell rule does not feel how many points a cell happens to hold, so it has no cell-crossing noise.
+   The stress of a strength model, sigma = s - (p + q) I, adds -sum_p V_p s_p grad N_I(x_p) (always point by
+   point), and a manufactured solution's body force sum_p N_I m_p b(X_p, t^n) (t^n = tn). Stencil entries that mirror a
+   node across a wall carry the reflected vectors (the sign st.s of each component). */
+PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
+{
+  const MPMGrid  *g        = &mpm->grid;
+  const PetscInt  d        = g->dim;
+  const PetscBool cellrule = (PetscBool)(force && mpm->stress_integration == MPM_STRESS_CELL);
+  const PetscBool stress = (PetscBool)(force && mpm->has_stress), body = (PetscBool)(force && mpm->has_bodyforce);
+  MPMStencil      st;
+  MPMPoints       pts;
+  MPMNode        *node;
+
+  PetscFunctionBegin;
+  PetscCall(VecZeroEntries(mpm->lnodes));
+  PetscCall(VecGetArray(mpm->lnodes, (PetscScalar **)&node));
+  if (cellrule) {
+    PetscCall(PetscArrayzero(mpm->cellV, g->ncells));
+    PetscCall(PetscArrayzero(mpm->cellS, g->ncells));
+  }
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  {
+    const PetscReal *x = pts.f[MPM_FIELD_POSITION], *v = pts.f[MPM_FIELD_VELOCITY], *m = pts.f[MPM_FIELD_MASS];
+    const PetscReal *V = pts.f[MPM_FIELD_VOLUME], *pr = pts.f[MPM_FIELD_PRESSURE], *q = pts.f[MPM_FIELD_VISCOSITY];
+    const PetscReal *F = mpm->track_F ? pts.f[MPM_FIELD_DEFGRAD] : NULL, *S = pts.f[MPM_FIELD_STRESS], *X = pts.f[MPM_FIELD_REFPOSITION];
+
+    if (mpm->kern && !body) { /* the specialised kernel, then the cell sums of the cell rule */
+      const MPMTransferArgs A = {.n = pts.n, .x = (PetscReal *)x, .v = (PetscReal *)v, .m = m, .V = V, .pr = pr, .q = q, .S = S};
+      mpm->kern->p2g[(force && !cellrule ? MPM_P2G_PRESSURE : 0) | (stress ? MPM_P2G_STRESS : 0)](g, mpm->shape->data, &A, node);
+      if (cellrule)
+        for (PetscInt p = 0; p < pts.n; p++) {
+          const PetscReal P = pr[p] + q[p];
+          const PetscInt  c = MPMLocalCell(g, &x[p * d]);
+          mpm->cellV[c] += V[p];
+          mpm->cellS[c] += V[p] * P;
+        }
+    } else
+    for (PetscInt p = 0; p < pts.n; p++) {
+      const PetscReal P              = pr[p] + q[p];
+      PetscReal       b[MPM_MAX_DIM] = {0, 0, 0};
+      if (body) mpm->exact->ops.bodyforce(mpm->exact->data, tn, &X[p * d], F ? &F[p * d * d] : NULL, b);
+      MPMShapeEvaluate(mpm->shape, g, &x[p * d], F ? &F[p * d * d] : NULL, &st);
+      for (PetscInt a = 0; a < st.n; a++) {
+        MPMNode        *nd = &node[st.node[a]];
+        const PetscReal wm = st.w[a] * m[p];
+        nd->m += wm;
+        for (PetscInt k = 0; k < d; k++) nd->p[k] += st.s[a][k] * wm * v[p * d + k];
+        if (force && !cellrule)
+          for (PetscInt k = 0; k < d; k++) nd->f[k] += st.s[a][k] * V[p] * P * st.dw[a][k];
+        if (stress)
+          for (PetscInt k = 0; k < d; k++) {
+            PetscReal sg = 0.0;
+            for (PetscInt j = 0; j < d; j++) sg += S[p * d * d + k * d + j] * st.dw[a][j];
+            nd->f[k] -= st.s[a][k] * V[p] * sg;
+          }
+        if (body)
+          for (PetscInt k = 0; k < d; k++) nd->f[k] += st.s[a][k] * wm * b[k];
+      }
+      if (cellrule) {
+        const PetscInt c = MPMLocalCell(g, &x[p * d]);
+        mpm->cellV[c] += V[p];
+        mpm->cellS[c] += V[p] * P;
+      }
+    }
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  if (cellrule) {
+    for (PetscInt c = 0; c < g->ncells; c++) {
+      PetscInt  ijk[3];
+      PetscReal phiV, P;
+      if (mpm->cellV[c] <= 0.0) continue;
+      MPMLocalCellIndex(g, c, ijk);
+      phiV = g->vcell;
+      P    = mpm->cellS[c] / mpm->cellV[c];
+      MPMShapeEvaluateCell(mpm->shape, g, ijk, &st);
+      for (PetscInt a = 0; a < st.n; a++)
+        for (PetscInt k = 0; k < d; k++) node[st.node[a]].f[k] += st.s[a][k] * phiV * P * st.dw[a][k];
+    }
+  }
+  PetscCall(VecRestoreArray(mpm->lnodes, (PetscScalar **)&node));
+  PetscCall(VecZeroEntries(mpm->nodes));
+  PetscCall(DMLocalToGlobal(mpm->da, mpm->lnodes, ADD_VALUES, mpm->nodes));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMParticlesToGrid(MPM mpm, const MPMStepContext *ctx)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscLogEventBegin(mpm->log.p2g, 0, 0, 0, 0));
+  PetscCall(MPMScatter(mpm, PETSC_TRUE, ctx->tn));
+  PetscCall(PetscLogEventEnd(mpm->log.p2g, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Gathers the grid velocity (stored in MPMNode::p after the advance) to the points:
+   velocity:   v_p <- alpha (v_p + sum N_I (v_I - v_I^n)) + (1 - alpha) sum N_I v_I,
+   kinematics: x_p += dt sum N_I v_I,  L_p = sum v_I (x) grad N_I.
+   Kinetic energy fix (-mpm_ke_fix): the grid gains sum_I m_I (v_I^n . dv_I + |dv_I|^2 / 2), dv_I = v_I - v_I^n,
+   which is sum_p m_p sum_I N_I (v_p . dv_I + |dv_I|^2 / 2) since m_I v_I^n = sum_p N_I m_p v_p. The point's share
+   minus the kinetic energy it actually gains is what the map discards (for FLIP (sum N |dv|^2 - |sum N dv|^2)/2 >= 0,
+   the variance of dv over the stencil); it goes into e_p, so total energy follows the grid's exactly. The PIC part
+   of the update also discards what the points-to-grid map smoothed away; the zero-sum term (1 - alpha) R_p,
+   R_p = sum_I N_I (v_I^n - v_p) . v_I (sum_p m_p R_p = 0 since m_I v_I^n = sum_p N_I m_p v_p), moves it to the
+   points it came from: for PIC the point then gains (sum N |v_p - v_I^n|^2 + sum N |v_I|^2 - |sum N v_I|^2)/2 >= 0,
+   where without it a cold point beside a strong shock could be handed a negative energy.
+   Conservative energy update: e_p += dt_kick (s_p : Lbar_p - (p_p + q_p) tr Lbar_p) / rho_p, Lbar_p from
+   vbar_I = (v_I^{n-1/2} + v_I^{n+1/2})/2, the work of the force of MPMScatter. With the cell rule the pressure part
+   of that force is per cell, so the point takes its share P_p V_p / sum_{p in c} V_p of its cell's work
+   V_c P_c tr Lbar_c: tr Lbar_p is replaced by (V_c / sum_{p in c} V_p) tr Lbar_c. Either way sum_p m_p de_p is
+   the grid's kinetic energy loss to round-off. */
+PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool velocity, PetscBool kinematics)
+{
+  const MPMGrid  *g     = &mpm->grid;
+  const PetscInt  d     = g->dim;
+  const PetscReal alpha = mpm->update->alpha;
+  const PetscBool kefix = mpm->ke_fix;
+  MPMStencil      st;
+  MPMPoints       pts;
+  const MPMNode  *node;
+
+  PetscFunctionBegin;
+  PetscCall(VecGetArrayRead(mpm->lnodes, (const PetscScalar **)&node));
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  {
+    PetscReal       *x = pts.f[MPM_FIELD_POSITION], *v = pts.f[MPM_FIELD_VELOCITY], *L = pts.f[MPM_FIELD_GRADV], *e = pts.f[MPM_FIELD_ENERGY];
+    const PetscReal *pr = pts.f[MPM_FIELD_PRESSURE], *q = pts.f[MPM_FIELD_VISCOSITY], *S = pts.f[MPM_FIELD_STRESS], *rho = pts.f[MPM_FIELD_DENSITY];
+    const PetscBool  work = (PetscBool)(velocity && mpm->energy_update == MPM_ENERGY_CONSERVATIVE), stress = mpm->has_stress;
+    const PetscBool  cellwork = (PetscBool)(work && mpm->stress_integration == MPM_STRESS_CELL);
+    const PetscReal  wfac     = 0.5 * kick;
+    const PetscReal *F        = mpm->track_F ? pts.f[MPM_FIELD_DEFGRAD] : NULL;
+
+    if (cellwork) { /* cellS[c] <- (V_c / sum_p V_p) div vbar at the cell rule's point: the cell's work per unit P_p V_p */
+      for (PetscInt c = 0; c < g->ncells; c++) {
+        PetscInt  ijk[3];
+        PetscReal div = 0.0;
+        if (mpm->cellV[c] <= 0.0) continue;
+        MPMLocalCellIndex(g, c, ijk);
+        MPMShapeEvaluateCell(mpm->shape, g, ijk, &st);
+        for (PetscInt a = 0; a < st.n; a++)
+          for (PetscInt k = 0; k < d; k++) div += st.s[a][k] * (node[st.node[a]].p[k] + node[st.node[a]].v0[k]) * st.dw[a][k]; /* v^{n+1/2} + v^{n-1/2} */
+        mpm->cellS[c] = g->vcell / mpm->cellV[c] * div;
+      }
+    }
+    if (mpm->kern) {
+      const MPMTransferArgs A = {.n = pts.n, .x = x, .v = v, .L = L, .e = e, .pr = pr, .q = q, .S = S, .rho = rho, .cellwork = cellwork ? mpm->cellS : NULL, .alpha = alpha, .kefix = kefix, .stress = stress, .dt = dt, .wfac = wfac};
+      mpm->kern->g2p[(velocity ? MPM_G2P_VELOCITY : 0) | (kinematics ? MPM_G2P_KINEMATICS : 0) | (work ? MPM_G2P_WORK : 0)](g, mpm->shape->data, &A, node);
+    } else
+    for (PetscInt p = 0; p < pts.n; p++) {
+      PetscReal vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Lb[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, dv2 = 0.0, R = 0.0;
+      MPMShapeEvaluate(mpm->shape, g, &x[p * d], F ? &F[p * d * d] : NULL, &st);
+      for (PetscInt a = 0; a < st.n; a++) {
+        const MPMNode *nd = &node[st.node[a]];
+        for (PetscInt i = 0; i < d; i++) {
+          const PetscReal vI = st.s[a][i] * nd->p[i], dvI = st.s[a][i] * (nd->p[i] - nd->v0[i]); /* mirrored: reflected */
+          vpic[i] += st.w[a] * vI;
+          dv[i] += st.w[a] * dvI;
+          dv2 += st.w[a] * dvI * dvI;
+          R += st.w[a] * (vI - dvI - v[p * d + i]) * vI; /* (v_I^n - v_p) . v_I */
+          for (PetscInt j = 0; j < d; j++) Lp[i * d + j] += vI * st.dw[a][j];
+          if (work)
+            for (PetscInt j = 0; j < d; j++) Lb[i * d + j] += (2.0 * vI - dvI) * st.dw[a][j];
+        }
+      }
+      if (velocity) {
+        PetscReal share = 0.5 * dv2, gain = 0.0; /* grid kinetic energy gain of the point's share, the point's own [erg/g] */
+        for (PetscInt i = 0; i < d; i++) {
+          const PetscReal vn = alpha * (v[p * d + i] + dv[i]) + (1.0 - alpha) * vpic[i];
+          share += v[p * d + i] * dv[i];
+          gain += 0.5 * (vn * vn - v[p * d + i] * v[p * d + i]);
+          v[p * d + i] = vn;
+        }
+        if (kefix) e[p] += share - gain + (1.0 - alpha) * R;
+        if (work) { /* the work the grid's forces did over the kick, sum_p V_p sigma_p : Lbar_p dt_kick = sum_I f_I . vbar_I dt_kick */
+          PetscReal sL = 0.0, div = 0.0;
+          if (cellwork)
+            div = mpm->cellS[MPMLocalCell(g, &x[p * d])];
+          else
+            for (PetscInt i = 0; i < d; i++) div += Lb[i * d + i];
+          if (stress)
+            for (PetscInt i = 0; i < d * d; i++) sL += S[p * d * d + i] * Lb[i];
+          e[p] += wfac * (sL - (pr[p] + q[p]) * div) / rho[p];
+        }
+      }
+      if (kinematics) {
+        for (PetscInt i = 0; i < d; i++) x[p * d + i] += dt * vpic[i];
+        for (PetscInt i = 0; i < d * d; i++) L[p * d * d + i] = Lp[i];
+      }
+    }
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(VecRestoreArrayRead(mpm->lnodes, (const PetscScalar **)&node));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMGridToParticles(MPM mpm, const MPMStepContext *ctx)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscLogEventBegin(mpm->log.g2p, 0, 0, 0, 0));
+  PetscCall(MPMGather(mpm, ctx->dt, ctx->kick, PETSC_TRUE, (PetscBool)(mpm->scheme == MPM_SCHEME_USL)));
+  PetscCall(PetscLogEventEnd(mpm->log.g2p, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Grid fields for output: m_I and v_I = sum N_I m_p v_p / m_I of the current point state, in the global nodal vector. */
+PetscErrorCode MPMProjectToGrid(MPM mpm)
+{
+  const PetscInt d = mpm->grid.dim;
+  MPMNode       *node;
+
+  PetscFunctionBegin;
+  PetscCall(MPMScatter(mpm, PETSC_FALSE, 0.0));
+  PetscCall(VecGetArray(mpm->nodes, (PetscScalar **)&node));
+  for (PetscInt c = 0; c < MPMNumOwnedNodes(&mpm->grid); c++)
+    for (PetscInt k = 0; k < d; k++) node[c].p[k] = node[c].m > 0.0 ? node[c].p[k] / node[c].m : 0.0;
+  PetscCall(VecRestoreArray(mpm->nodes, (PetscScalar **)&node));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
