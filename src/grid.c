@@ -58,7 +58,16 @@ PetscErrorCode MPMCreateGrid(MPM mpm)
     g->mirror_hi[k] = (PetscBool)(mpm->bc_hi[k] == MPM_BC_WALL);
   }
   PetscCall(DMCreateGlobalVector(mpm->da, &mpm->nodes));
-  PetscCall(DMCreateLocalVector(mpm->da, &mpm->lnodes));
+  {
+    PetscMPIInt size;
+    PetscInt    nbox = 1;
+    PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
+    for (PetscInt k = 0; k < MPM_MAX_DIM; k++) nbox *= g->gm[k];
+    if (size == 1 && nbox == MPMNumOwnedNodes(g)) { /* one rank, no periodic ghosts: the ghosted box is the owned box, one vector serves as both */
+      PetscCall(PetscObjectReference((PetscObject)mpm->nodes));
+      mpm->lnodes = mpm->nodes;
+    } else PetscCall(DMCreateLocalVector(mpm->da, &mpm->lnodes));
+  }
   PetscCall(PetscMalloc2(g->ncells, &mpm->cellV, g->ncells, &mpm->cellS));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -93,4 +102,24 @@ PetscMPIInt MPMOwnerRank(const MPMGrid *g, const PetscReal x[])
     r[k] = lo;
   }
   return (PetscMPIInt)((r[2] * g->nranks[1] + r[1]) * g->nranks[0] + r[0]);
+}
+
+/* Sums the ghosted local nodal vector into the global one (ghost contributions added to their owners); nothing to do
+   when one vector serves as both (one rank). */
+PetscErrorCode MPMGridLocalToGlobal(MPM mpm)
+{
+  PetscFunctionBegin;
+  if (mpm->lnodes == mpm->nodes) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(VecZeroEntries(mpm->nodes));
+  PetscCall(DMLocalToGlobal(mpm->da, mpm->lnodes, ADD_VALUES, mpm->nodes));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Fills the ghosted local nodal vector from the global one. */
+PetscErrorCode MPMGridGlobalToLocal(MPM mpm)
+{
+  PetscFunctionBegin;
+  if (mpm->lnodes == mpm->nodes) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(DMGlobalToLocal(mpm->da, mpm->nodes, INSERT_VALUES, mpm->lnodes));
+  PetscFunctionReturn(PETSC_SUCCESS);
 }

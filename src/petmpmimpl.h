@@ -348,6 +348,8 @@ PETSC_INTERN PetscErrorCode MPMOptionsDimReals(PetscOptionItems *, const char[],
 PETSC_INTERN PetscErrorCode MPMOptionsDimEnums(PetscOptionItems *, const char[], const char[], const char *const[], PetscInt, PetscEnum[]);
 PETSC_INTERN PetscInt       MPMFieldBlockSize(PetscInt, PetscInt);
 PETSC_INTERN PetscErrorCode MPMCreateGrid(MPM);
+PETSC_INTERN PetscErrorCode MPMGridLocalToGlobal(MPM);
+PETSC_INTERN PetscErrorCode MPMGridGlobalToLocal(MPM);
 PETSC_INTERN PetscErrorCode MPMCreatePoints(MPM);
 PETSC_INTERN PetscErrorCode MPMPointsGetArrays(MPM, MPMPoints *);
 PETSC_INTERN PetscErrorCode MPMPointsRestoreArrays(MPM, MPMPoints *);

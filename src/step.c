@@ -84,7 +84,7 @@ static PetscErrorCode MPMGridAdvance(MPM mpm, const MPMStepContext *ctx)
   }
   PetscCall(VecRestoreArray(mpm->nodes, (PetscScalar **)&node));
   PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_VELOCITY, ctx));
-  PetscCall(DMGlobalToLocal(mpm->da, mpm->nodes, INSERT_VALUES, mpm->lnodes));
+  PetscCall(MPMGridGlobalToLocal(mpm));
   PetscCall(PetscLogEventEnd(mpm->log.advance, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -18,7 +18,7 @@ PetscErrorCode MPMRemapApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
   }
   PetscCall(VecRestoreArray(mpm->nodes, (PetscScalar **)&node));
   PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_VELOCITY, ctx));
-  PetscCall(DMGlobalToLocal(mpm->da, mpm->nodes, INSERT_VALUES, mpm->lnodes));
+  PetscCall(MPMGridGlobalToLocal(mpm));
   PetscCall(MPMGather(mpm, ctx->dt, ctx->dt, PETSC_FALSE, PETSC_TRUE));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -98,8 +98,7 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
     }
   }
   PetscCall(VecRestoreArray(mpm->lnodes, (PetscScalar **)&node));
-  PetscCall(VecZeroEntries(mpm->nodes));
-  PetscCall(DMLocalToGlobal(mpm->da, mpm->lnodes, ADD_VALUES, mpm->nodes));
+  PetscCall(MPMGridLocalToGlobal(mpm));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
