@@ -22,7 +22,9 @@ static inline PetscReal MPMDetIPlusDtL(PetscInt d, PetscReal dt, const PetscReal
    isentrope, but it does more work on the points than the force did on the grid).
    With a strength model, the work of the stress the force used, de = dt s^n : L / rho^n, also enters e, and
    the model gives s^{n+1} from F^{n+1} = (I + dt L) F^n (tracked only when a model or the shape functions
-   read it). A non-physical state (or a CPDI domain the grid cannot hold) prints its diagnosis and sets the run's failure
+   read it). The update runs per material, over each material's points (a counting sort on the material field
+   every step, so migration needs no bookkeeping), with the batched EOS and strength operations (one call per
+   material and phase, not per point). A non-physical state (or a CPDI domain the grid cannot hold) prints its diagnosis and sets the run's failure
    (MPMSetFailure): the time loop stops and MPMSolve writes the last state. */
 PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
 {
@@ -30,69 +32,83 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
   const PetscBool midpoint = (PetscBool)(mpm->energy_update == MPM_ENERGY_MIDPOINT), conservative = (PetscBool)(mpm->energy_update == MPM_ENERGY_CONSERVATIVE);
   MPMPoints       pts;
   const PetscBool trackF = mpm->track_F, stress = mpm->has_stress;
-  MPMEOS          eos[MPM_MAX_MATERIALS];
-  MPMStrength     str[MPM_MAX_MATERIALS];
-  MPMShape        shape = mpm->shape;
-  PetscInt        bad   = -1, nbad;
+  MPMShape        shape  = mpm->shape;
+  PetscInt        bad    = -1, nbad, start[MPM_MAX_MATERIALS + 1] = {0};
 
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(mpm->log.constitutive, 0, 0, 0, 0));
-  for (PetscInt i = 0; i < mpm->nmat; i++) {
-    eos[i] = mpm->mat[i].eos;
-    str[i] = mpm->mat[i].strength;
-  }
   PetscCall(MPMPointsGetArrays(mpm, &pts));
-  {
-    const PetscReal *L = pts.f[MPM_FIELD_GRADV], *m = pts.f[MPM_FIELD_MASS], *q = pts.f[MPM_FIELD_VISCOSITY], *mat = pts.f[MPM_FIELD_MATERIAL];
-    PetscReal       *rho = pts.f[MPM_FIELD_DENSITY], *V = pts.f[MPM_FIELD_VOLUME], *e = pts.f[MPM_FIELD_ENERGY], *pr = pts.f[MPM_FIELD_PRESSURE];
-    PetscReal       *c = pts.f[MPM_FIELD_SOUNDSPEED], *T = pts.f[MPM_FIELD_TEMPERATURE], *F = pts.f[MPM_FIELD_DEFGRAD], *S = pts.f[MPM_FIELD_STRESS];
-    PetscReal       *ep = pts.f[MPM_FIELD_PLASTICSTRAIN];
+  if (pts.n > mpm->nwork) { /* workspace: the material index lists and 7 values per point */
+    PetscCall(PetscFree2(mpm->widx, mpm->work));
+    mpm->nwork = pts.n + pts.n / 4;
+    PetscCall(PetscMalloc2(mpm->nwork, &mpm->widx, 7 * mpm->nwork, &mpm->work));
+  }
+  { /* each material's points, in point order: a counting sort on the material field */
+    const PetscReal *mat = pts.f[MPM_FIELD_MATERIAL];
+    PetscInt         next[MPM_MAX_MATERIALS];
+    for (PetscInt p = 0; p < pts.n; p++) start[(PetscInt)mat[p] + 1]++;
+    for (PetscInt i = 0; i < mpm->nmat; i++) start[i + 1] += start[i];
+    for (PetscInt i = 0; i < mpm->nmat; i++) next[i] = start[i];
+    for (PetscInt p = 0; p < pts.n; p++) mpm->widx[next[(PetscInt)mat[p]]++] = p;
+  }
+  for (PetscInt im = 0; im < mpm->nmat; im++) {
+    const MPMEOS      E = mpm->mat[im].eos;
+    const MPMStrength Str = stress ? mpm->mat[im].strength : NULL;
+    const PetscInt    n = start[im + 1] - start[im], *idx = &mpm->widx[start[im]];
+    PetscReal        *rho1 = mpm->work, *dvol = rho1 + n, *e1 = dvol + n, *c2 = e1 + n, *cs2 = c2 + n, *pn = cs2 + n, *Tn = pn + n;
+    const PetscReal  *L = pts.f[MPM_FIELD_GRADV], *m = pts.f[MPM_FIELD_MASS], *q = pts.f[MPM_FIELD_VISCOSITY];
+    PetscReal        *rho = pts.f[MPM_FIELD_DENSITY], *V = pts.f[MPM_FIELD_VOLUME], *e = pts.f[MPM_FIELD_ENERGY], *pr = pts.f[MPM_FIELD_PRESSURE];
+    PetscReal        *c = pts.f[MPM_FIELD_SOUNDSPEED], *T = pts.f[MPM_FIELD_TEMPERATURE], *F = pts.f[MPM_FIELD_DEFGRAD], *S = pts.f[MPM_FIELD_STRESS];
 
-    for (PetscInt p = 0; p < pts.n; p++) {
-      const MPMEOS      E    = eos[(PetscInt)mat[p]];
-      const MPMStrength Str  = str[(PetscInt)mat[p]];
-      const PetscReal   J    = MPMDetIPlusDtL(d, dt, &L[p * d * d]);
-      const PetscReal   rho1 = rho[p] / J, dvol = 1.0 / rho1 - 1.0 / rho[p];
-      PetscReal         e1, ppred, c2, cs2 = 0.0;
-
-      e1 = conservative ? e[p] : e[p] - (pr[p] + q[p]) * dvol; /* conservative: the gather added the work already */
+    if (!n) continue;
+    for (PetscInt i = 0; i < n; i++) { /* kinematics: rho^{n+1}, d(1/rho), F^{n+1}; e from the work of p^n + q (and s^n) */
+      const PetscInt  p = idx[i];
+      const PetscReal J = MPMDetIPlusDtL(d, dt, &L[p * d * d]);
+      rho1[i]           = rho[p] / J;
+      dvol[i]           = 1.0 / rho1[i] - 1.0 / rho[p];
+      e1[i]             = conservative ? e[p] : e[p] - (pr[p] + q[p]) * dvol[i]; /* conservative: the gather added the work already */
+      cs2[i]            = 0.0;
       if (trackF) {
         PetscReal Fn[MPM_MAX_DIM * MPM_MAX_DIM];
-        for (PetscInt i = 0; i < d; i++)
-          for (PetscInt j = 0; j < d; j++) {
-            Fn[i * d + j] = F[p * d * d + i * d + j];
-            for (PetscInt k = 0; k < d; k++) Fn[i * d + j] += dt * L[p * d * d + i * d + k] * F[p * d * d + k * d + j];
+        for (PetscInt a = 0; a < d; a++)
+          for (PetscInt b = 0; b < d; b++) {
+            Fn[a * d + b] = F[p * d * d + a * d + b];
+            for (PetscInt k = 0; k < d; k++) Fn[a * d + b] += dt * L[p * d * d + a * d + k] * F[p * d * d + k * d + b];
           }
-        for (PetscInt i = 0; i < d * d; i++) F[p * d * d + i] = Fn[i];
-        if (shape->ops.admissible && bad < 0 && !shape->ops.admissible(shape->data, &mpm->grid, Fn)) bad = p;
+        for (PetscInt a = 0; a < d * d; a++) F[p * d * d + a] = Fn[a];
+        if (shape->ops.admissible && !shape->ops.admissible(shape->data, &mpm->grid, Fn) && (bad < 0 || p < bad)) bad = p;
       }
-      if (stress && Str) {
-        if (!conservative) {
-          PetscReal work = 0.0;
-          for (PetscInt i = 0; i < d * d; i++) work += S[p * d * d + i] * L[p * d * d + i];
-          e1 += dt * work / rho[p];
-        }
-        Str->ops.stress(Str->data, d, dt, &L[p * d * d], &F[p * d * d], rho1, T[p], &S[p * d * d], &ep[p], &cs2);
+      if (Str && !conservative) {
+        PetscReal work = 0.0;
+        for (PetscInt a = 0; a < d * d; a++) work += S[p * d * d + a] * L[p * d * d + a];
+        e1[i] += dt * work / rho[p];
       }
-      if (midpoint) {
-        MPMEOSPressureKernel(E, rho1, e1, &ppred, &c2); /* predictor */
-        e1 = e[p] - (0.5 * (pr[p] + ppred) + q[p]) * dvol;
-      }
-      MPMEOSPressureKernel(E, rho1, e1, &pr[p], &c2);
-      MPMEOSTemperatureKernel(E, rho1, e1, &T[p]);
-      e[p]   = e1;
-      rho[p] = rho1;
-      V[p]   = m[p] / rho1;
-      c[p]   = PetscSqrtReal(PetscMax(c2, 0.0) + cs2);
-      if (bad < 0 && !(rho1 > 0.0 && isnormal(rho1) && isfinite(e1) && isfinite(pr[p]) && c2 >= 0.0)) bad = p; /* C99 classification, inline (PETSc's are library calls) */
     }
-    if (bad >= 0) {
-      PetscMPIInt rank;
-      PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
-      PetscCall(PetscPrintf(PETSC_COMM_SELF, "[%d] step %" PetscInt_FMT ", t = %g s: point %.0f at x = %g cm has rho = %g g/cm^3, e = %g erg/g, p = %g dyn/cm^2, c^2 = %g (det(I + dt L) = %g, det F = %g%s)\n", rank, mpm->steps, (double)mpm->time,
-                            (double)pts.f[MPM_FIELD_ID][bad], (double)pts.f[MPM_FIELD_POSITION][bad * d], (double)rho[bad], (double)e[bad], (double)pr[bad], (double)(c[bad] * c[bad]), (double)MPMDetIPlusDtL(d, dt, &L[bad * d * d]),
-                            (double)(trackF ? MPMDeterminant(d, &F[bad * d * d]) : 1.0), shape->ops.admissible ? "; a CPDI domain must stay inside -mpm_shape_cpdi_reach cells of its point" : ""));
+    if (Str) PetscCall(MPMStrengthStressBatch(Str, d, dt, n, idx, L, F, rho1, T, S, pts.f[MPM_FIELD_PLASTICSTRAIN], cs2)); /* s^{n+1}, eps_p */
+    if (midpoint) {
+      PetscCall(MPMEOSPressureBatch(E, n, rho1, e1, pn, c2)); /* predictor */
+      for (PetscInt i = 0; i < n; i++) e1[i] = e[idx[i]] - (0.5 * (pr[idx[i]] + pn[i]) + q[idx[i]]) * dvol[i];
     }
+    PetscCall(MPMEOSPressureBatch(E, n, rho1, e1, pn, c2));
+    PetscCall(MPMEOSTemperatureBatch(E, n, rho1, e1, Tn));
+    for (PetscInt i = 0; i < n; i++) {
+      const PetscInt p = idx[i];
+      pr[p]            = pn[i];
+      T[p]             = Tn[i];
+      e[p]             = e1[i];
+      rho[p]           = rho1[i];
+      V[p]             = m[p] / rho1[i];
+      c[p]             = PetscSqrtReal(PetscMax(c2[i], 0.0) + cs2[i]);
+      if (!(rho1[i] > 0.0 && isnormal(rho1[i]) && isfinite(e1[i]) && isfinite(pn[i]) && c2[i] >= 0.0) && (bad < 0 || p < bad)) bad = p; /* C99 classification, inline (PETSc's are library calls) */
+    }
+  }
+  if (bad >= 0) {
+    const PetscReal *rho = pts.f[MPM_FIELD_DENSITY], *e = pts.f[MPM_FIELD_ENERGY], *pr = pts.f[MPM_FIELD_PRESSURE], *c = pts.f[MPM_FIELD_SOUNDSPEED], *L = pts.f[MPM_FIELD_GRADV], *F = pts.f[MPM_FIELD_DEFGRAD];
+    PetscMPIInt      rank;
+    PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "[%d] step %" PetscInt_FMT ", t = %g s: point %.0f at x = %g cm has rho = %g g/cm^3, e = %g erg/g, p = %g dyn/cm^2, c^2 = %g (det(I + dt L) = %g, det F = %g%s)\n", rank, mpm->steps, (double)mpm->time,
+                          (double)pts.f[MPM_FIELD_ID][bad], (double)pts.f[MPM_FIELD_POSITION][bad * d], (double)rho[bad], (double)e[bad], (double)pr[bad], (double)(c[bad] * c[bad]), (double)MPMDetIPlusDtL(d, dt, &L[bad * d * d]),
+                          (double)(trackF ? MPMDeterminant(d, &F[bad * d * d]) : 1.0), shape->ops.admissible ? "; a CPDI domain must stay inside -mpm_shape_cpdi_reach cells of its point" : ""));
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   PetscCall(PetscLogFlops(30.0 * pts.n));

@@ -205,6 +205,7 @@ PetscErrorCode MPMDestroy(MPM *mpm)
   PetscCall(VecDestroy(&m->nodes));
   PetscCall(VecDestroy(&m->lnodes));
   PetscCall(PetscFree2(m->cellV, m->cellS));
+  PetscCall(PetscFree2(m->widx, m->work));
   PetscCall(DMDestroy(&m->swarm));
   PetscCall(DMDestroy(&m->da));
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) PetscCall(PetscFree(m->grid.rank_start[k]));

@@ -168,7 +168,20 @@ typedef struct {
   void (*pressure)(void *, PetscReal, PetscReal, PetscReal *, PetscReal *); /* (rho, e) -> p, c^2     */
   void (*temperature)(void *, PetscReal, PetscReal, PetscReal *);           /* (rho, e) -> T          */
   void (*energy)(void *, PetscReal, PetscReal, PetscReal *);                /* (rho, T) -> e          */
+  void (*pressure_n)(void *, PetscInt, const PetscReal[], const PetscReal[], PetscReal[], PetscReal[]); /* batched: n points (rho[], e[]) -> p[], c^2[]; NULL: a loop over pressure */
+  void (*temperature_n)(void *, PetscInt, const PetscReal[], const PetscReal[], PetscReal[]);           /* batched: (rho[], e[]) -> T[]; NULL: a loop over temperature       */
 } MPMEOSOps;
+
+/* Batched EOS operations of a type from its pointwise ones, in the type's own file so that the loop inlines them. */
+#define MPM_EOS_BATCHED(Pressure, Temperature) \
+  static void Pressure##_n(void *ctx, PetscInt n, const PetscReal rho[], const PetscReal e[], PetscReal p[], PetscReal c2[]) \
+  { \
+    for (PetscInt i = 0; i < n; i++) Pressure(ctx, rho[i], e[i], &p[i], &c2[i]); \
+  } \
+  static void Temperature##_n(void *ctx, PetscInt n, const PetscReal rho[], const PetscReal e[], PetscReal T[]) \
+  { \
+    for (PetscInt i = 0; i < n; i++) Temperature(ctx, rho[i], e[i], &T[i]); \
+  }
 struct _p_MPMEOS {
   MPM_CLASS_HEADER(MPMEOSOps);
   PetscBool pressureless; /* the type gives no pressure (none): the material needs a strength model */
@@ -177,8 +190,19 @@ struct _p_MPMEOS {
 typedef struct {
   MPM_CLASS_OPS(MPMStrength);
   void (*stress)(void *, PetscInt, PetscReal, const PetscReal[], const PetscReal[], PetscReal, PetscReal, PetscReal[], PetscReal *, PetscReal *); /* (d, dt, L, F, rho, T) -> s (row-major d x d) [dyn/cm^2] and eps_p [-] (in/out), c^2 [cm^2/s^2] */
+  void (*stress_n)(void *, PetscInt, PetscReal, PetscInt, const PetscInt[], const PetscReal[], const PetscReal[], const PetscReal[], const PetscReal[], PetscReal[], PetscReal[], PetscReal[]); /* batched over the points idx[0..n): L, F, T, s, eps_p by point, rho and c^2 contiguous; NULL: a loop over stress */
   PetscReal (*flow)(void *, PetscReal, PetscReal, PetscReal);                                                                                     /* (eps_p, deps_p/dt [1/s], T [eV]) -> yield stress [dyn/cm^2]; NULL: never yields */
 } MPMStrengthOps;
+
+/* The batched stress operation of a type from its pointwise one (see MPMStrengthOps::stress_n). */
+#define MPM_STRENGTH_BATCHED(Stress) \
+  static void Stress##_n(void *ctx, PetscInt d, PetscReal dt, PetscInt n, const PetscInt idx[], const PetscReal L[], const PetscReal F[], const PetscReal rho[], const PetscReal T[], PetscReal s[], PetscReal epsp[], PetscReal c2[]) \
+  { \
+    for (PetscInt i = 0; i < n; i++) { \
+      const PetscInt p = idx[i]; \
+      Stress(ctx, d, dt, &L[p * d * d], F ? &F[p * d * d] : NULL, rho[i], T[p], &s[p * d * d], &epsp[p], &c2[i]); \
+    } \
+  }
 struct _p_MPMStrength {
   MPM_CLASS_HEADER(MPMStrengthOps);
   PetscBool needs_F; /* the model reads the deformation gradient           */
@@ -315,6 +339,9 @@ struct _p_MPM {
   DM         swarm;         /* material points, DMSWARM_BASIC                            */
   Vec        nodes;         /* global nodal vector                                       */
   Vec        lnodes;        /* ghosted local nodal vector                                */
+  PetscInt   nwork;           /* capacity of the constitutive workspace [points]         */
+  PetscInt  *widx;            /* the local points of each material, material by material  */
+  PetscReal *work;            /* 7 values per point                                       */
   PetscReal *cellV, *cellS; /* per local cell: sum V_p, sum V_p (p_p + q_p); in the gather of the conservative update with the cell rule, cellS is the cell's work per unit P_p V_p */
   TS         ts;
   Vec        tsu; /* the TS state: empty; the MPM state lives in the grid and swarm */
@@ -424,7 +451,11 @@ static inline PetscReal MPMIsentropeStep(PetscReal (*P)(void *, PetscReal, Petsc
   return e + h * (k1 + 2.0 * k2 + 2.0 * k3 + k4) / 6.0;
 }
 
-/* EOS kernels for the batched loops: the ops table is read once per call site. */
+PETSC_INTERN PetscErrorCode MPMEOSPressureBatch(MPMEOS, PetscInt, const PetscReal[], const PetscReal[], PetscReal[], PetscReal[]);
+PETSC_INTERN PetscErrorCode MPMEOSTemperatureBatch(MPMEOS, PetscInt, const PetscReal[], const PetscReal[], PetscReal[]);
+PETSC_INTERN PetscErrorCode MPMStrengthStressBatch(MPMStrength, PetscInt, PetscReal, PetscInt, const PetscInt[], const PetscReal[], const PetscReal[], const PetscReal[], const PetscReal[], PetscReal[], PetscReal[], PetscReal[]);
+
+/* Pointwise EOS kernels for set-up and seeding. */
 static inline void MPMEOSPressureKernel(MPMEOS eos, PetscReal rho, PetscReal e, PetscReal *p, PetscReal *c2)
 {
   eos->ops.pressure(eos->data, rho, e, p, c2);

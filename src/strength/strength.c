@@ -108,3 +108,17 @@ PetscErrorCode MPMStrengthFlowStress(MPMStrength str, PetscReal epsp, PetscReal 
   *Y = str->ops.flow ? str->ops.flow(str->data, epsp, rate, T) : PETSC_MAX_REAL;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+/* The stress update of the points idx[0..n) (see MPMStrengthOps::stress_n): the type's batched operation, or a loop
+   over its pointwise one. */
+PetscErrorCode MPMStrengthStressBatch(MPMStrength str, PetscInt d, PetscReal dt, PetscInt n, const PetscInt idx[], const PetscReal L[], const PetscReal F[], const PetscReal rho[], const PetscReal T[], PetscReal s[], PetscReal epsp[], PetscReal c2[])
+{
+  PetscFunctionBegin;
+  if (str->ops.stress_n) str->ops.stress_n(str->data, d, dt, n, idx, L, F, rho, T, s, epsp, c2);
+  else
+    for (PetscInt i = 0; i < n; i++) {
+      const PetscInt p = idx[i];
+      str->ops.stress(str->data, d, dt, &L[p * d * d], &F[p * d * d], rho[i], T[p], &s[p * d * d], &epsp[p], &c2[i]);
+    }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

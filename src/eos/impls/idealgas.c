@@ -23,6 +23,8 @@ static void MPMEOSTemperature_IdealGas(void *ctx, PetscReal rho, PetscReal e, Pe
   *T = e / ((const EOS_IdealGas *)ctx)->cv;
 }
 
+MPM_EOS_BATCHED(MPMEOSPressure_IdealGas, MPMEOSTemperature_IdealGas)
+
 static void MPMEOSEnergy_IdealGas(void *ctx, PetscReal rho, PetscReal T, PetscReal *e)
 {
   *e = ((const EOS_IdealGas *)ctx)->cv * T;
@@ -86,6 +88,8 @@ PetscErrorCode MPMEOSCreate_IdealGas(MPMEOS eos)
   eos->data               = ig;
   eos->ops.pressure       = MPMEOSPressure_IdealGas;
   eos->ops.temperature    = MPMEOSTemperature_IdealGas;
+  eos->ops.pressure_n     = MPMEOSPressure_IdealGas_n;
+  eos->ops.temperature_n  = MPMEOSTemperature_IdealGas_n;
   eos->ops.energy         = MPMEOSEnergy_IdealGas;
   eos->ops.setfromoptions = MPMEOSSetFromOptions_IdealGas;
   eos->ops.view           = MPMEOSView_IdealGas;

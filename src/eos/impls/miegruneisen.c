@@ -84,6 +84,8 @@ static void MPMEOSTemperature_MG(void *ctx, PetscReal rho, PetscReal e, PetscRea
   *T               = MGIsentropeTemperature(mg, rho) + (e - MGIsentropeEnergy(mg, rho)) / mg->cv;
 }
 
+MPM_EOS_BATCHED(MPMEOSPressure_MG, MPMEOSTemperature_MG)
+
 static void MPMEOSEnergy_MG(void *ctx, PetscReal rho, PetscReal T, PetscReal *e)
 {
   const EOS_MG *mg = (const EOS_MG *)ctx;
@@ -177,6 +179,8 @@ PetscErrorCode MPMEOSCreate_MieGruneisen(MPMEOS eos)
   eos->data               = mg;
   eos->ops.pressure       = MPMEOSPressure_MG;
   eos->ops.temperature    = MPMEOSTemperature_MG;
+  eos->ops.pressure_n     = MPMEOSPressure_MG_n;
+  eos->ops.temperature_n  = MPMEOSTemperature_MG_n;
   eos->ops.energy         = MPMEOSEnergy_MG;
   eos->ops.setfromoptions = MPMEOSSetFromOptions_MG;
   eos->ops.view           = MPMEOSView_MG;

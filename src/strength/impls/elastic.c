@@ -17,6 +17,8 @@ static void MPMStrengthStress_Elastic(void *ctx, PetscInt d, PetscReal dt, const
   *c2 = MPMHypoelasticWaveSpeed2(el->G, rho);
 }
 
+MPM_STRENGTH_BATCHED(MPMStrengthStress_Elastic)
+
 static PetscErrorCode MPMStrengthSetFromOptions_Elastic(MPMStrength str, PetscOptionItems *PetscOptionsObject)
 {
   Strength_Elastic *el = (Strength_Elastic *)str->data;
@@ -56,6 +58,7 @@ PetscErrorCode MPMStrengthCreate_Elastic(MPMStrength str)
   str->data               = el;
   str->G                  = el->G;
   str->ops.stress         = MPMStrengthStress_Elastic;
+  str->ops.stress_n       = MPMStrengthStress_Elastic_n;
   str->ops.setfromoptions = MPMStrengthSetFromOptions_Elastic;
   str->ops.view           = MPMStrengthView_Elastic;
   str->ops.destroy        = MPMStrengthDestroy_Elastic;

@@ -33,6 +33,8 @@ static void MPMStrengthStress_JC(void *ctx, PetscInt d, PetscReal dt, const Pets
   *c2 = MPMHypoelasticWaveSpeed2(jc->G, rho);
 }
 
+MPM_STRENGTH_BATCHED(MPMStrengthStress_JC)
+
 static PetscErrorCode MPMStrengthSetFromOptions_JC(MPMStrength str, PetscOptionItems *PetscOptionsObject)
 {
   Strength_JC *jc    = (Strength_JC *)str->data;
@@ -108,6 +110,7 @@ PetscErrorCode MPMStrengthCreate_JohnsonCook(MPMStrength str)
   str->data               = jc;
   str->G                  = jc->G;
   str->ops.stress         = MPMStrengthStress_JC;
+  str->ops.stress_n       = MPMStrengthStress_JC_n;
   str->ops.flow           = MPMStrengthFlow_JC;
   str->ops.setfromoptions = MPMStrengthSetFromOptions_JC;
   str->ops.view           = MPMStrengthView_JC;

@@ -26,6 +26,8 @@ static void MPMStrengthStress_NeoHookean(void *ctx, PetscInt d, PetscReal dt, co
   *c2 = (nh->lambda + 2.0 * nh->mu) / rho;
 }
 
+MPM_STRENGTH_BATCHED(MPMStrengthStress_NeoHookean)
+
 static PetscErrorCode MPMStrengthSetFromOptions_NeoHookean(MPMStrength str, PetscOptionItems *PetscOptionsObject)
 {
   Strength_NeoHookean *nh = (Strength_NeoHookean *)str->data;
@@ -74,6 +76,7 @@ PetscErrorCode MPMStrengthCreate_NeoHookean(MPMStrength str)
   str->data               = nh;
   str->needs_F            = PETSC_TRUE;
   str->ops.stress         = MPMStrengthStress_NeoHookean;
+  str->ops.stress_n       = MPMStrengthStress_NeoHookean_n;
   str->ops.setfromoptions = MPMStrengthSetFromOptions_NeoHookean;
   str->ops.view           = MPMStrengthView_NeoHookean;
   str->ops.destroy        = MPMStrengthDestroy_NeoHookean;

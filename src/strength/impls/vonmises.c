@@ -24,6 +24,8 @@ static void MPMStrengthStress_VonMises(void *ctx, PetscInt d, PetscReal dt, cons
   *c2 = MPMHypoelasticWaveSpeed2(vm->G, rho);
 }
 
+MPM_STRENGTH_BATCHED(MPMStrengthStress_VonMises)
+
 static PetscErrorCode MPMStrengthSetFromOptions_VonMises(MPMStrength str, PetscOptionItems *PetscOptionsObject)
 {
   Strength_VonMises *vm = (Strength_VonMises *)str->data;
@@ -69,6 +71,7 @@ PetscErrorCode MPMStrengthCreate_VonMises(MPMStrength str)
   str->data               = vm;
   str->G                  = vm->G;
   str->ops.stress         = MPMStrengthStress_VonMises;
+  str->ops.stress_n       = MPMStrengthStress_VonMises_n;
   str->ops.flow           = MPMStrengthFlow_VonMises;
   str->ops.setfromoptions = MPMStrengthSetFromOptions_VonMises;
   str->ops.view           = MPMStrengthView_VonMises;
