@@ -13,7 +13,6 @@ typedef struct _p_MPM          *MPM;
 typedef struct _p_MPMShape     *MPMShape;
 typedef struct _p_MPMEOS       *MPMEOS;
 typedef struct _p_MPMViscosity *MPMViscosity;
-typedef struct _p_MPMUpdate    *MPMUpdate;
 typedef struct _p_MPMExact     *MPMExact;
 typedef struct _p_MPMStrength  *MPMStrength;
 
@@ -30,6 +29,12 @@ PETSC_EXTERN const char *const MPMEnergyUpdates[];
 /* Transfer kernels: the shape family's specialised kernels where it has them, or the generic reference. */
 typedef enum { MPM_TRANSFER_SPECIALISED, MPM_TRANSFER_GENERIC } MPMTransferKernel;
 PETSC_EXTERN const char *const MPMTransferKernelTypes[];
+
+/* Particle velocity update: v_p <- alpha (v_p + sum_I N_I (v_I^{n+1} - v_I^n)) + (1 - alpha) sum_I N_I v_I^{n+1} with
+   alpha = 0 (PIC; Harlow 1964), 1 (FLIP; Brackbill & Ruppel, JCP 65 (1986) 314) or -mpm_update_blend_alpha (blend;
+   Zhu & Bridson, ACM TOG 24 (2005) 965). Positions always move with the grid velocity. */
+typedef enum { MPM_UPDATE_PIC, MPM_UPDATE_FLIP, MPM_UPDATE_BLEND } MPMUpdateType;
+PETSC_EXTERN const char *const MPMUpdateTypes[];
 
 typedef enum { MPM_BC_WALL, MPM_BC_FREE } MPMBoundaryType;
 PETSC_EXTERN const char *const MPMBoundaryTypes[];
@@ -55,10 +60,6 @@ typedef const char *MPMViscosityType;
 #define MPMVISCOSITYNONE "none"
 #define MPMVISCOSITYVNR "vnr"
 #define MPMVISCOSITYLIMITED "limited"
-typedef const char *MPMUpdateType;
-#define MPMUPDATEPIC "pic"
-#define MPMUPDATEFLIP "flip"
-#define MPMUPDATEBLEND "blend"
 typedef const char *MPMExactType;
 #define MPMEXACTNONE "none"
 #define MPMEXACTRIEMANN "riemann"
@@ -126,17 +127,6 @@ PETSC_EXTERN PetscErrorCode MPMViscositySetFromOptions(MPMViscosity);
 PETSC_EXTERN PetscErrorCode MPMViscosityView(MPMViscosity, PetscViewer);
 PETSC_EXTERN PetscErrorCode MPMViscosityIsActive(MPMViscosity, PetscBool *);
 PETSC_EXTERN PetscErrorCode MPMViscosityDestroy(MPMViscosity *);
-
-/* Particle velocity update (PIC, FLIP, blend) */
-PETSC_EXTERN PetscErrorCode MPMUpdateRegister(const char[], PetscErrorCode (*)(MPMUpdate));
-PETSC_EXTERN PetscErrorCode MPMUpdateCreate(MPI_Comm, MPMUpdate *);
-PETSC_EXTERN PetscErrorCode MPMUpdateSetType(MPMUpdate, MPMUpdateType);
-PETSC_EXTERN PetscErrorCode MPMUpdateGetType(MPMUpdate, MPMUpdateType *);
-PETSC_EXTERN PetscErrorCode MPMUpdateSetOptionsPrefix(MPMUpdate, const char[]);
-PETSC_EXTERN PetscErrorCode MPMUpdateSetFromOptions(MPMUpdate);
-PETSC_EXTERN PetscErrorCode MPMUpdateView(MPMUpdate, PetscViewer);
-PETSC_EXTERN PetscErrorCode MPMUpdateGetFLIPFraction(MPMUpdate, PetscReal *);
-PETSC_EXTERN PetscErrorCode MPMUpdateDestroy(MPMUpdate *);
 
 /* Exact solutions for self-checks */
 PETSC_EXTERN PetscErrorCode MPMExactRegister(const char[], PetscErrorCode (*)(MPMExact));

@@ -8,6 +8,7 @@ const char *const MPMSchemes[]            = {"usl", "musl", "MPMScheme", "MPM_SC
 const char *const MPMStressIntegrations[] = {"cell", "point", "MPMStressIntegration", "MPM_STRESS_", NULL};
 const char *const MPMEnergyUpdates[]      = {"compatible", "midpoint", "conservative", "MPMEnergyUpdate", "MPM_ENERGY_", NULL};
 const char *const MPMTransferKernelTypes[]     = {"specialised", "generic", "MPMTransferKernel", "MPM_TRANSFER_", NULL};
+const char *const MPMUpdateTypes[]         = {"pic", "flip", "blend", "MPMUpdateType", "MPM_UPDATE_", NULL};
 const char *const MPMBoundaryTypes[]      = {"wall", "free", "MPMBoundaryType", "MPM_BC_", NULL};
 
 PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
@@ -27,6 +28,8 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   m->stress_integration = MPM_STRESS_CELL;
   m->energy_update      = MPM_ENERGY_COMPATIBLE;
   m->ke_fix             = PETSC_TRUE;
+  m->update             = MPM_UPDATE_FLIP;
+  m->alpha              = 1.0;
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
     m->grid.cells[k] = 1;
     m->grid.lo[k]    = 0.0;
@@ -37,7 +40,6 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   PetscCall(PetscStrncpy(m->scene, "unnamed", sizeof(m->scene)));
   PetscCall(PetscStrncpy(m->outdir, "output", sizeof(m->outdir)));
   PetscCall(MPMShapeCreate(comm, &m->shape));
-  PetscCall(MPMUpdateCreate(comm, &m->update));
   PetscCall(MPMViscosityCreate(comm, &m->viscosity));
   PetscCall(MPMExactCreate(comm, &m->exact));
   *mpm = m;
@@ -80,6 +82,13 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscCall(PetscOptionsEnum("-mpm_energy_update",
                              "Internal energy: de = -(p^n + q) d(1/rho) (compatible, the cell rule's default), the grid forces' work with the time-centred velocity (conservative, point integration's default) or (p^n + p^{n+1})/2 (midpoint)", "",
                              MPMEnergyUpdates, (PetscEnum)mpm->energy_update, (PetscEnum *)&mpm->energy_update, NULL));
+  PetscCall(PetscOptionsEnum("-mpm_update_type", "Particle velocity update: v_p <- alpha FLIP + (1 - alpha) PIC with alpha 0 (pic), 1 (flip) or -mpm_update_blend_alpha (blend)", "", MPMUpdateTypes, (PetscEnum)mpm->update, (PetscEnum *)&mpm->update, NULL));
+  mpm->alpha = mpm->update == MPM_UPDATE_PIC ? 0.0 : 1.0;
+  if (mpm->update == MPM_UPDATE_BLEND) {
+    mpm->alpha = 0.99; /* Zhu & Bridson's */
+    PetscCall(PetscOptionsReal("-mpm_update_blend_alpha", "FLIP fraction alpha in v = alpha FLIP + (1 - alpha) PIC [-], in [0, 1]", "", mpm->alpha, &mpm->alpha, NULL));
+    PetscCall(MPMOptionsCheckRange("-mpm_update_blend_alpha", mpm->alpha, 0.0, 1.0, PETSC_FALSE, PETSC_FALSE));
+  }
   PetscCall(PetscOptionsEnum("-mpm_transfer_kernel", "Point-grid transfer kernels: specialised for the dimension and shape family (where the family has them) or the generic reference", "", MPMTransferKernelTypes, (PetscEnum)mpm->transfer_kernel,
                              (PetscEnum *)&mpm->transfer_kernel, NULL));
   PetscCall(PetscOptionsBool("-mpm_ke_fix", "Turn the kinetic energy the grid-to-point velocity map discards into internal energy of the point", "", mpm->ke_fix, &mpm->ke_fix, NULL));
@@ -98,7 +107,6 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscCall(MPMSceneSetFromOptions(mpm, PetscOptionsObject));
   PetscOptionsEnd();
   PetscCall(MPMShapeSetFromOptions(mpm->shape));
-  PetscCall(MPMUpdateSetFromOptions(mpm->update));
   PetscCall(MPMViscositySetFromOptions(mpm->viscosity));
   PetscCall(MPMExactSetFromOptions(mpm->exact));
   PetscCall(MPMCreateTS(mpm));
@@ -182,7 +190,7 @@ PetscErrorCode MPMView(MPM mpm, PetscViewer viewer)
   PetscCall(PetscViewerASCIIPrintf(viewer, "transfer kernels: %s\n", mpm->kern ? "specialised" : "generic"));
   if (mpm->has_gravity) PetscCall(PetscViewerASCIIPrintf(viewer, "gravity (%g, %g, %g) cm/s^2\n", (double)mpm->gravity[0], (double)mpm->gravity[1], (double)mpm->gravity[2]));
   PetscCall(MPMShapeView(mpm->shape, viewer));
-  PetscCall(MPMUpdateView(mpm->update, viewer));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "particle update %s (FLIP fraction %g)\n", MPMUpdateTypes[mpm->update], (double)mpm->alpha));
   if (mpm->viscosity)
     PetscCall(MPMViscosityView(mpm->viscosity, viewer));
   else
@@ -214,7 +222,6 @@ PetscErrorCode MPMDestroy(MPM *mpm)
     PetscCall(MPMStrengthDestroy(&m->mat[i].strength));
   }
   PetscCall(MPMShapeDestroy(&m->shape));
-  PetscCall(MPMUpdateDestroy(&m->update));
   PetscCall(MPMViscosityDestroy(&m->viscosity));
   PetscCall(MPMExactDestroy(&m->exact));
   PetscCall(MPMModulesDestroy(m));

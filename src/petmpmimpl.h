@@ -218,14 +218,6 @@ struct _p_MPMViscosity {
   PetscInt ghost; /* grid ghost cells the type reads beyond the shape support [cells] */
 };
 
-typedef struct {
-  MPM_CLASS_OPS(MPMUpdate);
-} MPMUpdateOps;
-struct _p_MPMUpdate {
-  MPM_CLASS_HEADER(MPMUpdateOps);
-  PetscReal alpha; /* FLIP fraction: v_p <- alpha (v_p + dv) + (1 - alpha) v_pic [-] */
-};
-
 /* An exact solution knows the fields at a point and the scene's named scalar checks. */
 typedef struct {
   MPM_CLASS_OPS(MPMExact);
@@ -331,7 +323,8 @@ struct _p_MPM {
   MPMShape                  shape;
   MPMTransferKernel         transfer_kernel; /* -mpm_transfer_kernel                                  */
   const MPMTransferKernels *kern;            /* the shape's specialised kernels for d, or NULL: generic */
-  MPMUpdate    update;
+  MPMUpdateType update; /* -mpm_update_type                                                  */
+  PetscReal     alpha;  /* FLIP fraction: v_p <- alpha (v_p + dv) + (1 - alpha) v_pic [-]     */
   MPMViscosity viscosity; /* NULL when the scene asks for none: not in the step */
   MPMExact     exact;     /* NULL when the scene has no exact solution          */
   /* discretization */

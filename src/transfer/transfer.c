@@ -131,7 +131,7 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
 {
   const MPMGrid  *g     = &mpm->grid;
   const PetscInt  d     = g->dim;
-  const PetscReal alpha = mpm->update->alpha;
+  const PetscReal alpha = mpm->alpha;
   const PetscBool kefix = mpm->ke_fix;
   MPMStencil      st;
   MPMPoints       pts;
