@@ -199,6 +199,7 @@ PetscErrorCode MPMObjectDestroy(void *o)
   PetscFunctionBegin;
   if (!*obj) PetscFunctionReturn(PETSC_SUCCESS);
   if ((*obj)->ops.destroy) PetscCall((*obj)->ops.destroy(*obj));
+  if ((*obj)->cls->destroy) PetscCall((*obj)->cls->destroy(*obj));
   PetscCall(PetscFree((*obj)->prefix));
   PetscCall(PetscFree(*obj));
   PetscFunctionReturn(PETSC_SUCCESS);

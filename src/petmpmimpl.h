@@ -22,6 +22,7 @@ typedef struct {
   PetscErrorCode (*reset)(void *);                              /* clears the class's own fields on a change of type, may be NULL */
   PetscErrorCode (*setfromoptions)(void *, PetscOptionItems *); /* class-level options after the type's, may be NULL              */
   PetscErrorCode (*view)(void *, PetscViewer);                  /* class-level view lines before the type's, may be NULL          */
+  PetscErrorCode (*destroy)(void *);                            /* frees the class's own data, may be NULL                        */
 } MPMClass;
 
 /* Generic class header, in the PETSc pattern: the class, a type name, an options prefix, the type's data and an ops
@@ -52,6 +53,52 @@ PETSC_INTERN PetscErrorCode MPMObjectSetOptionsPrefix(void *, const char[]);
 PETSC_INTERN PetscErrorCode MPMObjectSetFromOptions(void *);
 PETSC_INTERN PetscErrorCode MPMObjectView(void *, PetscViewer);
 PETSC_INTERN PetscErrorCode MPMObjectDestroy(void *);
+
+/* The typed public interface of a class X (MPMXRegister into the list XList, SetType, GetType, SetOptionsPrefix,
+   SetFromOptions, View, Destroy), each a call of the one generic implementation above. */
+#define MPM_CLASS_INTERFACE(X) \
+  PetscErrorCode X##Register(const char name[], PetscErrorCode (*create)(X)) \
+  { \
+    PetscFunctionBegin; \
+    PetscCall(PetscFunctionListAdd(&X##List, name, create)); \
+    PetscFunctionReturn(PETSC_SUCCESS); \
+  } \
+  PetscErrorCode X##SetType(X obj, X##Type type) \
+  { \
+    PetscFunctionBegin; \
+    PetscCall(MPMObjectSetType(obj, type)); \
+    PetscFunctionReturn(PETSC_SUCCESS); \
+  } \
+  PetscErrorCode X##GetType(X obj, X##Type *type) \
+  { \
+    PetscFunctionBegin; \
+    PetscCall(MPMObjectGetType(obj, type)); \
+    PetscFunctionReturn(PETSC_SUCCESS); \
+  } \
+  PetscErrorCode X##SetOptionsPrefix(X obj, const char prefix[]) \
+  { \
+    PetscFunctionBegin; \
+    PetscCall(MPMObjectSetOptionsPrefix(obj, prefix)); \
+    PetscFunctionReturn(PETSC_SUCCESS); \
+  } \
+  PetscErrorCode X##SetFromOptions(X obj) \
+  { \
+    PetscFunctionBegin; \
+    PetscCall(MPMObjectSetFromOptions(obj)); \
+    PetscFunctionReturn(PETSC_SUCCESS); \
+  } \
+  PetscErrorCode X##View(X obj, PetscViewer viewer) \
+  { \
+    PetscFunctionBegin; \
+    PetscCall(MPMObjectView(obj, viewer)); \
+    PetscFunctionReturn(PETSC_SUCCESS); \
+  } \
+  PetscErrorCode X##Destroy(X *obj) \
+  { \
+    PetscFunctionBegin; \
+    PetscCall(MPMObjectDestroy(obj)); \
+    PetscFunctionReturn(PETSC_SUCCESS); \
+  }
 
 /* ------------------------------------------------------------------ grid */
 typedef struct {

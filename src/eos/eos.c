@@ -12,14 +12,9 @@ static PetscErrorCode MPMEOSReset(void *obj)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static const MPMClass MPMEOSClass = {"equation of state", "eos", "Equation of state", "MPMEOS", "Equation of state p(rho, e)", NULL, &MPMEOSList, sizeof(MPMEOSOps), MPMEOSReset, NULL, NULL};
+static const MPMClass MPMEOSClass = {"equation of state", "eos", "Equation of state", "MPMEOS", "Equation of state p(rho, e)", NULL, &MPMEOSList, sizeof(MPMEOSOps), MPMEOSReset, NULL, NULL, NULL};
 
-PetscErrorCode MPMEOSRegister(const char name[], PetscErrorCode (*create)(MPMEOS))
-{
-  PetscFunctionBegin;
-  PetscCall(PetscFunctionListAdd(&MPMEOSList, name, create));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
+MPM_CLASS_INTERFACE(MPMEOS)
 
 PetscErrorCode MPMEOSCreate(MPI_Comm comm, MPMEOS *eos)
 {
@@ -28,54 +23,11 @@ PetscErrorCode MPMEOSCreate(MPI_Comm comm, MPMEOS *eos)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-
-PetscErrorCode MPMEOSSetType(MPMEOS eos, MPMEOSType type)
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectSetType(eos, type));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMEOSGetType(MPMEOS eos, MPMEOSType *type)
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectGetType(eos, type));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMEOSSetOptionsPrefix(MPMEOS eos, const char prefix[])
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectSetOptionsPrefix(eos, prefix));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMEOSSetFromOptions(MPMEOS eos)
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectSetFromOptions(eos));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 /* Whether the type gives a pressure at all (none does not). */
 PetscErrorCode MPMEOSHasPressure(MPMEOS eos, PetscBool *has)
 {
   PetscFunctionBegin;
   *has = (PetscBool)!eos->pressureless;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMEOSView(MPMEOS eos, PetscViewer viewer)
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectView(eos, viewer));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMEOSDestroy(MPMEOS *eos)
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectDestroy(eos));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

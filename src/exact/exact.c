@@ -18,14 +18,9 @@ static PetscErrorCode MPMExactSetFromOptionsClass(void *obj, PetscOptionItems *P
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static const MPMClass MPMExactClass = {"exact solution", "exact", "Exact solution for the self-check", "MPMExact", "Exact solution of the scene", MPMEXACTNONE, &MPMExactList, sizeof(MPMExactOps), NULL, MPMExactSetFromOptionsClass, NULL};
+static const MPMClass MPMExactClass = {"exact solution", "exact", "Exact solution for the self-check", "MPMExact", "Exact solution of the scene", MPMEXACTNONE, &MPMExactList, sizeof(MPMExactOps), NULL, MPMExactSetFromOptionsClass, NULL, NULL};
 
-PetscErrorCode MPMExactRegister(const char name[], PetscErrorCode (*create)(MPMExact))
-{
-  PetscFunctionBegin;
-  PetscCall(PetscFunctionListAdd(&MPMExactList, name, create));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
+MPM_CLASS_INTERFACE(MPMExact)
 
 PetscErrorCode MPMExactCreate(MPI_Comm comm, MPMExact *exact)
 {
@@ -35,41 +30,6 @@ PetscErrorCode MPMExactCreate(MPI_Comm comm, MPMExact *exact)
   (*exact)->window[0] = PETSC_MIN_REAL;
   (*exact)->window[1] = PETSC_MAX_REAL;
   PetscCall(MPMExactSetType(*exact, MPMEXACTNONE));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMExactSetType(MPMExact exact, MPMExactType type)
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectSetType(exact, type));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMExactGetType(MPMExact exact, MPMExactType *type)
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectGetType(exact, type));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMExactSetOptionsPrefix(MPMExact exact, const char prefix[])
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectSetOptionsPrefix(exact, prefix));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMExactSetFromOptions(MPMExact exact)
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectSetFromOptions(exact));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMExactView(MPMExact exact, PetscViewer viewer)
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectView(exact, viewer));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -135,9 +95,3 @@ PetscErrorCode MPMExactComputeChecks(MPMExact exact, MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode MPMExactDestroy(MPMExact *exact)
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectDestroy(exact));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}

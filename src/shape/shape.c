@@ -15,6 +15,15 @@ static PetscErrorCode MPMShapeReset(void *obj)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+static PetscErrorCode MPMShapeDestroyClass(void *obj)
+{
+  MPMShape shape = (MPMShape)obj;
+
+  PetscFunctionBegin;
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) PetscCall(PetscFree(shape->cell1d[k]));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode MPMShapeViewClass(void *obj, PetscViewer viewer)
 {
   MPMShape shape = (MPMShape)obj;
@@ -24,14 +33,9 @@ static PetscErrorCode MPMShapeViewClass(void *obj, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static const MPMClass MPMShapeClass = {"shape function", "shape", "Shape functions", "MPMShape", "Shape function N_I(x)", MPMSHAPELINEAR, &MPMShapeList, sizeof(MPMShapeOps), MPMShapeReset, NULL, MPMShapeViewClass};
+static const MPMClass MPMShapeClass = {"shape function", "shape", "Shape functions", "MPMShape", "Shape function N_I(x)", MPMSHAPELINEAR, &MPMShapeList, sizeof(MPMShapeOps), MPMShapeReset, NULL, MPMShapeViewClass, MPMShapeDestroyClass};
 
-PetscErrorCode MPMShapeRegister(const char name[], PetscErrorCode (*create)(MPMShape))
-{
-  PetscFunctionBegin;
-  PetscCall(PetscFunctionListAdd(&MPMShapeList, name, create));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
+MPM_CLASS_INTERFACE(MPMShape)
 
 PetscErrorCode MPMShapeCreate(MPI_Comm comm, MPMShape *shape)
 {
@@ -39,34 +43,6 @@ PetscErrorCode MPMShapeCreate(MPI_Comm comm, MPMShape *shape)
   PetscCall(MPMObjectCreate(comm, &MPMShapeClass, sizeof(struct _p_MPMShape), shape));
   PetscCall(MPMObjectSetOptionsPrefix(*shape, "mpm_"));
   PetscCall(MPMShapeSetType(*shape, MPMSHAPELINEAR));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMShapeSetType(MPMShape shape, MPMShapeType type)
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectSetType(shape, type));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMShapeGetType(MPMShape shape, MPMShapeType *type)
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectGetType(shape, type));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMShapeSetOptionsPrefix(MPMShape shape, const char prefix[])
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectSetOptionsPrefix(shape, prefix));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMShapeSetFromOptions(MPMShape shape)
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectSetFromOptions(shape));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -146,13 +122,6 @@ void MPMShapeEvaluateCell(MPMShape shape, const MPMGrid *g, const PetscInt ijk[]
   MPMShapeTensor(g, nn, idx, w, dw, sg, st);
 }
 
-PetscErrorCode MPMShapeView(MPMShape shape, PetscViewer viewer)
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectView(shape, viewer));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode MPMShapeGetGhostWidth(MPMShape shape, PetscInt *width)
 {
   PetscFunctionBegin;
@@ -160,11 +129,3 @@ PetscErrorCode MPMShapeGetGhostWidth(MPMShape shape, PetscInt *width)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode MPMShapeDestroy(MPMShape *shape)
-{
-  PetscFunctionBegin;
-  if (*shape)
-    for (PetscInt k = 0; k < MPM_MAX_DIM; k++) PetscCall(PetscFree((*shape)->cell1d[k]));
-  PetscCall(MPMObjectDestroy(shape));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}

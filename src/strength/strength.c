@@ -14,14 +14,9 @@ static PetscErrorCode MPMStrengthReset(void *obj)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static const MPMClass MPMStrengthClass = {"strength model", "strength", "Strength model", "MPMStrength", "Stress besides the EOS pressure", MPMSTRENGTHNONE, &MPMStrengthList, sizeof(MPMStrengthOps), MPMStrengthReset, NULL, NULL};
+static const MPMClass MPMStrengthClass = {"strength model", "strength", "Strength model", "MPMStrength", "Stress besides the EOS pressure", MPMSTRENGTHNONE, &MPMStrengthList, sizeof(MPMStrengthOps), MPMStrengthReset, NULL, NULL, NULL};
 
-PetscErrorCode MPMStrengthRegister(const char name[], PetscErrorCode (*create)(MPMStrength))
-{
-  PetscFunctionBegin;
-  PetscCall(PetscFunctionListAdd(&MPMStrengthList, name, create));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
+MPM_CLASS_INTERFACE(MPMStrength)
 
 PetscErrorCode MPMStrengthCreate(MPI_Comm comm, MPMStrength *str)
 {
@@ -30,54 +25,11 @@ PetscErrorCode MPMStrengthCreate(MPI_Comm comm, MPMStrength *str)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-
-PetscErrorCode MPMStrengthSetType(MPMStrength str, MPMStrengthType type)
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectSetType(str, type));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMStrengthGetType(MPMStrength str, MPMStrengthType *type)
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectGetType(str, type));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMStrengthSetOptionsPrefix(MPMStrength str, const char prefix[])
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectSetOptionsPrefix(str, prefix));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMStrengthSetFromOptions(MPMStrength str)
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectSetFromOptions(str));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 /* Whether the type computes a stress (none does not: the material leaves the stress path). */
 PetscErrorCode MPMStrengthIsActive(MPMStrength str, PetscBool *active)
 {
   PetscFunctionBegin;
   *active = (PetscBool)(str->ops.stress != NULL);
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMStrengthView(MPMStrength str, PetscViewer viewer)
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectView(str, viewer));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMStrengthDestroy(MPMStrength *str)
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectDestroy(str));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -13,14 +13,9 @@ static PetscErrorCode MPMViscosityReset(void *obj)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static const MPMClass MPMViscosityClass = {"artificial viscosity", "viscosity", "Artificial viscosity", "MPMViscosity", "Artificial viscosity q", MPMVISCOSITYNONE, &MPMViscosityList, sizeof(MPMViscosityOps), MPMViscosityReset, NULL, NULL};
+static const MPMClass MPMViscosityClass = {"artificial viscosity", "viscosity", "Artificial viscosity", "MPMViscosity", "Artificial viscosity q", MPMVISCOSITYNONE, &MPMViscosityList, sizeof(MPMViscosityOps), MPMViscosityReset, NULL, NULL, NULL};
 
-PetscErrorCode MPMViscosityRegister(const char name[], PetscErrorCode (*create)(MPMViscosity))
-{
-  PetscFunctionBegin;
-  PetscCall(PetscFunctionListAdd(&MPMViscosityList, name, create));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
+MPM_CLASS_INTERFACE(MPMViscosity)
 
 PetscErrorCode MPMViscosityCreate(MPI_Comm comm, MPMViscosity *visc)
 {
@@ -28,41 +23,6 @@ PetscErrorCode MPMViscosityCreate(MPI_Comm comm, MPMViscosity *visc)
   PetscCall(MPMObjectCreate(comm, &MPMViscosityClass, sizeof(struct _p_MPMViscosity), visc));
   PetscCall(MPMObjectSetOptionsPrefix(*visc, "mpm_"));
   PetscCall(MPMViscositySetType(*visc, MPMVISCOSITYNONE));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMViscositySetType(MPMViscosity visc, MPMViscosityType type)
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectSetType(visc, type));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMViscosityGetType(MPMViscosity visc, MPMViscosityType *type)
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectGetType(visc, type));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMViscositySetOptionsPrefix(MPMViscosity visc, const char prefix[])
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectSetOptionsPrefix(visc, prefix));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMViscositySetFromOptions(MPMViscosity visc)
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectSetFromOptions(visc));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMViscosityView(MPMViscosity visc, PetscViewer viewer)
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectView(visc, viewer));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -82,9 +42,3 @@ PetscErrorCode MPMViscosityModuleApply(MPMModule mod, MPM mpm, const MPMStepCont
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode MPMViscosityDestroy(MPMViscosity *visc)
-{
-  PetscFunctionBegin;
-  PetscCall(MPMObjectDestroy(visc));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
