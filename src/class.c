@@ -100,9 +100,9 @@ PetscErrorCode MPMObjectCreate(MPI_Comm comm, const MPMClass *cls, size_t size, 
   PetscCall(MPMInitializePackage());
   PetscCall(PetscMalloc(size, &obj));
   PetscCall(PetscMemzero(obj, size));
-  obj->comm                = comm;
-  obj->cls                 = cls;
-  *(MPMObject *)newobj     = obj;
+  obj->comm            = comm;
+  obj->cls             = cls;
+  *(MPMObject *)newobj = obj;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -32,16 +32,16 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
   const PetscBool midpoint = (PetscBool)(mpm->energy_update == MPM_ENERGY_MIDPOINT), conservative = (PetscBool)(mpm->energy_update == MPM_ENERGY_CONSERVATIVE);
   MPMPoints       pts;
   const PetscBool trackF = mpm->track_F, stress = mpm->has_stress;
-  MPMShape        shape  = mpm->shape;
-  PetscInt        bad    = -1, nbad, start[MPM_MAX_MATERIALS + 1] = {0};
+  MPMShape        shape = mpm->shape;
+  PetscInt        bad = -1, nbad, start[MPM_MAX_MATERIALS + 1] = {0};
 
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(mpm->log.constitutive, 0, 0, 0, 0));
   PetscCall(MPMPointsGetArrays(mpm, &pts));
-  if (pts.n > mpm->nwork) { /* workspace: the material index lists and 7 values per point */
+  if (pts.n > mpm->nwork) { /* workspace: the material index lists; 7 values per point of a chunk */
     PetscCall(PetscFree2(mpm->widx, mpm->work));
     mpm->nwork = pts.n + pts.n / 4;
-    PetscCall(PetscMalloc2(mpm->nwork, &mpm->widx, 7 * mpm->nwork, &mpm->work));
+    PetscCall(PetscMalloc2(mpm->nwork, &mpm->widx, 7 * MPM_CHUNK, &mpm->work));
   }
   { /* each material's points, in point order: a counting sort on the material field */
     const PetscReal *mat = pts.f[MPM_FIELD_MATERIAL];
@@ -51,57 +51,57 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
     for (PetscInt i = 0; i < mpm->nmat; i++) next[i] = start[i];
     for (PetscInt p = 0; p < pts.n; p++) mpm->widx[next[(PetscInt)mat[p]]++] = p;
   }
-  for (PetscInt im = 0; im < mpm->nmat; im++) {
-    const MPMEOS      E = mpm->mat[im].eos;
-    const MPMStrength Str = stress ? mpm->mat[im].strength : NULL;
-    const PetscInt    n = start[im + 1] - start[im], *idx = &mpm->widx[start[im]];
-    PetscReal        *rho1 = mpm->work, *dvol = rho1 + n, *e1 = dvol + n, *c2 = e1 + n, *cs2 = c2 + n, *pn = cs2 + n, *Tn = pn + n;
-    const PetscReal  *L = pts.f[MPM_FIELD_GRADV], *m = pts.f[MPM_FIELD_MASS], *q = pts.f[MPM_FIELD_VISCOSITY];
-    PetscReal        *rho = pts.f[MPM_FIELD_DENSITY], *V = pts.f[MPM_FIELD_VOLUME], *e = pts.f[MPM_FIELD_ENERGY], *pr = pts.f[MPM_FIELD_PRESSURE];
-    PetscReal        *c = pts.f[MPM_FIELD_SOUNDSPEED], *T = pts.f[MPM_FIELD_TEMPERATURE], *F = pts.f[MPM_FIELD_DEFGRAD], *S = pts.f[MPM_FIELD_STRESS];
+  for (PetscInt im = 0, c0 = 0; im < mpm->nmat; im++, c0 = start[im])
+    for (; c0 < start[im + 1]; c0 += MPM_CHUNK) { /* the material's points in chunks that stay in cache */
+      const MPMEOS      E   = mpm->mat[im].eos;
+      const MPMStrength Str = stress ? mpm->mat[im].strength : NULL;
+      const PetscInt    n = PetscMin(MPM_CHUNK, start[im + 1] - c0), *idx = &mpm->widx[c0];
+      PetscReal        *rho1 = mpm->work, *dvol = rho1 + n, *e1 = dvol + n, *c2 = e1 + n, *cs2 = c2 + n, *pn = cs2 + n, *Tn = pn + n;
+      const PetscReal  *L = pts.f[MPM_FIELD_GRADV], *m = pts.f[MPM_FIELD_MASS], *q = pts.f[MPM_FIELD_VISCOSITY];
+      PetscReal        *rho = pts.f[MPM_FIELD_DENSITY], *V = pts.f[MPM_FIELD_VOLUME], *e = pts.f[MPM_FIELD_ENERGY], *pr = pts.f[MPM_FIELD_PRESSURE];
+      PetscReal        *c = pts.f[MPM_FIELD_SOUNDSPEED], *T = pts.f[MPM_FIELD_TEMPERATURE], *F = pts.f[MPM_FIELD_DEFGRAD], *S = pts.f[MPM_FIELD_STRESS];
 
-    if (!n) continue;
-    for (PetscInt i = 0; i < n; i++) { /* kinematics: rho^{n+1}, d(1/rho), F^{n+1}; e from the work of p^n + q (and s^n) */
-      const PetscInt  p = idx[i];
-      const PetscReal J = MPMDetIPlusDtL(d, dt, &L[p * d * d]);
-      rho1[i]           = rho[p] / J;
-      dvol[i]           = 1.0 / rho1[i] - 1.0 / rho[p];
-      e1[i]             = conservative ? e[p] : e[p] - (pr[p] + q[p]) * dvol[i]; /* conservative: the gather added the work already */
-      cs2[i]            = 0.0;
-      if (trackF) {
-        PetscReal Fn[MPM_MAX_DIM * MPM_MAX_DIM];
-        for (PetscInt a = 0; a < d; a++)
-          for (PetscInt b = 0; b < d; b++) {
-            Fn[a * d + b] = F[p * d * d + a * d + b];
-            for (PetscInt k = 0; k < d; k++) Fn[a * d + b] += dt * L[p * d * d + a * d + k] * F[p * d * d + k * d + b];
-          }
-        for (PetscInt a = 0; a < d * d; a++) F[p * d * d + a] = Fn[a];
-        if (shape->ops.admissible && !shape->ops.admissible(shape->data, &mpm->grid, Fn) && (bad < 0 || p < bad)) bad = p;
+      for (PetscInt i = 0; i < n; i++) { /* kinematics: rho^{n+1}, d(1/rho), F^{n+1}; e from the work of p^n + q (and s^n) */
+        const PetscInt  p = idx[i];
+        const PetscReal J = MPMDetIPlusDtL(d, dt, &L[p * d * d]);
+        rho1[i]           = rho[p] / J;
+        dvol[i]           = 1.0 / rho1[i] - 1.0 / rho[p];
+        e1[i]             = conservative ? e[p] : e[p] - (pr[p] + q[p]) * dvol[i]; /* conservative: the gather added the work already */
+        cs2[i]            = 0.0;
+        if (trackF) {
+          PetscReal Fn[MPM_MAX_DIM * MPM_MAX_DIM];
+          for (PetscInt a = 0; a < d; a++)
+            for (PetscInt b = 0; b < d; b++) {
+              Fn[a * d + b] = F[p * d * d + a * d + b];
+              for (PetscInt k = 0; k < d; k++) Fn[a * d + b] += dt * L[p * d * d + a * d + k] * F[p * d * d + k * d + b];
+            }
+          for (PetscInt a = 0; a < d * d; a++) F[p * d * d + a] = Fn[a];
+          if (shape->ops.admissible && !shape->ops.admissible(shape->data, &mpm->grid, Fn) && (bad < 0 || p < bad)) bad = p;
+        }
+        if (Str && !conservative) {
+          PetscReal work = 0.0;
+          for (PetscInt a = 0; a < d * d; a++) work += S[p * d * d + a] * L[p * d * d + a];
+          e1[i] += dt * work / rho[p];
+        }
       }
-      if (Str && !conservative) {
-        PetscReal work = 0.0;
-        for (PetscInt a = 0; a < d * d; a++) work += S[p * d * d + a] * L[p * d * d + a];
-        e1[i] += dt * work / rho[p];
+      if (Str) PetscCall(MPMStrengthStressBatch(Str, d, dt, n, idx, L, F, rho1, T, S, pts.f[MPM_FIELD_PLASTICSTRAIN], cs2)); /* s^{n+1}, eps_p */
+      if (midpoint) {
+        PetscCall(MPMEOSPressureBatch(E, n, rho1, e1, pn, c2)); /* predictor */
+        for (PetscInt i = 0; i < n; i++) e1[i] = e[idx[i]] - (0.5 * (pr[idx[i]] + pn[i]) + q[idx[i]]) * dvol[i];
+      }
+      PetscCall(MPMEOSPressureBatch(E, n, rho1, e1, pn, c2));
+      PetscCall(MPMEOSTemperatureBatch(E, n, rho1, e1, Tn));
+      for (PetscInt i = 0; i < n; i++) {
+        const PetscInt p = idx[i];
+        pr[p]            = pn[i];
+        T[p]             = Tn[i];
+        e[p]             = e1[i];
+        rho[p]           = rho1[i];
+        V[p]             = m[p] / rho1[i];
+        c[p]             = PetscSqrtReal(PetscMax(c2[i], 0.0) + cs2[i]);
+        if (!(rho1[i] > 0.0 && isnormal(rho1[i]) && isfinite(e1[i]) && isfinite(pn[i]) && c2[i] >= 0.0) && (bad < 0 || p < bad)) bad = p; /* C99 classification, inline (PETSc's are library calls) */
       }
     }
-    if (Str) PetscCall(MPMStrengthStressBatch(Str, d, dt, n, idx, L, F, rho1, T, S, pts.f[MPM_FIELD_PLASTICSTRAIN], cs2)); /* s^{n+1}, eps_p */
-    if (midpoint) {
-      PetscCall(MPMEOSPressureBatch(E, n, rho1, e1, pn, c2)); /* predictor */
-      for (PetscInt i = 0; i < n; i++) e1[i] = e[idx[i]] - (0.5 * (pr[idx[i]] + pn[i]) + q[idx[i]]) * dvol[i];
-    }
-    PetscCall(MPMEOSPressureBatch(E, n, rho1, e1, pn, c2));
-    PetscCall(MPMEOSTemperatureBatch(E, n, rho1, e1, Tn));
-    for (PetscInt i = 0; i < n; i++) {
-      const PetscInt p = idx[i];
-      pr[p]            = pn[i];
-      T[p]             = Tn[i];
-      e[p]             = e1[i];
-      rho[p]           = rho1[i];
-      V[p]             = m[p] / rho1[i];
-      c[p]             = PetscSqrtReal(PetscMax(c2[i], 0.0) + cs2[i]);
-      if (!(rho1[i] > 0.0 && isnormal(rho1[i]) && isfinite(e1[i]) && isfinite(pn[i]) && c2[i] >= 0.0) && (bad < 0 || p < bad)) bad = p; /* C99 classification, inline (PETSc's are library calls) */
-    }
-  }
   if (bad >= 0) {
     const PetscReal *rho = pts.f[MPM_FIELD_DENSITY], *e = pts.f[MPM_FIELD_ENERGY], *pr = pts.f[MPM_FIELD_PRESSURE], *c = pts.f[MPM_FIELD_SOUNDSPEED], *L = pts.f[MPM_FIELD_GRADV], *F = pts.f[MPM_FIELD_DEFGRAD];
     PetscMPIInt      rank;
@@ -142,4 +142,3 @@ PetscErrorCode MPMConstitutiveInitialize(MPM mpm)
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
-

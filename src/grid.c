@@ -66,7 +66,8 @@ PetscErrorCode MPMCreateGrid(MPM mpm)
     if (size == 1 && nbox == MPMNumOwnedNodes(g)) { /* one rank, no periodic ghosts: the ghosted box is the owned box, one vector serves as both */
       PetscCall(PetscObjectReference((PetscObject)mpm->nodes));
       mpm->lnodes = mpm->nodes;
-    } else PetscCall(DMCreateLocalVector(mpm->da, &mpm->lnodes));
+    } else
+      PetscCall(DMCreateLocalVector(mpm->da, &mpm->lnodes));
   }
   PetscCall(PetscMalloc2(g->ncells, &mpm->cellV, g->ncells, &mpm->cellS));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -24,8 +24,8 @@ PETSC_EXTERN PetscErrorCode MPMExactCreate_None(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_Riemann(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_Flyer(MPMExact);
 
-static PetscBool    MPMPackageInitialized = PETSC_FALSE;
-PetscClassId        MPM_CLASSID;
+static PetscBool MPMPackageInitialized = PETSC_FALSE;
+PetscClassId     MPM_CLASSID;
 
 /* Registers every type of every class: a new type is one file plus its prototype and one line here. */
 PetscErrorCode MPMInitializePackage(void)
@@ -56,7 +56,6 @@ PetscErrorCode MPMInitializePackage(void)
   PetscCall(MPMExactRegister(MPMEXACTFLYER, MPMExactCreate_Flyer));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
-
 
 /* The stages and the step's phase events; each module registers its own event when the scene adds it
    (MPMModuleAdd), so a module the scene did not ask for has no -log_view row. */

@@ -4,12 +4,12 @@
 #include "petmpmimpl.h"
 #include "transfer/transfer.h"
 
-const char *const MPMSchemes[]            = {"usl", "musl", "MPMScheme", "MPM_SCHEME_", NULL};
-const char *const MPMStressIntegrations[] = {"cell", "point", "MPMStressIntegration", "MPM_STRESS_", NULL};
-const char *const MPMEnergyUpdates[]      = {"compatible", "midpoint", "conservative", "MPMEnergyUpdate", "MPM_ENERGY_", NULL};
-const char *const MPMTransferKernelTypes[]     = {"specialised", "generic", "MPMTransferKernel", "MPM_TRANSFER_", NULL};
+const char *const MPMSchemes[]             = {"usl", "musl", "MPMScheme", "MPM_SCHEME_", NULL};
+const char *const MPMStressIntegrations[]  = {"cell", "point", "MPMStressIntegration", "MPM_STRESS_", NULL};
+const char *const MPMEnergyUpdates[]       = {"compatible", "midpoint", "conservative", "MPMEnergyUpdate", "MPM_ENERGY_", NULL};
+const char *const MPMTransferKernelTypes[] = {"specialised", "generic", "MPMTransferKernel", "MPM_TRANSFER_", NULL};
 const char *const MPMUpdateTypes[]         = {"pic", "flip", "blend", "MPMUpdateType", "MPM_UPDATE_", NULL};
-const char *const MPMBoundaryTypes[]      = {"wall", "free", "MPMBoundaryType", "MPM_BC_", NULL};
+const char *const MPMBoundaryTypes[]       = {"wall", "free", "MPMBoundaryType", "MPM_BC_", NULL};
 
 PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
 {
@@ -82,7 +82,8 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscCall(PetscOptionsEnum("-mpm_energy_update",
                              "Internal energy: de = -(p^n + q) d(1/rho) (compatible, the cell rule's default), the grid forces' work with the time-centred velocity (conservative, point integration's default) or (p^n + p^{n+1})/2 (midpoint)", "",
                              MPMEnergyUpdates, (PetscEnum)mpm->energy_update, (PetscEnum *)&mpm->energy_update, NULL));
-  PetscCall(PetscOptionsEnum("-mpm_update_type", "Particle velocity update: v_p <- alpha FLIP + (1 - alpha) PIC with alpha 0 (pic), 1 (flip) or -mpm_update_blend_alpha (blend)", "", MPMUpdateTypes, (PetscEnum)mpm->update, (PetscEnum *)&mpm->update, NULL));
+  PetscCall(
+    PetscOptionsEnum("-mpm_update_type", "Particle velocity update: v_p <- alpha FLIP + (1 - alpha) PIC with alpha 0 (pic), 1 (flip) or -mpm_update_blend_alpha (blend)", "", MPMUpdateTypes, (PetscEnum)mpm->update, (PetscEnum *)&mpm->update, NULL));
   mpm->alpha = mpm->update == MPM_UPDATE_PIC ? 0.0 : 1.0;
   if (mpm->update == MPM_UPDATE_BLEND) {
     mpm->alpha = 0.99; /* Zhu & Bridson's */

@@ -11,14 +11,14 @@
    operations every class shares (create, set type, get type, options prefix, set-from-options, view, destroy)
    are written once against it in src/class.c. */
 typedef struct {
-  const char         *name;    /* for messages: "shape function"                                           */
-  const char         *key;     /* its options are -<prefix><key>_type and -<prefix><key>_<type>_...        */
-  const char         *title;   /* options block title (-help) and view heading: "Shape functions"          */
-  const char         *manpage; /* "MPMShape"                                                                */
-  const char         *help;    /* help of the type option                                                   */
-  const char         *deftype; /* type set by SetFromOptions when none is set; NULL: the user must set one  */
-  PetscFunctionList  *list;    /* the registered types                                                      */
-  size_t              opssize; /* bytes of the class's ops table, cleared when the type changes             */
+  const char        *name;                                      /* for messages: "shape function"                                           */
+  const char        *key;                                       /* its options are -<prefix><key>_type and -<prefix><key>_<type>_...        */
+  const char        *title;                                     /* options block title (-help) and view heading: "Shape functions"          */
+  const char        *manpage;                                   /* "MPMShape"                                                                */
+  const char        *help;                                      /* help of the type option                                                   */
+  const char        *deftype;                                   /* type set by SetFromOptions when none is set; NULL: the user must set one  */
+  PetscFunctionList *list;                                      /* the registered types                                                      */
+  size_t             opssize;                                   /* bytes of the class's ops table, cleared when the type changes             */
   PetscErrorCode (*reset)(void *);                              /* clears the class's own fields on a change of type, may be NULL */
   PetscErrorCode (*setfromoptions)(void *, PetscOptionItems *); /* class-level options after the type's, may be NULL              */
   PetscErrorCode (*view)(void *, PetscViewer);                  /* class-level view lines before the type's, may be NULL          */
@@ -27,16 +27,16 @@ typedef struct {
 
 /* Generic class header, in the PETSc pattern: the class, a type name, an options prefix, the type's data and an ops
    table that starts with MPM_CLASS_OPS, so that src/class.c can reach every object as an MPMObject. */
-#define MPM_CLASS_HEADER(Ops)       \
-  MPI_Comm        comm;             \
-  const MPMClass *cls;              \
+#define MPM_CLASS_HEADER(Ops)              \
+  MPI_Comm        comm;                    \
+  const MPMClass *cls;                     \
   char            type_name[MPM_MAX_NAME]; \
-  char           *prefix;           \
-  void           *data;             \
+  char           *prefix;                  \
+  void           *data;                    \
   Ops             ops
-#define MPM_CLASS_OPS(Obj) \
+#define MPM_CLASS_OPS(Obj)                                   \
   PetscErrorCode (*setfromoptions)(Obj, PetscOptionItems *); \
-  PetscErrorCode (*view)(Obj, PetscViewer); \
+  PetscErrorCode (*view)(Obj, PetscViewer);                  \
   PetscErrorCode (*destroy)(Obj)
 
 typedef struct {
@@ -56,48 +56,48 @@ PETSC_INTERN PetscErrorCode MPMObjectDestroy(void *);
 
 /* The typed public interface of a class X (MPMXRegister into the list XList, SetType, GetType, SetOptionsPrefix,
    SetFromOptions, View, Destroy), each a call of the one generic implementation above. */
-#define MPM_CLASS_INTERFACE(X) \
+#define MPM_CLASS_INTERFACE(X)                                               \
   PetscErrorCode X##Register(const char name[], PetscErrorCode (*create)(X)) \
-  { \
-    PetscFunctionBegin; \
-    PetscCall(PetscFunctionListAdd(&X##List, name, create)); \
-    PetscFunctionReturn(PETSC_SUCCESS); \
-  } \
-  PetscErrorCode X##SetType(X obj, X##Type type) \
-  { \
-    PetscFunctionBegin; \
-    PetscCall(MPMObjectSetType(obj, type)); \
-    PetscFunctionReturn(PETSC_SUCCESS); \
-  } \
-  PetscErrorCode X##GetType(X obj, X##Type *type) \
-  { \
-    PetscFunctionBegin; \
-    PetscCall(MPMObjectGetType(obj, type)); \
-    PetscFunctionReturn(PETSC_SUCCESS); \
-  } \
-  PetscErrorCode X##SetOptionsPrefix(X obj, const char prefix[]) \
-  { \
-    PetscFunctionBegin; \
-    PetscCall(MPMObjectSetOptionsPrefix(obj, prefix)); \
-    PetscFunctionReturn(PETSC_SUCCESS); \
-  } \
-  PetscErrorCode X##SetFromOptions(X obj) \
-  { \
-    PetscFunctionBegin; \
-    PetscCall(MPMObjectSetFromOptions(obj)); \
-    PetscFunctionReturn(PETSC_SUCCESS); \
-  } \
-  PetscErrorCode X##View(X obj, PetscViewer viewer) \
-  { \
-    PetscFunctionBegin; \
-    PetscCall(MPMObjectView(obj, viewer)); \
-    PetscFunctionReturn(PETSC_SUCCESS); \
-  } \
-  PetscErrorCode X##Destroy(X *obj) \
-  { \
-    PetscFunctionBegin; \
-    PetscCall(MPMObjectDestroy(obj)); \
-    PetscFunctionReturn(PETSC_SUCCESS); \
+  {                                                                          \
+    PetscFunctionBegin;                                                      \
+    PetscCall(PetscFunctionListAdd(&X##List, name, create));                 \
+    PetscFunctionReturn(PETSC_SUCCESS);                                      \
+  }                                                                          \
+  PetscErrorCode X##SetType(X obj, X##Type type)                             \
+  {                                                                          \
+    PetscFunctionBegin;                                                      \
+    PetscCall(MPMObjectSetType(obj, type));                                  \
+    PetscFunctionReturn(PETSC_SUCCESS);                                      \
+  }                                                                          \
+  PetscErrorCode X##GetType(X obj, X##Type *type)                            \
+  {                                                                          \
+    PetscFunctionBegin;                                                      \
+    PetscCall(MPMObjectGetType(obj, type));                                  \
+    PetscFunctionReturn(PETSC_SUCCESS);                                      \
+  }                                                                          \
+  PetscErrorCode X##SetOptionsPrefix(X obj, const char prefix[])             \
+  {                                                                          \
+    PetscFunctionBegin;                                                      \
+    PetscCall(MPMObjectSetOptionsPrefix(obj, prefix));                       \
+    PetscFunctionReturn(PETSC_SUCCESS);                                      \
+  }                                                                          \
+  PetscErrorCode X##SetFromOptions(X obj)                                    \
+  {                                                                          \
+    PetscFunctionBegin;                                                      \
+    PetscCall(MPMObjectSetFromOptions(obj));                                 \
+    PetscFunctionReturn(PETSC_SUCCESS);                                      \
+  }                                                                          \
+  PetscErrorCode X##View(X obj, PetscViewer viewer)                          \
+  {                                                                          \
+    PetscFunctionBegin;                                                      \
+    PetscCall(MPMObjectView(obj, viewer));                                   \
+    PetscFunctionReturn(PETSC_SUCCESS);                                      \
+  }                                                                          \
+  PetscErrorCode X##Destroy(X *obj)                                          \
+  {                                                                          \
+    PetscFunctionBegin;                                                      \
+    PetscCall(MPMObjectDestroy(obj));                                        \
+    PetscFunctionReturn(PETSC_SUCCESS);                                      \
   }
 
 /* ------------------------------------------------------------------ grid */
@@ -192,7 +192,6 @@ typedef struct {
   PetscReal w[MPM_MAX_1D], dw[MPM_MAX_1D], sg[MPM_MAX_1D];
 } MPMShapeCell;
 
-
 typedef struct {
   MPM_CLASS_OPS(MPMShape);
   PetscInt (*support)(void *);                                                                   /* ghost width the type needs [cells] */
@@ -203,8 +202,8 @@ typedef struct {
 } MPMShapeOps;
 struct _p_MPMShape {
   MPM_CLASS_HEADER(MPMShapeOps);
-  PetscBool                 needs_F; /* the type reads the points' deformation gradient */
-  const MPMTransferKernels *kernels; /* specialised transfer kernels for d = 1, 2, 3 (kernels.h), NULL: generic only */
+  PetscBool                 needs_F;                /* the type reads the points' deformation gradient */
+  const MPMTransferKernels *kernels;                /* specialised transfer kernels for d = 1, 2, 3 (kernels.h), NULL: generic only */
   MPMShapeCell             *cell1d[MPM_MAX_DIM];    /* cell-averaged 1D bases of the ghosted cells gs..gs+gm per direction */
   PetscInt                  cell1d_lo[MPM_MAX_DIM]; /* the global cell of entry 0                                          */
   PetscInt                  ncell1d[MPM_MAX_DIM];   /* entries                                                             */
@@ -212,22 +211,22 @@ struct _p_MPMShape {
 
 typedef struct {
   MPM_CLASS_OPS(MPMEOS);
-  void (*pressure)(void *, PetscReal, PetscReal, PetscReal *, PetscReal *); /* (rho, e) -> p, c^2     */
-  void (*temperature)(void *, PetscReal, PetscReal, PetscReal *);           /* (rho, e) -> T          */
-  void (*energy)(void *, PetscReal, PetscReal, PetscReal *);                /* (rho, T) -> e          */
+  void (*pressure)(void *, PetscReal, PetscReal, PetscReal *, PetscReal *);                             /* (rho, e) -> p, c^2     */
+  void (*temperature)(void *, PetscReal, PetscReal, PetscReal *);                                       /* (rho, e) -> T          */
+  void (*energy)(void *, PetscReal, PetscReal, PetscReal *);                                            /* (rho, T) -> e          */
   void (*pressure_n)(void *, PetscInt, const PetscReal[], const PetscReal[], PetscReal[], PetscReal[]); /* batched: n points (rho[], e[]) -> p[], c^2[]; NULL: a loop over pressure */
   void (*temperature_n)(void *, PetscInt, const PetscReal[], const PetscReal[], PetscReal[]);           /* batched: (rho[], e[]) -> T[]; NULL: a loop over temperature       */
 } MPMEOSOps;
 
 /* Batched EOS operations of a type from its pointwise ones, in the type's own file so that the loop inlines them. */
-#define MPM_EOS_BATCHED(Pressure, Temperature) \
+#define MPM_EOS_BATCHED(Pressure, Temperature)                                                                               \
   static void Pressure##_n(void *ctx, PetscInt n, const PetscReal rho[], const PetscReal e[], PetscReal p[], PetscReal c2[]) \
-  { \
-    for (PetscInt i = 0; i < n; i++) Pressure(ctx, rho[i], e[i], &p[i], &c2[i]); \
-  } \
-  static void Temperature##_n(void *ctx, PetscInt n, const PetscReal rho[], const PetscReal e[], PetscReal T[]) \
-  { \
-    for (PetscInt i = 0; i < n; i++) Temperature(ctx, rho[i], e[i], &T[i]); \
+  {                                                                                                                          \
+    for (PetscInt i = 0; i < n; i++) Pressure(ctx, rho[i], e[i], &p[i], &c2[i]);                                             \
+  }                                                                                                                          \
+  static void Temperature##_n(void *ctx, PetscInt n, const PetscReal rho[], const PetscReal e[], PetscReal T[])              \
+  {                                                                                                                          \
+    for (PetscInt i = 0; i < n; i++) Temperature(ctx, rho[i], e[i], &T[i]);                                                  \
   }
 struct _p_MPMEOS {
   MPM_CLASS_HEADER(MPMEOSOps);
@@ -237,18 +236,19 @@ struct _p_MPMEOS {
 typedef struct {
   MPM_CLASS_OPS(MPMStrength);
   void (*stress)(void *, PetscInt, PetscReal, const PetscReal[], const PetscReal[], PetscReal, PetscReal, PetscReal[], PetscReal *, PetscReal *); /* (d, dt, L, F, rho, T) -> s (row-major d x d) [dyn/cm^2] and eps_p [-] (in/out), c^2 [cm^2/s^2] */
-  void (*stress_n)(void *, PetscInt, PetscReal, PetscInt, const PetscInt[], const PetscReal[], const PetscReal[], const PetscReal[], const PetscReal[], PetscReal[], PetscReal[], PetscReal[]); /* batched over the points idx[0..n): L, F, T, s, eps_p by point, rho and c^2 contiguous; NULL: a loop over stress */
-  PetscReal (*flow)(void *, PetscReal, PetscReal, PetscReal);                                                                                     /* (eps_p, deps_p/dt [1/s], T [eV]) -> yield stress [dyn/cm^2]; NULL: never yields */
+  void (*stress_n)(void *, PetscInt, PetscReal, PetscInt, const PetscInt[], const PetscReal[], const PetscReal[], const PetscReal[], const PetscReal[], PetscReal[], PetscReal[],
+                   PetscReal[]);                              /* batched over the points idx[0..n): L, F, T, s, eps_p by point, rho and c^2 contiguous; NULL: a loop over stress */
+  PetscReal (*flow)(void *, PetscReal, PetscReal, PetscReal); /* (eps_p, deps_p/dt [1/s], T [eV]) -> yield stress [dyn/cm^2]; NULL: never yields */
 } MPMStrengthOps;
 
 /* The batched stress operation of a type from its pointwise one (see MPMStrengthOps::stress_n). */
-#define MPM_STRENGTH_BATCHED(Stress) \
+#define MPM_STRENGTH_BATCHED(Stress)                                                                                                                                                                                                   \
   static void Stress##_n(void *ctx, PetscInt d, PetscReal dt, PetscInt n, const PetscInt idx[], const PetscReal L[], const PetscReal F[], const PetscReal rho[], const PetscReal T[], PetscReal s[], PetscReal epsp[], PetscReal c2[]) \
-  { \
-    for (PetscInt i = 0; i < n; i++) { \
-      const PetscInt p = idx[i]; \
-      Stress(ctx, d, dt, &L[p * d * d], F ? &F[p * d * d] : NULL, rho[i], T[p], &s[p * d * d], &epsp[p], &c2[i]); \
-    } \
+  {                                                                                                                                                                                                                                    \
+    for (PetscInt i = 0; i < n; i++) {                                                                                                                                                                                                 \
+      const PetscInt p = idx[i];                                                                                                                                                                                                       \
+      Stress(ctx, d, dt, &L[p * d * d], F ? &F[p * d * d] : NULL, rho[i], T[p], &s[p * d * d], &epsp[p], &c2[i]);                                                                                                                      \
+    }                                                                                                                                                                                                                                  \
   }
 struct _p_MPMStrength {
   MPM_CLASS_HEADER(MPMStrengthOps);
@@ -299,6 +299,7 @@ typedef struct {
 } MPMRegion;
 
 #define MPM_MAX_MATERIALS 16
+#define MPM_CHUNK 256 /* points per batch of the constitutive update */
 #define MPM_MAX_REGIONS 32
 #define MPM_MAX_CHECKS 16
 #define MPM_MAX_OUTPUT_TIMES 64
@@ -370,18 +371,18 @@ struct _p_MPM {
   MPMShape                  shape;
   MPMTransferKernel         transfer_kernel; /* -mpm_transfer_kernel                                  */
   const MPMTransferKernels *kern;            /* the shape's specialised kernels for d, or NULL: generic */
-  MPMUpdateType update; /* -mpm_update_type                                                  */
-  PetscReal     alpha;  /* FLIP fraction: v_p <- alpha (v_p + dv) + (1 - alpha) v_pic [-]     */
-  MPMViscosity viscosity; /* NULL when the scene asks for none: not in the step */
-  MPMExact     exact;     /* NULL when the scene has no exact solution          */
+  MPMUpdateType             update;          /* -mpm_update_type                                                  */
+  PetscReal                 alpha;           /* FLIP fraction: v_p <- alpha (v_p + dv) + (1 - alpha) v_pic [-]     */
+  MPMViscosity              viscosity;       /* NULL when the scene asks for none: not in the step */
+  MPMExact                  exact;           /* NULL when the scene has no exact solution          */
   /* discretization */
   DM         da;            /* background grid, dof = MPM_NODE_DOF                       */
   DM         swarm;         /* material points, DMSWARM_BASIC                            */
   Vec        nodes;         /* global nodal vector                                       */
   Vec        lnodes;        /* ghosted local nodal vector                                */
-  PetscInt   nwork;           /* capacity of the constitutive workspace [points]         */
-  PetscInt  *widx;            /* the local points of each material, material by material  */
-  PetscReal *work;            /* 7 values per point                                       */
+  PetscInt   nwork;         /* capacity of the constitutive workspace [points]         */
+  PetscInt  *widx;          /* the local points of each material, material by material  */
+  PetscReal *work;          /* 7 values per point of a chunk of MPM_CHUNK points        */
   PetscReal *cellV, *cellS; /* per local cell: sum V_p, sum V_p (p_p + q_p); in the gather of the conservative update with the cell rule, cellS is the cell's work per unit P_p V_p */
   TS         ts;
   Vec        tsu; /* the TS state: empty; the MPM state lives in the grid and swarm */
@@ -408,7 +409,7 @@ struct _p_MPM {
 };
 
 /* Internal API */
-PETSC_INTERN PetscClassId MPM_CLASSID; /* log events of petmpm (src/init.c) */
+PETSC_INTERN PetscClassId   MPM_CLASSID; /* log events of petmpm (src/init.c) */
 PETSC_INTERN PetscErrorCode MPMLogRegister(MPM);
 PETSC_INTERN PetscErrorCode MPMOptionsCheckRange(const char[], PetscReal, PetscReal, PetscReal, PetscBool, PetscBool);
 PETSC_INTERN PetscErrorCode MPMOptionsDimReals(PetscOptionItems *, const char[], const char[], PetscInt, PetscReal[]);

@@ -154,8 +154,8 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     fprintf(fp, "{\n  \"scene\": \"%s\",\n  \"dim\": %" PetscInt_FMT ",\n  \"cells\": [", mpm->scene, g->dim);
     for (PetscInt k = 0; k < g->dim; k++) fprintf(fp, "%s%" PetscInt_FMT, k ? ", " : "", g->cells[k]);
     fprintf(fp, "],\n  \"points_per_cell\": %" PetscInt_FMT ",\n  \"particles\": %" PetscInt_FMT ",\n  \"ranks\": %d,\n", mpm->ppc, npoints, size);
-    fprintf(fp, "  \"shape\": \"%s\",\n  \"update\": \"%s\",\n  \"viscosity\": \"%s\",\n  \"scheme\": \"%s\",\n  \"stress_integration\": \"%s\",\n", shapetype, MPMUpdateTypes[mpm->update], visctype,
-            MPMSchemes[mpm->scheme], MPMStressIntegrations[mpm->stress_integration]);
+    fprintf(fp, "  \"shape\": \"%s\",\n  \"update\": \"%s\",\n  \"viscosity\": \"%s\",\n  \"scheme\": \"%s\",\n  \"stress_integration\": \"%s\",\n", shapetype, MPMUpdateTypes[mpm->update], visctype, MPMSchemes[mpm->scheme],
+            MPMStressIntegrations[mpm->stress_integration]);
     fprintf(fp, "  \"energy_update\": \"%s\",\n  \"ke_fix\": %s,\n", MPMEnergyUpdates[mpm->energy_update], mpm->ke_fix ? "true" : "false");
     fprintf(fp, "  \"steps\": %" PetscInt_FMT ",\n  \"time\": %.17g,\n  \"wall_seconds\": %.6g,\n  \"setup_seconds\": %.6g,\n  \"output_seconds\": %.6g,\n", mpm->steps, (double)mpm->time, (double)mpm->wall_loop, (double)mpm->wall_setup,
             (double)mpm->wall_output);

@@ -111,14 +111,14 @@ PetscErrorCode MPMStep(MPM mpm, PetscReal t, PetscReal dt)
 
   PetscFunctionBegin;
   mpm->dt = dt;
-  PetscCall(MPMParticlesToGrid(mpm, &ctx));                     /* m_I, (mv)_I, f_I = f_int          */
-  PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_FORCE, &ctx));  /* f_I += f_ext: gravity             */
-  PetscCall(MPMGridAdvance(mpm, &ctx));                         /* (mv)_I += dt_kick f_I; walls      */
-  PetscCall(MPMGridToParticles(mpm, &ctx));                     /* v_p; USL: x_p, L_p                */
+  PetscCall(MPMParticlesToGrid(mpm, &ctx));                          /* m_I, (mv)_I, f_I = f_int          */
+  PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_FORCE, &ctx));       /* f_I += f_ext: gravity             */
+  PetscCall(MPMGridAdvance(mpm, &ctx));                              /* (mv)_I += dt_kick f_I; walls      */
+  PetscCall(MPMGridToParticles(mpm, &ctx));                          /* v_p; USL: x_p, L_p                */
   PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_KINEMATICS, &ctx)); /* MUSL: v_I from v_p; x_p, L_p */
-  PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_STATE, &ctx)); /* q_p: artificial viscosity          */
-  PetscCall(MPMConstitutive(mpm, dt));                          /* rho_p, e_p, p_p, c_p, T_p, s_p    */
-  if (mpm->failed) PetscFunctionReturn(PETSC_SUCCESS);          /* the time loop stops               */
-  PetscCall(MPMMigrate(mpm));                                   /* points follow their cells         */
+  PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_STATE, &ctx));      /* q_p: artificial viscosity          */
+  PetscCall(MPMConstitutive(mpm, dt));                               /* rho_p, e_p, p_p, c_p, T_p, s_p    */
+  if (mpm->failed) PetscFunctionReturn(PETSC_SUCCESS);               /* the time loop stops               */
+  PetscCall(MPMMigrate(mpm));                                        /* points follow their cells         */
   PetscFunctionReturn(PETSC_SUCCESS);
 }

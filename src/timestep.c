@@ -46,4 +46,3 @@ PetscErrorCode MPMComputeTimeStep(MPM mpm, PetscBool diagnose, PetscReal *dt)
   PetscCall(PetscLogEventEnd(mpm->log.timestep, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
-

@@ -57,7 +57,8 @@ PetscErrorCode MPMEOSEnergyFromTemperature(MPMEOS eos, PetscReal rho, PetscReal 
 PetscErrorCode MPMEOSPressureBatch(MPMEOS eos, PetscInt n, const PetscReal rho[], const PetscReal e[], PetscReal p[], PetscReal c2[])
 {
   PetscFunctionBegin;
-  if (eos->ops.pressure_n) eos->ops.pressure_n(eos->data, n, rho, e, p, c2);
+  if (eos->ops.pressure_n)
+    eos->ops.pressure_n(eos->data, n, rho, e, p, c2);
   else
     for (PetscInt i = 0; i < n; i++) eos->ops.pressure(eos->data, rho[i], e[i], &p[i], &c2[i]);
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -66,7 +67,8 @@ PetscErrorCode MPMEOSPressureBatch(MPMEOS eos, PetscInt n, const PetscReal rho[]
 PetscErrorCode MPMEOSTemperatureBatch(MPMEOS eos, PetscInt n, const PetscReal rho[], const PetscReal e[], PetscReal T[])
 {
   PetscFunctionBegin;
-  if (eos->ops.temperature_n) eos->ops.temperature_n(eos->data, n, rho, e, T);
+  if (eos->ops.temperature_n)
+    eos->ops.temperature_n(eos->data, n, rho, e, T);
   else
     for (PetscInt i = 0; i < n; i++) eos->ops.temperature(eos->data, rho[i], e[i], &T[i]);
   PetscFunctionReturn(PETSC_SUCCESS);

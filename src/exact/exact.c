@@ -94,4 +94,3 @@ PetscErrorCode MPMExactComputeChecks(MPMExact exact, MPM mpm)
   if (exact->ops.checks) PetscCall(exact->ops.checks(exact, mpm));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
-

@@ -109,8 +109,10 @@ void MPMShapeEvaluateCell(MPMShape shape, const MPMGrid *g, const PetscInt ijk[]
   for (PetscInt k = 0; k < g->dim; k++) {
     const PetscInt i = ijk[k] - shape->cell1d_lo[k];
     MPMShapeCell   c;
-    if (i < 0 || i >= shape->ncell1d[k]) MPMShapeCell1d(shape, g, k, ijk[k], &c); /* outside the table */
-    else c = shape->cell1d[k][i];
+    if (i < 0 || i >= shape->ncell1d[k])
+      MPMShapeCell1d(shape, g, k, ijk[k], &c); /* outside the table */
+    else
+      c = shape->cell1d[k][i];
     nn[k] = c.n;
     for (PetscInt a = 0; a < c.n; a++) {
       idx[k][a] = c.idx[a];
@@ -128,4 +130,3 @@ PetscErrorCode MPMShapeGetGhostWidth(MPMShape shape, PetscInt *width)
   *width = shape->ops.support(shape->data);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
-

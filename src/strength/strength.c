@@ -66,7 +66,8 @@ PetscErrorCode MPMStrengthFlowStress(MPMStrength str, PetscReal epsp, PetscReal 
 PetscErrorCode MPMStrengthStressBatch(MPMStrength str, PetscInt d, PetscReal dt, PetscInt n, const PetscInt idx[], const PetscReal L[], const PetscReal F[], const PetscReal rho[], const PetscReal T[], PetscReal s[], PetscReal epsp[], PetscReal c2[])
 {
   PetscFunctionBegin;
-  if (str->ops.stress_n) str->ops.stress_n(str->data, d, dt, n, idx, L, F, rho, T, s, epsp, c2);
+  if (str->ops.stress_n)
+    str->ops.stress_n(str->data, d, dt, n, idx, L, F, rho, T, s, epsp, c2);
   else
     for (PetscInt i = 0; i < n; i++) {
       const PetscInt p = idx[i];

@@ -8,12 +8,12 @@
 #include "transfer.h"
 
 #if defined(__GNUC__)
-  #define MPM_KINLINE static inline __attribute__((always_inline))
+#  define MPM_KINLINE static inline __attribute__((always_inline))
 #else
-  #define MPM_KINLINE static inline
+#  define MPM_KINLINE static inline
 #endif
 #define MPM_KCAT_(a, b, c, d) a##_##b##_##c##d
-#define MPM_KCAT(a, b, c, d)  MPM_KCAT_(a, b, c, d)
+#define MPM_KCAT(a, b, c, d) MPM_KCAT_(a, b, c, d)
 
 #define MPM_KD 1
 #include "kernels_body.h"
@@ -25,16 +25,16 @@
 #include "kernels_body.h"
 #undef MPM_KD
 
-#define MPM_KTABLE(D) \
-  { \
-    {MPM_KCAT(MPMP2G, MPM_KNAME, D, _0), MPM_KCAT(MPMP2G, MPM_KNAME, D, _1), MPM_KCAT(MPMP2G, MPM_KNAME, D, _2), MPM_KCAT(MPMP2G, MPM_KNAME, D, _3)}, \
-    { \
+#define MPM_KTABLE(D)                                                                                                                                                                                                         \
+  {                                                                                                                                                                                                                           \
+    {MPM_KCAT(MPMP2G, MPM_KNAME, D, _0), MPM_KCAT(MPMP2G, MPM_KNAME, D, _1), MPM_KCAT(MPMP2G, MPM_KNAME, D, _2), MPM_KCAT(MPMP2G, MPM_KNAME, D, _3)},                                                                         \
+    {                                                                                                                                                                                                                         \
       MPM_KCAT(MPMG2P, MPM_KNAME, D, _0), MPM_KCAT(MPMG2P, MPM_KNAME, D, _1), MPM_KCAT(MPMG2P, MPM_KNAME, D, _2), MPM_KCAT(MPMG2P, MPM_KNAME, D, _3), MPM_KCAT(MPMG2P, MPM_KNAME, D, _4), MPM_KCAT(MPMG2P, MPM_KNAME, D, _5), \
-        MPM_KCAT(MPMG2P, MPM_KNAME, D, _6), MPM_KCAT(MPMG2P, MPM_KNAME, D, _7) \
-    } \
+        MPM_KCAT(MPMG2P, MPM_KNAME, D, _6), MPM_KCAT(MPMG2P, MPM_KNAME, D, _7)                                                                                                                                                \
+    }                                                                                                                                                                                                                         \
   }
-#define MPM_KTABLES_(name)  static const MPMTransferKernels MPMTransferKernels_##name[3] = {MPM_KTABLE(1), MPM_KTABLE(2), MPM_KTABLE(3)};
-#define MPM_KTABLES(name)   MPM_KTABLES_(name)
+#define MPM_KTABLES_(name) static const MPMTransferKernels MPMTransferKernels_##name[3] = {MPM_KTABLE(1), MPM_KTABLE(2), MPM_KTABLE(3)};
+#define MPM_KTABLES(name) MPM_KTABLES_(name)
 MPM_KTABLES(MPM_KNAME)
 #undef MPM_KTABLES
 #undef MPM_KTABLES_

@@ -4,11 +4,11 @@
    the stencil width and the mode known to the compiler: no function pointer, no run-time dimension loop and no
    mode branch inside the loop over points. */
 #if MPM_KD == 1
-  #define MPM_KS (MPM_KNB)
+#  define MPM_KS (MPM_KNB)
 #elif MPM_KD == 2
-  #define MPM_KS (MPM_KNB * MPM_KNB)
+#  define MPM_KS (MPM_KNB * MPM_KNB)
 #else
-  #define MPM_KS (MPM_KNB * MPM_KNB * MPM_KNB)
+#  define MPM_KS (MPM_KNB * MPM_KNB * MPM_KNB)
 #endif
 
 /* N_I(x_p), grad N_I(x_p) and the mirror signs of one point: MPMShapeEvaluate for this family and dimension. */
@@ -92,7 +92,7 @@ MPM_KINLINE void MPM_KCAT(MPMKP2G, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const
 /* The grid velocity back to the points, by mode (see MPMGather for the formulas). */
 MPM_KINLINE void MPM_KCAT(MPMKG2P, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const MPMTransferArgs *A, const MPMNode *nodes, const int mode)
 {
-  const PetscInt   D = MPM_KD;
+  const PetscInt   D        = MPM_KD;
   const PetscBool  velocity = (PetscBool)(mode & MPM_G2P_VELOCITY), kinematics = (PetscBool)(mode & MPM_G2P_KINEMATICS), work = (PetscBool)(mode & MPM_G2P_WORK);
   PetscReal       *x = A->x, *v = A->v, *L = A->L, *e = A->e;
   const PetscReal *pr = A->pr, *q = A->q, *S = A->S, *rho = A->rho, alpha = A->alpha;
@@ -132,7 +132,8 @@ MPM_KINLINE void MPM_KCAT(MPMKG2P, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const
       if (A->kefix) e[p] += share - gain + (1.0 - alpha) * R;
       if (work) {
         PetscReal sL = 0.0, div = 0.0;
-        if (A->cellwork) div = A->cellwork[MPMLocalCell(g, &x[p * D])];
+        if (A->cellwork)
+          div = A->cellwork[MPMLocalCell(g, &x[p * D])];
         else
           for (PetscInt i = 0; i < D; i++) div += Lb[i * D + i];
         if (A->stress)
@@ -147,15 +148,15 @@ MPM_KINLINE void MPM_KCAT(MPMKG2P, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const
   }
 }
 
-#define MPM_KP2G(M) \
+#define MPM_KP2G(M)                                                                                                                  \
   static void MPM_KCAT(MPMP2G, MPM_KNAME, MPM_KD, _##M)(const MPMGrid *g, const void *ctx, const MPMTransferArgs *A, MPMNode *nodes) \
-  { \
-    MPM_KCAT(MPMKP2G, MPM_KNAME, MPM_KD, d)(g, A, nodes, M); \
+  {                                                                                                                                  \
+    MPM_KCAT(MPMKP2G, MPM_KNAME, MPM_KD, d)(g, A, nodes, M);                                                                         \
   }
-#define MPM_KG2P(M) \
+#define MPM_KG2P(M)                                                                                                                        \
   static void MPM_KCAT(MPMG2P, MPM_KNAME, MPM_KD, _##M)(const MPMGrid *g, const void *ctx, const MPMTransferArgs *A, const MPMNode *nodes) \
-  { \
-    MPM_KCAT(MPMKG2P, MPM_KNAME, MPM_KD, d)(g, A, nodes, M); \
+  {                                                                                                                                        \
+    MPM_KCAT(MPMKG2P, MPM_KNAME, MPM_KD, d)(g, A, nodes, M);                                                                               \
   }
 MPM_KP2G(0)
 MPM_KP2G(1)

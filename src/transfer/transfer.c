@@ -55,33 +55,33 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
           mpm->cellS[c] += V[p] * P;
         }
     } else
-    for (PetscInt p = 0; p < pts.n; p++) {
-      const PetscReal P              = pr[p] + q[p];
-      PetscReal       b[MPM_MAX_DIM] = {0, 0, 0};
-      if (body) mpm->exact->ops.bodyforce(mpm->exact->data, tn, &X[p * d], F ? &F[p * d * d] : NULL, b);
-      MPMShapeEvaluate(mpm->shape, g, &x[p * d], F ? &F[p * d * d] : NULL, &st);
-      for (PetscInt a = 0; a < st.n; a++) {
-        MPMNode        *nd = &node[st.node[a]];
-        const PetscReal wm = st.w[a] * m[p];
-        nd->m += wm;
-        for (PetscInt k = 0; k < d; k++) nd->p[k] += st.s[a][k] * wm * v[p * d + k];
-        if (force && !cellrule)
-          for (PetscInt k = 0; k < d; k++) nd->f[k] += st.s[a][k] * V[p] * P * st.dw[a][k];
-        if (stress)
-          for (PetscInt k = 0; k < d; k++) {
-            PetscReal sg = 0.0;
-            for (PetscInt j = 0; j < d; j++) sg += S[p * d * d + k * d + j] * st.dw[a][j];
-            nd->f[k] -= st.s[a][k] * V[p] * sg;
-          }
-        if (body)
-          for (PetscInt k = 0; k < d; k++) nd->f[k] += st.s[a][k] * wm * b[k];
+      for (PetscInt p = 0; p < pts.n; p++) {
+        const PetscReal P              = pr[p] + q[p];
+        PetscReal       b[MPM_MAX_DIM] = {0, 0, 0};
+        if (body) mpm->exact->ops.bodyforce(mpm->exact->data, tn, &X[p * d], F ? &F[p * d * d] : NULL, b);
+        MPMShapeEvaluate(mpm->shape, g, &x[p * d], F ? &F[p * d * d] : NULL, &st);
+        for (PetscInt a = 0; a < st.n; a++) {
+          MPMNode        *nd = &node[st.node[a]];
+          const PetscReal wm = st.w[a] * m[p];
+          nd->m += wm;
+          for (PetscInt k = 0; k < d; k++) nd->p[k] += st.s[a][k] * wm * v[p * d + k];
+          if (force && !cellrule)
+            for (PetscInt k = 0; k < d; k++) nd->f[k] += st.s[a][k] * V[p] * P * st.dw[a][k];
+          if (stress)
+            for (PetscInt k = 0; k < d; k++) {
+              PetscReal sg = 0.0;
+              for (PetscInt j = 0; j < d; j++) sg += S[p * d * d + k * d + j] * st.dw[a][j];
+              nd->f[k] -= st.s[a][k] * V[p] * sg;
+            }
+          if (body)
+            for (PetscInt k = 0; k < d; k++) nd->f[k] += st.s[a][k] * wm * b[k];
+        }
+        if (cellrule) {
+          const PetscInt c = MPMLocalCell(g, &x[p * d]);
+          mpm->cellV[c] += V[p];
+          mpm->cellS[c] += V[p] * P;
+        }
       }
-      if (cellrule) {
-        const PetscInt c = MPMLocalCell(g, &x[p * d]);
-        mpm->cellV[c] += V[p];
-        mpm->cellS[c] += V[p] * P;
-      }
-    }
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   if (cellrule) {
@@ -164,47 +164,47 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
       const MPMTransferArgs A = {.n = pts.n, .x = x, .v = v, .L = L, .e = e, .pr = pr, .q = q, .S = S, .rho = rho, .cellwork = cellwork ? mpm->cellS : NULL, .alpha = alpha, .kefix = kefix, .stress = stress, .dt = dt, .wfac = wfac};
       mpm->kern->g2p[(velocity ? MPM_G2P_VELOCITY : 0) | (kinematics ? MPM_G2P_KINEMATICS : 0) | (work ? MPM_G2P_WORK : 0)](g, mpm->shape->data, &A, node);
     } else
-    for (PetscInt p = 0; p < pts.n; p++) {
-      PetscReal vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Lb[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, dv2 = 0.0, R = 0.0;
-      MPMShapeEvaluate(mpm->shape, g, &x[p * d], F ? &F[p * d * d] : NULL, &st);
-      for (PetscInt a = 0; a < st.n; a++) {
-        const MPMNode *nd = &node[st.node[a]];
-        for (PetscInt i = 0; i < d; i++) {
-          const PetscReal vI = st.s[a][i] * nd->p[i], dvI = st.s[a][i] * (nd->p[i] - nd->v0[i]); /* mirrored: reflected */
-          vpic[i] += st.w[a] * vI;
-          dv[i] += st.w[a] * dvI;
-          dv2 += st.w[a] * dvI * dvI;
-          R += st.w[a] * (vI - dvI - v[p * d + i]) * vI; /* (v_I^n - v_p) . v_I */
-          for (PetscInt j = 0; j < d; j++) Lp[i * d + j] += vI * st.dw[a][j];
-          if (work)
-            for (PetscInt j = 0; j < d; j++) Lb[i * d + j] += (2.0 * vI - dvI) * st.dw[a][j];
+      for (PetscInt p = 0; p < pts.n; p++) {
+        PetscReal vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Lb[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, dv2 = 0.0, R = 0.0;
+        MPMShapeEvaluate(mpm->shape, g, &x[p * d], F ? &F[p * d * d] : NULL, &st);
+        for (PetscInt a = 0; a < st.n; a++) {
+          const MPMNode *nd = &node[st.node[a]];
+          for (PetscInt i = 0; i < d; i++) {
+            const PetscReal vI = st.s[a][i] * nd->p[i], dvI = st.s[a][i] * (nd->p[i] - nd->v0[i]); /* mirrored: reflected */
+            vpic[i] += st.w[a] * vI;
+            dv[i] += st.w[a] * dvI;
+            dv2 += st.w[a] * dvI * dvI;
+            R += st.w[a] * (vI - dvI - v[p * d + i]) * vI; /* (v_I^n - v_p) . v_I */
+            for (PetscInt j = 0; j < d; j++) Lp[i * d + j] += vI * st.dw[a][j];
+            if (work)
+              for (PetscInt j = 0; j < d; j++) Lb[i * d + j] += (2.0 * vI - dvI) * st.dw[a][j];
+          }
+        }
+        if (velocity) {
+          PetscReal share = 0.5 * dv2, gain = 0.0; /* grid kinetic energy gain of the point's share, the point's own [erg/g] */
+          for (PetscInt i = 0; i < d; i++) {
+            const PetscReal vn = alpha * (v[p * d + i] + dv[i]) + (1.0 - alpha) * vpic[i];
+            share += v[p * d + i] * dv[i];
+            gain += 0.5 * (vn * vn - v[p * d + i] * v[p * d + i]);
+            v[p * d + i] = vn;
+          }
+          if (kefix) e[p] += share - gain + (1.0 - alpha) * R;
+          if (work) { /* the work the grid's forces did over the kick, sum_p V_p sigma_p : Lbar_p dt_kick = sum_I f_I . vbar_I dt_kick */
+            PetscReal sL = 0.0, div = 0.0;
+            if (cellwork)
+              div = mpm->cellS[MPMLocalCell(g, &x[p * d])];
+            else
+              for (PetscInt i = 0; i < d; i++) div += Lb[i * d + i];
+            if (stress)
+              for (PetscInt i = 0; i < d * d; i++) sL += S[p * d * d + i] * Lb[i];
+            e[p] += wfac * (sL - (pr[p] + q[p]) * div) / rho[p];
+          }
+        }
+        if (kinematics) {
+          for (PetscInt i = 0; i < d; i++) x[p * d + i] += dt * vpic[i];
+          for (PetscInt i = 0; i < d * d; i++) L[p * d * d + i] = Lp[i];
         }
       }
-      if (velocity) {
-        PetscReal share = 0.5 * dv2, gain = 0.0; /* grid kinetic energy gain of the point's share, the point's own [erg/g] */
-        for (PetscInt i = 0; i < d; i++) {
-          const PetscReal vn = alpha * (v[p * d + i] + dv[i]) + (1.0 - alpha) * vpic[i];
-          share += v[p * d + i] * dv[i];
-          gain += 0.5 * (vn * vn - v[p * d + i] * v[p * d + i]);
-          v[p * d + i] = vn;
-        }
-        if (kefix) e[p] += share - gain + (1.0 - alpha) * R;
-        if (work) { /* the work the grid's forces did over the kick, sum_p V_p sigma_p : Lbar_p dt_kick = sum_I f_I . vbar_I dt_kick */
-          PetscReal sL = 0.0, div = 0.0;
-          if (cellwork)
-            div = mpm->cellS[MPMLocalCell(g, &x[p * d])];
-          else
-            for (PetscInt i = 0; i < d; i++) div += Lb[i * d + i];
-          if (stress)
-            for (PetscInt i = 0; i < d * d; i++) sL += S[p * d * d + i] * Lb[i];
-          e[p] += wfac * (sL - (pr[p] + q[p]) * div) / rho[p];
-        }
-      }
-      if (kinematics) {
-        for (PetscInt i = 0; i < d; i++) x[p * d + i] += dt * vpic[i];
-        for (PetscInt i = 0; i < d * d; i++) L[p * d * d + i] = Lp[i];
-      }
-    }
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   PetscCall(VecRestoreArrayRead(mpm->lnodes, (const PetscScalar **)&node));
@@ -234,4 +234,3 @@ PetscErrorCode MPMProjectToGrid(MPM mpm)
   PetscCall(VecRestoreArray(mpm->nodes, (PetscScalar **)&node));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
-

@@ -25,14 +25,14 @@ enum {
 
 /* The point arrays a kernel reads and writes; entries a mode does not use may be NULL. */
 typedef struct {
-  PetscInt         n;                /* number of points                                            */
-  PetscReal       *x, *v, *L, *e;    /* position, velocity, velocity gradient, internal energy       */
-  const PetscReal *m, *V, *pr, *q;   /* mass, volume, pressure, artificial viscosity                 */
-  const PetscReal *S, *rho;          /* deviatoric stress (d x d), density                           */
-  const PetscReal *cellwork;         /* conservative update with the cell rule: work per unit P V of each local cell, else NULL */
-  PetscReal        alpha;            /* FLIP fraction                                               */
-  PetscBool        kefix, stress;    /* kinetic-energy fix; the stress enters the work               */
-  PetscReal        dt, wfac;         /* step, half the kick (the work's time factor)                 */
+  PetscInt         n;              /* number of points                                            */
+  PetscReal       *x, *v, *L, *e;  /* position, velocity, velocity gradient, internal energy       */
+  const PetscReal *m, *V, *pr, *q; /* mass, volume, pressure, artificial viscosity                 */
+  const PetscReal *S, *rho;        /* deviatoric stress (d x d), density                           */
+  const PetscReal *cellwork;       /* conservative update with the cell rule: work per unit P V of each local cell, else NULL */
+  PetscReal        alpha;          /* FLIP fraction                                               */
+  PetscBool        kefix, stress;  /* kinetic-energy fix; the stress enters the work               */
+  PetscReal        dt, wfac;       /* step, half the kick (the work's time factor)                 */
 } MPMTransferArgs;
 
 typedef void (*MPMP2GKernel)(const MPMGrid *, const void *, const MPMTransferArgs *, MPMNode *);

@@ -41,4 +41,3 @@ PetscErrorCode MPMViscosityModuleApply(MPMModule mod, MPM mpm, const MPMStepCont
   PetscCall(mpm->viscosity->ops.apply(mpm->viscosity, mpm, ctx->dt));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
-

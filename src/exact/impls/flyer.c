@@ -184,7 +184,8 @@ static PetscErrorCode MPMExactSetUp_Flyer(MPMExact exact, MPM mpm)
     MPMStrengthType type;
     PetscCall(MPMStrengthFlowStress(str, 0.0, 0.0, 0.0, &Y));
     PetscCall(MPMStrengthGetType(str, &type));
-    PetscCheck(Y == PETSC_MAX_REAL, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer knows the solution for -mat_%s_strength_type none or %s, not %s (an elastic-plastic rod sends two waves)", mpm->mat[reg->material].name, MPMSTRENGTHELASTIC, type);
+    PetscCheck(Y == PETSC_MAX_REAL, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer knows the solution for -mat_%s_strength_type none or %s, not %s (an elastic-plastic rod sends two waves)", mpm->mat[reg->material].name, MPMSTRENGTHELASTIC,
+               type);
     PetscCall(MPMStrengthGetShearModulus(str, &ef->G)); /* an error for a model without one */
   }
   PetscCall(MPMEOSEnergyFromTemperature(ef->eos, ef->rho0, reg->T, &ef->e0));

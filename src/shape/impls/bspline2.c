@@ -16,8 +16,8 @@ static void MPMShapeBasis1d_BSpline2(void *ctx, PetscReal xi, PetscInt *first, P
   MPMShapeBSpline2_1d(xi, first, n, w, dw);
 }
 
-#define MPM_KNAME  BSpline2
-#define MPM_KNB    3
+#define MPM_KNAME BSpline2
+#define MPM_KNB 3
 #define MPM_KBASIS MPMShapeBSpline2_1d
 #include "../../transfer/kernels.h"
 

@@ -16,8 +16,8 @@ static void MPMShapeBasis1d_BSpline3(void *ctx, PetscReal xi, PetscInt *first, P
   MPMShapeBSpline3_1d(xi, first, n, w, dw);
 }
 
-#define MPM_KNAME  BSpline3
-#define MPM_KNB    4
+#define MPM_KNAME BSpline3
+#define MPM_KNB 4
 #define MPM_KBASIS MPMShapeBSpline3_1d
 #include "../../transfer/kernels.h"
 

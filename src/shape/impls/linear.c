@@ -15,8 +15,8 @@ static void MPMShapeBasis1d_Linear(void *ctx, PetscReal xi, PetscInt *first, Pet
   MPMShapeLinear1d(xi, first, n, w, dw);
 }
 
-#define MPM_KNAME  Linear
-#define MPM_KNB    2
+#define MPM_KNAME Linear
+#define MPM_KNB 2
 #define MPM_KBASIS MPMShapeLinear1d
 #include "../../transfer/kernels.h"
 
