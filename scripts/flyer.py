@@ -79,7 +79,7 @@ def metrics(out, cells, r):
         times = list(f["time"][:])
         k20 = int(np.argmin(np.abs(np.array(times) - 2.0e-5)))
         x, V, rho = pf["position"][k20].ravel(), pf["volume"][k20].ravel(), pf["density"][k20].ravel()
-        pxx = pf["pressure"][k20].ravel() + pf["viscosity"][k20].ravel() - pf["stress"][k20].ravel()
+        pxx = pf["pressure"][k20].ravel() + pf["viscosity"][k20].ravel() - (pf["stress"][k20].ravel() if "stress" in pf else 0.0)
         xc, rb = binned(x, V, rho, cells)
         xs = (c["shock_speed"]["value"] - UP) * 2.0e-5
         frac = (rb - rho0) / (rho1 - rho0)
@@ -131,7 +131,7 @@ def profiles(out, name):
         for k, col in [(1, "C0"), (len(times) - 1, "C3")]:
             x = pf["position"][k].ravel()
             i = np.argsort(x)
-            pxx = (pf["pressure"][k].ravel() + pf["viscosity"][k].ravel() - pf["stress"][k].ravel())[i]
+            pxx = (pf["pressure"][k].ravel() + pf["viscosity"][k].ravel() - (pf["stress"][k].ravel() if "stress" in pf else 0.0))[i]
             ax[0].plot(x[i], pf["density"][k].ravel()[i], col, lw=0.6, label=f"t = {times[k] * 1e6:.0f} us")
             ax[1].plot(x[i], pxx / 1e10, col, lw=0.6)
             ax[2].plot(x[i], pf["velocity"][k].ravel()[i] / 1e2, col, lw=0.6)

@@ -37,6 +37,11 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
     m->bc_lo[k]      = MPM_BC_WALL;
     m->bc_hi[k]      = MPM_BC_WALL;
   }
+  for (PetscInt f = 0; f < MPM_NUM_FIELDS; f++) {
+    m->field[f]    = MPMFieldTable[f];
+    m->field_on[f] = PETSC_TRUE;
+  }
+  m->nfields = MPM_NUM_FIELDS;
   PetscCall(PetscStrncpy(m->scene, "unnamed", sizeof(m->scene)));
   PetscCall(PetscStrncpy(m->outdir, "output", sizeof(m->outdir)));
   PetscCall(MPMShapeCreate(comm, &m->shape));
@@ -157,12 +162,15 @@ PetscErrorCode MPMSetUp(MPM mpm)
   PetscCall(MPMCreateGrid(mpm));
   PetscCall(MPMShapeSetUp(mpm->shape, &mpm->grid, mpm->ppc));
   mpm->kern = mpm->transfer_kernel == MPM_TRANSFER_SPECIALISED && mpm->shape->kernels ? &mpm->shape->kernels[mpm->grid.dim - 1] : NULL;
-  PetscCall(MPMCreatePoints(mpm));
-  PetscCall(MPMExactSetUp(mpm->exact, mpm));
-  PetscCall(MPMExactInitialize(mpm->exact, mpm));
+  if (mpm->shape->needs_F || (mpm->exact && mpm->exact->ops.initial)) mpm->track_F = PETSC_TRUE; /* the points carry F */
   if (!mpm->exact->ops.evaluate) PetscCall(MPMExactDestroy(&mpm->exact));
+  PetscCall(MPMPointsSelectFields(mpm));
+  PetscCall(MPMCreatePoints(mpm));
+  if (mpm->exact) {
+    PetscCall(MPMExactSetUp(mpm->exact, mpm));
+    PetscCall(MPMExactInitialize(mpm->exact, mpm));
+  }
   mpm->has_bodyforce = (PetscBool)(mpm->exact && mpm->exact->ops.bodyforce);
-  if (mpm->shape->needs_F) mpm->track_F = PETSC_TRUE;
   PetscCall(MPMConstitutiveInitialize(mpm));
   PetscCall(MPMCheckUnusedOptions(mpm));
   PetscCall(MPMOutputOpen(mpm));

@@ -99,18 +99,18 @@ static PetscErrorCode MPMWriteXDMF(MPM mpm)
     fprintf(fp, "    <Geometry GeometryType=\"XYZ\">\n     <DataItem ItemType=\"HyperSlab\" Dimensions=\"%" PetscInt_FMT " 3\" Type=\"HyperSlab\">\n", N);
     fprintf(fp, "      <DataItem Dimensions=\"3 3\" Format=\"XML\">%" PetscInt_FMT " 0 0 1 1 1 1 %" PetscInt_FMT " 3</DataItem>\n", s, N);
     fprintf(fp, "      <DataItem Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">petmpm.h5:/particle_fields/xyz</DataItem>\n     </DataItem>\n    </Geometry>\n", S, N);
-    for (PetscInt f = 0; f < MPM_NUM_FIELDS; f++) {
-      const PetscInt bs = MPMFieldBlockSize(MPMFieldTable[f].bs, mpm->grid.dim);
-      if (!MPMFieldTable[f].output || bs > MPM_MAX_DIM) continue; /* tensors have no XDMF attribute here */
+    for (PetscInt f = 0; f < mpm->nfields; f++) {
+      const PetscInt bs = MPMFieldBlockSize(mpm->field[f].bs, mpm->grid.dim);
+      if (!mpm->field_on[f] || !mpm->field[f].output || bs > MPM_MAX_DIM) continue; /* tensors have no XDMF attribute here */
       if (bs == 1) {
-        fprintf(fp, "    <Attribute Name=\"%s\" AttributeType=\"Scalar\" Center=\"Node\">\n     <DataItem ItemType=\"HyperSlab\" Dimensions=\"%" PetscInt_FMT "\" Type=\"HyperSlab\">\n", MPMFieldTable[f].name, N);
+        fprintf(fp, "    <Attribute Name=\"%s\" AttributeType=\"Scalar\" Center=\"Node\">\n     <DataItem ItemType=\"HyperSlab\" Dimensions=\"%" PetscInt_FMT "\" Type=\"HyperSlab\">\n", mpm->field[f].name, N);
         fprintf(fp, "      <DataItem Dimensions=\"3 2\" Format=\"XML\">%" PetscInt_FMT " 0 1 1 1 %" PetscInt_FMT "</DataItem>\n", s, N);
-        fprintf(fp, "      <DataItem Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">petmpm.h5:/particle_fields/%s</DataItem>\n", S, N, MPMFieldTable[f].name);
+        fprintf(fp, "      <DataItem Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">petmpm.h5:/particle_fields/%s</DataItem>\n", S, N, mpm->field[f].name);
       } else {
-        fprintf(fp, "    <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"Node\">\n     <DataItem ItemType=\"HyperSlab\" Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT "\" Type=\"HyperSlab\">\n", MPMFieldTable[f].name,
+        fprintf(fp, "    <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"Node\">\n     <DataItem ItemType=\"HyperSlab\" Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT "\" Type=\"HyperSlab\">\n", mpm->field[f].name,
                 bs == 3 ? "Vector" : "Matrix", N, bs);
         fprintf(fp, "      <DataItem Dimensions=\"3 3\" Format=\"XML\">%" PetscInt_FMT " 0 0 1 1 1 1 %" PetscInt_FMT " %" PetscInt_FMT "</DataItem>\n", s, N, bs);
-        fprintf(fp, "      <DataItem Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT " %" PetscInt_FMT "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">petmpm.h5:/particle_fields/%s</DataItem>\n", S, N, bs, MPMFieldTable[f].name);
+        fprintf(fp, "      <DataItem Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT " %" PetscInt_FMT "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">petmpm.h5:/particle_fields/%s</DataItem>\n", S, N, bs, mpm->field[f].name);
       }
       fprintf(fp, "     </DataItem>\n    </Attribute>\n");
     }
@@ -189,13 +189,13 @@ PetscErrorCode MPMOutputWrite(MPM mpm, PetscInt step, PetscReal t)
   PetscCall(PetscLogEventBegin(mpm->log.output, 0, 0, 0, 0));
   PetscCall(DMSetOutputSequenceNumber(mpm->swarm, k, t));
   PetscCall(PetscViewerHDF5SetTimestep(mpm->h5, k));
-  for (PetscInt f = 0; f < MPM_NUM_FIELDS; f++) {
+  for (PetscInt f = 0; f < mpm->nfields; f++) {
     Vec v;
-    if (!MPMFieldTable[f].output) continue;
-    PetscCall(DMSwarmCreateGlobalVectorFromField(mpm->swarm, MPMFieldTable[f].name, &v));
-    PetscCall(PetscObjectSetName((PetscObject)v, MPMFieldTable[f].name));
+    if (!mpm->field_on[f] || !mpm->field[f].output) continue;
+    PetscCall(DMSwarmCreateGlobalVectorFromField(mpm->swarm, mpm->field[f].name, &v));
+    PetscCall(PetscObjectSetName((PetscObject)v, mpm->field[f].name));
     PetscCall(VecView(v, mpm->h5));
-    PetscCall(DMSwarmDestroyGlobalVectorFromField(mpm->swarm, MPMFieldTable[f].name, &v));
+    PetscCall(DMSwarmDestroyGlobalVectorFromField(mpm->swarm, mpm->field[f].name, &v));
   }
   PetscCall(MPMWriteXYZ(mpm));
   PetscCall(MPMWriteGrid(mpm));

@@ -30,18 +30,48 @@ PetscInt MPMFieldBlockSize(PetscInt bs, PetscInt dim)
   return bs == 0 ? dim : (bs < 0 ? dim * dim : bs);
 }
 
+/* An open registry: a class or module that needs a field of its own registers it before the points are created
+   (MPMSetUp), and reads it as pts.f[fid]. Block size 0 means d, -1 means d*d; output: written to HDF5. */
+PetscErrorCode MPMPointsRegisterField(MPM mpm, const char name[], PetscInt bs, const char unit[], const char meaning[], PetscBool output, PetscInt *fid)
+{
+  PetscFunctionBegin;
+  PetscCheck(!mpm->swarm, mpm->comm, PETSC_ERR_ARG_WRONGSTATE, "Point field %s: fields are registered before the points are created", name);
+  PetscCheck(mpm->nfields < MPM_MAX_FIELDS, mpm->comm, PETSC_ERR_SUP, "Point field %s: at most %d fields", name, MPM_MAX_FIELDS);
+  mpm->field[mpm->nfields]    = (MPMFieldInfo){name, bs, unit, meaning, output};
+  mpm->field_on[mpm->nfields] = PETSC_TRUE;
+  *fid                        = mpm->nfields++;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The core fields (MPMFieldTable) that every scene carries, and those only some need: F where the shape functions,
+   a strength model or the exact solution read it, s and eps_p where a material has strength, X where an exact
+   solution is evaluated at it. A fluid scene carries 26 values per point in 3D instead of 47. */
+PetscErrorCode MPMPointsSelectFields(MPM mpm)
+{
+  PetscFunctionBegin;
+  mpm->field_on[MPM_FIELD_DEFGRAD]       = mpm->track_F;
+  mpm->field_on[MPM_FIELD_STRESS]        = mpm->has_stress;
+  mpm->field_on[MPM_FIELD_PLASTICSTRAIN] = mpm->has_stress;
+  mpm->field_on[MPM_FIELD_REFPOSITION]   = (PetscBool)(mpm->exact != NULL);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode MPMPointsGetArrays(MPM mpm, MPMPoints *pts)
 {
   PetscFunctionBegin;
   PetscCall(DMSwarmGetLocalSize(mpm->swarm, &pts->n));
-  for (PetscInt f = 0; f < MPM_NUM_FIELDS; f++) PetscCall(DMSwarmGetField(mpm->swarm, MPMFieldTable[f].name, NULL, NULL, (void **)&pts->f[f]));
+  for (PetscInt f = 0; f < mpm->nfields; f++) {
+    pts->f[f] = NULL;
+    if (mpm->field_on[f]) PetscCall(DMSwarmGetField(mpm->swarm, mpm->field[f].name, NULL, NULL, (void **)&pts->f[f]));
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode MPMPointsRestoreArrays(MPM mpm, MPMPoints *pts)
 {
   PetscFunctionBegin;
-  for (PetscInt f = 0; f < MPM_NUM_FIELDS; f++) PetscCall(DMSwarmRestoreField(mpm->swarm, MPMFieldTable[f].name, NULL, NULL, (void **)&pts->f[f]));
+  for (PetscInt f = 0; f < mpm->nfields; f++)
+    if (mpm->field_on[f]) PetscCall(DMSwarmRestoreField(mpm->swarm, mpm->field[f].name, NULL, NULL, (void **)&pts->f[f]));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -234,7 +264,8 @@ PetscErrorCode MPMCreatePoints(MPM mpm)
   PetscCall(DMSetType(mpm->swarm, DMSWARM));
   PetscCall(DMSetDimension(mpm->swarm, d));
   PetscCall(DMSwarmSetType(mpm->swarm, DMSWARM_BASIC));
-  for (PetscInt f = 0; f < MPM_NUM_FIELDS; f++) PetscCall(DMSwarmRegisterPetscDatatypeField(mpm->swarm, MPMFieldTable[f].name, MPMFieldBlockSize(MPMFieldTable[f].bs, d), PETSC_REAL));
+  for (PetscInt f = 0; f < mpm->nfields; f++)
+    if (mpm->field_on[f]) PetscCall(DMSwarmRegisterPetscDatatypeField(mpm->swarm, mpm->field[f].name, MPMFieldBlockSize(mpm->field[f].bs, d), PETSC_REAL));
   PetscCall(DMSwarmFinalizeFieldRegister(mpm->swarm));
 
   for (PetscInt k = 0; k < d; k++) npd *= mpm->ppc;
@@ -245,7 +276,7 @@ PetscErrorCode MPMCreatePoints(MPM mpm)
     MPMSiteAt(g, mpm->ppc, s, x, &id);
     n += MPMSiteSeed(mpm, x, pc, rho, e);
   }
-  PetscCall(DMSwarmSetLocalSizes(mpm->swarm, n, PetscMax(16, n / 10)));
+  PetscCall(DMSwarmSetLocalSizes(mpm->swarm, n, PetscMax(16, n / 100))); /* migration grows the bucket as needed */
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   n = 0;
   for (PetscInt s = 0; s < g->ncells * npd; s++) {
@@ -258,21 +289,21 @@ PetscErrorCode MPMCreatePoints(MPM mpm)
       PetscReal        T   = reg ? reg->T : 0.0;
       for (PetscInt k = 0; k < d; k++) {
         pts.f[MPM_FIELD_POSITION][n * d + k]    = pc[i].x[k];
-        pts.f[MPM_FIELD_REFPOSITION][n * d + k] = pc[i].x[k];
+        if (pts.f[MPM_FIELD_REFPOSITION]) pts.f[MPM_FIELD_REFPOSITION][n * d + k] = pc[i].x[k];
         pts.f[MPM_FIELD_VELOCITY][n * d + k]    = reg ? reg->v[k] : pc[i].mv[k];
       }
       if (!reg) MPMEOSTemperatureKernel(mpm->mat[pc[i].material].eos, rho[i], e[i], &T);
       for (PetscInt k = 0; k < d * d; k++) {
         pts.f[MPM_FIELD_GRADV][n * d * d + k]   = 0.0;
-        pts.f[MPM_FIELD_STRESS][n * d * d + k]  = 0.0;
-        pts.f[MPM_FIELD_DEFGRAD][n * d * d + k] = k % (d + 1) == 0 ? 1.0 : 0.0;
+        if (pts.f[MPM_FIELD_STRESS]) pts.f[MPM_FIELD_STRESS][n * d * d + k] = 0.0;
+        if (pts.f[MPM_FIELD_DEFGRAD]) pts.f[MPM_FIELD_DEFGRAD][n * d * d + k] = k % (d + 1) == 0 ? 1.0 : 0.0;
       }
       pts.f[MPM_FIELD_VOLUME][n]        = pc[i].V;
       pts.f[MPM_FIELD_DENSITY][n]       = reg ? reg->rho : rho[i];
       pts.f[MPM_FIELD_MASS][n]          = pc[i].m;
       pts.f[MPM_FIELD_TEMPERATURE][n]   = T;
       pts.f[MPM_FIELD_VISCOSITY][n]     = 0.0;
-      pts.f[MPM_FIELD_PLASTICSTRAIN][n] = 0.0;
+      if (pts.f[MPM_FIELD_PLASTICSTRAIN]) pts.f[MPM_FIELD_PLASTICSTRAIN][n] = 0.0;
       pts.f[MPM_FIELD_MATERIAL][n]      = (PetscReal)pc[i].material;
       pts.f[MPM_FIELD_ID][n]            = id;
     }

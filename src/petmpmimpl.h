@@ -173,11 +173,12 @@ typedef struct {
   PetscBool   output;  /* written to HDF5                                    */
 } MPMFieldInfo;
 PETSC_INTERN const MPMFieldInfo MPMFieldTable[MPM_NUM_FIELDS];
+#define MPM_MAX_FIELDS 32 /* the core fields and those classes and modules register (MPMPointsRegisterField) */
 
 /* Raw arrays of every particle field, valid between MPMPointsGetArrays() and MPMPointsRestoreArrays(). */
 typedef struct {
   PetscInt   n;
-  PetscReal *f[MPM_NUM_FIELDS];
+  PetscReal *f[MPM_MAX_FIELDS]; /* NULL for a field the scene does not carry */
 } MPMPoints;
 
 /* ------------------------------------------------------------------ classes */
@@ -380,6 +381,9 @@ struct _p_MPM {
   DM         swarm;         /* material points, DMSWARM_BASIC                            */
   Vec        nodes;         /* global nodal vector                                       */
   Vec        lnodes;        /* ghosted local nodal vector                                */
+  MPMFieldInfo field[MPM_MAX_FIELDS];    /* the point fields: MPMFieldTable, then the registered ones  */
+  PetscBool    field_on[MPM_MAX_FIELDS]; /* carried by this scene's points                            */
+  PetscInt     nfields;
   PetscInt   nwork;         /* capacity of the constitutive workspace [points]         */
   PetscInt  *widx;          /* the local points of each material, material by material  */
   PetscReal *work;          /* 7 values per point of a chunk of MPM_CHUNK points        */
@@ -420,6 +424,8 @@ PETSC_INTERN PetscErrorCode MPMGridLocalToGlobal(MPM);
 PETSC_INTERN PetscErrorCode MPMGridGlobalToLocal(MPM);
 PETSC_INTERN PetscErrorCode MPMCreatePoints(MPM);
 PETSC_INTERN PetscErrorCode MPMPointsGetArrays(MPM, MPMPoints *);
+PETSC_INTERN PetscErrorCode MPMPointsSelectFields(MPM);
+PETSC_INTERN PetscErrorCode MPMPointsRegisterField(MPM, const char[], PetscInt, const char[], const char[], PetscBool, PetscInt *);
 PETSC_INTERN PetscErrorCode MPMPointsRestoreArrays(MPM, MPMPoints *);
 PETSC_INTERN PetscErrorCode MPMMigrate(MPM);
 PETSC_INTERN PetscInt       MPMLocalCell(const MPMGrid *, const PetscReal[]);

@@ -50,8 +50,9 @@ static PetscErrorCode MPMComputeErrors(MPM mpm, PetscReal err[][3], PetscInt *no
   PetscFunctionBegin;
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   for (PetscInt p = 0; p < pts.n; p++) {
-    for (PetscInt f = 0; f < MPM_NUM_FIELDS; f++) {
-      const PetscInt bs = MPMFieldBlockSize(MPMFieldTable[f].bs, d);
+    for (PetscInt f = 0; f < mpm->nfields; f++) {
+      const PetscInt bs = MPMFieldBlockSize(mpm->field[f].bs, d);
+      if (!pts.f[f]) continue;
       for (PetscInt k = 0; k < bs; k++)
         if (PetscIsInfOrNanReal(pts.f[f][p * bs + k])) bad++;
     }

@@ -520,7 +520,8 @@ def flyer_fields(out):
     import numpy as np
     with h5py.File(os.path.join(out, "petmpm.h5"), "r") as h:
         pf, ex = h["particle_fields"], h["exact"]
-        f = {k: pf[k][-1].ravel() for k in ["position", "density", "pressure", "viscosity", "stress", "velocity", "energy", "id"]}
+        f = {k: pf[k][-1].ravel() for k in ["position", "density", "pressure", "viscosity", "velocity", "energy", "id"]}
+        f["stress"] = pf["stress"][-1].ravel() if "stress" in pf else np.zeros_like(f["pressure"])  # a fluid carries no stress field
         f.update({"exact_" + k: ex[k][...].ravel() for k in ["density", "velocity", "pressure"]})
     i = np.argsort(f["position"])
     return {k: v[i] for k, v in f.items()}
