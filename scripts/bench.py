@@ -25,7 +25,8 @@ import sys
 
 SRC = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 REF = os.path.join(os.path.dirname(SRC), "shared", "bench")
-ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMPI_MCA_rmaps_base_oversubscribe="1")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from petmpmlib import ENV  # noqa: E402
 REFFLAGS = {"mpm1d": ["-DBLOCK"], "mpm3d": ["-DBLOCK"], "mpm3d_quad": ["-DQUAD"]}
 
 

@@ -1,0 +1,83 @@
+# SPDX-License-Identifier: BSD-2-Clause
+"""What the test runner, the studies, the benchmark and the regression tool share: running petmpm and reading its
+report and final fields, fitting a rate, reading a report key by path.
+
+Import it with sys.path.insert(0, <repository>/scripts); it needs numpy, and h5py for final_fields.
+"""
+import json
+import math
+import os
+import subprocess
+
+SRC = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+# Open MPI as root and with more ranks than cores (a CI machine has 2)
+ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMPI_MCA_rmaps_base_oversubscribe="1")
+
+
+def scene_path(name):
+    """inputs/NAME.opts, or NAME itself if it is a path."""
+    return name if os.sep in name or name.endswith(".opts") else os.path.join(SRC, "inputs", name + ".opts")
+
+
+def run(exe, args, ranks=1, out=None, timeout=900):
+    """Runs petmpm ARGS (through mpiexec for ranks > 1) with its output and report in OUT (when given).
+    Returns (report or None, completed process)."""
+    cmd = list(args)
+    rep = None
+    if out:
+        rep = os.path.join(out, "report.json")
+        if os.path.exists(rep):
+            os.remove(rep)
+        cmd += ["-mpm_output", out, "-mpm_report", rep]
+    cmd = ([exe] if ranks == 1 else ["mpiexec", "-n", str(ranks), exe]) + cmd
+    p = subprocess.run(cmd, capture_output=True, text=True, env=ENV, timeout=timeout)
+    report = None
+    if rep and p.returncode == 0 and os.path.exists(rep):
+        with open(rep) as f:
+            report = json.load(f)
+    return report, p
+
+
+def final_fields(h5file):
+    """Every point field at the last output, ordered by persistent id: {name: array}."""
+    import h5py
+    import numpy as np
+    with h5py.File(h5file, "r") as f:
+        ids = np.asarray(f["particle_fields/id"][-1]).ravel()
+        order = np.argsort(ids)
+        return {k: np.asarray(f["particle_fields/" + k][-1])[order] for k in f["particle_fields"] if k != "xyz"}
+
+
+def fit_rate(h, err):
+    """Least-squares slope of log(err) against log(h): the observed order of convergence (err ~ C h^rate)."""
+    import numpy as np
+    h, err = np.asarray(h, float), np.asarray(err, float)
+    ok = (h > 0) & (err > 0) & np.isfinite(err)
+    if ok.sum() < 2:
+        return float("nan")
+    return float(np.polyfit(np.log(h[ok]), np.log(err[ok]), 1)[0])
+
+
+def get(report, path, h=None):
+    """A report value by dotted path: errors.density.L1, conservation.mass, checks.plateau_pressure.rel_error
+    (checks are found by name), checks.shock_position.error_cells (|value - reference| / h, the cell size h given)."""
+    parts = path.split(".")
+    if parts[0] == "checks":
+        c = next((c for c in report["checks"] if c["name"] == parts[1]), None)
+        if c is None:
+            raise KeyError(f"the report has no check {parts[1]} (has: {', '.join(x['name'] for x in report['checks'])})")
+        if parts[2] == "error_cells":
+            return abs(c["value"] - c["reference"]) / h
+        return c[parts[2]]
+    v = report
+    for p in parts:
+        v = v[p]
+    return v
+
+
+OPS = {"<": lambda v, t: v < t, "<=": lambda v, t: v <= t, ">": lambda v, t: v > t, ">=": lambda v, t: v >= t,
+       "==": lambda v, t: v == t, "abs<": lambda v, t: abs(v) < t}
+
+
+def holds(value, op, target):
+    return value is not None and not (isinstance(value, float) and math.isnan(value)) and OPS[op](value, target)

@@ -1,0 +1,97 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-2-Clause
+"""Runs one expectation file of tests/scenes/ and checks every expectation in it; prints PASSED/FAILED with the
+measured number beside its bound, exits non-zero on a failure.
+
+usage: run_scene.py BUILD_DIR SOURCE_DIR NAME        (tests/scenes/NAME.json)
+
+An expectation file is {"doc": "...", "cases": [CASE, ...]}; a CASE is
+  {"name": "weak256", "scene": "sod_weak", "args": ["-mpm_cells", "256"], "ranks": 1, "h": 0.078125,
+   "expect": {"errors.density.L1": ["<", 0.02], "conservation.mass": ["abs<", 1e-14], "particles": ["==", 1024]},
+   "same_as": {"case": "other", "keys": ["errors.density.L1"], "rtol": 1e-9, "fields": true, "steps": true},
+   "sweep": {"option": "-mpm_cells", "values": [128, 256, 512], "h": [0.15625, 0.078125, 0.0390625]},
+   "rate": {"key": "errors.density.L1", "op": [">=", 0.6]}}
+- expect: report keys (dotted paths, scripts/petmpmlib.py get: checks by name, checks.NAME.error_cells with "h")
+  against an operator and a bound (<, <=, >, >=, ==, abs<), or a list of such pairs;
+- same_as: equality with an earlier case of the file, of report keys to rtol and, with "fields", of every final
+  point field the two share (bitwise for rtol 0), and of the step count;
+- sweep + rate: the case runs once per value of the option, and the rate fitted to key against h (log-log
+  least squares, scripts/petmpmlib.py fit_rate) must satisfy op; expect then applies to every run of the sweep.
+"""
+import json
+import os
+import sys
+import tempfile
+
+BUILD, SRC, NAME = sys.argv[1], sys.argv[2], sys.argv[3]
+sys.path.insert(0, os.path.join(SRC, "scripts"))
+import petmpmlib as lib  # noqa: E402
+
+EXE = os.path.join(BUILD, "petmpm")
+failures = []
+
+
+def check(ok, what):
+    print(("PASSED " if ok else "FAILED ") + what, flush=True)
+    if not ok:
+        failures.append(what)
+
+
+def run_case(case, out, extra=()):
+    args = ["-options_file", lib.scene_path(case["scene"]), *case.get("args", []), *extra]
+    rep, p = lib.run(EXE, args, case.get("ranks", 1), out)
+    if rep is None:
+        print(p.stdout[-3000:], p.stderr[-3000:])
+        raise SystemExit(f"FAILED: case {case['name']}: petmpm {' '.join(args)} exited {p.returncode}")
+    return rep
+
+
+def expectations(case, rep, label):
+    for key, cond in case.get("expect", {}).items():
+        v = lib.get(rep, key, case.get("h"))
+        for op, bound in cond if isinstance(cond[0], list) else [cond]:
+            check(lib.holds(v, op, bound), f"{label}: {key} = {v:.6g} {op} {bound:g}" if isinstance(v, (int, float)) else f"{label}: {key} = {v} {op} {bound}")
+
+
+def main():
+    with open(os.path.join(SRC, "tests", "scenes", NAME + ".json")) as f:
+        spec = json.load(f)
+    done = {}
+    with tempfile.TemporaryDirectory() as d:
+        for case in spec["cases"]:
+            name = case["name"]
+            out = os.path.join(d, name)
+            if "sweep" in case:
+                sw, errs = case["sweep"], []
+                for v, h in zip(sw["values"], sw["h"]):
+                    rep = run_case(case, os.path.join(out, str(v)), [sw["option"], str(v)])
+                    expectations(case, rep, f"{name} {sw['option']} {v}")
+                    errs.append(lib.get(rep, case["rate"]["key"]))
+                op, bound = case["rate"]["op"]
+                rate = lib.fit_rate(sw["h"], errs)
+                check(lib.holds(rate, op, bound), f"{name}: {case['rate']['key']} {', '.join(f'{e:.3e}' for e in errs)}: fitted rate {rate:.3f} {op} {bound}")
+                continue
+            rep = run_case(case, out)
+            done[name] = (rep, out)
+            expectations(case, rep, name)
+            if "same_as" in case:
+                sa = case["same_as"]
+                ref, refout = done[sa["case"]]
+                rtol = sa.get("rtol", 0.0)
+                for key in sa.get("keys", []):
+                    a, b = lib.get(rep, key), lib.get(ref, key)
+                    check(abs(a - b) <= rtol * abs(b), f"{name}: {key} {a:.12e} equals {sa['case']}'s {b:.12e} (rtol {rtol:g})")
+                if sa.get("steps", True):
+                    check(rep["steps"] == ref["steps"], f"{name}: {rep['steps']} steps == {sa['case']}'s {ref['steps']}")
+                if sa.get("fields"):
+                    import numpy as np
+                    fa, fb = lib.final_fields(os.path.join(out, "petmpm.h5")), lib.final_fields(os.path.join(refout, "petmpm.h5"))
+                    common = sorted(set(fa) & set(fb))
+                    worst = max(float(np.max(np.abs(fa[k] - fb[k])) / (np.max(np.abs(fb[k])) + 1e-300)) for k in common)
+                    check(worst <= rtol, f"{name}: {len(common)} final point fields equal {sa['case']}'s to rtol {rtol:g} (max rel. difference {worst:.1e})")
+    print(f"{NAME}: {'FAILED' if failures else 'PASSED'} ({len(failures)} failure(s))")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
