@@ -11,11 +11,14 @@
 #  define MPM_KS (MPM_KNB * MPM_KNB * MPM_KNB)
 #endif
 
-/* N_I(x_p), grad N_I(x_p) and the mirror signs of one point: MPMShapeEvaluate for this family and dimension. */
-MPM_KINLINE void MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const PetscReal *x, PetscInt node[MPM_KS], PetscReal W[MPM_KS], PetscReal DW[MPM_KS][MPM_KD], PetscReal SG[MPM_KS][MPM_KD])
+/* N_I(x_p), grad N_I(x_p) and, for a point whose stencil reaches across a wall, the mirror signs of one point:
+   MPMShapeEvaluate for this family and dimension. Returns whether a sign is -1 (SG filled); otherwise every sign is
+   1, SG is left alone and the callers take their sign-free path (x * 1 = x: the same numbers). */
+MPM_KINLINE PetscBool MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const PetscReal *x, PetscInt node[MPM_KS], PetscReal W[MPM_KS], PetscReal DW[MPM_KS][MPM_KD], PetscReal SG[MPM_KS][MPM_KD])
 {
   PetscInt  idx[MPM_KD][MPM_KNB];
   PetscReal w[MPM_KD][MPM_KNB], dw[MPM_KD][MPM_KNB], sg[MPM_KD][MPM_KNB];
+  PetscBool mirror = PETSC_FALSE;
 
   for (PetscInt k = 0; k < MPM_KD; k++) {
     const PetscReal hinv = 1.0 / g->h[k];
@@ -26,13 +29,13 @@ MPM_KINLINE void MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, c
       idx[k][a] = first + a;
     }
     MPMShapeFold1d(g, k, MPM_KNB, idx[k], sg[k]);
+    for (PetscInt a = 0; a < MPM_KNB; a++) mirror = (PetscBool)(mirror || sg[k][a] < 0.0);
   }
 #if MPM_KD == 1
   for (PetscInt a = 0; a < MPM_KNB; a++) {
     node[a]  = idx[0][a];
     W[a]     = w[0][a];
     DW[a][0] = dw[0][a];
-    SG[a][0] = sg[0][a];
   }
 #elif MPM_KD == 2
   for (PetscInt b = 0, s = 0; b < MPM_KNB; b++)
@@ -41,8 +44,6 @@ MPM_KINLINE void MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, c
       W[s]     = w[0][a] * w[1][b];
       DW[s][0] = dw[0][a] * w[1][b];
       DW[s][1] = w[0][a] * dw[1][b];
-      SG[s][0] = sg[0][a];
-      SG[s][1] = sg[1][b];
     }
 #else
   for (PetscInt c = 0, s = 0; c < MPM_KNB; c++)
@@ -53,62 +54,83 @@ MPM_KINLINE void MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, c
         DW[s][0] = dw[0][a] * w[1][b] * w[2][c];
         DW[s][1] = w[0][a] * dw[1][b] * w[2][c];
         DW[s][2] = w[0][a] * w[1][b] * dw[2][c];
-        SG[s][0] = sg[0][a];
-        SG[s][1] = sg[1][b];
-        SG[s][2] = sg[2][c];
       }
 #endif
+  if (mirror) {
+#if MPM_KD == 1
+    for (PetscInt a = 0; a < MPM_KNB; a++) SG[a][0] = sg[0][a];
+#elif MPM_KD == 2
+    for (PetscInt b = 0, s = 0; b < MPM_KNB; b++)
+      for (PetscInt a = 0; a < MPM_KNB; a++, s++) {
+        SG[s][0] = sg[0][a];
+        SG[s][1] = sg[1][b];
+      }
+#else
+    for (PetscInt c = 0, s = 0; c < MPM_KNB; c++)
+      for (PetscInt b = 0; b < MPM_KNB; b++)
+        for (PetscInt a = 0; a < MPM_KNB; a++, s++) {
+          SG[s][0] = sg[0][a];
+          SG[s][1] = sg[1][b];
+          SG[s][2] = sg[2][c];
+        }
+#endif
+  }
+  return mirror;
+}
+
+/* One point's m_I += N_I m_p, (mv)_I += N_I m_p v_p and, by mode, its point pressure force and stress force; SG (the
+   mirror signs) is read only when mirror is set. */
+MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, MPMNode *nodes, PetscInt p, const PetscInt node[MPM_KS], const PetscReal W[MPM_KS], const PetscReal DW[MPM_KS][MPM_KD], const PetscReal SG[MPM_KS][MPM_KD], const int mode, const int mirror)
+{
+  const PetscInt   D = MPM_KD;
+  const PetscReal *v = A->v, *m = A->m, *V = A->V, *pr = A->pr, *q = A->q, *S = A->S;
+
+  for (PetscInt a = 0; a < MPM_KS; a++) {
+    MPMNode        *nd = &nodes[node[a]];
+    const PetscReal wm = W[a] * m[p];
+    nd->m += wm;
+    for (PetscInt k = 0; k < D; k++) nd->p[k] += (mirror ? SG[a][k] : 1.0) * wm * v[p * D + k];
+    if (mode & MPM_P2G_PRESSURE) {
+      const PetscReal P = pr[p] + q[p];
+      for (PetscInt k = 0; k < D; k++) nd->f[k] += (mirror ? SG[a][k] : 1.0) * V[p] * P * DW[a][k];
+    }
+    if (mode & MPM_P2G_STRESS)
+      for (PetscInt k = 0; k < D; k++) {
+        PetscReal sgr = 0.0;
+        for (PetscInt j = 0; j < D; j++) sgr += S[p * D * D + k * D + j] * DW[a][j];
+        nd->f[k] -= (mirror ? SG[a][k] : 1.0) * V[p] * sgr;
+      }
+  }
 }
 
 /* m_I += N_I m_p, (mv)_I += N_I m_p v_p and, by mode, the point pressure force and the stress force. */
 MPM_KINLINE void MPM_KCAT(MPMKP2G, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const MPMTransferArgs *A, MPMNode *nodes, const int mode)
 {
-  const PetscInt   D = MPM_KD;
-  const PetscReal *x = A->x, *v = A->v, *m = A->m, *V = A->V, *pr = A->pr, *q = A->q, *S = A->S;
-
   for (PetscInt p = 0; p < A->n; p++) {
     PetscInt  node[MPM_KS];
     PetscReal W[MPM_KS], DW[MPM_KS][MPM_KD], SG[MPM_KS][MPM_KD];
-    MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(g, &x[p * D], node, W, DW, SG);
-    for (PetscInt a = 0; a < MPM_KS; a++) {
-      MPMNode        *nd = &nodes[node[a]];
-      const PetscReal wm = W[a] * m[p];
-      nd->m += wm;
-      for (PetscInt k = 0; k < D; k++) nd->p[k] += SG[a][k] * wm * v[p * D + k];
-      if (mode & MPM_P2G_PRESSURE) {
-        const PetscReal P = pr[p] + q[p];
-        for (PetscInt k = 0; k < D; k++) nd->f[k] += SG[a][k] * V[p] * P * DW[a][k];
-      }
-      if (mode & MPM_P2G_STRESS)
-        for (PetscInt k = 0; k < D; k++) {
-          PetscReal sgr = 0.0;
-          for (PetscInt j = 0; j < D; j++) sgr += S[p * D * D + k * D + j] * DW[a][j];
-          nd->f[k] -= SG[a][k] * V[p] * sgr;
-        }
-    }
+    if (MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(g, &A->x[p * MPM_KD], node, W, DW, SG)) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, node, W, DW, SG, mode, 1);
+    else MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, node, W, DW, SG, mode, 0);
   }
 }
 
-/* The grid velocity back to the points, by mode (see MPMGather for the formulas). */
-MPM_KINLINE void MPM_KCAT(MPMKG2P, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const MPMTransferArgs *A, const MPMNode *nodes, const int mode)
+/* The grid velocity back to one point, by mode (see MPMGather for the formulas); SG read only when mirror is set. */
+MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const MPMTransferArgs *A, const MPMNode *nodes, PetscInt p, const PetscInt node[MPM_KS], const PetscReal W[MPM_KS], const PetscReal DW[MPM_KS][MPM_KD], const PetscReal SG[MPM_KS][MPM_KD], const int mode, const int mirror)
 {
   const PetscInt   D        = MPM_KD;
   const PetscBool  velocity = (PetscBool)(mode & MPM_G2P_VELOCITY), kinematics = (PetscBool)(mode & MPM_G2P_KINEMATICS), work = (PetscBool)(mode & MPM_G2P_WORK);
   PetscReal       *x = A->x, *v = A->v, *L = A->L, *e = A->e;
   const PetscReal *pr = A->pr, *q = A->q, *S = A->S, *rho = A->rho, alpha = A->alpha;
 
-  for (PetscInt p = 0; p < A->n; p++) {
-    PetscInt  node[MPM_KS];
-    PetscReal W[MPM_KS], DW[MPM_KS][MPM_KD], SG[MPM_KS][MPM_KD];
+  {
     PetscReal vpic[MPM_KD] = {0}, dv[MPM_KD] = {0}, Lp[MPM_KD * MPM_KD] = {0}, Lb[MPM_KD * MPM_KD] = {0}, dv2 = 0.0, R = 0.0;
-    MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(g, &x[p * D], node, W, DW, SG);
     for (PetscInt a = 0; a < MPM_KS; a++) {
       const MPMNode *nd = &nodes[node[a]];
       for (PetscInt i = 0; i < D; i++) {
-        const PetscReal vI = SG[a][i] * nd->p[i];
+        const PetscReal vI = (mirror ? SG[a][i] : 1.0) * nd->p[i];
         vpic[i] += W[a] * vI;
         if (velocity || work) {
-          const PetscReal dvI = SG[a][i] * (nd->p[i] - nd->v0[i]);
+          const PetscReal dvI = (mirror ? SG[a][i] : 1.0) * (nd->p[i] - nd->v0[i]);
           if (velocity) {
             dv[i] += W[a] * dvI;
             dv2 += W[a] * dvI * dvI;
@@ -145,6 +167,17 @@ MPM_KINLINE void MPM_KCAT(MPMKG2P, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const
       for (PetscInt i = 0; i < D; i++) x[p * D + i] += A->dt * vpic[i];
       for (PetscInt i = 0; i < D * D; i++) L[p * D * D + i] = Lp[i];
     }
+  }
+}
+
+/* The grid velocity back to the points, by mode. */
+MPM_KINLINE void MPM_KCAT(MPMKG2P, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const MPMTransferArgs *A, const MPMNode *nodes, const int mode)
+{
+  for (PetscInt p = 0; p < A->n; p++) {
+    PetscInt  node[MPM_KS];
+    PetscReal W[MPM_KS], DW[MPM_KS][MPM_KD], SG[MPM_KS][MPM_KD];
+    if (MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(g, &A->x[p * MPM_KD], node, W, DW, SG)) MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(g, A, nodes, p, node, W, DW, SG, mode, 1);
+    else MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(g, A, nodes, p, node, W, DW, SG, mode, 0);
   }
 }
 
