@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* Equation-of-state class: -mat_<name>_eos_type selects p(rho, e), c^2(rho, e), T(rho, e) and e(rho, T)
    for one material. Specific internal energy e in erg/g, temperature in eV. */
-#include "../petmpmimpl.h"
+#include "eosimpl.h"
 
 static PetscFunctionList MPMEOSList = NULL;
 

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* Shape-function class: -mpm_shape_type selects N_I(x). Types give a 1D basis; d-dimensional
    functions are tensor products N_I(x) = prod_d N_{i_d}(x_d), with gradients by the product rule. */
-#include "../petmpmimpl.h"
+#include "shapeimpl.h"
 
 static PetscFunctionList MPMShapeList = NULL;
 

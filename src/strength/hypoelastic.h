@@ -5,7 +5,7 @@
    in 2D s_zz = -(s_xx + s_yy). The Jaumann rate keeps these relations, and the radial return scales all
    components alike, so the d x d block carries the whole 3D deviator. */
 #pragma once
-#include "../petmpmimpl.h"
+#include "strengthimpl.h"
 
 /* s <- s + dt (2 G D' + W s - s W): the Jaumann (objective) rate, D = (L + L^T)/2, W = (L - L^T)/2,
    D' = D - tr(D)/3 I with the 3D trace (the unresolved directions have zero strain rate). */

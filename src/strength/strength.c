@@ -2,7 +2,7 @@
 /* Strength-model class: -mat_<name>_strength_type selects the stress a material carries besides its EOS
    pressure, sigma = s - (p + q) I. Type none (the default) takes the material out of the stress path: a scene
    whose materials are all fluids never touches a stress tensor. */
-#include "../petmpmimpl.h"
+#include "strengthimpl.h"
 
 static PetscFunctionList MPMStrengthList = NULL;
 

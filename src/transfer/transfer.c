@@ -3,6 +3,7 @@
    projection of the point state for output. Each dispatches to the shape family's specialised kernel (kernels.h)
    where it has one, and otherwise runs the generic reference below, which the specialised kernels reproduce bit
    for bit. */
+#include "../petmpmimpl.h"
 #include "transfer.h"
 
 /* Global (i, j, k) of the c-th cell of the local cell range (the numbering of MPMLocalCell). */

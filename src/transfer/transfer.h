@@ -6,7 +6,7 @@
    the specialised kernels must reproduce it bit for bit (they evaluate the same expressions in the same order;
    tests/scene_checks.py test_kernels and scripts/regress check it). */
 #pragma once
-#include "../petmpmimpl.h"
+#include "../gridimpl.h"
 
 /* What a points-to-grid kernel scatters besides m_I and (mv)_I: a bit mask indexing MPMTransferKernels::p2g. */
 enum {

@@ -2,7 +2,7 @@
 /* Artificial-viscosity class: -mpm_viscosity_type selects how the viscous pressure q_p of each
    material point is computed from the velocity field. q enters the stress as sigma = -(p + q) I and the
    energy equation as de = -(p + q) dV / m. Type "none" removes the module from the step. */
-#include "../petmpmimpl.h"
+#include "viscosityimpl.h"
 
 static PetscFunctionList MPMViscosityList = NULL;
 
@@ -34,10 +34,10 @@ PetscErrorCode MPMViscosityIsActive(MPMViscosity visc, PetscBool *active)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The viscosity module (phase MPM_PHASE_POINT_STATE): q_p from the velocity gradient of the step. */
-PetscErrorCode MPMViscosityModuleApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
+/* q_p of the points of a step (the viscosity module, src/modules/viscosity.c, fills the context). */
+PetscErrorCode MPMViscosityApply(MPMViscosity visc, const MPMViscosityContext *ctx)
 {
   PetscFunctionBegin;
-  PetscCall(mpm->viscosity->ops.apply(mpm->viscosity, mpm, ctx->dt));
+  PetscCall(visc->ops.apply(visc, ctx));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

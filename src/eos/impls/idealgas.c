@@ -3,7 +3,7 @@
      p = (gamma - 1) rho e,   e = Cv T,   c^2 = gamma p / rho
    gamma: ratio of specific heats [-] (> 1), Cv: specific heat [erg/(g eV)] (> 0).
    Options: -mat_<name>_eos_idealgas_gamma, -mat_<name>_eos_idealgas_cv. */
-#include "../../petmpmimpl.h"
+#include "../eosimpl.h"
 
 typedef struct {
   PetscReal gamma; /* ratio of specific heats gamma [-]       */

@@ -11,7 +11,7 @@
    Sound speed c^2 = dp/drho|_e + p/rho^2 dp/de|_rho. Compressions with s eta >= 1 (beyond the Hugoniot's
    asymptote) have no state: p and c^2 come back NaN, and the run stops with its diagnosis.
    The defaults are OFHC copper (copper.md). Options -mat_<name>_eos_miegruneisen_{rho0,c0,s,gamma0,b,cv,T0}. */
-#include "../../petmpmimpl.h"
+#include "../eosimpl.h"
 
 #define MG_TABLE 4097 /* isentrope table size over rho/rho0 in [MG_RLO, MG_RHI s/(s-1)) */
 #define MG_RLO 0.5

@@ -2,7 +2,7 @@
 /* No equation of state: p = 0, c = 0, T = 0. For a material whose strength model gives the whole stress
    (a hyperelastic solid such as -mat_<name>_strength_type neohookean); a material with neither an EOS nor a
    strength model is refused. */
-#include "../../petmpmimpl.h"
+#include "../eosimpl.h"
 
 static void MPMEOSPressure_None(void *ctx, PetscReal rho, PetscReal e, PetscReal *p, PetscReal *c2)
 {

@@ -2,7 +2,7 @@
 /* The 1D bases of the B-spline types (formulas in bspline2.c and bspline3.c), inline so that their transfer
    kernels (src/transfer/kernels.h) call them directly. */
 #pragma once
-#include "../../petmpmimpl.h"
+#include "../shapeimpl.h"
 
 static inline void MPMShapeBSpline2_1d(PetscReal xi, PetscInt *first, PetscInt *n, PetscReal w[], PetscReal dw[])
 {

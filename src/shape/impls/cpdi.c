@@ -7,7 +7,7 @@
    (in 1D, (N_I(x_+) - N_I(x_-)) / (2 l)). Partition of unity and linear reproduction hold for any R.
    The corners must stay within -mpm_shape_cpdi_reach cells of the point's cell (ghost width reach + 1):
    a point whose domain stretches further stops the run with its diagnosis. */
-#include "../../petmpmimpl.h"
+#include "../shapeimpl.h"
 
 typedef struct {
   PetscReal l0[MPM_MAX_DIM]; /* undeformed half-width of the domain [cm] */

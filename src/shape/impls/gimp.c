@@ -7,7 +7,7 @@
      1 - l <= |r| < 1 + l: S = (1 + l - |r|)^2 / (4 l)
    S is C1, so a point crossing a cell face feels no jump in its gradient: no cell-crossing error.
    Support 1 + l < 2 cells: ghost width 2. */
-#include "../../petmpmimpl.h"
+#include "../shapeimpl.h"
 
 typedef struct {
   PetscReal l; /* point domain half-width [cells] */

@@ -3,7 +3,7 @@
    doi:10.1016/0045-7825(94)90112-0). With xi = (x - x_0)/h and i = floor(xi), t = xi - i:
      N_i = 1 - t,  N_{i+1} = t,  dN/dxi = -1, +1.
    Support: one cell on each side of a node, so the grid needs ghost width 1. */
-#include "../../petmpmimpl.h"
+#include "../shapeimpl.h"
 
 static PetscInt MPMShapeSupport_Linear(void *ctx)
 {

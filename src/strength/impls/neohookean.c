@@ -5,7 +5,7 @@
    not deform (plane strain). The stress depends on F alone; the wave speed c^2 = (lambda + 2 mu) / rho
    enters the time step. Pair it with -mat_<name>_eos_type none: it is the whole stress.
    Options: -mat_<name>_strength_neohookean_E [dyn/cm^2] (> 0), -mat_<name>_strength_neohookean_nu [-] in [0, 1/2). */
-#include "../../petmpmimpl.h"
+#include "../strengthimpl.h"
 
 typedef struct {
   PetscReal E, nu;      /* Young's modulus [dyn/cm^2], Poisson's ratio [-] */

@@ -20,7 +20,7 @@
    the neighbour jumps are those of the cells beside the point's cell, evaluated at the cell centres from
    the grid velocity. A neighbour outside the domain or with a massless node (void) is a mirror image
    (R = 1). Options: -mpm_viscosity_limited_bl (B_l), -mpm_viscosity_limited_bq (B_q). */
-#include "../../petmpmimpl.h"
+#include "../viscosityimpl.h"
 
 #define LIMITED_PAD 2 /* cells read beyond the owned ones: a point moves less than one cell per step */
 
@@ -77,13 +77,11 @@ static void LimitedCellJumps(Visc_Limited *lim, MPMShape shape, const MPMGrid *g
   }
 }
 
-static PetscErrorCode MPMViscosityApply_Limited(MPMViscosity visc, MPM mpm, PetscReal dt)
+static PetscErrorCode MPMViscosityApply_Limited(MPMViscosity visc, const MPMViscosityContext *ctx)
 {
   Visc_Limited  *lim = (Visc_Limited *)visc->data;
-  const MPMGrid *g   = &mpm->grid;
+  const MPMGrid *g   = ctx->grid;
   const PetscInt d   = g->dim;
-  const MPMNode *node;
-  MPMPoints      pts;
 
   PetscFunctionBegin;
   if (!lim->du) {
@@ -94,15 +92,12 @@ static PetscErrorCode MPMViscosityApply_Limited(MPMViscosity visc, MPM mpm, Pets
     }
     PetscCall(PetscMalloc2(lim->nc * d, &lim->du, lim->nc, &lim->ok));
   }
-  PetscCall(VecGetArrayRead(mpm->lnodes, (const PetscScalar **)&node));
-  LimitedCellJumps(lim, mpm->shape, g, node);
-  PetscCall(VecRestoreArrayRead(mpm->lnodes, (const PetscScalar **)&node));
-  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  LimitedCellJumps(lim, ctx->shape, g, ctx->node);
   {
-    const PetscReal *x = pts.f[MPM_FIELD_POSITION], *rho = pts.f[MPM_FIELD_DENSITY], *c = pts.f[MPM_FIELD_SOUNDSPEED], *L = pts.f[MPM_FIELD_GRADV];
-    PetscReal       *q = pts.f[MPM_FIELD_VISCOSITY];
+    const PetscReal *x = ctx->x, *rho = ctx->rho, *c = ctx->c, *L = ctx->L;
+    PetscReal       *q = ctx->q;
 
-    for (PetscInt p = 0; p < pts.n; p++) {
+    for (PetscInt p = 0; p < ctx->n; p++) {
       PetscInt ijk[3] = {0, 0, 0};
       q[p]            = 0.0;
       for (PetscInt k = 0; k < d; k++) ijk[k] = MPMCellIndex(g, k, x[p * d + k]) - g->cs[k] + LIMITED_PAD;
@@ -120,8 +115,7 @@ static PetscErrorCode MPMViscosityApply_Limited(MPMViscosity visc, MPM mpm, Pets
       }
     }
   }
-  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-  PetscCall(PetscLogFlops(25.0 * d * pts.n + 10.0 * d * lim->nc));
+  PetscCall(PetscLogFlops(25.0 * d * ctx->n + 10.0 * d * lim->nc));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

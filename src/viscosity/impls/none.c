@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* No artificial viscosity: q = 0. The type has no apply operation, so the module is not in the step. */
-#include "../../petmpmimpl.h"
+#include "../viscosityimpl.h"
 
 PetscErrorCode MPMViscosityCreate_None(MPMViscosity visc)
 {

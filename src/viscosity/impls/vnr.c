@@ -4,7 +4,7 @@
      q = rho (C_q (h div v)^2 - C_l c h div v)   if div v < 0,   q = 0 otherwise,
    with div v = tr(L_p) the point's velocity divergence [1/s], c its sound speed [cm/s] and h the
    smallest cell size [cm]. Options: -mpm_viscosity_vnr_cq (C_q [-]), -mpm_viscosity_vnr_cl (C_l [-]). */
-#include "../../petmpmimpl.h"
+#include "../viscosityimpl.h"
 
 typedef struct {
   PetscReal cq; /* quadratic coefficient C_q [-] */
@@ -18,27 +18,21 @@ static inline PetscReal VNRViscosity(PetscReal cq, PetscReal cl, PetscReal rho, 
   return du < 0.0 ? rho * (cq * du * du - cl * c * du) : 0.0;
 }
 
-static PetscErrorCode MPMViscosityApply_VNR(MPMViscosity visc, MPM mpm, PetscReal dt)
+static PetscErrorCode MPMViscosityApply_VNR(MPMViscosity visc, const MPMViscosityContext *ctx)
 {
-  Visc_VNR       *vnr = (Visc_VNR *)visc->data;
-  const PetscInt  d   = mpm->grid.dim;
-  const PetscReal h   = mpm->grid.hmin;
-  MPMPoints       pts;
+  Visc_VNR        *vnr = (Visc_VNR *)visc->data;
+  const PetscInt   d   = ctx->grid->dim;
+  const PetscReal  h   = ctx->grid->hmin;
+  const PetscReal *rho = ctx->rho, *c = ctx->c, *L = ctx->L;
+  PetscReal       *q = ctx->q;
 
   PetscFunctionBegin;
-  PetscCall(MPMPointsGetArrays(mpm, &pts));
-  {
-    const PetscReal *rho = pts.f[MPM_FIELD_DENSITY], *c = pts.f[MPM_FIELD_SOUNDSPEED], *L = pts.f[MPM_FIELD_GRADV];
-    PetscReal       *q = pts.f[MPM_FIELD_VISCOSITY];
-
-    for (PetscInt p = 0; p < pts.n; p++) {
-      PetscReal divv = 0.0;
-      for (PetscInt k = 0; k < d; k++) divv += L[p * d * d + k * d + k];
-      q[p] = VNRViscosity(vnr->cq, vnr->cl, rho[p], c[p], h, divv);
-    }
+  for (PetscInt p = 0; p < ctx->n; p++) {
+    PetscReal divv = 0.0;
+    for (PetscInt k = 0; k < d; k++) divv += L[p * d * d + k * d + k];
+    q[p] = VNRViscosity(vnr->cq, vnr->cl, rho[p], c[p], h, divv);
   }
-  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-  PetscCall(PetscLogFlops(12.0 * pts.n));
+  PetscCall(PetscLogFlops(12.0 * ctx->n));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -1,0 +1,126 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* What every class shares: the class descriptor, the object header and the generic operations of src/class.c,
+   option helpers that name the option, and small pointwise helpers of the physics types. A physics type file sees
+   this header and its class's own, never the MPM object. */
+#pragma once
+#include <petmpm.h>
+
+#define MPM_MAX_NAME 64
+#define MPM_KELVIN_PER_EV 11604.518 /* temperatures are in eV; material tables quote kelvin */
+
+/* What a class is: its name, its options and its registry. One instance per class (MPMShapeClass, ...); the
+   operations every class shares (create, set type, get type, options prefix, set-from-options, view, destroy)
+   are written once against it in src/class.c. */
+typedef struct {
+  const char        *name;                                      /* for messages: "shape function"                                           */
+  const char        *key;                                       /* its options are -<prefix><key>_type and -<prefix><key>_<type>_...        */
+  const char        *title;                                     /* options block title (-help) and view heading: "Shape functions"          */
+  const char        *manpage;                                   /* "MPMShape"                                                                */
+  const char        *help;                                      /* help of the type option                                                   */
+  const char        *deftype;                                   /* type set by SetFromOptions when none is set; NULL: the user must set one  */
+  PetscFunctionList *list;                                      /* the registered types                                                      */
+  size_t             opssize;                                   /* bytes of the class's ops table, cleared when the type changes             */
+  PetscErrorCode (*reset)(void *);                              /* clears the class's own fields on a change of type, may be NULL */
+  PetscErrorCode (*setfromoptions)(void *, PetscOptionItems *); /* class-level options after the type's, may be NULL              */
+  PetscErrorCode (*view)(void *, PetscViewer);                  /* class-level view lines before the type's, may be NULL          */
+  PetscErrorCode (*destroy)(void *);                            /* frees the class's own data, may be NULL                        */
+} MPMClass;
+
+/* Generic class header, in the PETSc pattern: the class, a type name, an options prefix, the type's data and an ops
+   table that starts with MPM_CLASS_OPS, so that src/class.c can reach every object as an MPMObject. */
+#define MPM_CLASS_HEADER(Ops)              \
+  MPI_Comm        comm;                    \
+  const MPMClass *cls;                     \
+  char            type_name[MPM_MAX_NAME]; \
+  char           *prefix;                  \
+  void           *data;                    \
+  Ops             ops
+#define MPM_CLASS_OPS(Obj)                                   \
+  PetscErrorCode (*setfromoptions)(Obj, PetscOptionItems *); \
+  PetscErrorCode (*view)(Obj, PetscViewer);                  \
+  PetscErrorCode (*destroy)(Obj)
+
+typedef struct {
+  MPM_CLASS_OPS(void *);
+} MPMObjectOps;
+typedef struct {
+  MPM_CLASS_HEADER(MPMObjectOps);
+} *MPMObject;
+
+PETSC_INTERN PetscErrorCode MPMObjectCreate(MPI_Comm, const MPMClass *, size_t, void *);
+PETSC_INTERN PetscErrorCode MPMObjectSetType(void *, const char[]);
+PETSC_INTERN PetscErrorCode MPMObjectGetType(void *, const char **);
+PETSC_INTERN PetscErrorCode MPMObjectSetOptionsPrefix(void *, const char[]);
+PETSC_INTERN PetscErrorCode MPMObjectSetFromOptions(void *);
+PETSC_INTERN PetscErrorCode MPMObjectView(void *, PetscViewer);
+PETSC_INTERN PetscErrorCode MPMObjectDestroy(void *);
+
+/* The typed public interface of a class X (MPMXRegister into the list XList, SetType, GetType, SetOptionsPrefix,
+   SetFromOptions, View, Destroy), each a call of the one generic implementation above. */
+#define MPM_CLASS_INTERFACE(X)                                               \
+  PetscErrorCode X##Register(const char name[], PetscErrorCode (*create)(X)) \
+  {                                                                          \
+    PetscFunctionBegin;                                                      \
+    PetscCall(PetscFunctionListAdd(&X##List, name, create));                 \
+    PetscFunctionReturn(PETSC_SUCCESS);                                      \
+  }                                                                          \
+  PetscErrorCode X##SetType(X obj, X##Type type)                             \
+  {                                                                          \
+    PetscFunctionBegin;                                                      \
+    PetscCall(MPMObjectSetType(obj, type));                                  \
+    PetscFunctionReturn(PETSC_SUCCESS);                                      \
+  }                                                                          \
+  PetscErrorCode X##GetType(X obj, X##Type *type)                            \
+  {                                                                          \
+    PetscFunctionBegin;                                                      \
+    PetscCall(MPMObjectGetType(obj, type));                                  \
+    PetscFunctionReturn(PETSC_SUCCESS);                                      \
+  }                                                                          \
+  PetscErrorCode X##SetOptionsPrefix(X obj, const char prefix[])             \
+  {                                                                          \
+    PetscFunctionBegin;                                                      \
+    PetscCall(MPMObjectSetOptionsPrefix(obj, prefix));                       \
+    PetscFunctionReturn(PETSC_SUCCESS);                                      \
+  }                                                                          \
+  PetscErrorCode X##SetFromOptions(X obj)                                    \
+  {                                                                          \
+    PetscFunctionBegin;                                                      \
+    PetscCall(MPMObjectSetFromOptions(obj));                                 \
+    PetscFunctionReturn(PETSC_SUCCESS);                                      \
+  }                                                                          \
+  PetscErrorCode X##View(X obj, PetscViewer viewer)                          \
+  {                                                                          \
+    PetscFunctionBegin;                                                      \
+    PetscCall(MPMObjectView(obj, viewer));                                   \
+    PetscFunctionReturn(PETSC_SUCCESS);                                      \
+  }                                                                          \
+  PetscErrorCode X##Destroy(X *obj)                                          \
+  {                                                                          \
+    PetscFunctionBegin;                                                      \
+    PetscCall(MPMObjectDestroy(obj));                                        \
+    PetscFunctionReturn(PETSC_SUCCESS);                                      \
+  }
+
+PETSC_INTERN PetscErrorCode MPMOptionsCheckRange(const char[], PetscReal, PetscReal, PetscReal, PetscBool, PetscBool);
+PETSC_INTERN PetscErrorCode MPMOptionsDimReals(PetscOptionItems *, const char[], const char[], PetscInt, PetscReal[]);
+PETSC_INTERN PetscErrorCode MPMOptionsDimEnums(PetscOptionItems *, const char[], const char[], const char *const[], PetscInt, PetscEnum[]);
+PETSC_INTERN PetscErrorCode MPMClassSetType(PetscFunctionList, const char[], const char[], const char[], PetscErrorCode (**)(void *));
+PETSC_INTERN PetscErrorCode MPMClassTypeList(PetscFunctionList, char[], size_t);
+
+/* det A of a d x d row-major matrix. */
+static inline PetscReal MPMDeterminant(PetscInt d, const PetscReal A[])
+{
+  if (d == 1) return A[0];
+  if (d == 2) return A[0] * A[3] - A[1] * A[2];
+  return A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6]) + A[2] * (A[3] * A[7] - A[4] * A[6]);
+}
+
+/* One RK4 step along an isentrope, de/drho = P(rho, e) / rho^2, from (rho, e) to rho + h: e at rho + h. P is the
+   stress that does the work (the EOS pressure, or the longitudinal stress P_xx of a solid in uniaxial strain). */
+static inline PetscReal MPMIsentropeStep(PetscReal (*P)(void *, PetscReal, PetscReal), void *ctx, PetscReal rho, PetscReal e, PetscReal h)
+{
+  const PetscReal rm = rho + 0.5 * h, r1 = rho + h;
+  const PetscReal k1 = P(ctx, rho, e) / (rho * rho), k2 = P(ctx, rm, e + 0.5 * h * k1) / (rm * rm);
+  const PetscReal k3 = P(ctx, rm, e + 0.5 * h * k2) / (rm * rm), k4 = P(ctx, r1, e + h * k3) / (r1 * r1);
+  return e + h * (k1 + 2.0 * k2 + 2.0 * k3 + k4) / 6.0;
+}

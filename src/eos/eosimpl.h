@@ -1,0 +1,47 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* Private data of the equation-of-state class (src/eos/). */
+#pragma once
+#include "../classimpl.h"
+
+typedef struct {
+  MPM_CLASS_OPS(MPMEOS);
+  void (*pressure)(void *, PetscReal, PetscReal, PetscReal *, PetscReal *);                             /* (rho, e) -> p, c^2     */
+  void (*temperature)(void *, PetscReal, PetscReal, PetscReal *);                                       /* (rho, e) -> T          */
+  void (*energy)(void *, PetscReal, PetscReal, PetscReal *);                                            /* (rho, T) -> e          */
+  void (*pressure_n)(void *, PetscInt, const PetscReal[], const PetscReal[], PetscReal[], PetscReal[]); /* batched: n points (rho[], e[]) -> p[], c^2[]; NULL: a loop over pressure */
+  void (*temperature_n)(void *, PetscInt, const PetscReal[], const PetscReal[], PetscReal[]);           /* batched: (rho[], e[]) -> T[]; NULL: a loop over temperature       */
+} MPMEOSOps;
+
+/* Batched EOS operations of a type from its pointwise ones, in the type's own file so that the loop inlines them. */
+#define MPM_EOS_BATCHED(Pressure, Temperature)                                                                               \
+  static void Pressure##_n(void *ctx, PetscInt n, const PetscReal rho[], const PetscReal e[], PetscReal p[], PetscReal c2[]) \
+  {                                                                                                                          \
+    for (PetscInt i = 0; i < n; i++) Pressure(ctx, rho[i], e[i], &p[i], &c2[i]);                                             \
+  }                                                                                                                          \
+  static void Temperature##_n(void *ctx, PetscInt n, const PetscReal rho[], const PetscReal e[], PetscReal T[])              \
+  {                                                                                                                          \
+    for (PetscInt i = 0; i < n; i++) Temperature(ctx, rho[i], e[i], &T[i]);                                                  \
+  }
+struct _p_MPMEOS {
+  MPM_CLASS_HEADER(MPMEOSOps);
+  PetscBool pressureless; /* the type gives no pressure (none): the material needs a strength model */
+};
+
+PETSC_INTERN PetscErrorCode MPMEOSPressureBatch(MPMEOS, PetscInt, const PetscReal[], const PetscReal[], PetscReal[], PetscReal[]);
+PETSC_INTERN PetscErrorCode MPMEOSTemperatureBatch(MPMEOS, PetscInt, const PetscReal[], const PetscReal[], PetscReal[]);
+
+/* Pointwise EOS kernels for set-up and seeding. */
+static inline void MPMEOSPressureKernel(MPMEOS eos, PetscReal rho, PetscReal e, PetscReal *p, PetscReal *c2)
+{
+  eos->ops.pressure(eos->data, rho, e, p, c2);
+}
+
+static inline void MPMEOSTemperatureKernel(MPMEOS eos, PetscReal rho, PetscReal e, PetscReal *T)
+{
+  eos->ops.temperature(eos->data, rho, e, T);
+}
+
+static inline void MPMEOSEnergyKernel(MPMEOS eos, PetscReal rho, PetscReal T, PetscReal *e)
+{
+  eos->ops.energy(eos->data, rho, T, e);
+}

@@ -1,0 +1,155 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* The grid seen by the shape functions and the transfer kernels: the DMDA's geometry and ownership, the nodal
+   record, the stencil of a point, and the inline pieces of shape-function evaluation. */
+#pragma once
+#include "classimpl.h"
+
+#define MPM_MAX_STENCIL 216 /* nodes a point can touch: 6^3 covers every planned shape type */
+#define MPM_MAX_1D 8        /* nodes per direction a 1D basis can touch */
+
+/* The cell average of a 1D basis over one cell: ghosted-local node indices, weights, derivatives [1/cm], mirror signs. */
+typedef struct {
+  PetscInt  n;
+  PetscInt  idx[MPM_MAX_1D];
+  PetscReal w[MPM_MAX_1D], dw[MPM_MAX_1D], sg[MPM_MAX_1D];
+} MPMShapeCell;
+
+/* ------------------------------------------------------------------ grid */
+typedef struct {
+  PetscInt  dim;                     /* number of space dimensions d [-]                        */
+  PetscInt  cells[MPM_MAX_DIM];      /* global cells per direction [-]                          */
+  PetscInt  xs[MPM_MAX_DIM];         /* first owned vertex (also first owned cell) per direction */
+  PetscInt  xm[MPM_MAX_DIM];         /* owned vertices per direction                            */
+  PetscInt  cs[MPM_MAX_DIM];         /* first owned cell per direction                          */
+  PetscInt  cm[MPM_MAX_DIM];         /* owned cells per direction                               */
+  PetscInt  gs[MPM_MAX_DIM];         /* first vertex of the ghosted local box                   */
+  PetscInt  gm[MPM_MAX_DIM];         /* vertices per direction of the ghosted local box         */
+  PetscInt  ncells;                  /* owned cells on this rank                                */
+  PetscReal lo[MPM_MAX_DIM];         /* lower corner of the domain [cm]                         */
+  PetscReal hi[MPM_MAX_DIM];         /* upper corner of the domain [cm]                         */
+  PetscReal h[MPM_MAX_DIM];          /* cell size [cm]                                          */
+  PetscReal hmin;                    /* smallest cell size [cm]                                 */
+  PetscReal vcell;                   /* cell volume h_x h_y h_z [cm^d]                          */
+  PetscInt *rank_start[MPM_MAX_DIM]; /* first owned cell of each rank column, size p_d + 1    */
+  PetscInt  nranks[MPM_MAX_DIM];     /* ranks per direction                                     */
+  PetscBool mirror_lo[MPM_MAX_DIM];  /* lower face is a wall: shape functions fold onto it by reflection */
+  PetscBool mirror_hi[MPM_MAX_DIM];  /* upper face is a wall                                    */
+} MPMGrid;
+
+/* Nodal data: a struct overlay on the DMDA vector (dof = sizeof(MPMNode)/sizeof(PetscScalar)). */
+typedef struct {
+  PetscScalar m;     /* lumped nodal mass m_I                   [g]      */
+  PetscScalar p[3];  /* nodal momentum (mv)_I                   [g cm/s] */
+  PetscScalar f[3];  /* internal + external force f_I           [dyn]    */
+  PetscScalar v0[3]; /* velocity at the start of the step v_I^n [cm/s]   */
+} MPMNode;
+#define MPM_NODE_DOF ((PetscInt)(sizeof(MPMNode) / sizeof(PetscScalar)))
+
+/* The nodes one point touches: flat indices into the ghosted local node array, weights N_I(x_p), gradients,
+   and the sign of each vector component: -1 for component k where the entry is the mirror image, across a
+   wall normal to k, of a node outside the domain (a symmetry plane by image points). An index may repeat. */
+typedef struct {
+  PetscInt  n;
+  PetscInt  node[MPM_MAX_STENCIL];
+  PetscReal w[MPM_MAX_STENCIL];
+  PetscReal dw[MPM_MAX_STENCIL][MPM_MAX_DIM];
+  PetscReal s[MPM_MAX_STENCIL][MPM_MAX_DIM];
+} MPMStencil;
+
+PETSC_INTERN PetscInt    MPMLocalCell(const MPMGrid *, const PetscReal[]);
+PETSC_INTERN PetscMPIInt MPMOwnerRank(const MPMGrid *, const PetscReal[]);
+
+/* Owned nodes of the global nodal vector (the box xs .. xs + xm; unused directions have xm = 1). */
+static inline PetscInt MPMNumOwnedNodes(const MPMGrid *g)
+{
+  return g->xm[0] * g->xm[1] * g->xm[2];
+}
+
+/* Global cell index of x in direction k, clamped to the domain. */
+static inline PetscInt MPMCellIndex(const MPMGrid *g, PetscInt k, PetscReal x)
+{
+  PetscInt i = (PetscInt)PetscFloorReal((x - g->lo[k]) / g->h[k]);
+  return i < 0 ? 0 : (i >= g->cells[k] ? g->cells[k] - 1 : i);
+}
+
+/* The tent functions on the cells, N_i = 1 - t, N_{i+1} = t with i = floor(xi), t = xi - i: the linear type's
+   basis and the grid basis CPDI interpolates from its corners. */
+static inline void MPMShapeLinear1d(PetscReal xi, PetscInt *first, PetscInt *n, PetscReal w[], PetscReal dw[])
+{
+  const PetscInt i = (PetscInt)PetscFloorReal(xi);
+
+  *first = i;
+  *n     = 2;
+  w[0]   = 1.0 - (xi - i);
+  w[1]   = xi - i;
+  dw[0]  = -1.0;
+  dw[1]  = 1.0;
+}
+
+/* Maps the global node indices idx[0..n) of direction k that lie outside the grid onto grid nodes, as
+   ghosted-local indices, with the sign sg of vector component k: across a wall the node outside is the mirror
+   image of the node inside (symmetry plane: the image field is the reflected one), across a free face it
+   merges into the face node (constant extension). Both keep sum N_I = 1 and sum grad N_I = 0. */
+static inline void MPMShapeFold1d(const MPMGrid *g, PetscInt k, PetscInt n, PetscInt idx[], PetscReal sg[])
+{
+  const PetscInt nc = g->cells[k];
+
+  for (PetscInt a = 0; a < n; a++) {
+    PetscInt i = idx[a];
+    sg[a]      = 1.0;
+    if (i < 0) {
+      if (g->mirror_lo[k]) {
+        i     = -i;
+        sg[a] = -1.0;
+      } else
+        i = 0;
+    } else if (i > nc) {
+      if (g->mirror_hi[k]) {
+        i     = 2 * nc - i;
+        sg[a] = -1.0;
+      } else
+        i = nc;
+    }
+    idx[a] = i - g->gs[k];
+  }
+}
+
+/* Tensor product of per-direction node lists (ghosted-local index, weight, derivative, sign). */
+static inline void MPMShapeTensor(const MPMGrid *g, const PetscInt nn[], PetscInt idx[][MPM_MAX_1D], PetscReal w[][MPM_MAX_1D], PetscReal dw[][MPM_MAX_1D], PetscReal sg[][MPM_MAX_1D], MPMStencil *st)
+{
+  const PetscInt d = g->dim;
+
+  st->n = 0;
+  if (d == 1) {
+    for (PetscInt a = 0; a < nn[0]; a++) {
+      st->node[a]  = idx[0][a];
+      st->w[a]     = w[0][a];
+      st->dw[a][0] = dw[0][a];
+      st->s[a][0]  = sg[0][a];
+    }
+    st->n = nn[0];
+  } else if (d == 2) {
+    for (PetscInt b = 0; b < nn[1]; b++)
+      for (PetscInt a = 0; a < nn[0]; a++, st->n++) {
+        st->node[st->n]  = idx[1][b] * g->gm[0] + idx[0][a];
+        st->w[st->n]     = w[0][a] * w[1][b];
+        st->dw[st->n][0] = dw[0][a] * w[1][b];
+        st->dw[st->n][1] = w[0][a] * dw[1][b];
+        st->s[st->n][0]  = sg[0][a];
+        st->s[st->n][1]  = sg[1][b];
+      }
+  } else {
+    for (PetscInt c = 0; c < nn[2]; c++)
+      for (PetscInt b = 0; b < nn[1]; b++)
+        for (PetscInt a = 0; a < nn[0]; a++, st->n++) {
+          st->node[st->n]  = (idx[2][c] * g->gm[1] + idx[1][b]) * g->gm[0] + idx[0][a];
+          st->w[st->n]     = w[0][a] * w[1][b] * w[2][c];
+          st->dw[st->n][0] = dw[0][a] * w[1][b] * w[2][c];
+          st->dw[st->n][1] = w[0][a] * dw[1][b] * w[2][c];
+          st->dw[st->n][2] = w[0][a] * w[1][b] * dw[2][c];
+          st->s[st->n][0]  = sg[0][a];
+          st->s[st->n][1]  = sg[1][b];
+          st->s[st->n][2]  = sg[2][c];
+        }
+  }
+}

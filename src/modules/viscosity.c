@@ -1,0 +1,27 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* Artificial-viscosity module (point phase MPM_PHASE_POINT_STATE; -mpm_viscosity_type other than none): fills the
+   viscosity class's context from the points and the ghosted grid, and lets the type compute q_p. */
+#include "../petmpmimpl.h"
+
+PetscErrorCode MPMViscosityModuleApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
+{
+  MPMPoints           pts;
+  MPMViscosityContext vc;
+
+  PetscFunctionBegin;
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  PetscCall(VecGetArrayRead(mpm->lnodes, (const PetscScalar **)&vc.node));
+  vc.grid  = &mpm->grid;
+  vc.shape = mpm->shape;
+  vc.n     = pts.n;
+  vc.x     = pts.f[MPM_FIELD_POSITION];
+  vc.rho   = pts.f[MPM_FIELD_DENSITY];
+  vc.c     = pts.f[MPM_FIELD_SOUNDSPEED];
+  vc.L     = pts.f[MPM_FIELD_GRADV];
+  vc.q     = pts.f[MPM_FIELD_VISCOSITY];
+  vc.dt    = ctx->dt;
+  PetscCall(MPMViscosityApply(mpm->viscosity, &vc));
+  PetscCall(VecRestoreArrayRead(mpm->lnodes, (const PetscScalar **)&vc.node));
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -1,0 +1,52 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* Private data of the shape-function class (src/shape/). */
+#pragma once
+#include "../gridimpl.h"
+
+typedef struct _MPMTransferKernels MPMTransferKernels; /* src/transfer/transfer.h */
+
+typedef struct {
+  MPM_CLASS_OPS(MPMShape);
+  PetscInt (*support)(void *);                                                                   /* ghost width the type needs [cells] */
+  void (*basis1d)(void *, PetscReal, PetscInt *, PetscInt *, PetscReal[], PetscReal[]);          /* xi = (x-lo)/h -> first node (may lie outside the grid), count, N, dN/dxi */
+  void (*evaluate)(void *, const MPMGrid *, const PetscReal[], const PetscReal[], MPMStencil *); /* (x, F) -> stencil, for types that are not tensor products */
+  PetscBool (*admissible)(void *, const MPMGrid *, const PetscReal[]);                           /* can the type evaluate a point with deformation gradient F? */
+  PetscErrorCode (*setup)(MPMShape, const MPMGrid *, PetscInt);                                  /* grid and points per cell per direction */
+} MPMShapeOps;
+struct _p_MPMShape {
+  MPM_CLASS_HEADER(MPMShapeOps);
+  PetscBool                 needs_F;                /* the type reads the points' deformation gradient */
+  const MPMTransferKernels *kernels;                /* specialised transfer kernels for d = 1, 2, 3 (kernels.h), NULL: generic only */
+  MPMShapeCell             *cell1d[MPM_MAX_DIM];    /* cell-averaged 1D bases of the ghosted cells gs..gs+gm per direction */
+  PetscInt                  cell1d_lo[MPM_MAX_DIM]; /* the global cell of entry 0                                          */
+  PetscInt                  ncell1d[MPM_MAX_DIM];   /* entries                                                             */
+};
+
+/* N_I(x_p) and grad N_I(x_p) at a point with deformation gradient F (read only by types that follow the
+   deformation, may be NULL otherwise): tensor products of the type's 1D basis unless the type evaluates
+   points itself. Inline, so that the particle loops call the 1D basis and nothing else. */
+static inline void MPMShapeEvaluate(MPMShape shape, const MPMGrid *g, const PetscReal x[], const PetscReal F[], MPMStencil *st)
+{
+  PetscInt       idx[MPM_MAX_DIM][MPM_MAX_1D], nn[MPM_MAX_DIM];
+  PetscReal      w[MPM_MAX_DIM][MPM_MAX_1D], dw[MPM_MAX_DIM][MPM_MAX_1D], sg[MPM_MAX_DIM][MPM_MAX_1D];
+  const PetscInt d = g->dim;
+
+  if (shape->ops.evaluate) {
+    shape->ops.evaluate(shape->data, g, x, F, st);
+    return;
+  }
+  for (PetscInt k = 0; k < d; k++) {
+    const PetscReal hinv = 1.0 / g->h[k];
+    PetscInt        first;
+    shape->ops.basis1d(shape->data, (x[k] - g->lo[k]) * hinv, &first, &nn[k], w[k], dw[k]);
+    for (PetscInt a = 0; a < nn[k]; a++) {
+      dw[k][a] *= hinv;
+      idx[k][a] = first + a;
+    }
+    MPMShapeFold1d(g, k, nn[k], idx[k], sg[k]);
+  }
+  MPMShapeTensor(g, nn, idx, w, dw, sg, st);
+}
+
+PETSC_INTERN PetscErrorCode MPMShapeSetUp(MPMShape, const MPMGrid *, PetscInt);
+PETSC_INTERN void           MPMShapeEvaluateCell(MPMShape, const MPMGrid *, const PetscInt[], MPMStencil *);

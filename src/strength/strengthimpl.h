@@ -1,0 +1,29 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* Private data of the strength-model class (src/strength/). */
+#pragma once
+#include "../classimpl.h"
+
+typedef struct {
+  MPM_CLASS_OPS(MPMStrength);
+  void (*stress)(void *, PetscInt, PetscReal, const PetscReal[], const PetscReal[], PetscReal, PetscReal, PetscReal[], PetscReal *, PetscReal *); /* (d, dt, L, F, rho, T) -> s (row-major d x d) [dyn/cm^2] and eps_p [-] (in/out), c^2 [cm^2/s^2] */
+  void (*stress_n)(void *, PetscInt, PetscReal, PetscInt, const PetscInt[], const PetscReal[], const PetscReal[], const PetscReal[], const PetscReal[], PetscReal[], PetscReal[],
+                   PetscReal[]);                              /* batched over the points idx[0..n): L, F, T, s, eps_p by point, rho and c^2 contiguous; NULL: a loop over stress */
+  PetscReal (*flow)(void *, PetscReal, PetscReal, PetscReal); /* (eps_p, deps_p/dt [1/s], T [eV]) -> yield stress [dyn/cm^2]; NULL: never yields */
+} MPMStrengthOps;
+
+/* The batched stress operation of a type from its pointwise one (see MPMStrengthOps::stress_n). */
+#define MPM_STRENGTH_BATCHED(Stress)                                                                                                                                                                                                   \
+  static void Stress##_n(void *ctx, PetscInt d, PetscReal dt, PetscInt n, const PetscInt idx[], const PetscReal L[], const PetscReal F[], const PetscReal rho[], const PetscReal T[], PetscReal s[], PetscReal epsp[], PetscReal c2[]) \
+  {                                                                                                                                                                                                                                    \
+    for (PetscInt i = 0; i < n; i++) {                                                                                                                                                                                                 \
+      const PetscInt p = idx[i];                                                                                                                                                                                                       \
+      Stress(ctx, d, dt, &L[p * d * d], F ? &F[p * d * d] : NULL, rho[i], T[p], &s[p * d * d], &epsp[p], &c2[i]);                                                                                                                      \
+    }                                                                                                                                                                                                                                  \
+  }
+struct _p_MPMStrength {
+  MPM_CLASS_HEADER(MPMStrengthOps);
+  PetscBool needs_F; /* the model reads the deformation gradient           */
+  PetscReal G;       /* shear modulus of the hypoelastic types [dyn/cm^2] */
+};
+
+PETSC_INTERN PetscErrorCode MPMStrengthStressBatch(MPMStrength, PetscInt, PetscReal, PetscInt, const PetscInt[], const PetscReal[], const PetscReal[], const PetscReal[], const PetscReal[], PetscReal[], PetscReal[], PetscReal[]);
