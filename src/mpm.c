@@ -167,7 +167,9 @@ PetscErrorCode MPMSetUp(MPM mpm)
   PetscCall(MPMPointsSelectFields(mpm));
   PetscCall(MPMCreatePoints(mpm));
   if (mpm->exact) {
-    PetscCall(MPMExactSetUp(mpm->exact, mpm));
+    MPMScene scene;
+    PetscCall(MPMGetScene(mpm, &scene));
+    PetscCall(MPMExactSetUp(mpm->exact, &scene));
     PetscCall(MPMExactInitialize(mpm->exact, mpm));
   }
   mpm->has_bodyforce = (PetscBool)(mpm->exact && mpm->exact->ops.bodyforce);

@@ -76,19 +76,43 @@ PetscErrorCode MPMPointsRestoreArrays(MPM mpm, MPMPoints *pts)
 }
 
 /* Region index of the first region holding x, or -1. */
-PetscInt MPMRegionAt(MPM mpm, const PetscReal x[])
+PetscInt MPMSceneRegionAt(const MPMScene *sc, const PetscReal x[])
 {
-  for (PetscInt r = 0; r < mpm->nreg; r++) {
-    const MPMRegion *reg = &mpm->reg[r];
+  for (PetscInt r = 0; r < sc->nreg; r++) {
+    const MPMRegion *reg = &sc->reg[r];
     PetscBool        in  = PETSC_TRUE;
     PetscReal        r2  = 0.0;
-    for (PetscInt k = 0; k < mpm->grid.dim; k++) {
+    for (PetscInt k = 0; k < sc->grid->dim; k++) {
       in = (PetscBool)(in && x[k] >= reg->lo[k] && x[k] <= reg->hi[k]);
       r2 += PetscSqr(x[k] - reg->center[k]);
     }
     if (in && r2 >= reg->rmin * reg->rmin && (reg->rmax >= PETSC_MAX_REAL || r2 <= reg->rmax * reg->rmax)) return r;
   }
   return -1;
+}
+
+static inline PetscInt MPMRegionAt(MPM mpm, const PetscReal x[])
+{
+  MPMScene sc;
+  sc.grid = &mpm->grid;
+  sc.nreg = mpm->nreg;
+  sc.reg  = mpm->reg;
+  return MPMSceneRegionAt(&sc, x);
+}
+
+/* The scene as the exact solutions see it. */
+PetscErrorCode MPMGetScene(MPM mpm, MPMScene *sc)
+{
+  PetscFunctionBegin;
+  sc->comm  = mpm->comm;
+  sc->grid  = &mpm->grid;
+  sc->bc_lo = mpm->bc_lo;
+  sc->bc_hi = mpm->bc_hi;
+  sc->nmat  = mpm->nmat;
+  sc->nreg  = mpm->nreg;
+  sc->mat   = mpm->mat;
+  sc->reg   = mpm->reg;
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* Lattice site s (0 <= s < prod_k cm_k ppc) of this rank's cells: its position and its global lattice index. */
@@ -288,24 +312,24 @@ PetscErrorCode MPMCreatePoints(MPM mpm)
       const MPMRegion *reg = pc[i].region >= 0 ? &mpm->reg[pc[i].region] : NULL; /* one region: its state exactly */
       PetscReal        T   = reg ? reg->T : 0.0;
       for (PetscInt k = 0; k < d; k++) {
-        pts.f[MPM_FIELD_POSITION][n * d + k]    = pc[i].x[k];
+        pts.f[MPM_FIELD_POSITION][n * d + k] = pc[i].x[k];
         if (pts.f[MPM_FIELD_REFPOSITION]) pts.f[MPM_FIELD_REFPOSITION][n * d + k] = pc[i].x[k];
-        pts.f[MPM_FIELD_VELOCITY][n * d + k]    = reg ? reg->v[k] : pc[i].mv[k];
+        pts.f[MPM_FIELD_VELOCITY][n * d + k] = reg ? reg->v[k] : pc[i].mv[k];
       }
       if (!reg) MPMEOSTemperatureKernel(mpm->mat[pc[i].material].eos, rho[i], e[i], &T);
       for (PetscInt k = 0; k < d * d; k++) {
-        pts.f[MPM_FIELD_GRADV][n * d * d + k]   = 0.0;
+        pts.f[MPM_FIELD_GRADV][n * d * d + k] = 0.0;
         if (pts.f[MPM_FIELD_STRESS]) pts.f[MPM_FIELD_STRESS][n * d * d + k] = 0.0;
         if (pts.f[MPM_FIELD_DEFGRAD]) pts.f[MPM_FIELD_DEFGRAD][n * d * d + k] = k % (d + 1) == 0 ? 1.0 : 0.0;
       }
-      pts.f[MPM_FIELD_VOLUME][n]        = pc[i].V;
-      pts.f[MPM_FIELD_DENSITY][n]       = reg ? reg->rho : rho[i];
-      pts.f[MPM_FIELD_MASS][n]          = pc[i].m;
-      pts.f[MPM_FIELD_TEMPERATURE][n]   = T;
-      pts.f[MPM_FIELD_VISCOSITY][n]     = 0.0;
+      pts.f[MPM_FIELD_VOLUME][n]      = pc[i].V;
+      pts.f[MPM_FIELD_DENSITY][n]     = reg ? reg->rho : rho[i];
+      pts.f[MPM_FIELD_MASS][n]        = pc[i].m;
+      pts.f[MPM_FIELD_TEMPERATURE][n] = T;
+      pts.f[MPM_FIELD_VISCOSITY][n]   = 0.0;
       if (pts.f[MPM_FIELD_PLASTICSTRAIN]) pts.f[MPM_FIELD_PLASTICSTRAIN][n] = 0.0;
-      pts.f[MPM_FIELD_MATERIAL][n]      = (PetscReal)pc[i].material;
-      pts.f[MPM_FIELD_ID][n]            = id;
+      pts.f[MPM_FIELD_MATERIAL][n] = (PetscReal)pc[i].material;
+      pts.f[MPM_FIELD_ID][n]       = id;
     }
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
@@ -381,5 +405,26 @@ PetscErrorCode MPMXProfile(MPM mpm, PetscInt nb, PetscReal xc[], PetscReal rho[]
     rho[b] = sum[2 * b + 1] > 0 ? sum[2 * b] / sum[2 * b + 1] : 0.0;
   }
   PetscCall(PetscFree(sum));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Puts the points in the exact solution's initial state where it does not start at rest on the seeding
+   lattice: x = X + u(X, 0), v, F, and with them V = J V_0 and rho = m / V. Points that changed rank follow. */
+PetscErrorCode MPMExactInitialize(MPMExact exact, MPM mpm)
+{
+  const PetscInt d = mpm->grid.dim;
+  MPMPoints      pts;
+
+  PetscFunctionBegin;
+  if (!exact->ops.initial) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt p = 0; p < pts.n; p++) {
+    PetscReal *F = &pts.f[MPM_FIELD_DEFGRAD][p * d * d];
+    exact->ops.initial(exact->data, &pts.f[MPM_FIELD_REFPOSITION][p * d], &pts.f[MPM_FIELD_POSITION][p * d], &pts.f[MPM_FIELD_VELOCITY][p * d], F);
+    pts.f[MPM_FIELD_VOLUME][p] *= MPMDeterminant(d, F);
+    pts.f[MPM_FIELD_DENSITY][p] = pts.f[MPM_FIELD_MASS][p] / pts.f[MPM_FIELD_VOLUME][p];
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(MPMMigrate(mpm));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

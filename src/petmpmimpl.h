@@ -9,6 +9,7 @@
 #include "eos/eosimpl.h"
 #include "strength/strengthimpl.h"
 #include "viscosity/viscosityimpl.h"
+#include "sceneimpl.h"
 #include "exact/exactimpl.h"
 
 /* ------------------------------------------------------------------ particles */
@@ -50,27 +51,7 @@ typedef struct {
   PetscReal *f[MPM_MAX_FIELDS]; /* NULL for a field the scene does not carry */
 } MPMPoints;
 
-/* ------------------------------------------------------------------ scene */
-typedef struct {
-  char        name[MPM_MAX_NAME]; /* material name used in option prefixes -mat_<name>_ */
-  MPMEOS      eos;                /* equation of state                               */
-  MPMStrength strength;           /* stress besides the pressure; NULL for a fluid   */
-} MPMMaterial;
-
-typedef struct {
-  char      name[MPM_MAX_NAME];              /* region name used in option prefixes -region_<name>_ */
-  PetscInt  material;                        /* index into MPM::mat                                 */
-  PetscReal lo[MPM_MAX_DIM];                 /* box lower corner [cm]                               */
-  PetscReal hi[MPM_MAX_DIM];                 /* box upper corner [cm]                               */
-  PetscReal center[MPM_MAX_DIM], rmin, rmax; /* and rmin <= |x - center| <= rmax [cm]      */
-  PetscReal rho;                             /* initial density [g/cm^3]                            */
-  PetscReal T;                               /* initial temperature [eV]                            */
-  PetscReal v[MPM_MAX_DIM];                  /* initial velocity [cm/s]                             */
-} MPMRegion;
-
-#define MPM_MAX_MATERIALS 16
 #define MPM_CHUNK 256 /* points per batch of the constitutive update */
-#define MPM_MAX_REGIONS 32
 #define MPM_MAX_CHECKS 16
 #define MPM_MAX_OUTPUT_TIMES 64
 
@@ -194,7 +175,6 @@ PETSC_INTERN PetscErrorCode MPMPointsSelectFields(MPM);
 PETSC_INTERN PetscErrorCode MPMPointsRegisterField(MPM, const char[], PetscInt, const char[], const char[], PetscBool, PetscInt *);
 PETSC_INTERN PetscErrorCode MPMPointsRestoreArrays(MPM, MPMPoints *);
 PETSC_INTERN PetscErrorCode MPMMigrate(MPM);
-PETSC_INTERN PetscInt       MPMRegionAt(MPM, const PetscReal[]);
 PETSC_INTERN PetscErrorCode MPMStep(MPM, PetscReal, PetscReal);
 PETSC_INTERN PetscErrorCode MPMSetFailure(MPM, const char[], ...);
 PETSC_INTERN PetscErrorCode MPMModuleAdd(MPM, const char[], MPMPhase, PetscErrorCode (*)(MPMModule, MPM, const MPMStepContext *, MPMNode *), void *);
@@ -220,11 +200,8 @@ PETSC_INTERN PetscErrorCode MPMOutputClose(MPM);
 PETSC_INTERN PetscErrorCode MPMGlobalSums(MPM, PetscReal *, PetscReal *, PetscReal[]);
 PETSC_INTERN PetscErrorCode MPMSceneSetFromOptions(MPM, PetscOptionItems *);
 PETSC_INTERN PetscErrorCode MPMSceneView(MPM, PetscViewer);
-PETSC_INTERN PetscErrorCode MPMExactSetUp(MPMExact, MPM);
-PETSC_INTERN PetscErrorCode MPMExactEvaluate(MPMExact, PetscReal, const PetscReal[], const PetscReal[], PetscReal *, PetscReal[], PetscReal *, PetscReal *);
+PETSC_INTERN PetscErrorCode MPMGetScene(MPM, MPMScene *);
 PETSC_INTERN PetscErrorCode MPMExactInitialize(MPMExact, MPM);
-PETSC_INTERN PetscErrorCode MPMExactComputeChecks(MPMExact, MPM);
-PETSC_INTERN PetscBool      MPMExactInWindow(MPMExact, const PetscReal[]);
+PETSC_INTERN PetscErrorCode MPMComputeChecks(MPM);
 PETSC_INTERN PetscErrorCode MPMAddCheck(MPM, const char[], PetscReal, PetscReal);
 PETSC_INTERN PetscErrorCode MPMXProfile(MPM, PetscInt, PetscReal[], PetscReal[]);
-PETSC_INTERN PetscReal      MPMProfileCrossing(PetscInt, const PetscReal[], const PetscReal[], PetscReal, PetscReal);

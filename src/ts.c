@@ -67,7 +67,7 @@ static PetscErrorCode MPMTSPostStep(TS ts)
     mpm->itout++;
     if (PetscAbsReal(t - tmax) > 1e-12 * PetscAbsReal(tmax)) { /* the final state is written and checked after the loop */
       PetscCall(MPMOutputWrite(mpm, step, t));
-      if (mpm->exact) PetscCall(MPMExactComputeChecks(mpm->exact, mpm));
+      PetscCall(MPMComputeChecks(mpm));
     }
   } else if (mpm->output_interval > 0 && step % mpm->output_interval == 0)
     PetscCall(MPMOutputWrite(mpm, step, t));

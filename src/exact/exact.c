@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* Exact-solution class: a verification scene names its exact solution with -mpm_exact_type; the report
    then carries error norms of density, velocity, pressure and temperature and the scene's named checks. */
-#include "../petmpmimpl.h"
+#include "exactimpl.h"
 
 static PetscFunctionList MPMExactList = NULL;
 
@@ -33,10 +33,10 @@ PetscErrorCode MPMExactCreate(MPI_Comm comm, MPMExact *exact)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode MPMExactSetUp(MPMExact exact, MPM mpm)
+PetscErrorCode MPMExactSetUp(MPMExact exact, const MPMScene *scene)
 {
   PetscFunctionBegin;
-  if (exact->ops.setup) PetscCall(exact->ops.setup(exact, mpm));
+  if (exact->ops.setup) PetscCall(exact->ops.setup(exact, scene));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -44,27 +44,6 @@ PetscErrorCode MPMExactEvaluate(MPMExact exact, PetscReal t, const PetscReal x[]
 {
   PetscFunctionBegin;
   exact->ops.evaluate(exact->data, t, x, X, rho, v, p, T);
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* Puts the points in the exact solution's initial state where it does not start at rest on the seeding
-   lattice: x = X + u(X, 0), v, F, and with them V = J V_0 and rho = m / V. Points that changed rank follow. */
-PetscErrorCode MPMExactInitialize(MPMExact exact, MPM mpm)
-{
-  const PetscInt d = mpm->grid.dim;
-  MPMPoints      pts;
-
-  PetscFunctionBegin;
-  if (!exact->ops.initial) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(MPMPointsGetArrays(mpm, &pts));
-  for (PetscInt p = 0; p < pts.n; p++) {
-    PetscReal *F = &pts.f[MPM_FIELD_DEFGRAD][p * d * d];
-    exact->ops.initial(exact->data, &pts.f[MPM_FIELD_REFPOSITION][p * d], &pts.f[MPM_FIELD_POSITION][p * d], &pts.f[MPM_FIELD_VELOCITY][p * d], F);
-    pts.f[MPM_FIELD_VOLUME][p] *= MPMDeterminant(d, F);
-    pts.f[MPM_FIELD_DENSITY][p] = pts.f[MPM_FIELD_MASS][p] / pts.f[MPM_FIELD_VOLUME][p];
-  }
-  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-  PetscCall(MPMMigrate(mpm));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -88,9 +67,9 @@ PetscReal MPMProfileCrossing(PetscInt n, const PetscReal xc[], const PetscReal f
   return best;
 }
 
-PetscErrorCode MPMExactComputeChecks(MPMExact exact, MPM mpm)
+PetscErrorCode MPMExactComputeChecks(MPMExact exact, MPMProbe probe)
 {
   PetscFunctionBegin;
-  if (exact->ops.checks) PetscCall(exact->ops.checks(exact, mpm));
+  if (exact->ops.checks) PetscCall(exact->ops.checks(exact, probe));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

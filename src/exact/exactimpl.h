@@ -1,20 +1,44 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
-/* Private data of the exact-solution class (src/exact/). Its set-up and checks still read the scene through the
-   MPM object (see docs/issue notes): the exact types include the core header. */
+/* Private data of the exact-solution class (src/exact/). An exact type is a pure function of (t, x, X) and its
+   parameters: it reads the scene once at set-up (MPMScene) and measures its checks through an MPMProbe (the binned
+   density profile and windowed means of the points, src/report.c), never the MPM object or the swarm. */
 #pragma once
-#include "../classimpl.h"
+#include "../sceneimpl.h"
+
+/* What a check may measure on the current state. */
+typedef struct _p_MPMProbe *MPMProbe;
+typedef enum {
+  MPM_PROBE_PRESSURE, /* p_p                                              */
+  MPM_PROBE_DENSITY,  /* rho_p                                            */
+  MPM_PROBE_PXX,      /* longitudinal stress P_xx = p + q - s_xx          */
+  MPM_PROBE_VELOCITY  /* v_p along x                                      */
+} MPMProbeQuantity;
+typedef enum {
+  MPM_PROBE_VOLUME, /* volume-weighted mean sum V q / sum V                          */
+  MPM_PROBE_MASS    /* mass-weighted mean sum m q / sum m                            */
+} MPMProbeWeight;
+PETSC_INTERN PetscErrorCode MPMProbeGetTime(MPMProbe, PetscReal *);
+PETSC_INTERN PetscErrorCode MPMProbeDensityCrossing(MPMProbe, PetscReal, PetscReal, PetscReal *);
+PETSC_INTERN PetscErrorCode MPMProbeMean(MPMProbe, MPMProbeQuantity, MPMProbeWeight, PetscBool, PetscReal, PetscReal, PetscReal, PetscReal, PetscReal *, PetscBool *);
+PETSC_INTERN PetscErrorCode MPMProbeAddCheck(MPMProbe, const char[], PetscReal, PetscReal);
 
 /* An exact solution knows the fields at a point and the scene's named scalar checks. */
 typedef struct {
   MPM_CLASS_OPS(MPMExact);
-  PetscErrorCode (*setup)(MPMExact, MPM);
+  PetscErrorCode (*setup)(MPMExact, const MPMScene *);
   void (*evaluate)(void *, PetscReal, const PetscReal[], const PetscReal[], PetscReal *, PetscReal[], PetscReal *, PetscReal *); /* (t, x, X) -> rho, v, p, T */
   void (*initial)(void *, const PetscReal[], PetscReal[], PetscReal[], PetscReal[]);                                             /* X -> x, v, F at t = 0 (points that do not start at rest on their lattice site) */
   void (*bodyforce)(void *, PetscReal, const PetscReal[], const PetscReal[], PetscReal[]);                                       /* (t, X, F) -> b [cm/s^2], applied as m_p b */
   void (*displacement)(void *, PetscReal, const PetscReal[], PetscReal[]);                                                       /* (t, X) -> u [cm]                      */
-  PetscErrorCode (*checks)(MPMExact, MPM);
+  PetscErrorCode (*checks)(MPMExact, MPMProbe);                                                                                  /* the scene's named checks, measured by the probe */
 } MPMExactOps;
 struct _p_MPMExact {
   MPM_CLASS_HEADER(MPMExactOps);
   PetscReal window[2]; /* error norms only for lo < x < hi [cm]: where no wave from the domain ends has arrived */
 };
+
+PETSC_INTERN PetscErrorCode MPMExactSetUp(MPMExact, const MPMScene *);
+PETSC_INTERN PetscErrorCode MPMExactEvaluate(MPMExact, PetscReal, const PetscReal[], const PetscReal[], PetscReal *, PetscReal[], PetscReal *, PetscReal *);
+PETSC_INTERN PetscErrorCode MPMExactComputeChecks(MPMExact, MPMProbe);
+PETSC_INTERN PetscBool      MPMExactInWindow(MPMExact, const PetscReal[]);
+PETSC_INTERN PetscReal      MPMProfileCrossing(PetscInt, const PetscReal[], const PetscReal[], PetscReal, PetscReal);

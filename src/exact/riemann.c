@@ -5,7 +5,7 @@
      f_K(p) = (p - p_K) sqrt(A_K / (p + B_K)),                       p > p_K (shock),
      f_K(p) = 2 c_K / (gamma_K - 1) ((p / p_K)^((gamma_K - 1)/(2 gamma_K)) - 1),  p <= p_K (rarefaction),
    A_K = 2 / ((gamma_K + 1) rho_K), B_K = (gamma_K - 1)/(gamma_K + 1) p_K; u* = (u_L + u_R)/2 + (f_R - f_L)/2. */
-#include "../petmpmimpl.h"
+#include "exactimpl.h"
 
 static void RiemannF(const MPMRiemannState *s, PetscReal p, PetscReal *f, PetscReal *df)
 {

@@ -20,7 +20,7 @@
      density_plateau       the same for the density, against rho1 [g/cm^3],
      free_surface_velocity (t1 < t < t2) mass-weighted mean velocity of the points in the outer half of the
                            released tail, h < z_f (t - t1) / 2, against the tail velocity [cm/s]. */
-#include "../../petmpmimpl.h"
+#include "../exactimpl.h"
 
 #define FLYER_TABLE 4001
 
@@ -160,31 +160,31 @@ static void MPMExactEvaluate_Flyer(void *ctx, PetscReal t, const PetscReal x[], 
   MPMEOSTemperatureKernel(ef->eos, r, e, T);
 }
 
-static PetscErrorCode MPMExactSetUp_Flyer(MPMExact exact, MPM mpm)
+static PetscErrorCode MPMExactSetUp_Flyer(MPMExact exact, const MPMScene *sc)
 {
   Exact_Flyer     *ef  = (Exact_Flyer *)exact->data;
-  const MPMRegion *reg = &mpm->reg[0];
+  const MPMRegion *reg = &sc->reg[0];
   MPMStrength      str;
   PetscReal        c2;
 
   PetscFunctionBegin;
-  PetscCheck(mpm->grid.dim == 1 && mpm->nreg >= 1, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer needs a 1D scene whose first region is the rod");
-  PetscCheck(mpm->bc_lo[0] == MPM_BC_WALL, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer needs -mpm_bc_lo wall (the symmetry wall the rod hits)");
-  ef->lo   = mpm->grid.lo[0];
-  ef->L0   = PetscMin(reg->hi[0], mpm->grid.hi[0]) - ef->lo;
+  PetscCheck(sc->grid->dim == 1 && sc->nreg >= 1, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer needs a 1D scene whose first region is the rod");
+  PetscCheck(sc->bc_lo[0] == MPM_BC_WALL, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer needs -mpm_bc_lo wall (the symmetry wall the rod hits)");
+  ef->lo   = sc->grid->lo[0];
+  ef->L0   = PetscMin(reg->hi[0], sc->grid->hi[0]) - ef->lo;
   ef->up   = -reg->v[0];
   ef->rho0 = reg->rho;
-  PetscCheck(PetscAbsReal(reg->lo[0] - ef->lo) <= 1e-12 * ef->L0, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer: the rod (-region_%s_lo %g) must start at the wall -mpm_lo %g", reg->name, (double)reg->lo[0], (double)ef->lo);
-  PetscCheck(ef->up > 0.0, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer: the rod must move towards the wall, -region_%s_velocity < 0 (got %g)", reg->name, (double)reg->v[0]);
-  ef->eos = mpm->mat[reg->material].eos;
-  str     = mpm->mat[reg->material].strength;
+  PetscCheck(PetscAbsReal(reg->lo[0] - ef->lo) <= 1e-12 * ef->L0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer: the rod (-region_%s_lo %g) must start at the wall -mpm_lo %g", reg->name, (double)reg->lo[0], (double)ef->lo);
+  PetscCheck(ef->up > 0.0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer: the rod must move towards the wall, -region_%s_velocity < 0 (got %g)", reg->name, (double)reg->v[0]);
+  ef->eos = sc->mat[reg->material].eos;
+  str     = sc->mat[reg->material].strength;
   ef->G   = 0.0;
   if (str) { /* a hypoelastic model that never yields */
     PetscReal       Y;
     MPMStrengthType type;
     PetscCall(MPMStrengthFlowStress(str, 0.0, 0.0, 0.0, &Y));
     PetscCall(MPMStrengthGetType(str, &type));
-    PetscCheck(Y == PETSC_MAX_REAL, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer knows the solution for -mat_%s_strength_type none or %s, not %s (an elastic-plastic rod sends two waves)", mpm->mat[reg->material].name, MPMSTRENGTHELASTIC,
+    PetscCheck(Y == PETSC_MAX_REAL, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer knows the solution for -mat_%s_strength_type none or %s, not %s (an elastic-plastic rod sends two waves)", sc->mat[reg->material].name, MPMSTRENGTHELASTIC,
                type);
     PetscCall(MPMStrengthGetShearModulus(str, &ef->G)); /* an error for a model without one */
   }
@@ -194,48 +194,30 @@ static PetscErrorCode MPMExactSetUp_Flyer(MPMExact exact, MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MPMExactChecks_Flyer(MPMExact exact, MPM mpm)
+/* While the shock runs in the rod: its speed from the crossing of (rho0 + rho1)/2 on the binned density profile, and
+   the plateaus of P_xx + q and of the density over the middle half of the shocked length, volume-weighted. After it
+   has reached the free end, before the release returns to the wall: the mass-weighted velocity of the points in the
+   outer half of the released tail (by reference position). */
+static PetscErrorCode MPMExactChecks_Flyer(MPMExact exact, MPMProbe probe)
 {
-  Exact_Flyer    *ef = (Exact_Flyer *)exact->data;
-  const PetscReal t  = mpm->time;
-  MPMPoints       pts;
+  Exact_Flyer *ef = (Exact_Flyer *)exact->data;
+  PetscReal    t, xs, mean;
+  PetscBool    found;
 
   PetscFunctionBegin;
+  PetscCall(MPMProbeGetTime(probe, &t));
   if (t > 0.0 && t < 0.95 * ef->t1) {
-    const PetscInt n = mpm->grid.cells[0];
-    PetscReal     *xc, *rho, xs, sum[3] = {0, 0, 0};
-    PetscCall(PetscMalloc2(n, &xc, n, &rho));
-    PetscCall(MPMXProfile(mpm, n, xc, rho));
-    xs = MPMProfileCrossing(n, xc, rho, 0.5 * (ef->rho0 + ef->rho1), ef->lo + (ef->Us - ef->up) * t);
-    PetscCall(PetscFree2(xc, rho));
-    PetscCall(MPMAddCheck(mpm, "shock_speed", (xs - ef->lo) / t + ef->up, ef->Us));
-    PetscCall(MPMPointsGetArrays(mpm, &pts));
-    for (PetscInt p = 0; p < pts.n; p++) {
-      const PetscReal x = pts.f[MPM_FIELD_POSITION][p] - ef->lo, V = pts.f[MPM_FIELD_VOLUME][p];
-      if (x > 0.25 * (xs - ef->lo) && x < 0.75 * (xs - ef->lo)) {
-        sum[0] += V * (pts.f[MPM_FIELD_PRESSURE][p] + pts.f[MPM_FIELD_VISCOSITY][p] - (mpm->has_stress ? pts.f[MPM_FIELD_STRESS][p] : 0.0));
-        sum[1] += V * pts.f[MPM_FIELD_DENSITY][p];
-        sum[2] += V;
-      }
-    }
-    PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, sum, 3, MPIU_REAL, MPIU_SUM, mpm->comm));
-    PetscCheck(sum[2] > 0.0, mpm->comm, PETSC_ERR_PLIB, "Flyer plate: no point in the shocked plateau at t = %g s", (double)t);
-    PetscCall(MPMAddCheck(mpm, "stress_plateau", sum[0] / sum[2], ef->P1));
-    PetscCall(MPMAddCheck(mpm, "density_plateau", sum[1] / sum[2], ef->rho1));
-  } else if (t > ef->t1 && t < ef->t2) {
-    const PetscReal hmax   = 0.5 * ef->z[ef->n - 1] * (t - ef->t1);
-    PetscReal       sum[2] = {0, 0};
-    PetscCall(MPMPointsGetArrays(mpm, &pts));
-    for (PetscInt p = 0; p < pts.n; p++) {
-      if (ef->rho0 * (ef->lo + ef->L0 - pts.f[MPM_FIELD_REFPOSITION][p]) < hmax) {
-        sum[0] += pts.f[MPM_FIELD_MASS][p] * pts.f[MPM_FIELD_VELOCITY][p];
-        sum[1] += pts.f[MPM_FIELD_MASS][p];
-      }
-    }
-    PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, sum, 2, MPIU_REAL, MPIU_SUM, mpm->comm));
-    if (sum[1] > 0.0) PetscCall(MPMAddCheck(mpm, "free_surface_velocity", sum[0] / sum[1], ef->u[ef->n - 1]));
+    PetscCall(MPMProbeDensityCrossing(probe, 0.5 * (ef->rho0 + ef->rho1), ef->lo + (ef->Us - ef->up) * t, &xs));
+    PetscCall(MPMProbeAddCheck(probe, "shock_speed", (xs - ef->lo) / t + ef->up, ef->Us));
+    PetscCall(MPMProbeMean(probe, MPM_PROBE_PXX, MPM_PROBE_VOLUME, PETSC_FALSE, ef->lo, 1.0, 0.25 * (xs - ef->lo), 0.75 * (xs - ef->lo), &mean, &found));
+    PetscCheck(found, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Flyer plate: no point in the shocked plateau at t = %g s", (double)t);
+    PetscCall(MPMProbeAddCheck(probe, "stress_plateau", mean, ef->P1));
+    PetscCall(MPMProbeMean(probe, MPM_PROBE_DENSITY, MPM_PROBE_VOLUME, PETSC_FALSE, ef->lo, 1.0, 0.25 * (xs - ef->lo), 0.75 * (xs - ef->lo), &mean, &found));
+    PetscCall(MPMProbeAddCheck(probe, "density_plateau", mean, ef->rho1));
+  } else if (t > ef->t1 && t < ef->t2) { /* rho0 (lo + L0 - X) < hmax: the outer half of the released tail */
+    const PetscReal hmax = 0.5 * ef->z[ef->n - 1] * (t - ef->t1);
+    PetscCall(MPMProbeMean(probe, MPM_PROBE_VELOCITY, MPM_PROBE_MASS, PETSC_TRUE, ef->lo + ef->L0, -ef->rho0, PETSC_MIN_REAL, hmax, &mean, &found));
+    if (found) PetscCall(MPMProbeAddCheck(probe, "free_surface_velocity", mean, ef->u[ef->n - 1]));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

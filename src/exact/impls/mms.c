@@ -12,7 +12,7 @@
    -mpm_exact_mms_amplitude A [cm for axis_aligned, rad for vortex], -mpm_exact_mms_frequency c [1/s].
    mu, lambda come from the material (-mat_<name>_strength_type neohookean), rho0 from the first region.
    The report adds errors.displacement: u_p = x_p - X_p against u(X_p, t). */
-#include "../../petmpmimpl.h"
+#include "../exactimpl.h"
 
 typedef enum { MMS_AXIS_ALIGNED, MMS_VORTEX } MMSProblem;
 static const char *const MMSProblems[] = {"axis_aligned", "vortex", "MMSProblem", "MMS_", NULL};
@@ -125,16 +125,16 @@ static void MPMExactBodyForce_MMS(void *ctx, PetscReal t, const PetscReal X[], c
   }
 }
 
-static PetscErrorCode MPMExactSetUp_MMS(MPMExact exact, MPM mpm)
+static PetscErrorCode MPMExactSetUp_MMS(MPMExact exact, const MPMScene *sc)
 {
   Exact_MMS *mm = (Exact_MMS *)exact->data;
 
   PetscFunctionBegin;
-  mm->dim = mpm->grid.dim;
-  PetscCheck(mm->problem != MMS_VORTEX || mm->dim == 2, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_mms_problem vortex is a 2D problem; -mpm_dim is %" PetscInt_FMT, mm->dim);
-  PetscCheck(mpm->nreg >= 1 && mpm->mat[mpm->reg[0].material].strength, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type mms needs a neo-Hookean material in the first region (-mat_<name>_strength_type neohookean)");
-  PetscCall(MPMStrengthNeoHookeanGetParameters(mpm->mat[mpm->reg[0].material].strength, &mm->mu, &mm->lambda));
-  mm->rho0 = mpm->reg[0].rho;
+  mm->dim = sc->grid->dim;
+  PetscCheck(mm->problem != MMS_VORTEX || mm->dim == 2, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_mms_problem vortex is a 2D problem; -mpm_dim is %" PetscInt_FMT, mm->dim);
+  PetscCheck(sc->nreg >= 1 && sc->mat[sc->reg[0].material].strength, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type mms needs a neo-Hookean material in the first region (-mat_<name>_strength_type neohookean)");
+  PetscCall(MPMStrengthNeoHookeanGetParameters(sc->mat[sc->reg[0].material].strength, &mm->mu, &mm->lambda));
+  mm->rho0 = sc->reg[0].rho;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

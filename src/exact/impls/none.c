@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* No exact solution: the report carries no error norms and no checks. */
-#include "../../petmpmimpl.h"
+#include "../exactimpl.h"
 
 PetscErrorCode MPMExactCreate_None(MPMExact exact)
 {

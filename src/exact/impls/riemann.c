@@ -9,7 +9,7 @@
      contact_position     crossing of (rho*_L + rho*_R)/2 (when the contact carries a density jump),
      plateau_pressure     volume-weighted mean pressure of the points in the middle half of the star region,
      star_density_left    volume-weighted mean density in the middle half between the left wave and the contact. */
-#include "../../petmpmimpl.h"
+#include "../exactimpl.h"
 
 typedef struct {
   PetscReal          x0;    /* initial discontinuity [cm]           */
@@ -30,88 +30,76 @@ static void MPMExactEvaluate_Riemann(void *ctx, PetscReal t, const PetscReal x[]
 }
 
 /* Initial state of the scene at x: the first region that contains the point. */
-static PetscErrorCode RiemannSceneState(MPM mpm, PetscReal x0, PetscReal shift, MPMRiemannState *s, PetscReal *cv)
+static PetscErrorCode RiemannSceneState(const MPMScene *sc, PetscReal x0, PetscReal shift, MPMRiemannState *s, PetscReal *cv)
 {
   PetscReal x[MPM_MAX_DIM];
   PetscInt  r;
 
   PetscFunctionBegin;
-  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) x[k] = 0.5 * (mpm->grid.lo[k] + mpm->grid.hi[k]);
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) x[k] = 0.5 * (sc->grid->lo[k] + sc->grid->hi[k]);
   x[0] = x0 + shift;
-  r    = MPMRegionAt(mpm, x);
-  PetscCheck(r >= 0, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_riemann_x0 %g: no region holds x = %g", (double)x0, (double)x[0]);
+  r    = MPMSceneRegionAt(sc, x);
+  PetscCheck(r >= 0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_riemann_x0 %g: no region holds x = %g", (double)x0, (double)x[0]);
   {
-    MPMEOS    eos = mpm->mat[mpm->reg[r].material].eos;
+    MPMEOS    eos = sc->mat[sc->reg[r].material].eos;
     PetscReal e, c2;
     PetscCall(MPMEOSIdealGasGetParameters(eos, &s->gamma, cv));
-    PetscCall(MPMEOSEnergyFromTemperature(eos, mpm->reg[r].rho, mpm->reg[r].T, &e));
-    PetscCall(MPMEOSPressure(eos, mpm->reg[r].rho, e, &s->p, &c2));
-    s->rho = mpm->reg[r].rho;
-    s->u   = mpm->reg[r].v[0];
+    PetscCall(MPMEOSEnergyFromTemperature(eos, sc->reg[r].rho, sc->reg[r].T, &e));
+    PetscCall(MPMEOSPressure(eos, sc->reg[r].rho, e, &s->p, &c2));
+    s->rho = sc->reg[r].rho;
+    s->u   = sc->reg[r].v[0];
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MPMExactSetUp_Riemann(MPMExact exact, MPM mpm)
+static PetscErrorCode MPMExactSetUp_Riemann(MPMExact exact, const MPMScene *sc)
 {
   Exact_Riemann  *er = (Exact_Riemann *)exact->data;
   MPMRiemannState L, R;
-  const PetscReal eps = 1e-6 * mpm->grid.h[0];
+  const PetscReal eps = 1e-6 * sc->grid->h[0];
 
   PetscFunctionBegin;
-  PetscCall(MPMOptionsCheckRange("-mpm_exact_riemann_x0", er->x0, mpm->grid.lo[0], mpm->grid.hi[0], PETSC_TRUE, PETSC_TRUE));
-  PetscCall(RiemannSceneState(mpm, er->x0, -eps, &L, &er->cv[0]));
-  PetscCall(RiemannSceneState(mpm, er->x0, +eps, &R, &er->cv[1]));
+  PetscCall(MPMOptionsCheckRange("-mpm_exact_riemann_x0", er->x0, sc->grid->lo[0], sc->grid->hi[0], PETSC_TRUE, PETSC_TRUE));
+  PetscCall(RiemannSceneState(sc, er->x0, -eps, &L, &er->cv[0]));
+  PetscCall(RiemannSceneState(sc, er->x0, +eps, &R, &er->cv[1]));
   PetscCall(MPMRiemannSolve(&L, &R, &er->sol));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MPMExactChecks_Riemann(MPMExact exact, MPM mpm)
+/* The waves' positions from the binned density profile (the crossing of the level halfway across each jump, nearest
+   its exact position), the star-state pressure (the middle half of the star region) and the density left of the
+   contact (the middle half of its side), volume-weighted. */
+static PetscErrorCode MPMExactChecks_Riemann(MPMExact exact, MPMProbe probe)
 {
   Exact_Riemann            *er = (Exact_Riemann *)exact->data;
   const MPMRiemannSolution *s  = &er->sol;
-  const PetscReal           t  = mpm->time;
-  const PetscInt            n  = mpm->grid.cells[0];
-  PetscReal                *xc, *rho;
+  PetscReal                 t, x, mean;
+  PetscBool                 found;
 
   PetscFunctionBegin;
-  PetscCall(PetscMalloc2(n, &xc, n, &rho));
-  PetscCall(MPMXProfile(mpm, n, xc, rho));
+  PetscCall(MPMProbeGetTime(probe, &t));
   if (s->shockR) {
     const PetscReal xs = er->x0 + s->SR * t;
-    PetscCall(MPMAddCheck(mpm, "shock_position", MPMProfileCrossing(n, xc, rho, 0.5 * (s->rhostarR + s->R.rho), xs), xs));
+    PetscCall(MPMProbeDensityCrossing(probe, 0.5 * (s->rhostarR + s->R.rho), xs, &x));
+    PetscCall(MPMProbeAddCheck(probe, "shock_position", x, xs));
   }
   if (s->shockL) {
     const PetscReal xs = er->x0 + s->SL * t;
-    PetscCall(MPMAddCheck(mpm, s->shockR ? "left_shock_position" : "shock_position", MPMProfileCrossing(n, xc, rho, 0.5 * (s->rhostarL + s->L.rho), xs), xs));
+    PetscCall(MPMProbeDensityCrossing(probe, 0.5 * (s->rhostarL + s->L.rho), xs, &x));
+    PetscCall(MPMProbeAddCheck(probe, s->shockR ? "left_shock_position" : "shock_position", x, xs));
   }
   if (PetscAbsReal(s->rhostarL - s->rhostarR) > 1e-3 * PetscMax(s->rhostarL, s->rhostarR)) { /* a contact with a density jump */
     const PetscReal xcon = er->x0 + s->ustar * t;
-    PetscCall(MPMAddCheck(mpm, "contact_position", MPMProfileCrossing(n, xc, rho, 0.5 * (s->rhostarL + s->rhostarR), xcon), xcon));
+    PetscCall(MPMProbeDensityCrossing(probe, 0.5 * (s->rhostarL + s->rhostarR), xcon, &x));
+    PetscCall(MPMProbeAddCheck(probe, "contact_position", x, xcon));
   }
   {
     const PetscReal xa = er->x0 + s->STL * t, xb = er->x0 + s->STR * t, xm = er->x0 + s->ustar * t, w = xb - xa, wl = xm - xa;
-    PetscReal       sum[4] = {0, 0, 0, 0};
-    MPMPoints       pts;
-
-    PetscCall(MPMPointsGetArrays(mpm, &pts));
-    for (PetscInt q = 0; q < pts.n; q++) {
-      const PetscReal x = pts.f[MPM_FIELD_POSITION][q * mpm->grid.dim], V = pts.f[MPM_FIELD_VOLUME][q];
-      if (x > xa + 0.25 * w && x < xb - 0.25 * w) {
-        sum[0] += V * pts.f[MPM_FIELD_PRESSURE][q];
-        sum[1] += V;
-      }
-      if (x > xa + 0.25 * wl && x < xm - 0.25 * wl) {
-        sum[2] += V * pts.f[MPM_FIELD_DENSITY][q];
-        sum[3] += V;
-      }
-    }
-    PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, sum, 4, MPIU_REAL, MPIU_SUM, mpm->comm));
-    if (sum[1] > 0) PetscCall(MPMAddCheck(mpm, "plateau_pressure", sum[0] / sum[1], s->pstar)); /* a near vacuum may hold no point */
-    if (sum[3] > 0) PetscCall(MPMAddCheck(mpm, "star_density_left", sum[2] / sum[3], s->rhostarL));
+    PetscCall(MPMProbeMean(probe, MPM_PROBE_PRESSURE, MPM_PROBE_VOLUME, PETSC_FALSE, 0.0, 1.0, xa + 0.25 * w, xb - 0.25 * w, &mean, &found));
+    if (found) PetscCall(MPMProbeAddCheck(probe, "plateau_pressure", mean, s->pstar)); /* a near vacuum may hold no point */
+    PetscCall(MPMProbeMean(probe, MPM_PROBE_DENSITY, MPM_PROBE_VOLUME, PETSC_FALSE, 0.0, 1.0, xa + 0.25 * wl, xm - 0.25 * wl, &mean, &found));
+    if (found) PetscCall(MPMProbeAddCheck(probe, "star_density_left", mean, s->rhostarL));
   }
-  PetscCall(PetscFree2(xc, rho));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
