@@ -70,6 +70,7 @@ PetscErrorCode MPMLogRegister(MPM mpm)
   PetscCall(PetscLogEventRegister("MPMGridToParticles", MPM_CLASSID, &mpm->log.g2p));
   PetscCall(PetscLogEventRegister("MPMConstitutive", MPM_CLASSID, &mpm->log.constitutive));
   PetscCall(PetscLogEventRegister("MPMMigrate", MPM_CLASSID, &mpm->log.migrate));
+  if (mpm->sort_interval) PetscCall(PetscLogEventRegister("MPMSortPoints", MPM_CLASSID, &mpm->log.sort));
   PetscCall(PetscLogEventRegister("MPMTimeStep", MPM_CLASSID, &mpm->log.timestep));
   PetscCall(PetscLogEventRegister("MPMOutput", MPM_CLASSID, &mpm->log.output));
   PetscFunctionReturn(PETSC_SUCCESS);

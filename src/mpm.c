@@ -103,6 +103,7 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-mpm_gravity", "Body acceleration g [cm/s^2]; enables the gravity module", g->dim, mpm->gravity));
   for (PetscInt k = 0; k < g->dim; k++) mpm->has_gravity = (PetscBool)(mpm->has_gravity || mpm->gravity[k] != 0.0);
   PetscCall(PetscOptionsString("-mpm_output", "Output directory DIR (DIR/petmpm.h5, DIR/petmpm.xmf)", "", mpm->outdir, mpm->outdir, sizeof(mpm->outdir), NULL));
+  PetscCall(PetscOptionsBoundedInt("-mpm_sort_interval", "Steps between sorts of the points by cell (transfers then find their nodes in cache); 0: never", "", mpm->sort_interval, &mpm->sort_interval, NULL, 0));
   PetscCall(PetscOptionsBoundedInt("-mpm_output_interval", "Steps between outputs; 0: first and last state only", "", mpm->output_interval, &mpm->output_interval, NULL, 0));
   mpm->ntout = MPM_MAX_OUTPUT_TIMES;
   PetscCall(PetscOptionsRealArray("-mpm_output_times", "Times t1,t2,... [s] the steps land on, with an output and the exact solution's checks at each", "", mpm->tout, &mpm->ntout, &set));

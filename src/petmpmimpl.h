@@ -62,7 +62,7 @@ typedef struct {
 
 /* Log events, one per step phase (modules register their own when the scene adds them). */
 typedef struct {
-  PetscLogEvent p2g, advance, g2p, constitutive, migrate, output, timestep;
+  PetscLogEvent p2g, advance, g2p, constitutive, migrate, sort, output, timestep;
   PetscLogStage setup, loop, io;
 } MPMLog;
 
@@ -101,6 +101,7 @@ struct _p_MPM {
   PetscInt             ppc;                        /* points per cell per direction                     */
   PetscReal            cfl;                        /* Courant number                                    */
   PetscReal            dtmin;                      /* smallest time step before the run is stopped [s]  */
+  PetscInt             sort_interval;   /* steps between sorts of the points by cell, 0: never  */
   PetscInt             output_interval;            /* steps between outputs, 0: start and end only      */
   PetscReal            tout[MPM_MAX_OUTPUT_TIMES]; /* -mpm_output_times: steps land on them [s] */
   PetscInt             ntout, itout;               /* their number, the next one                */
@@ -175,6 +176,7 @@ PETSC_INTERN PetscErrorCode MPMPointsSelectFields(MPM);
 PETSC_INTERN PetscErrorCode MPMPointsRegisterField(MPM, const char[], PetscInt, const char[], const char[], PetscBool, PetscInt *);
 PETSC_INTERN PetscErrorCode MPMPointsRestoreArrays(MPM, MPMPoints *);
 PETSC_INTERN PetscErrorCode MPMMigrate(MPM);
+PETSC_INTERN PetscErrorCode MPMSortPoints(MPM);
 PETSC_INTERN PetscErrorCode MPMStep(MPM, PetscReal, PetscReal);
 PETSC_INTERN PetscErrorCode MPMSetFailure(MPM, const char[], ...);
 PETSC_INTERN PetscErrorCode MPMModuleAdd(MPM, const char[], MPMPhase, PetscErrorCode (*)(MPMModule, MPM, const MPMStepContext *, MPMNode *), void *);

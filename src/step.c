@@ -120,5 +120,6 @@ PetscErrorCode MPMStep(MPM mpm, PetscReal t, PetscReal dt)
   PetscCall(MPMConstitutive(mpm, dt));                               /* rho_p, e_p, p_p, c_p, T_p, s_p    */
   if (mpm->failed) PetscFunctionReturn(PETSC_SUCCESS);               /* the time loop stops               */
   PetscCall(MPMMigrate(mpm));                                        /* points follow their cells         */
+  if (mpm->sort_interval && mpm->steps % mpm->sort_interval == 0) PetscCall(MPMSortPoints(mpm)); /* and stay in cell order */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
