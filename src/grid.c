@@ -13,6 +13,7 @@ PetscErrorCode MPMCreateGrid(MPM mpm)
   PetscFunctionBegin;
   PetscCall(MPMShapeGetGhostWidth(mpm->shape, &sw));
   if (mpm->viscosity) sw += mpm->viscosity->ghost; /* a limiter reads the neighbouring cells */
+  g->sw = sw;
   for (PetscInt k = 0; k < g->dim; k++) M[k] = g->cells[k] + 1;
   switch (g->dim) {
   case 1:
@@ -122,5 +123,56 @@ PetscErrorCode MPMGridGlobalToLocal(MPM mpm)
   PetscFunctionBegin;
   if (mpm->lnodes == mpm->nodes) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(DMGlobalToLocal(mpm->da, mpm->nodes, INSERT_VALUES, mpm->lnodes));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Zeroes the local nodal vector before a scatter from the n points at x, and sets the box of nodes the step's node
+   loops sweep (MPM::box_lo, box_hi, in owned-node indices). With one vector for global and ghosted nodes (one rank)
+   that box is the points' cells widened by the ghost width, and only it and the box of the previous scatter are
+   zeroed: the grid work follows the body, not the domain, and every node outside holds zeros, as after a zeroing
+   of the whole vector. With several ranks the whole box is zeroed and swept (the ghost exchange sweeps it anyway). */
+PetscErrorCode MPMGridZeroForScatter(MPM mpm, PetscInt n, const PetscReal x[], MPMNode *node)
+{
+  MPMGrid *g = &mpm->grid;
+  PetscInt lo[MPM_MAX_DIM], hi[MPM_MAX_DIM];
+
+  PetscFunctionBegin;
+  if (mpm->lnodes != mpm->nodes) {
+    PetscCall(PetscArrayzero(node, g->gm[0] * g->gm[1] * g->gm[2]));
+    for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
+      mpm->box_lo[k] = 0;
+      mpm->box_hi[k] = g->xm[k];
+    }
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
+    lo[k] = PETSC_MAX_INT;
+    hi[k] = -1;
+  }
+  for (PetscInt p = 0; p < n; p++)
+    for (PetscInt k = 0; k < g->dim; k++) {
+      const PetscInt c = MPMCellIndex(g, k, x[p * g->dim + k]);
+      lo[k]            = PetscMin(lo[k], c);
+      hi[k]            = PetscMax(hi[k], c);
+    }
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) { /* owned = ghosted box here: node indices 0 .. xm */
+    if (k >= g->dim || hi[k] < 0) {
+      lo[k] = 0;
+      hi[k] = k >= g->dim ? 1 : 0;
+      continue;
+    }
+    lo[k] = PetscMax(0, lo[k] - g->sw - g->xs[k]);
+    hi[k] = PetscMin(g->xm[k], hi[k] + 2 + g->sw - g->xs[k]);
+  }
+  for (PetscInt pass = 0; pass < 2; pass++) { /* the previous box (it may hold values), then the new one */
+    const PetscInt *a = pass ? lo : mpm->box_lo, *b = pass ? hi : mpm->box_hi;
+    if (a[0] >= b[0]) continue;
+    for (PetscInt k2 = a[2]; k2 < b[2]; k2++)
+      for (PetscInt k1 = a[1]; k1 < b[1]; k1++) PetscCall(PetscArrayzero(&node[(k2 * g->xm[1] + k1) * g->xm[0] + a[0]], b[0] - a[0]));
+  }
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
+    mpm->box_lo[k] = lo[k];
+    mpm->box_hi[k] = hi[k];
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -24,6 +24,7 @@ typedef struct {
   PetscInt  cm[MPM_MAX_DIM];         /* owned cells per direction                               */
   PetscInt  gs[MPM_MAX_DIM];         /* first vertex of the ghosted local box                   */
   PetscInt  gm[MPM_MAX_DIM];         /* vertices per direction of the ghosted local box         */
+  PetscInt  sw;                      /* ghost width of the DMDA [cells]: a point touches nodes within sw cells of its own */
   PetscInt  ncells;                  /* owned cells on this rank                                */
   PetscReal lo[MPM_MAX_DIM];         /* lower corner of the domain [cm]                         */
   PetscReal hi[MPM_MAX_DIM];         /* upper corner of the domain [cm]                         */

@@ -101,7 +101,7 @@ struct _p_MPM {
   PetscInt             ppc;                        /* points per cell per direction                     */
   PetscReal            cfl;                        /* Courant number                                    */
   PetscReal            dtmin;                      /* smallest time step before the run is stopped [s]  */
-  PetscInt             sort_interval;   /* steps between sorts of the points by cell, 0: never  */
+  PetscInt             sort_interval;              /* steps between sorts of the points by cell, 0: never  */
   PetscInt             output_interval;            /* steps between outputs, 0: start and end only      */
   PetscReal            tout[MPM_MAX_OUTPUT_TIMES]; /* -mpm_output_times: steps land on them [s] */
   PetscInt             ntout, itout;               /* their number, the next one                */
@@ -135,10 +135,11 @@ struct _p_MPM {
   MPMFieldInfo field[MPM_MAX_FIELDS];    /* the point fields: MPMFieldTable, then the registered ones  */
   PetscBool    field_on[MPM_MAX_FIELDS]; /* carried by this scene's points                            */
   PetscInt     nfields;
-  PetscInt     nwork;         /* capacity of the constitutive workspace [points]         */
-  PetscInt    *widx;          /* the local points of each material, material by material  */
-  PetscReal   *work;          /* 7 values per point of a chunk of MPM_CHUNK points        */
-  PetscReal   *cellV, *cellS; /* per local cell: sum V_p, sum V_p (p_p + q_p); in the gather of the conservative update with the cell rule, cellS is the cell's work per unit P_p V_p */
+  PetscInt     nwork;                                    /* capacity of the constitutive workspace [points]         */
+  PetscInt    *widx;                                     /* the local points of each material, material by material  */
+  PetscReal   *work;                                     /* 7 values per point of a chunk of MPM_CHUNK points        */
+  PetscInt     box_lo[MPM_MAX_DIM], box_hi[MPM_MAX_DIM]; /* owned nodes the node loops sweep (MPMGridZeroForScatter) */
+  PetscReal   *cellV, *cellS;                            /* per local cell: sum V_p, sum V_p (p_p + q_p); in the gather of the conservative update with the cell rule, cellS is the cell's work per unit P_p V_p */
   TS           ts;
   Vec          tsu; /* the TS state: empty; the MPM state lives in the grid and swarm */
   /* output */
@@ -163,6 +164,13 @@ struct _p_MPM {
   char       failure[1024];           /* why                                                  */
 };
 
+/* Loops c over the owned nodes (their index in the global nodal vector) of the box the step's node loops sweep:
+   outside it every node holds zeros (MPMGridZeroForScatter). */
+#define MPM_FOR_BOX_NODES(mpm, c)                                        \
+  for (PetscInt k2_ = (mpm)->box_lo[2]; k2_ < (mpm)->box_hi[2]; k2_++)   \
+    for (PetscInt k1_ = (mpm)->box_lo[1]; k1_ < (mpm)->box_hi[1]; k1_++) \
+      for (PetscInt c = (k2_ * (mpm)->grid.xm[1] + k1_) * (mpm)->grid.xm[0] + (mpm)->box_lo[0], c##end_ = c - (mpm)->box_lo[0] + (mpm)->box_hi[0]; c < c##end_; c++)
+
 /* Internal API */
 PETSC_INTERN PetscClassId   MPM_CLASSID; /* log events of petmpm (src/init.c) */
 PETSC_INTERN PetscErrorCode MPMLogRegister(MPM);
@@ -170,6 +178,7 @@ PETSC_INTERN PetscInt       MPMFieldBlockSize(PetscInt, PetscInt);
 PETSC_INTERN PetscErrorCode MPMCreateGrid(MPM);
 PETSC_INTERN PetscErrorCode MPMGridLocalToGlobal(MPM);
 PETSC_INTERN PetscErrorCode MPMGridGlobalToLocal(MPM);
+PETSC_INTERN PetscErrorCode MPMGridZeroForScatter(MPM, PetscInt, const PetscReal[], MPMNode *);
 PETSC_INTERN PetscErrorCode MPMCreatePoints(MPM);
 PETSC_INTERN PetscErrorCode MPMPointsGetArrays(MPM, MPMPoints *);
 PETSC_INTERN PetscErrorCode MPMPointsSelectFields(MPM);

@@ -70,7 +70,8 @@ static PetscErrorCode MPMGridAdvance(MPM mpm, const MPMStepContext *ctx)
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(mpm->log.advance, 0, 0, 0, 0));
   PetscCall(VecGetArray(mpm->nodes, (PetscScalar **)&node));
-  for (PetscInt c = 0; c < MPMNumOwnedNodes(&mpm->grid); c++) {
+  MPM_FOR_BOX_NODES(mpm, c)
+  {
     MPMNode *nd = &node[c];
     if (nd->m > 0.0) {
       const PetscReal minv = 1.0 / nd->m;
@@ -111,15 +112,15 @@ PetscErrorCode MPMStep(MPM mpm, PetscReal t, PetscReal dt)
 
   PetscFunctionBegin;
   mpm->dt = dt;
-  PetscCall(MPMParticlesToGrid(mpm, &ctx));                          /* m_I, (mv)_I, f_I = f_int          */
-  PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_FORCE, &ctx));       /* f_I += f_ext: gravity             */
-  PetscCall(MPMGridAdvance(mpm, &ctx));                              /* (mv)_I += dt_kick f_I; walls      */
-  PetscCall(MPMGridToParticles(mpm, &ctx));                          /* v_p; USL: x_p, L_p                */
-  PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_KINEMATICS, &ctx)); /* MUSL: v_I from v_p; x_p, L_p */
-  PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_STATE, &ctx));      /* q_p: artificial viscosity          */
-  PetscCall(MPMConstitutive(mpm, dt));                               /* rho_p, e_p, p_p, c_p, T_p, s_p    */
-  if (mpm->failed) PetscFunctionReturn(PETSC_SUCCESS);               /* the time loop stops               */
-  PetscCall(MPMMigrate(mpm));                                        /* points follow their cells         */
+  PetscCall(MPMParticlesToGrid(mpm, &ctx));                                                      /* m_I, (mv)_I, f_I = f_int          */
+  PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_FORCE, &ctx));                                   /* f_I += f_ext: gravity             */
+  PetscCall(MPMGridAdvance(mpm, &ctx));                                                          /* (mv)_I += dt_kick f_I; walls      */
+  PetscCall(MPMGridToParticles(mpm, &ctx));                                                      /* v_p; USL: x_p, L_p                */
+  PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_KINEMATICS, &ctx));                             /* MUSL: v_I from v_p; x_p, L_p */
+  PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_STATE, &ctx));                                  /* q_p: artificial viscosity          */
+  PetscCall(MPMConstitutive(mpm, dt));                                                           /* rho_p, e_p, p_p, c_p, T_p, s_p    */
+  if (mpm->failed) PetscFunctionReturn(PETSC_SUCCESS);                                           /* the time loop stops               */
+  PetscCall(MPMMigrate(mpm));                                                                    /* points follow their cells         */
   if (mpm->sort_interval && mpm->steps % mpm->sort_interval == 0) PetscCall(MPMSortPoints(mpm)); /* and stay in cell order */
   PetscFunctionReturn(PETSC_SUCCESS);
 }

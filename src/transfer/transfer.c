@@ -33,13 +33,13 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
   MPMNode        *node;
 
   PetscFunctionBegin;
-  PetscCall(VecZeroEntries(mpm->lnodes));
   PetscCall(VecGetArray(mpm->lnodes, (PetscScalar **)&node));
   if (cellrule) {
     PetscCall(PetscArrayzero(mpm->cellV, g->ncells));
     PetscCall(PetscArrayzero(mpm->cellS, g->ncells));
   }
   PetscCall(MPMPointsGetArrays(mpm, &pts));
+  PetscCall(MPMGridZeroForScatter(mpm, pts.n, pts.f[MPM_FIELD_POSITION], node));
   {
     const PetscReal *x = pts.f[MPM_FIELD_POSITION], *v = pts.f[MPM_FIELD_VELOCITY], *m = pts.f[MPM_FIELD_MASS];
     const PetscReal *V = pts.f[MPM_FIELD_VOLUME], *pr = pts.f[MPM_FIELD_PRESSURE], *q = pts.f[MPM_FIELD_VISCOSITY];
