@@ -106,6 +106,48 @@ static PetscErrorCode CheckType(const char type[], PetscInt dim, PetscBool bound
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The class base (src/class.c), through the shape class: the default type, GetType after SetType, SetType of the
+   current type keeps the type's data (nothing re-created), an options prefix of one's own (-<prefix>shape_type),
+   and an unknown type refused with an error. */
+static PetscErrorCode CheckClassBase(PetscInt *fails)
+{
+  MPMShape       shape;
+  MPMShapeType   type;
+  void          *data;
+  PetscBool      same, ok;
+  PetscErrorCode ierr;
+
+  PetscFunctionBegin;
+  PetscCall(MPMShapeCreate(PETSC_COMM_SELF, &shape));
+  PetscCall(MPMShapeGetType(shape, &type));
+  PetscCall(PetscStrcmp(type, MPMSHAPELINEAR, &same));
+  ok = same;
+  PetscCall(MPMShapeSetType(shape, MPMSHAPEGIMP));
+  data = shape->data;
+  PetscCall(MPMShapeSetType(shape, MPMSHAPEGIMP));
+  PetscCall(MPMShapeGetType(shape, &type));
+  PetscCall(PetscStrcmp(type, MPMSHAPEGIMP, &same));
+  ok = (PetscBool)(ok && same && data && shape->data == data);
+  PetscCall(MPMShapeSetOptionsPrefix(shape, "second_"));
+  PetscCall(PetscOptionsSetValue(NULL, "-second_shape_type", MPMSHAPEBSPLINE2));
+  PetscCall(MPMShapeSetFromOptions(shape));
+  PetscCall(PetscOptionsClearValue(NULL, "-second_shape_type"));
+  PetscCall(MPMShapeGetType(shape, &type));
+  PetscCall(PetscStrcmp(type, MPMSHAPEBSPLINE2, &same));
+  ok = (PetscBool)(ok && same);
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  ierr = MPMShapeSetType(shape, "nosuchshape");
+  PetscCall(PetscPopErrorHandler());
+  ok = (PetscBool)(ok && ierr == PETSC_ERR_ARG_UNKNOWN_TYPE);
+  PetscCall(MPMShapeGetType(shape, &type));
+  PetscCall(PetscStrcmp(type, MPMSHAPEBSPLINE2, &same));
+  ok = (PetscBool)(ok && same);
+  PetscCall(MPMShapeDestroy(&shape));
+  if (!ok) (*fails)++;
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s class base: default type, GetType, SetType of the current type keeps its data, prefix -second_shape_type, unknown type refused\n", ok ? "PASSED" : "FAILED"));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 int main(int argc, char **argv)
 {
   const char     *types[] = {MPMSHAPELINEAR, MPMSHAPEGIMP, MPMSHAPECPDI, MPMSHAPEBSPLINE2, MPMSHAPEBSPLINE3};
@@ -114,6 +156,7 @@ int main(int argc, char **argv)
 
   PetscFunctionBeginUser;
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
+  PetscCall(CheckClassBase(&fails));
   for (size_t t = 0; t < sizeof(types) / sizeof(types[0]); t++) {
     for (PetscInt dim = 1; dim <= 3; dim++) {
       for (PetscInt b = 0; b < 2; b++) {
