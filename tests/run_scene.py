@@ -9,14 +9,18 @@ An expectation file is {"doc": "...", "cases": [CASE, ...]}; a CASE is
   {"name": "weak256", "scene": "sod_weak", "args": ["-mpm_cells", "256"], "ranks": 1, "h": 0.078125,
    "expect": {"errors.density.L1": ["<", 0.02], "conservation.mass": ["abs<", 1e-14], "particles": ["==", 1024]},
    "same_as": {"case": "other", "keys": ["errors.density.L1"], "rtol": 1e-9, "fields": true, "steps": true},
-   "sweep": {"option": "-mpm_cells", "values": [128, 256, 512], "h": [0.15625, 0.078125, 0.0390625]},
-   "rate": {"key": "errors.density.L1", "op": [">=", 0.6]}}
+   "sweep": {"option": "-mpm_cells", "values": [128, 256, 512], "h": [0.15625, 0.078125, 0.0390625], "per": 1},
+   "rate": {"key": "errors.density.L1", "op": [">=", 0.6]}, "expect_last": {...},
+   "compare": [{"key": "errors.density.L1", "op": "<", "case": "other", "factor": 0.6}]}
 - expect: report keys (dotted paths, scripts/petmpmlib.py get: checks by name, checks.NAME.error_cells with "h")
   against an operator and a bound (<, <=, >, >=, ==, abs<), or a list of such pairs;
 - same_as: equality with an earlier case of the file, of report keys to rtol and, with "fields", of every final
   point field the two share (bitwise for rtol 0), and of the step count;
-- sweep + rate: the case runs once per value of the option, and the rate fitted to key against h (log-log
-  least squares, scripts/petmpmlib.py fit_rate) must satisfy op; expect then applies to every run of the sweep.
+- sweep + rate: the case runs once per value of the option ("per": the value is repeated for that many directions,
+  "-mpm_cells 16,16" for 2), and the rate fitted to key against h (log-log least squares, scripts/petmpmlib.py
+  fit_rate) must satisfy op (rate may be a list); expect then applies to every run of the sweep, expect_last to
+  the finest;
+- compare: a report key against factor times the same key of an earlier case (op <, <=, >, >=).
 """
 import json
 import os
@@ -62,18 +66,25 @@ def main():
             name = case["name"]
             out = os.path.join(d, name)
             if "sweep" in case:
-                sw, errs = case["sweep"], []
-                for v, h in zip(sw["values"], sw["h"]):
-                    rep = run_case(case, os.path.join(out, str(v)), [sw["option"], str(v)])
+                sw, reps = case["sweep"], []
+                for v in sw["values"]:
+                    rep = run_case(case, os.path.join(out, str(v)), [sw["option"], ",".join([str(v)] * sw.get("per", 1))])
                     expectations(case, rep, f"{name} {sw['option']} {v}")
-                    errs.append(lib.get(rep, case["rate"]["key"]))
-                op, bound = case["rate"]["op"]
-                rate = lib.fit_rate(sw["h"], errs)
-                check(lib.holds(rate, op, bound), f"{name}: {case['rate']['key']} {', '.join(f'{e:.3e}' for e in errs)}: fitted rate {rate:.3f} {op} {bound}")
+                    reps.append(rep)
+                expectations({"expect": case.get("expect_last", {}), "h": case.get("h")}, reps[-1], f"{name} {sw['option']} {sw['values'][-1]}")
+                for rt in case["rate"] if isinstance(case["rate"], list) else [case["rate"]]:
+                    errs = [lib.get(r, rt["key"]) for r in reps]
+                    op, bound = rt["op"]
+                    rate = lib.fit_rate(sw["h"], errs)
+                    check(lib.holds(rate, op, bound), f"{name}: {rt['key']} {', '.join(f'{e:.3e}' for e in errs)}: fitted rate {rate:.3f} {op} {bound}")
+                done[name] = (reps[-1], os.path.join(out, str(sw["values"][-1])))
                 continue
             rep = run_case(case, out)
             done[name] = (rep, out)
             expectations(case, rep, name)
+            for cmp in case.get("compare", []):
+                a, b = lib.get(rep, cmp["key"]), lib.get(done[cmp["case"]][0], cmp["key"])
+                check(lib.holds(a, cmp["op"], cmp["factor"] * b), f"{name}: {cmp['key']} {a:.4e} {cmp['op']} {cmp['factor']:g} x {cmp['case']}'s {b:.4e}")
             if "same_as" in case:
                 sa = case["same_as"]
                 ref, refout = done[sa["case"]]
