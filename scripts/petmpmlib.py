@@ -60,8 +60,11 @@ def fit_rate(h, err):
 
 def get(report, path, h=None):
     """A report value by dotted path: errors.density.L1, conservation.mass, checks.plateau_pressure.rel_error
-    (checks are found by name), checks.shock_position.error_cells (|value - reference| / h, the cell size h given)."""
+    (checks are found by name), checks.shock_position.error_cells (|value - reference| / h, the cell size h given),
+    particles_per_cell (particles over the product of the cells)."""
     parts = path.split(".")
+    if path == "particles_per_cell":  # derived: points over cells (a point lost or duplicated shows)
+        return report["particles"] / math.prod(report["cells"])
     if parts[0] == "checks":
         c = next((c for c in report["checks"] if c["name"] == parts[1]), None)
         if c is None:

@@ -30,8 +30,8 @@ PetscErrorCode MPMProbeGetTime(MPMProbe probe, PetscReal *t)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The crossing of level by the density profile binned by grid column, nearest xref [cm]. */
-PetscErrorCode MPMProbeDensityCrossing(MPMProbe probe, PetscReal level, PetscReal xref, PetscReal *x)
+/* The density profile binned by grid column along x: n bins, centres xc [cm], volume-weighted densities [g/cm^3]. */
+PetscErrorCode MPMProbeDensityProfile(MPMProbe probe, PetscInt *n, const PetscReal **xc, const PetscReal **rho)
 {
   PetscFunctionBegin;
   if (!probe->n) {
@@ -39,7 +39,59 @@ PetscErrorCode MPMProbeDensityCrossing(MPMProbe probe, PetscReal level, PetscRea
     PetscCall(PetscMalloc2(probe->n, &probe->xc, probe->n, &probe->rho));
     PetscCall(MPMXProfile(probe->mpm, probe->n, probe->xc, probe->rho));
   }
-  *x = MPMProfileCrossing(probe->n, probe->xc, probe->rho, level, xref);
+  *n   = probe->n;
+  *xc  = probe->xc;
+  *rho = probe->rho;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The crossing of level by the density profile binned by grid column, nearest xref [cm]. */
+PetscErrorCode MPMProbeDensityCrossing(MPMProbe probe, PetscReal level, PetscReal xref, PetscReal *x)
+{
+  PetscInt         n  = 0;
+  const PetscReal *xc = NULL, *rho = NULL;
+
+  PetscFunctionBegin;
+  PetscCall(MPMProbeDensityProfile(probe, &n, &xc, &rho));
+  *x = MPMProfileCrossing(n, xc, rho, level, xref);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static inline PetscReal MPMProbeValue(const MPMPoints *pts, PetscInt d, MPMProbeQuantity quantity, PetscInt p)
+{
+  switch (quantity) {
+  case MPM_PROBE_PRESSURE:
+    return pts->f[MPM_FIELD_PRESSURE][p];
+  case MPM_PROBE_DENSITY:
+    return pts->f[MPM_FIELD_DENSITY][p];
+  case MPM_PROBE_PXX:
+    return pts->f[MPM_FIELD_PRESSURE][p] + pts->f[MPM_FIELD_VISCOSITY][p] - (pts->f[MPM_FIELD_STRESS] ? pts->f[MPM_FIELD_STRESS][p * d * d] : 0.0);
+  case MPM_PROBE_VELOCITY:
+    return pts->f[MPM_FIELD_VELOCITY][p * d];
+  case MPM_PROBE_TEMPERATURE:
+    return pts->f[MPM_FIELD_TEMPERATURE][p];
+  }
+  return 0.0;
+}
+
+/* The largest value of a point quantity over the points with lo < x < hi (position along the first direction). */
+PetscErrorCode MPMProbeMax(MPMProbe probe, MPMProbeQuantity quantity, PetscReal lo, PetscReal hi, PetscReal *max, PetscBool *found)
+{
+  MPM            mpm = probe->mpm;
+  const PetscInt d   = mpm->grid.dim;
+  PetscReal      m   = PETSC_MIN_REAL;
+  MPMPoints      pts;
+
+  PetscFunctionBegin;
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt p = 0; p < pts.n; p++) {
+    const PetscReal x = pts.f[MPM_FIELD_POSITION][p * d];
+    if (x > lo && x < hi) m = PetscMax(m, MPMProbeValue(&pts, d, quantity, p));
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &m, 1, MPIU_REAL, MPIU_MAX, mpm->comm));
+  *found = (PetscBool)(m > PETSC_MIN_REAL);
+  *max   = m;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -59,21 +111,7 @@ PetscErrorCode MPMProbeMean(MPMProbe probe, MPMProbeQuantity quantity, MPMProbeW
     const PetscReal c = scale * ((reference ? pts.f[MPM_FIELD_REFPOSITION] : pts.f[MPM_FIELD_POSITION])[p * d] - origin);
     if (c > lo && c < hi) {
       const PetscReal w = weight == MPM_PROBE_VOLUME ? pts.f[MPM_FIELD_VOLUME][p] : pts.f[MPM_FIELD_MASS][p];
-      PetscReal       q = 0.0;
-      switch (quantity) {
-      case MPM_PROBE_PRESSURE:
-        q = pts.f[MPM_FIELD_PRESSURE][p];
-        break;
-      case MPM_PROBE_DENSITY:
-        q = pts.f[MPM_FIELD_DENSITY][p];
-        break;
-      case MPM_PROBE_PXX:
-        q = pts.f[MPM_FIELD_PRESSURE][p] + pts.f[MPM_FIELD_VISCOSITY][p] - (pts.f[MPM_FIELD_STRESS] ? pts.f[MPM_FIELD_STRESS][p * d * d] : 0.0);
-        break;
-      case MPM_PROBE_VELOCITY:
-        q = pts.f[MPM_FIELD_VELOCITY][p * d];
-        break;
-      }
+      const PetscReal q = MPMProbeValue(&pts, d, quantity, p);
       sum[0] += w * q;
       sum[1] += w;
     }

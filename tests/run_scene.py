@@ -18,8 +18,8 @@ An expectation file is {"doc": "...", "cases": [CASE, ...]}; a CASE is
   point field the two share (bitwise for rtol 0), and of the step count;
 - sweep + rate: the case runs once per value of the option ("per": the value is repeated for that many directions,
   "-mpm_cells 16,16" for 2), and the rate fitted to key against h (log-log least squares, scripts/petmpmlib.py
-  fit_rate) must satisfy op (rate may be a list); expect then applies to every run of the sweep, expect_last to
-  the finest;
+  fit_rate) must satisfy op (rate may be a list); expect then applies to every run of the sweep, expect_last and
+  compare to the finest;
 - compare: a report key against factor times the same key of an earlier case (op <, <=, >, >=).
 """
 import json
@@ -57,6 +57,12 @@ def expectations(case, rep, label):
             check(lib.holds(v, op, bound), f"{label}: {key} = {v:.6g} {op} {bound:g}" if isinstance(v, (int, float)) else f"{label}: {key} = {v} {op} {bound}")
 
 
+def compare(case, rep, label, done):
+    for cmp in case.get("compare", []):
+        a, b = lib.get(rep, cmp["key"]), lib.get(done[cmp["case"]][0], cmp["key"])
+        check(lib.holds(a, cmp["op"], cmp["factor"] * b), f"{label}: {cmp['key']} {a:.4e} {cmp['op']} {cmp['factor']:g} x {cmp['case']}'s {b:.4e}")
+
+
 def main():
     with open(os.path.join(SRC, "tests", "scenes", NAME + ".json")) as f:
         spec = json.load(f)
@@ -78,13 +84,12 @@ def main():
                     rate = lib.fit_rate(sw["h"], errs)
                     check(lib.holds(rate, op, bound), f"{name}: {rt['key']} {', '.join(f'{e:.3e}' for e in errs)}: fitted rate {rate:.3f} {op} {bound}")
                 done[name] = (reps[-1], os.path.join(out, str(sw["values"][-1])))
+                compare(case, reps[-1], f"{name} {sw['option']} {sw['values'][-1]}", done)
                 continue
             rep = run_case(case, out)
             done[name] = (rep, out)
             expectations(case, rep, name)
-            for cmp in case.get("compare", []):
-                a, b = lib.get(rep, cmp["key"]), lib.get(done[cmp["case"]][0], cmp["key"])
-                check(lib.holds(a, cmp["op"], cmp["factor"] * b), f"{name}: {cmp['key']} {a:.4e} {cmp['op']} {cmp['factor']:g} x {cmp['case']}'s {b:.4e}")
+            compare(case, rep, name, done)
             if "same_as" in case:
                 sa = case["same_as"]
                 ref, refout = done[sa["case"]]

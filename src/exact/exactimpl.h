@@ -8,10 +8,11 @@
 /* What a check may measure on the current state. */
 typedef struct _p_MPMProbe *MPMProbe;
 typedef enum {
-  MPM_PROBE_PRESSURE, /* p_p                                              */
-  MPM_PROBE_DENSITY,  /* rho_p                                            */
-  MPM_PROBE_PXX,      /* longitudinal stress P_xx = p + q - s_xx          */
-  MPM_PROBE_VELOCITY  /* v_p along x                                      */
+  MPM_PROBE_PRESSURE,   /* p_p                                              */
+  MPM_PROBE_DENSITY,    /* rho_p                                            */
+  MPM_PROBE_PXX,        /* longitudinal stress P_xx = p + q - s_xx          */
+  MPM_PROBE_VELOCITY,   /* v_p along x                                      */
+  MPM_PROBE_TEMPERATURE /* T_p                                            */
 } MPMProbeQuantity;
 typedef enum {
   MPM_PROBE_VOLUME, /* volume-weighted mean sum V q / sum V                          */
@@ -20,6 +21,8 @@ typedef enum {
 PETSC_INTERN PetscErrorCode MPMProbeGetTime(MPMProbe, PetscReal *);
 PETSC_INTERN PetscErrorCode MPMProbeDensityCrossing(MPMProbe, PetscReal, PetscReal, PetscReal *);
 PETSC_INTERN PetscErrorCode MPMProbeMean(MPMProbe, MPMProbeQuantity, MPMProbeWeight, PetscBool, PetscReal, PetscReal, PetscReal, PetscReal, PetscReal *, PetscBool *);
+PETSC_INTERN PetscErrorCode MPMProbeDensityProfile(MPMProbe, PetscInt *, const PetscReal **, const PetscReal **);
+PETSC_INTERN PetscErrorCode MPMProbeMax(MPMProbe, MPMProbeQuantity, PetscReal, PetscReal, PetscReal *, PetscBool *);
 PETSC_INTERN PetscErrorCode MPMProbeAddCheck(MPMProbe, const char[], PetscReal, PetscReal);
 
 /* An exact solution knows the fields at a point and the scene's named scalar checks. */

@@ -14,6 +14,7 @@
 typedef struct {
   PetscReal          x0;    /* initial discontinuity [cm]           */
   PetscReal          cv[2]; /* specific heats left, right [erg/(g eV)] */
+  PetscReal          h;     /* cell size along x [cm]: the unit of the profile checks */
   MPMRiemannSolution sol;
 } Exact_Riemann;
 
@@ -60,6 +61,7 @@ static PetscErrorCode MPMExactSetUp_Riemann(MPMExact exact, const MPMScene *sc)
 
   PetscFunctionBegin;
   PetscCall(MPMOptionsCheckRange("-mpm_exact_riemann_x0", er->x0, sc->grid->lo[0], sc->grid->hi[0], PETSC_TRUE, PETSC_TRUE));
+  er->h = sc->grid->h[0];
   PetscCall(RiemannSceneState(sc, er->x0, -eps, &L, &er->cv[0]));
   PetscCall(RiemannSceneState(sc, er->x0, +eps, &R, &er->cv[1]));
   PetscCall(MPMRiemannSolve(&L, &R, &er->sol));
@@ -79,9 +81,32 @@ static PetscErrorCode MPMExactChecks_Riemann(MPMExact exact, MPMProbe probe)
   PetscFunctionBegin;
   PetscCall(MPMProbeGetTime(probe, &t));
   if (s->shockR) {
-    const PetscReal xs = er->x0 + s->SR * t;
+    const PetscReal  xs = er->x0 + s->SR * t, xcon = er->x0 + s->ustar * t, h = er->h, rr = s->R.rho, rs = s->rhostarR;
+    PetscInt         n, width = 0, k0 = -1, k1;
+    const PetscReal *xc, *rho;
+    PetscReal        rise = 0.0, over = PETSC_MIN_REAL;
+
     PetscCall(MPMProbeDensityCrossing(probe, 0.5 * (s->rhostarR + s->R.rho), xs, &x));
     PetscCall(MPMProbeAddCheck(probe, "shock_position", x, xs));
+    /* the shock's profile: bins between 10% and 90% of the jump within 10 cells; the largest rise of the binned
+       density from the last bin above 90% of the jump (before xs + 4 h) to the first within 1% of rho_R, over rho*;
+       the largest binned density between the contact (+10 h) and the shock (+4 h), over rho* - 1 */
+    PetscCall(MPMProbeDensityProfile(probe, &n, &xc, &rho));
+    for (PetscInt k = 0; k < n; k++) {
+      const PetscReal frac = (rho[k] - rr) / (rs - rr);
+      if (xc[k] > xs - 10 * h && xc[k] < xs + 10 * h && frac > 0.1 && frac < 0.9) width++;
+      if (xc[k] < xs + 4 * h && rho[k] > rr + 0.9 * (rs - rr)) k0 = k;
+      if (xc[k] > xcon + 10 * h && xc[k] < xs + 4 * h) over = PetscMax(over, rho[k]);
+    }
+    PetscCall(MPMProbeAddCheck(probe, "shock_width_cells", width, 0.0));
+    if (k0 >= 0) {
+      for (k1 = k0; k1 < n - 1 && !(rho[k1] < 1.01 * rr); k1++) {
+      }
+      rise = PETSC_MIN_REAL;
+      for (PetscInt k = k0; k < k1; k++) rise = PetscMax(rise, (rho[k + 1] - rho[k]) / rs);
+      if (k1 > k0) PetscCall(MPMProbeAddCheck(probe, "shock_rise", rise, 0.0));
+    }
+    if (over > PETSC_MIN_REAL) PetscCall(MPMProbeAddCheck(probe, "shock_overshoot", over / rs - 1.0, 0.0));
   }
   if (s->shockL) {
     const PetscReal xs = er->x0 + s->SL * t;
@@ -90,8 +115,13 @@ static PetscErrorCode MPMExactChecks_Riemann(MPMExact exact, MPMProbe probe)
   }
   if (PetscAbsReal(s->rhostarL - s->rhostarR) > 1e-3 * PetscMax(s->rhostarL, s->rhostarR)) { /* a contact with a density jump */
     const PetscReal xcon = er->x0 + s->ustar * t;
+    const PetscReal TL = s->pstar / ((s->L.gamma - 1.0) * s->rhostarL * er->cv[0]), TR = s->pstar / ((s->R.gamma - 1.0) * s->rhostarR * er->cv[1]);
+    PetscBool       found;
     PetscCall(MPMProbeDensityCrossing(probe, 0.5 * (s->rhostarL + s->rhostarR), xcon, &x));
     PetscCall(MPMProbeAddCheck(probe, "contact_position", x, xcon));
+    /* the contact's temperature spike: the hottest point within 5 cells of it over the hotter star temperature, - 1 */
+    PetscCall(MPMProbeMax(probe, MPM_PROBE_TEMPERATURE, xcon - 5 * er->h, xcon + 5 * er->h, &x, &found));
+    if (found) PetscCall(MPMProbeAddCheck(probe, "contact_spike", x / PetscMax(TL, TR) - 1.0, 0.0));
   }
   {
     const PetscReal xa = er->x0 + s->STL * t, xb = er->x0 + s->STR * t, xm = er->x0 + s->ustar * t, w = xb - xa, wl = xm - xa;
