@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* The body of the transfer kernels for dimension MPM_KD (see kernels.h). Each kernel evaluates exactly the
-   expressions of the generic reference (src/step.c MPMScatter, MPMGather) in the same order, with the dimension,
+   expressions of the generic reference (src/transfer/transfer.c MPMScatter, MPMGather) in the same order, with the dimension,
    the stencil width and the mode known to the compiler: no function pointer, no run-time dimension loop and no
    mode branch inside the loop over points. */
 #if MPM_KD == 1

@@ -2,9 +2,9 @@
 /* Single-purpose transfer kernels between the points and the grid, specialised at compile time for one space
    dimension and one tensor-product shape family (the PETSc BAIJ pattern: one body, kernels.h, instantiated by
    each shape type that wants a fast path, for d = 1, 2, 3; chosen once at set-up). The generic path in
-   src/step.c (MPMScatter, MPMGather) stays as the reference: `-mpm_transfer_kernel generic` selects it, and
+   src/transfer/transfer.c (MPMScatter, MPMGather) stays as the reference: `-mpm_transfer_kernel generic` selects it, and
    the specialised kernels must reproduce it bit for bit (they evaluate the same expressions in the same order;
-   tests/scene_checks.py test_kernels and scripts/regress check it). */
+   tests/scenes/kernels.json and scripts/regress check it). */
 #pragma once
 #include "../gridimpl.h"
 
