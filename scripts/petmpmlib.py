@@ -61,10 +61,12 @@ def fit_rate(h, err):
 def get(report, path, h=None):
     """A report value by dotted path: errors.density.L1, conservation.mass, checks.plateau_pressure.rel_error
     (checks are found by name), checks.shock_position.error_cells (|value - reference| / h, the cell size h given),
-    particles_per_cell (particles over the product of the cells)."""
+    particles_per_cell (particles over the product of the cells), ns_per_point_step (the cost per point-step and rank)."""
     parts = path.split(".")
     if path == "particles_per_cell":  # derived: points over cells (a point lost or duplicated shows)
         return report["particles"] / math.prod(report["cells"])
+    if path == "ns_per_point_step":  # derived: the cost of a point-step [ns] on one rank
+        return 1e9 * report["ranks"] / report["particle_steps_per_second"] if report["particle_steps_per_second"] > 0 else float("nan")
     if parts[0] == "checks":
         c = next((c for c in report["checks"] if c["name"] == parts[1]), None)
         if c is None:
