@@ -7,11 +7,11 @@ usage: bench.py [--build build] [--before OTHER/petmpm] [--repeat 3] [--ranks 1,
 
 Cases (point-steps per second, median of --repeat runs, each case's runs interleaved with the reference's):
   sod        weak Sod, 1D, linear, 4 points per cell, 1024 cells          vs  mpm1d sod (the same problem)
-  block8     3D copper block impact (bar_impact_3d.opts), linear, 8 points per cell, USL, about 1e6 points
-             (--quick: 1.3e5), Mie-Gruneisen + Johnson-Cook                vs  mpm3d cell (J2 block, 1e6 points)
+  block8     3D copper block impact (bar_impact_3d.opts), linear, 8 points per cell, USL, 1.7e6 points
+             (--quick: 2.2e5), Mie-Gruneisen + Johnson-Cook                vs  mpm3d cell (J2 block, 1e6 points)
   block8q    the same with quadratic B-splines                              vs  mpm3d_quad
-  bar1       the 3D bar, linear, 1 point per cell, MUSL, 2e5 points           vs  mpm3d cell
-  bar2d      the 2D bar (bar_impact_2d.opts), linear, 1 point per cell, MUSL, 2.5e5 points
+  bar1       the 3D bar, linear, 1 point per cell, MUSL, 8.3e4 points         vs  mpm3d cell
+  bar2d      the 2D bar (bar_impact_2d.opts), linear, 1 point per cell, MUSL, 9.6e5 points
 Each case on every rank count of --ranks; with --before, the same runs with another petmpm (the code before a
 change) interleaved too, and the speed-up. The -log_view phase shares of each case on one rank, and the memory
 per point in 3D: the marginal process memory per point between two sizes (PETSc's -memory_view maximum).

@@ -135,8 +135,8 @@ PetscErrorCode MPMConstitutiveInitialize(MPM mpm)
     PetscReal         cs2 = 0.0;
     MPMEOSPressureKernel(E, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_ENERGY][p], &pts.f[MPM_FIELD_PRESSURE][p], &c2);
     if (S)
-      S->ops.stress(S->data, d, 0.0, &pts.f[MPM_FIELD_GRADV][p * d * d], pts.f[MPM_FIELD_DEFGRAD] ? &pts.f[MPM_FIELD_DEFGRAD][p * d * d] : NULL, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_TEMPERATURE][p], &pts.f[MPM_FIELD_STRESS][p * d * d], &pts.f[MPM_FIELD_PLASTICSTRAIN][p],
-                    &cs2);
+      S->ops.stress(S->data, d, 0.0, &pts.f[MPM_FIELD_GRADV][p * d * d], pts.f[MPM_FIELD_DEFGRAD] ? &pts.f[MPM_FIELD_DEFGRAD][p * d * d] : NULL, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_TEMPERATURE][p], &pts.f[MPM_FIELD_STRESS][p * d * d],
+                    &pts.f[MPM_FIELD_PLASTICSTRAIN][p], &cs2);
     pts.f[MPM_FIELD_SOUNDSPEED][p] = PetscSqrtReal(PetscMax(c2, 0.0) + cs2);
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));

@@ -80,7 +80,8 @@ MPM_KINLINE PetscBool MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(const MPMGrid 
 
 /* One point's m_I += N_I m_p, (mv)_I += N_I m_p v_p and, by mode, its point pressure force and stress force; SG (the
    mirror signs) is read only when mirror is set. */
-MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, MPMNode *nodes, PetscInt p, const PetscInt node[MPM_KS], const PetscReal W[MPM_KS], const PetscReal DW[MPM_KS][MPM_KD], const PetscReal SG[MPM_KS][MPM_KD], const int mode, const int mirror)
+MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, MPMNode *nodes, PetscInt p, const PetscInt node[MPM_KS], const PetscReal W[MPM_KS], const PetscReal DW[MPM_KS][MPM_KD], const PetscReal SG[MPM_KS][MPM_KD],
+                                                              const int mode, const int mirror)
 {
   const PetscInt   D = MPM_KD;
   const PetscReal *v = A->v, *m = A->m, *V = A->V, *pr = A->pr, *q = A->q, *S = A->S;
@@ -109,13 +110,16 @@ MPM_KINLINE void MPM_KCAT(MPMKP2G, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const
   for (PetscInt p = 0; p < A->n; p++) {
     PetscInt  node[MPM_KS];
     PetscReal W[MPM_KS], DW[MPM_KS][MPM_KD], SG[MPM_KS][MPM_KD];
-    if (MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(g, &A->x[p * MPM_KD], node, W, DW, SG)) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, node, W, DW, SG, mode, 1);
-    else MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, node, W, DW, SG, mode, 0);
+    if (MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(g, &A->x[p * MPM_KD], node, W, DW, SG))
+      MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, node, W, DW, SG, mode, 1);
+    else
+      MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, node, W, DW, SG, mode, 0);
   }
 }
 
 /* The grid velocity back to one point, by mode (see MPMGather for the formulas); SG read only when mirror is set. */
-MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const MPMTransferArgs *A, const MPMNode *nodes, PetscInt p, const PetscInt node[MPM_KS], const PetscReal W[MPM_KS], const PetscReal DW[MPM_KS][MPM_KD], const PetscReal SG[MPM_KS][MPM_KD], const int mode, const int mirror)
+MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const MPMTransferArgs *A, const MPMNode *nodes, PetscInt p, const PetscInt node[MPM_KS], const PetscReal W[MPM_KS], const PetscReal DW[MPM_KS][MPM_KD],
+                                                              const PetscReal SG[MPM_KS][MPM_KD], const int mode, const int mirror)
 {
   const PetscInt   D        = MPM_KD;
   const PetscBool  velocity = (PetscBool)(mode & MPM_G2P_VELOCITY), kinematics = (PetscBool)(mode & MPM_G2P_KINEMATICS), work = (PetscBool)(mode & MPM_G2P_WORK);
@@ -176,8 +180,10 @@ MPM_KINLINE void MPM_KCAT(MPMKG2P, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const
   for (PetscInt p = 0; p < A->n; p++) {
     PetscInt  node[MPM_KS];
     PetscReal W[MPM_KS], DW[MPM_KS][MPM_KD], SG[MPM_KS][MPM_KD];
-    if (MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(g, &A->x[p * MPM_KD], node, W, DW, SG)) MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(g, A, nodes, p, node, W, DW, SG, mode, 1);
-    else MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(g, A, nodes, p, node, W, DW, SG, mode, 0);
+    if (MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(g, &A->x[p * MPM_KD], node, W, DW, SG))
+      MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(g, A, nodes, p, node, W, DW, SG, mode, 1);
+    else
+      MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(g, A, nodes, p, node, W, DW, SG, mode, 0);
   }
 }
 

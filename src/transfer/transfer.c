@@ -14,6 +14,14 @@ static inline void MPMLocalCellIndex(const MPMGrid *g, PetscInt c, PetscInt ijk[
   ijk[2] = g->cs[2] + c / (g->cm[0] * g->cm[1]);
 }
 
+/* The cell rule's sums of one point: sum V_p and sum V_p (p_p + q_p) of its cell. */
+static inline void MPMCellRuleAdd(MPM mpm, const PetscReal x[], PetscReal V, PetscReal P)
+{
+  const PetscInt c = MPMLocalCell(&mpm->grid, x);
+  mpm->cellV[c] += V;
+  mpm->cellS[c] += V * P;
+}
+
 /* m_I = sum_p N_I m_p, (mv)_I = sum_p N_I m_p v_p and, with the force, f_I = -int sigma . grad N_I dV.
    With sigma = -(p + q) I the internal force is f_I = int (p + q) grad N_I dV, integrated either point by
    point (sum_p V_p (p_p + q_p) grad N_I(x_p)) or with the volume-averaged pressure of each cell,
@@ -49,12 +57,7 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
       const MPMTransferArgs A = {.n = pts.n, .x = (PetscReal *)x, .v = (PetscReal *)v, .m = m, .V = V, .pr = pr, .q = q, .S = S};
       mpm->kern->p2g[(force && !cellrule ? MPM_P2G_PRESSURE : 0) | (stress ? MPM_P2G_STRESS : 0)](g, mpm->shape->data, &A, node);
       if (cellrule)
-        for (PetscInt p = 0; p < pts.n; p++) {
-          const PetscReal P = pr[p] + q[p];
-          const PetscInt  c = MPMLocalCell(g, &x[p * d]);
-          mpm->cellV[c] += V[p];
-          mpm->cellS[c] += V[p] * P;
-        }
+        for (PetscInt p = 0; p < pts.n; p++) MPMCellRuleAdd(mpm, &x[p * d], V[p], pr[p] + q[p]);
     } else
       for (PetscInt p = 0; p < pts.n; p++) {
         const PetscReal P              = pr[p] + q[p];
@@ -77,11 +80,7 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
           if (body)
             for (PetscInt k = 0; k < d; k++) nd->f[k] += st.s[a][k] * wm * b[k];
         }
-        if (cellrule) {
-          const PetscInt c = MPMLocalCell(g, &x[p * d]);
-          mpm->cellV[c] += V[p];
-          mpm->cellS[c] += V[p] * P;
-        }
+        if (cellrule) MPMCellRuleAdd(mpm, &x[p * d], V[p], P);
       }
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
