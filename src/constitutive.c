@@ -43,7 +43,10 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
     mpm->nwork = pts.n + pts.n / 4;
     PetscCall(PetscMalloc2(mpm->nwork, &mpm->widx, 7 * MPM_CHUNK, &mpm->work));
   }
-  { /* each material's points, in point order: a counting sort on the material field */
+  if (mpm->nmat == 1) { /* one material: every point in order */
+    start[1] = pts.n;
+    for (PetscInt p = 0; p < pts.n; p++) mpm->widx[p] = p;
+  } else { /* each material's points, in point order: a counting sort on the material field */
     const PetscReal *mat = pts.f[MPM_FIELD_MATERIAL];
     PetscInt         next[MPM_MAX_MATERIALS];
     for (PetscInt p = 0; p < pts.n; p++) start[(PetscInt)mat[p] + 1]++;

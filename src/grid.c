@@ -74,18 +74,6 @@ PetscErrorCode MPMCreateGrid(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Flat index of the owned cell holding x, or -1 if another rank owns it. */
-PetscInt MPMLocalCell(const MPMGrid *g, const PetscReal x[])
-{
-  PetscInt c[MPM_MAX_DIM] = {0, 0, 0};
-
-  for (PetscInt k = 0; k < g->dim; k++) {
-    c[k] = MPMCellIndex(g, k, x[k]) - g->cs[k];
-    if (c[k] < 0 || c[k] >= g->cm[k]) return -1;
-  }
-  return (c[2] * g->cm[1] + c[1]) * g->cm[0] + c[0];
-}
-
 /* Rank owning the cell that holds x (DMDA ranks are numbered x fastest). */
 PetscMPIInt MPMOwnerRank(const MPMGrid *g, const PetscReal x[])
 {

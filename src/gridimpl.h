@@ -57,7 +57,6 @@ typedef struct {
   PetscReal s[MPM_MAX_STENCIL][MPM_MAX_DIM];
 } MPMStencil;
 
-PETSC_INTERN PetscInt    MPMLocalCell(const MPMGrid *, const PetscReal[]);
 PETSC_INTERN PetscMPIInt MPMOwnerRank(const MPMGrid *, const PetscReal[]);
 
 /* Owned nodes of the global nodal vector (the box xs .. xs + xm; unused directions have xm = 1). */
@@ -71,6 +70,18 @@ static inline PetscInt MPMCellIndex(const MPMGrid *g, PetscInt k, PetscReal x)
 {
   PetscInt i = (PetscInt)PetscFloorReal((x - g->lo[k]) / g->h[k]);
   return i < 0 ? 0 : (i >= g->cells[k] ? g->cells[k] - 1 : i);
+}
+
+/* Flat index of the owned cell holding x, or -1 if another rank owns it. */
+static inline PetscInt MPMLocalCell(const MPMGrid *g, const PetscReal x[])
+{
+  PetscInt c[MPM_MAX_DIM] = {0, 0, 0};
+
+  for (PetscInt k = 0; k < g->dim; k++) {
+    c[k] = MPMCellIndex(g, k, x[k]) - g->cs[k];
+    if (c[k] < 0 || c[k] >= g->cm[k]) return -1;
+  }
+  return (c[2] * g->cm[1] + c[1]) * g->cm[0] + c[0];
 }
 
 /* The tent functions on the cells, N_i = 1 - t, N_{i+1} = t with i = floor(xi), t = xi - i: the linear type's

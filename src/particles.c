@@ -362,8 +362,10 @@ PetscErrorCode MPMMigrate(MPM mpm)
     for (PetscInt k = 0; k < g->dim; k++) in = (PetscBool)(in && xp[k] >= g->lo[k] && xp[k] <= g->hi[k]);
     if (!in && !nout++)
       PetscCall(PetscPrintf(PETSC_COMM_SELF, "[%d] step %" PetscInt_FMT ": point %.0f left the domain at x = (%g, %g, %g)\n", rank, mpm->steps, (double)id[p], (double)xp[0], (double)(g->dim > 1 ? xp[1] : 0), (double)(g->dim > 2 ? xp[2] : 0)));
-    owner[p] = size > 1 ? MPMOwnerRank(g, xp) : 0;
-    if (owner[p] != rank) nmove++;
+    if (size > 1) {
+      owner[p] = MPMOwnerRank(g, xp);
+      if (owner[p] != rank) nmove++;
+    }
   }
   PetscCall(DMSwarmRestoreField(mpm->swarm, DMSwarmField_rank, NULL, NULL, (void **)&owner));
   PetscCall(DMSwarmRestoreField(mpm->swarm, MPMFieldTable[MPM_FIELD_ID].name, NULL, NULL, (void **)&id));

@@ -15,13 +15,26 @@ typedef struct {
   PetscReal G, A, B, n, C, m, Tm, Tr, epsdot0;
 } Strength_JC;
 
+/* The thermal softening factor 1 - T*^m, fixed over a step's return (T is the start-of-step temperature). */
+static inline PetscReal MPMStrengthThermal_JC(const Strength_JC *jc, PetscReal T)
+{
+  const PetscReal Tstar = PetscMin(1.0, PetscMax(0.0, (T - jc->Tr) / (jc->Tm - jc->Tr)));
+
+  return 1.0 - (Tstar > 0.0 ? PetscPowReal(Tstar, jc->m) : 0.0);
+}
+
+/* The flow stress with the thermal factor theta already evaluated: the radial return's iterations. */
+static inline PetscReal MPMStrengthFlowTheta_JC(void *ctx, PetscReal epsp, PetscReal rate, PetscReal theta)
+{
+  const Strength_JC *jc = (const Strength_JC *)ctx;
+  const PetscReal    r  = rate / jc->epsdot0;
+
+  return (jc->A + (epsp > 0.0 ? jc->B * PetscPowReal(epsp, jc->n) : 0.0)) * (1.0 + (r > 1.0 ? jc->C * PetscLogReal(r) : 0.0)) * theta;
+}
+
 static PetscReal MPMStrengthFlow_JC(void *ctx, PetscReal epsp, PetscReal rate, PetscReal T)
 {
-  const Strength_JC *jc    = (const Strength_JC *)ctx;
-  const PetscReal    Tstar = PetscMin(1.0, PetscMax(0.0, (T - jc->Tr) / (jc->Tm - jc->Tr)));
-  const PetscReal    r     = rate / jc->epsdot0;
-
-  return (jc->A + (epsp > 0.0 ? jc->B * PetscPowReal(epsp, jc->n) : 0.0)) * (1.0 + (r > 1.0 ? jc->C * PetscLogReal(r) : 0.0)) * (1.0 - (Tstar > 0.0 ? PetscPowReal(Tstar, jc->m) : 0.0));
+  return MPMStrengthFlowTheta_JC(ctx, epsp, rate, MPMStrengthThermal_JC((const Strength_JC *)ctx, T));
 }
 
 static void MPMStrengthStress_JC(void *ctx, PetscInt d, PetscReal dt, const PetscReal L[], const PetscReal F[], PetscReal rho, PetscReal T, PetscReal s[], PetscReal *epsp, PetscReal *c2)
@@ -29,7 +42,7 @@ static void MPMStrengthStress_JC(void *ctx, PetscInt d, PetscReal dt, const Pets
   const Strength_JC *jc = (const Strength_JC *)ctx;
 
   MPMHypoelasticTrial(d, dt, jc->G, L, s);
-  (void)MPMRadialReturn(d, dt, jc->G, MPMStrengthFlow_JC, ctx, T, s, epsp);
+  (void)MPMRadialReturn(d, dt, jc->G, MPMStrengthFlowTheta_JC, ctx, MPMStrengthThermal_JC(jc, T), s, epsp); /* the return passes its T argument through to the flow */
   *c2 = MPMHypoelasticWaveSpeed2(jc->G, rho);
 }
 
