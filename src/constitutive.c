@@ -87,6 +87,16 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
           e1[i] += dt * work / rho[p];
         }
       }
+      if (!conservative && !midpoint) /* compatible: an expansion beyond the threshold follows the EOS isentrope (exact), not the linear work of p^n */
+        for (PetscInt i = 0; i < n; i++) {
+          const PetscInt p = idx[i];
+          if (dvol[i] * rho[p] > mpm->isentrope_threshold) {
+            const PetscReal de = MPMEOSIsentrope(E, rho[p], e[p], rho1[i]) - e[p] + pr[p] * dvol[i]; /* above the linear update */
+            e1[i] += de;
+            mpm->diag.isentrope_energy += m[p] * de;
+            mpm->diag.isentrope_points++;
+          }
+        }
       if (Str) PetscCall(MPMStrengthStressBatch(Str, d, dt, n, idx, L, F, rho1, T, S, pts.f[MPM_FIELD_PLASTICSTRAIN], cs2)); /* s^{n+1}, eps_p */
       if (midpoint) {
         PetscCall(MPMEOSPressureBatch(E, n, rho1, e1, pn, c2)); /* predictor */

@@ -43,6 +43,7 @@ typedef struct {
   PetscScalar p[3];  /* nodal momentum (mv)_I                   [g cm/s] */
   PetscScalar f[3];  /* internal + external force f_I           [dyn]    */
   PetscScalar v0[3]; /* velocity at the start of the step v_I^n [cm/s]   */
+  PetscScalar w2;    /* sum_p N_I(x_p)^2: how fully the node's points read it (the acceleration limit) [-] */
 } MPMNode;
 #define MPM_NODE_DOF ((PetscInt)(sizeof(MPMNode) / sizeof(PetscScalar)))
 

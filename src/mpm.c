@@ -6,6 +6,7 @@
 
 const char *const MPMSchemes[]             = {"usl", "musl", "MPMScheme", "MPM_SCHEME_", NULL};
 const char *const MPMStressIntegrations[]  = {"cell", "point", "MPMStressIntegration", "MPM_STRESS_", NULL};
+const char *const MPMDtLimitNames[]        = {"sound", "acceleration", "volume", "landing"};
 const char *const MPMEnergyUpdates[]       = {"compatible", "midpoint", "conservative", "MPMEnergyUpdate", "MPM_ENERGY_", NULL};
 const char *const MPMTransferKernelTypes[] = {"specialised", "generic", "MPMTransferKernel", "MPM_TRANSFER_", NULL};
 const char *const MPMUpdateTypes[]         = {"pic", "flip", "blend", "MPMUpdateType", "MPM_UPDATE_", NULL};
@@ -18,18 +19,25 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   PetscFunctionBegin;
   PetscCall(MPMInitializePackage());
   PetscCall(PetscNew(&m));
-  m->comm               = comm;
-  m->grid.dim           = 1;
-  m->ppc                = 2;
-  m->cfl                = 0.5;
-  m->dtmin              = 0.0;
-  m->output_interval    = 0;
-  m->scheme             = MPM_SCHEME_USL;
-  m->stress_integration = MPM_STRESS_CELL;
-  m->energy_update      = MPM_ENERGY_COMPATIBLE;
-  m->ke_fix             = PETSC_TRUE;
-  m->update             = MPM_UPDATE_FLIP;
-  m->alpha              = 1.0;
+  m->comm                   = comm;
+  m->grid.dim               = 1;
+  m->ppc                    = 2;
+  m->cfl                    = 0.5;
+  m->dtmin                  = 0.0;
+  m->dvol_max               = 0.2;
+  m->accel_cfl              = 0.5;
+  m->isentrope_threshold    = 0.25;
+  m->vacuum_density         = 1e-3;
+  m->diag.first_vacuum_step = -1;
+  m->diag.first_empty_step  = -1;
+  m->diag.empty_cells0      = -1;
+  m->output_interval        = 0;
+  m->scheme                 = MPM_SCHEME_USL;
+  m->stress_integration     = MPM_STRESS_CELL;
+  m->energy_update          = MPM_ENERGY_COMPATIBLE;
+  m->ke_fix                 = PETSC_TRUE;
+  m->update                 = MPM_UPDATE_FLIP;
+  m->alpha                  = 1.0;
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
     m->grid.cells[k] = 1;
     m->grid.lo[k]    = 0.0;
@@ -80,6 +88,15 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscCall(PetscOptionsReal("-mpm_cfl", "Courant number C in dt = C h / (c + |v|) [-], in (0, 1]", "", mpm->cfl, &mpm->cfl, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_cfl", mpm->cfl, 0.0, 1.0, PETSC_TRUE, PETSC_FALSE));
   PetscCall(PetscOptionsReal("-mpm_dt_min", "Smallest time step [s]; a smaller CFL step stops the run", "", mpm->dtmin, &mpm->dtmin, NULL));
+  PetscCall(PetscOptionsReal("-mpm_dt_volume", "Largest relative volume change of a point in one step, |tr L| dt (time step limit) [-], > 0", "", mpm->dvol_max, &mpm->dvol_max, NULL));
+  PetscCall(MPMOptionsCheckRange("-mpm_dt_volume", mpm->dvol_max, 0.0, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
+  PetscCall(PetscOptionsReal("-mpm_dt_acceleration", "Courant number C_a of the grid acceleration limit dt (dt + dt_prev)/2 |a| <= C_a h [-], > 0", "", mpm->accel_cfl, &mpm->accel_cfl, NULL));
+  PetscCall(MPMOptionsCheckRange("-mpm_dt_acceleration", mpm->accel_cfl, 0.0, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
+  PetscCall(PetscOptionsReal("-mpm_isentrope_threshold", "Relative expansion of a point in one step above which its internal energy follows the EOS isentrope instead of -p^n dV (compatible update) [-], >= 0", "", mpm->isentrope_threshold,
+                             &mpm->isentrope_threshold, NULL));
+  PetscCall(MPMOptionsCheckRange("-mpm_isentrope_threshold", mpm->isentrope_threshold, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+  PetscCall(PetscOptionsReal("-mpm_vacuum_density", "Density, as a fraction of the material's initial density, below which the report counts a point as vacuum [-], in (0, 1)", "", mpm->vacuum_density, &mpm->vacuum_density, NULL));
+  PetscCall(MPMOptionsCheckRange("-mpm_vacuum_density", mpm->vacuum_density, 0.0, 1.0, PETSC_TRUE, PETSC_TRUE));
   PetscCall(PetscOptionsEnum("-mpm_scheme", "Stress update order", "", MPMSchemes, (PetscEnum)mpm->scheme, (PetscEnum *)&mpm->scheme, NULL));
   PetscCall(PetscOptionsEnum("-mpm_stress_integration", "Internal force quadrature: cell-averaged stress or point by point", "", MPMStressIntegrations, (PetscEnum)mpm->stress_integration, (PetscEnum *)&mpm->stress_integration, NULL));
   /* point integration: the conservative update is exact and converges (weak Sod L1 rate 0.9 against 0.6 with compatible) */
@@ -175,6 +192,7 @@ PetscErrorCode MPMSetUp(MPM mpm)
   }
   mpm->has_bodyforce = (PetscBool)(mpm->exact && mpm->exact->ops.bodyforce);
   PetscCall(MPMConstitutiveInitialize(mpm));
+  PetscCall(MPMDiagnoseVacuum(mpm, NULL, NULL)); /* the baseline: gaps between bodies in the initial state */
   PetscCall(MPMCheckUnusedOptions(mpm));
   PetscCall(MPMOutputOpen(mpm));
   PetscCall(MPMGlobalSums(mpm, &mpm->mass0, &mpm->energy0, mpm->momentum0));

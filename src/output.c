@@ -187,6 +187,7 @@ PetscErrorCode MPMOutputWrite(MPM mpm, PetscInt step, PetscReal t)
   PetscFunctionBegin;
   if (!mpm->h5 || step == mpm->last_output_step) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscLogEventBegin(mpm->log.output, 0, 0, 0, 0));
+  PetscCall(MPMDiagnoseVacuum(mpm, NULL, NULL));
   PetscCall(DMSetOutputSequenceNumber(mpm->swarm, k, t));
   PetscCall(PetscViewerHDF5SetTimestep(mpm->h5, k));
   for (PetscInt f = 0; f < mpm->nfields; f++) {

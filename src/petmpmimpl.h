@@ -76,6 +76,11 @@ typedef enum {
   MPM_NUM_PHASES
 } MPMPhase;
 
+/* What sets a step's size (src/timestep.c): the sound-speed CFL, the grid acceleration, the volume change of a
+   point, or the final or output time the step lands on. */
+typedef enum { MPM_DT_SOUND, MPM_DT_ACCELERATION, MPM_DT_VOLUME, MPM_DT_LANDING, MPM_NUM_DT_LIMITS } MPMDtLimit;
+PETSC_INTERN const char *const MPMDtLimitNames[];
+
 /* Time, carried explicitly through a step: t^n, the step dt_n and the leapfrog kick (dt_{n-1} + dt_n)/2 [s]. */
 typedef struct {
   PetscReal tn, dt, kick;
@@ -91,6 +96,17 @@ struct _p_MPMModule {
   MPMModule next;
 };
 
+/* What the robustness measures did over the run (this rank's sums; the report reduces them). */
+typedef struct {
+  PetscReal isentrope_energy;            /* energy the isentropic expansion update kept above the linear work, sum m_p de [erg] */
+  PetscInt  isentrope_points;            /* point-steps it acted on                                                           */
+  PetscInt  dt_limit[MPM_NUM_DT_LIMITS]; /* steps whose size each limit set                                            */
+  PetscInt  vacuum_points_max;           /* most points below the vacuum density at one step                          */
+  PetscInt  empty_cells_max;             /* most cells emptied inside the material at one step                         */
+  PetscInt  empty_cells0;                /* such cells in the initial state (gaps between bodies), -1 before the first count */
+  PetscInt  first_vacuum_step, first_empty_step;
+} MPMDiagnostics;
+
 struct _p_MPM {
   MPI_Comm comm;
   /* scene */
@@ -101,6 +117,11 @@ struct _p_MPM {
   PetscInt             ppc;                        /* points per cell per direction                     */
   PetscReal            cfl;                        /* Courant number                                    */
   PetscReal            dtmin;                      /* smallest time step before the run is stopped [s]  */
+  PetscReal            dvol_max;                   /* largest relative volume change of a point per step (time step limit) [-] */
+  PetscReal            accel_cfl;                  /* Courant number of the grid acceleration limit [-]          */
+  PetscReal            isentrope_threshold;        /* relative expansion per step above which e follows the isentrope [-] */
+  PetscReal            vacuum_density;             /* points below this fraction of their material's initial density count as vacuum [-] */
+  MPMDtLimit           dt_limit;                   /* what set the current step's size */
   PetscInt             sort_interval;              /* steps between sorts of the points by cell, 0: never  */
   PetscInt             output_interval;            /* steps between outputs, 0: start and end only      */
   PetscReal            tout[MPM_MAX_OUTPUT_TIMES]; /* -mpm_output_times: steps land on them [s] */
@@ -147,21 +168,22 @@ struct _p_MPM {
   DM          daout; /* grid output layout: nodal mass and velocity (dof 1 + d)   */
   PetscInt    last_output_step;
   /* run bookkeeping */
-  PetscInt   npoints0; /* global number of points at start                    */
-  PetscReal  mass0, energy0, momentum0[MPM_MAX_DIM];
-  PetscReal  wall_loop, wall_setup, wall_output;
-  PetscInt   steps;
-  PetscReal  time;
-  PetscReal  dt; /* size of the step being taken [s] */
-  PetscInt   noutputs;
-  PetscReal *output_times;
-  PetscInt   output_times_cap;
-  PetscInt   nchecks;
-  MPMCheck   checks[MPM_MAX_CHECKS];
-  MPMLog     log;
-  MPMModule  modules[MPM_NUM_PHASES]; /* the step's modules, per phase, in order              */
-  PetscBool  failed;                  /* the run cannot go on (MPMSetFailure)                 */
-  char       failure[1024];           /* why                                                  */
+  PetscInt       npoints0; /* global number of points at start                    */
+  PetscReal      mass0, energy0, momentum0[MPM_MAX_DIM];
+  PetscReal      wall_loop, wall_setup, wall_output;
+  PetscInt       steps;
+  PetscReal      time;
+  PetscReal      dt; /* size of the step being taken [s] */
+  PetscInt       noutputs;
+  PetscReal     *output_times;
+  PetscInt       output_times_cap;
+  PetscInt       nchecks;
+  MPMCheck       checks[MPM_MAX_CHECKS];
+  MPMDiagnostics diag;
+  MPMLog         log;
+  MPMModule      modules[MPM_NUM_PHASES]; /* the step's modules, per phase, in order              */
+  PetscBool      failed;                  /* the run cannot go on (MPMSetFailure)                 */
+  char           failure[1024];           /* why                                                  */
 };
 
 /* Loops c over the owned nodes (their index in the global nodal vector) of the box the step's node loops sweep:
@@ -186,6 +208,8 @@ PETSC_INTERN PetscErrorCode MPMPointsRegisterField(MPM, const char[], PetscInt, 
 PETSC_INTERN PetscErrorCode MPMPointsRestoreArrays(MPM, MPMPoints *);
 PETSC_INTERN PetscErrorCode MPMMigrate(MPM);
 PETSC_INTERN PetscErrorCode MPMSortPoints(MPM);
+PETSC_INTERN PetscErrorCode MPMStepForces(MPM, PetscReal);
+PETSC_INTERN PetscErrorCode MPMDiagnoseVacuum(MPM, PetscInt *, PetscInt *);
 PETSC_INTERN PetscErrorCode MPMStep(MPM, PetscReal, PetscReal);
 PETSC_INTERN PetscErrorCode MPMSetFailure(MPM, const char[], ...);
 PETSC_INTERN PetscErrorCode MPMModuleAdd(MPM, const char[], MPMPhase, PetscErrorCode (*)(MPMModule, MPM, const MPMStepContext *, MPMNode *), void *);

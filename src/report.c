@@ -239,7 +239,8 @@ PetscErrorCode MPMWriteReport(MPM mpm)
 {
   const MPMGrid *g = &mpm->grid;
   PetscReal      err[MPM_NERR][3], rhomin = 0, dmass, denergy, mass, energy, mom[MPM_MAX_DIM], shock_cells = -1.0, pss;
-  PetscInt       nonfinite = 0, npoints;
+  PetscInt       nonfinite = 0, npoints, nvac, nempty;
+  PetscReal      eisen, nisen;
   PetscMPIInt    size, rank;
 
   PetscFunctionBegin;
@@ -249,6 +250,13 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   PetscCall(MPMComputeErrors(mpm, err, &nonfinite, &rhomin));
   PetscCall(MPMGlobalSums(mpm, &mass, &energy, mom));
   PetscCall(MPMComputeChecks(mpm));
+  PetscCall(MPMDiagnoseVacuum(mpm, &nvac, &nempty));
+  {
+    PetscReal s[2] = {mpm->diag.isentrope_energy, (PetscReal)mpm->diag.isentrope_points};
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 2, MPIU_REAL, MPIU_SUM, mpm->comm));
+    eisen = s[0];
+    nisen = s[1];
+  }
   for (PetscInt c = 0; c < mpm->nchecks; c++) {
     PetscBool is;
     PetscCall(PetscStrcmp(mpm->checks[c].name, "shock_position", &is));
@@ -261,6 +269,13 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   PetscCall(
     PetscPrintf(mpm->comm, "petmpm %s: %" PetscInt_FMT " points, %" PetscInt_FMT " steps to t = %g s in %.3f s (%.3g point-steps/s on %d rank(s))\n", mpm->scene, npoints, mpm->steps, (double)mpm->time, (double)mpm->wall_loop, (double)pss, size));
   PetscCall(PetscPrintf(mpm->comm, "  conservation: mass %.3e, total energy %.3e (relative change); min density %g; %" PetscInt_FMT " non-finite values\n", (double)dmass, (double)denergy, (double)rhomin, nonfinite));
+  PetscCall(PetscPrintf(mpm->comm, "  time step set by: sound %" PetscInt_FMT ", acceleration %" PetscInt_FMT ", volume %" PetscInt_FMT ", landing %" PetscInt_FMT " steps; isentropic expansion %.3e of the energy (%.0f point-steps)\n",
+                        mpm->diag.dt_limit[MPM_DT_SOUND], mpm->diag.dt_limit[MPM_DT_ACCELERATION], mpm->diag.dt_limit[MPM_DT_VOLUME], mpm->diag.dt_limit[MPM_DT_LANDING], (double)(mpm->energy0 != 0 ? eisen / PetscAbsReal(mpm->energy0) : eisen),
+                        (double)nisen));
+  if (mpm->diag.vacuum_points_max || mpm->diag.empty_cells_max)
+    PetscCall(PetscPrintf(mpm->comm,
+                          "  warning: resolution lost: up to %" PetscInt_FMT " points below the vacuum density (first at step %" PetscInt_FMT "), up to %" PetscInt_FMT " cells emptied inside the material (first at step %" PetscInt_FMT ")\n",
+                          mpm->diag.vacuum_points_max, mpm->diag.first_vacuum_step, mpm->diag.empty_cells_max, mpm->diag.first_empty_step));
   if (mpm->exact) {
     for (PetscInt q = 0; q < MPMNumErrors(mpm); q++) PetscCall(PetscPrintf(mpm->comm, "  %-12s error: L1 %.4e  L2 %.4e  Linf %.4e\n", MPMErrorNames[q], (double)err[q][0], (double)err[q][1], (double)err[q][2]));
     for (PetscInt c = 0; c < mpm->nchecks; c++)
@@ -294,7 +309,14 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     if (shock_cells >= 0) fprintf(fp, "  \"shock_position_error_cells\": %.6g,\n", (double)shock_cells);
     fprintf(fp, "  \"conservation\": {\"mass\": %.6e, \"total_energy\": %.6e, \"momentum\": [", (double)dmass, (double)denergy);
     for (PetscInt k = 0; k < g->dim; k++) fprintf(fp, "%s%.6e", k ? ", " : "", (double)(mom[k] - mpm->momentum0[k]));
-    fprintf(fp, "]},\n  \"min_density\": %.10g,\n  \"nonfinite\": %" PetscInt_FMT ",\n  \"checks\": [", (double)rhomin, nonfinite);
+    fprintf(fp, "]},\n  \"energy_accounted\": %.6e,\n", (double)(mpm->energy0 != 0 ? (denergy * PetscAbsReal(mpm->energy0) - eisen) / PetscAbsReal(mpm->energy0) : denergy - eisen));
+    fprintf(fp, "  \"robustness\": {\"isentrope_energy\": %.6e, \"isentrope_point_steps\": %.0f, \"dt_limit\": {", (double)(mpm->energy0 != 0 ? eisen / PetscAbsReal(mpm->energy0) : eisen), (double)nisen);
+    for (PetscInt l = 0; l < MPM_NUM_DT_LIMITS; l++) fprintf(fp, "%s\"%s\": %" PetscInt_FMT, l ? ", " : "", MPMDtLimitNames[l], mpm->diag.dt_limit[l]);
+    fprintf(fp,
+            "}, \"vacuum_points\": %" PetscInt_FMT ", \"vacuum_points_max\": %" PetscInt_FMT ", \"first_vacuum_step\": %" PetscInt_FMT ", \"empty_cells\": %" PetscInt_FMT ", \"empty_cells_max\": %" PetscInt_FMT
+            ", \"first_empty_step\": %" PetscInt_FMT "}",
+            nvac, mpm->diag.vacuum_points_max, mpm->diag.first_vacuum_step, nempty, mpm->diag.empty_cells_max, mpm->diag.first_empty_step);
+    fprintf(fp, ",\n  \"min_density\": %.10g,\n  \"nonfinite\": %" PetscInt_FMT ",\n  \"checks\": [", (double)rhomin, nonfinite);
     for (PetscInt c = 0; c < mpm->nchecks; c++)
       fprintf(fp, "%s\n    {\"name\": \"%s\", \"value\": %.10g, \"reference\": %.10g, \"rel_error\": %.6e}", c ? "," : "", mpm->checks[c].name, (double)mpm->checks[c].value, (double)mpm->checks[c].reference,
               (double)MPMRelErr(mpm->checks[c].value, mpm->checks[c].reference));

@@ -105,15 +105,27 @@ PetscErrorCode MPMSetFailure(MPM mpm, const char format[], ...)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* One explicit MPM step from t^n to t^{n+1} = t. -log_view shows a row per phase and per module. */
+/* The first phase of the step from t^n: the points' mass, momentum and internal force on the grid, and the
+   external forces (m_I, (mv)_I, f_I at t^n). They do not depend on the step size, so the time step reads them
+   (the acceleration limit of MPMComputeTimeStep): the TS pre-step runs this phase, then sets dt. */
+PetscErrorCode MPMStepForces(MPM mpm, PetscReal tn)
+{
+  const MPMStepContext ctx = {.tn = tn, .dt = 0.0, .kick = 0.0}; /* the force phase reads t^n only */
+
+  PetscFunctionBegin;
+  PetscCall(MPMParticlesToGrid(mpm, &ctx));                    /* m_I, (mv)_I, f_I = f_int */
+  PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_FORCE, &ctx)); /* f_I += f_ext: gravity    */
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The rest of the explicit MPM step from t^n to t^{n+1} = t, after MPMStepForces(t^n). -log_view shows a row per
+   phase and per module. */
 PetscErrorCode MPMStep(MPM mpm, PetscReal t, PetscReal dt)
 {
   const MPMStepContext ctx = {.tn = t - dt, .dt = dt, .kick = 0.5 * (mpm->dt + dt)}; /* mpm->dt: the previous step, 0 before the first */
 
   PetscFunctionBegin;
   mpm->dt = dt;
-  PetscCall(MPMParticlesToGrid(mpm, &ctx));                                                      /* m_I, (mv)_I, f_I = f_int          */
-  PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_FORCE, &ctx));                                   /* f_I += f_ext: gravity             */
   PetscCall(MPMGridAdvance(mpm, &ctx));                                                          /* (mv)_I += dt_kick f_I; walls      */
   PetscCall(MPMGridToParticles(mpm, &ctx));                                                      /* v_p; USL: x_p, L_p                */
   PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_KINEMATICS, &ctx));                             /* MUSL: v_I from v_p; x_p, L_p */

@@ -1,16 +1,29 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
-/* The CFL time step. */
+/* The time step: the smallest of the limits the state sets. */
 #include "petmpmimpl.h"
 
-/* dt = C h_min / max_p (c_p + |v_p| + 2 nu_p / h_min), with the viscous diffusivity nu_p = q_p / (rho_p |div v_p|)
-   so that the artificial viscosity's own (diffusive) limit is respected. With diagnose, the rank holding the
-   point that sets dt prints it (for a run stopped by -mpm_dt_min). */
+/* dt = min of
+     sound:        C h_min / max_p (c_p + |v_p| + 2 nu_p / h_min), nu_p = q_p / (rho_p |div v_p|) the viscous
+                   diffusivity, so that the artificial viscosity's own (diffusive) limit is respected;
+     volume:       dV_max / max_p |tr L_p|: no point's volume changes by more than the fraction dV_max
+                   (-mpm_dt_volume) in a step at the rate of its last step (a point that would grow 7-fold in one
+                   step at the sound-speed step, as where a dense gas expands into a light one, cannot take the
+                   work of its pressure over that step and goes negative in energy);
+     acceleration: the grid's own acceleration this step, a_I = f_I / m_I, read by the points with their mean
+                   weight wbar_I = sum N_I^2 m_p / m_I, moves no node by more than C_a h (-mpm_dt_acceleration):
+                   dt (dt + dt_prev)/2 wbar_I |a_I| <= C_a h_min. It is what a cold or light material feels before
+                   its own state knows (a shock driven into a gas 1000 times lighter); the weight keeps the
+                   nodes that a point barely reaches (its small-mass stencil corners) from setting the step.
+   The grid's forces of the step (MPMStepForces) must be in the nodal vector. Records which limit set dt
+   (mpm->dt_limit). With diagnose, the rank holding the point that sets the sound-speed limit prints it (for a run
+   stopped by -mpm_dt_min). */
 PetscErrorCode MPMComputeTimeStep(MPM mpm, PetscBool diagnose, PetscReal *dt)
 {
-  const PetscInt  d    = mpm->grid.dim;
-  const PetscReal h    = mpm->grid.hmin;
-  PetscReal       smax = 0.0, lmax;
-  PetscInt        pmax = -1;
+  const MPMGrid  *g     = &mpm->grid;
+  const PetscInt  d     = g->dim;
+  const PetscReal h     = g->hmin;
+  PetscReal       mx[3] = {0.0, 0.0, 0.0}, lmax, dts[MPM_NUM_DT_LIMITS]; /* max signal speed, max |div v|, max wbar |a| */
+  PetscInt        pmax  = -1;
   MPMPoints       pts;
 
   PetscFunctionBegin;
@@ -25,24 +38,49 @@ PetscErrorCode MPMComputeTimeStep(MPM mpm, PetscBool diagnose, PetscReal *dt)
     }
     s = pts.f[MPM_FIELD_SOUNDSPEED][p] + PetscSqrtReal(v2);
     if (q > 0.0 && divv != 0.0) s += 2.0 * q / (pts.f[MPM_FIELD_DENSITY][p] * PetscAbsReal(divv) * h);
-    if (!(s <= smax)) { /* also catches NaN */
-      smax = s;
-      pmax = p;
+    if (!(s <= mx[0])) { /* also catches NaN */
+      mx[0] = s;
+      pmax  = p;
+    }
+    mx[1] = PetscMax(mx[1], PetscAbsReal(divv));
+  }
+  {
+    const MPMNode *node;
+    PetscCall(VecGetArrayRead(mpm->nodes, (const PetscScalar **)&node));
+    MPM_FOR_BOX_NODES(mpm, c)
+    {
+      const MPMNode *nd = &node[c];
+      if (nd->m > 0.0) {
+        PetscReal f2 = 0.0;
+        for (PetscInt k = 0; k < d; k++) f2 += nd->f[k] * nd->f[k];
+        mx[2] = PetscMax(mx[2], PetscSqrtReal(f2 * PetscMin(1.0, nd->w2)) / nd->m);
+      }
+    }
+    PetscCall(VecRestoreArrayRead(mpm->nodes, (const PetscScalar **)&node));
+  }
+  lmax = mx[0];
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, mx, 3, MPIU_REAL, MPIU_MAX, mpm->comm));
+  dts[MPM_DT_SOUND]        = mx[0] > 0.0 ? mpm->cfl * h / mx[0] : PETSC_MAX_REAL;
+  dts[MPM_DT_VOLUME]       = mx[1] > 0.0 ? mpm->dvol_max / mx[1] : PETSC_MAX_REAL;
+  dts[MPM_DT_ACCELERATION] = mx[2] > 0.0 ? 0.5 * (PetscSqrtReal(mpm->dt * mpm->dt + 8.0 * mpm->accel_cfl * h / mx[2]) - mpm->dt) : PETSC_MAX_REAL; /* dt (dt + dt_prev)/2 a = C_a h */
+  mpm->dt_limit            = MPM_DT_SOUND;
+  for (PetscInt l = MPM_DT_ACCELERATION; l <= MPM_DT_VOLUME; l++)
+    if (dts[l] < dts[mpm->dt_limit]) mpm->dt_limit = (MPMDtLimit)l;
+  *dt = dts[mpm->dt_limit];
+  if (diagnose) {
+    PetscCall(PetscPrintf(mpm->comm, "the time step is set by the %s limit: sound %g s, acceleration %g s, volume %g s (max |div v| = %g 1/s)\n", MPMDtLimitNames[mpm->dt_limit], (double)dts[MPM_DT_SOUND], (double)dts[MPM_DT_ACCELERATION],
+                          (double)dts[MPM_DT_VOLUME], (double)mx[1]));
+    if (pmax >= 0 && !(lmax < mx[0])) {
+      const PetscReal *v  = &pts.f[MPM_FIELD_VELOCITY][pmax * d];
+      PetscReal        v2 = 0.0;
+      PetscMPIInt      rank;
+      for (PetscInt k = 0; k < d; k++) v2 += v[k] * v[k];
+      PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "[%d] the sound-speed limit is set by point %.0f at x = %g cm: c = %g cm/s, |v| = %g cm/s, q = %g dyn/cm^2, rho = %g g/cm^3\n", rank, (double)pts.f[MPM_FIELD_ID][pmax],
+                            (double)pts.f[MPM_FIELD_POSITION][pmax * d], (double)pts.f[MPM_FIELD_SOUNDSPEED][pmax], (double)PetscSqrtReal(v2), (double)pts.f[MPM_FIELD_VISCOSITY][pmax], (double)pts.f[MPM_FIELD_DENSITY][pmax]));
     }
   }
-  lmax = smax;
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &smax, 1, MPIU_REAL, MPIU_MAX, mpm->comm));
-  if (diagnose && pmax >= 0 && !(lmax < smax)) {
-    const PetscReal *v  = &pts.f[MPM_FIELD_VELOCITY][pmax * d];
-    PetscReal        v2 = 0.0;
-    PetscMPIInt      rank;
-    for (PetscInt k = 0; k < d; k++) v2 += v[k] * v[k];
-    PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "[%d] the time step is set by point %.0f at x = %g cm: c = %g cm/s, |v| = %g cm/s, q = %g dyn/cm^2, rho = %g g/cm^3\n", rank, (double)pts.f[MPM_FIELD_ID][pmax], (double)pts.f[MPM_FIELD_POSITION][pmax * d],
-                          (double)pts.f[MPM_FIELD_SOUNDSPEED][pmax], (double)PetscSqrtReal(v2), (double)pts.f[MPM_FIELD_VISCOSITY][pmax], (double)pts.f[MPM_FIELD_DENSITY][pmax]));
-  }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-  *dt = smax > 0.0 ? mpm->cfl * h / smax : PETSC_MAX_REAL;
   PetscCall(PetscLogEventEnd(mpm->log.timestep, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

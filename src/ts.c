@@ -24,14 +24,21 @@ static PetscErrorCode MPMTSPreStep(TS ts)
   PetscCall(TSGetTime(ts, &t));
   PetscCall(TSGetMaxTime(ts, &tmax));
   PetscCall(TSGetStepNumber(ts, &step));
+  PetscCall(MPMStepForces(mpm, t)); /* the step's grid forces, which the acceleration limit reads */
   PetscCall(MPMComputeTimeStep(mpm, PETSC_FALSE, &dt));
   if (dt < mpm->dtmin) { /* the post-step stops the loop without a step */
     PetscCall(MPMComputeTimeStep(mpm, PETSC_TRUE, &dt));
     PetscCall(MPMSetFailure(mpm, "Step %" PetscInt_FMT ", t = %g s: CFL time step %g s fell below -mpm_dt_min %g s", step, (double)t, (double)dt, (double)mpm->dtmin));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  if (t + dt * (1.0 + 1e-6) >= tmax) dt = tmax - t;                                                              /* land on the final time, never leave a sliver */
-  if (mpm->itout < mpm->ntout && t + dt * (1.0 + 1e-6) >= mpm->tout[mpm->itout]) dt = mpm->tout[mpm->itout] - t; /* and on the output times */
+  if (t + dt * (1.0 + 1e-6) >= tmax) { /* land on the final time, never leave a sliver */
+    dt            = tmax - t;
+    mpm->dt_limit = MPM_DT_LANDING;
+  }
+  if (mpm->itout < mpm->ntout && t + dt * (1.0 + 1e-6) >= mpm->tout[mpm->itout]) { /* and on the output times */
+    dt            = mpm->tout[mpm->itout] - t;
+    mpm->dt_limit = MPM_DT_LANDING;
+  }
   PetscCall(TSSetTimeStep(ts, dt));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -58,6 +65,7 @@ static PetscErrorCode MPMTSPostStep(TS ts)
   }
   mpm->steps = step;
   mpm->time  = t;
+  mpm->diag.dt_limit[mpm->dt_limit]++;
   PetscCall(MPMStep(mpm, t, dt));
   if (mpm->failed) { /* set by the step: stop the loop, MPMSolve writes the last state */
     PetscCall(TSSetConvergedReason(ts, TS_DIVERGED_STEP_REJECTED));

@@ -202,14 +202,16 @@ def test_seeding():
 
 def test_failure():
     """A run that cannot go on stops with a diagnosis naming the step, the point, its position and the state,
-    writes a last HDF5 output, and exits non-zero: the 1e5 blast without viscosity (negative density) and a
-    time-step floor."""
+    writes a last HDF5 output, and exits non-zero: the LeBlanc tube with the time step's volume and acceleration
+    limits and the isentropic expansion update switched off (a point grows 7-fold in step 2 and goes negative in
+    energy; with them the run finishes, scene_stability) and a time-step floor."""
     import h5py
     with tempfile.TemporaryDirectory() as d:
-        p = run(["-options_file", os.path.join(SRC, "inputs", "toro_blast.opts"), "-mpm_viscosity_type", "none", "-mpm_output", d], expect_ok=False)
+        off = ["-mpm_dt_volume", "1e30", "-mpm_dt_acceleration", "1e30", "-mpm_isentrope_threshold", "1e30"]
+        p = run(["-options_file", os.path.join(SRC, "inputs", "leblanc.opts"), *off, "-mpm_output", d], expect_ok=False)
         text = p.stdout + p.stderr
-        ok = p.returncode != 0 and "non-physical state" in text and all(w in text for w in ("step", "point", "at x =", "rho =", "det(I + dt L)"))
-        check(ok, f"blast without viscosity: exit {p.returncode}, diagnosis names step, point, x, rho")
+        ok = p.returncode != 0 and "non-physical state" in text and all(w in text for w in ("step 2,", "point", "at x =", "rho =", "det(I + dt L)"))
+        check(ok, f"LeBlanc without the expansion limits: exit {p.returncode}, diagnosis names step 2, point, x, rho")
         with h5py.File(os.path.join(d, "petmpm.h5"), "r") as f:
             n = f["particle_fields/density"].shape[0]
         times = [float(e.get("Value")) for e in ET.parse(os.path.join(d, "petmpm.xmf")).iter("Time")]

@@ -10,6 +10,7 @@ typedef struct {
   void (*energy)(void *, PetscReal, PetscReal, PetscReal *);                                            /* (rho, T) -> e          */
   void (*pressure_n)(void *, PetscInt, const PetscReal[], const PetscReal[], PetscReal[], PetscReal[]); /* batched: n points (rho[], e[]) -> p[], c^2[]; NULL: a loop over pressure */
   void (*temperature_n)(void *, PetscInt, const PetscReal[], const PetscReal[], PetscReal[]);           /* batched: (rho[], e[]) -> T[]; NULL: a loop over temperature       */
+  PetscReal (*isentrope)(void *, PetscReal, PetscReal, PetscReal);                                      /* (rho0, e0, rho1) -> e1 on the isentrope through (rho0, e0); NULL: RK4 steps of de/drho = p/rho^2 */
 } MPMEOSOps;
 
 /* Batched EOS operations of a type from its pointwise ones, in the type's own file so that the loop inlines them. */
@@ -28,6 +29,7 @@ struct _p_MPMEOS {
 };
 
 PETSC_INTERN PetscErrorCode MPMEOSPressureBatch(MPMEOS, PetscInt, const PetscReal[], const PetscReal[], PetscReal[], PetscReal[]);
+PETSC_INTERN PetscReal      MPMEOSIsentrope(MPMEOS, PetscReal, PetscReal, PetscReal);
 PETSC_INTERN PetscErrorCode MPMEOSTemperatureBatch(MPMEOS, PetscInt, const PetscReal[], const PetscReal[], PetscReal[]);
 
 /* Pointwise EOS kernels for set-up and seeding. */

@@ -90,6 +90,7 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
     MPMNode        *nd = &nodes[node[a]];
     const PetscReal wm = W[a] * m[p];
     nd->m += wm;
+    nd->w2 += W[a] * W[a];
     for (PetscInt k = 0; k < D; k++) nd->p[k] += (mirror ? SG[a][k] : 1.0) * wm * v[p * D + k];
     if (mode & MPM_P2G_PRESSURE) {
       const PetscReal P = pr[p] + q[p];

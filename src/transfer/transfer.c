@@ -68,6 +68,7 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
           MPMNode        *nd = &node[st.node[a]];
           const PetscReal wm = st.w[a] * m[p];
           nd->m += wm;
+          nd->w2 += st.w[a] * st.w[a];
           for (PetscInt k = 0; k < d; k++) nd->p[k] += st.s[a][k] * wm * v[p * d + k];
           if (force && !cellrule)
             for (PetscInt k = 0; k < d; k++) nd->f[k] += st.s[a][k] * V[p] * P * st.dw[a][k];

@@ -25,6 +25,12 @@ static void MPMEOSTemperature_IdealGas(void *ctx, PetscReal rho, PetscReal e, Pe
 
 MPM_EOS_BATCHED(MPMEOSPressure_IdealGas, MPMEOSTemperature_IdealGas)
 
+/* The isentrope e rho^(1 - gamma) = const. */
+static PetscReal MPMEOSIsentrope_IdealGas(void *ctx, PetscReal rho0, PetscReal e0, PetscReal rho1)
+{
+  return e0 * PetscPowReal(rho1 / rho0, ((const EOS_IdealGas *)ctx)->gamma - 1.0);
+}
+
 static void MPMEOSEnergy_IdealGas(void *ctx, PetscReal rho, PetscReal T, PetscReal *e)
 {
   *e = ((const EOS_IdealGas *)ctx)->cv * T;
@@ -90,6 +96,7 @@ PetscErrorCode MPMEOSCreate_IdealGas(MPMEOS eos)
   eos->ops.temperature    = MPMEOSTemperature_IdealGas;
   eos->ops.pressure_n     = MPMEOSPressure_IdealGas_n;
   eos->ops.temperature_n  = MPMEOSTemperature_IdealGas_n;
+  eos->ops.isentrope      = MPMEOSIsentrope_IdealGas;
   eos->ops.energy         = MPMEOSEnergy_IdealGas;
   eos->ops.setfromoptions = MPMEOSSetFromOptions_IdealGas;
   eos->ops.view           = MPMEOSView_IdealGas;

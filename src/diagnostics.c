@@ -1,0 +1,66 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* Vacuum and resolution loss, diagnosed (never silent): points whose density fell below -mpm_vacuum_density times
+   the lightest initial density of their material, and cells emptied inside the material (a cell with no point
+   between two occupied cells along a grid line: a hole one cell wide or more that the points left open, as in a
+   near-vacuum rarefaction that Lagrangian points cannot fill, or a spall). Run at every output and at the end;
+   the first time either appears the run says so, and the report gives the largest counts and when they first
+   appeared. Empty cells the initial state has (gaps between bodies) are the baseline, not holes. Holes are found among each rank's owned cells (a hole across a rank boundary is not counted). */
+#include "petmpmimpl.h"
+
+PetscErrorCode MPMDiagnoseVacuum(MPM mpm, PetscInt *nvacuum, PetscInt *nempty)
+{
+  const MPMGrid *g = &mpm->grid;
+  const PetscInt d = g->dim;
+  PetscReal      rhomin[MPM_MAX_MATERIALS];
+  PetscInt      *count, n[2] = {0, 0}, xmin = -1;
+  MPMPoints      pts;
+
+  PetscFunctionBegin;
+  for (PetscInt i = 0; i < mpm->nmat; i++) rhomin[i] = PETSC_MAX_REAL;
+  for (PetscInt r = 0; r < mpm->nreg; r++) rhomin[mpm->reg[r].material] = PetscMin(rhomin[mpm->reg[r].material], mpm->reg[r].rho);
+  PetscCall(PetscCalloc1(g->ncells, &count));
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt p = 0; p < pts.n; p++) {
+    const PetscInt c = MPMLocalCell(g, &pts.f[MPM_FIELD_POSITION][p * d]);
+    if (c >= 0) count[c]++;
+    if (!(pts.f[MPM_FIELD_DENSITY][p] >= mpm->vacuum_density * rhomin[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]])) {
+      if (!n[0]) xmin = p;
+      n[0]++;
+    }
+  }
+  for (PetscInt c = 0; c < g->ncells; c++) {
+    PetscInt ijk[3] = {c % g->cm[0], (c / g->cm[0]) % g->cm[1], c / (g->cm[0] * g->cm[1])}, stride = 1;
+    if (count[c]) continue;
+    for (PetscInt k = 0; k < d; k++) { /* occupied cells on both sides along direction k */
+      PetscBool lo = PETSC_FALSE, hi = PETSC_FALSE;
+      for (PetscInt i = ijk[k] - 1; i >= 0 && !lo; i--) lo = (PetscBool)(count[c - (ijk[k] - i) * stride] > 0);
+      for (PetscInt i = ijk[k] + 1; i < g->cm[k] && !hi; i++) hi = (PetscBool)(count[c + (i - ijk[k]) * stride] > 0);
+      stride *= g->cm[k];
+      if (lo && hi) {
+        n[1]++;
+        break;
+      }
+    }
+  }
+  if (xmin >= 0 && mpm->diag.first_vacuum_step < 0) {
+    PetscMPIInt rank;
+    PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "[%d] warning: step %" PetscInt_FMT ", t = %g s: point %.0f at x = %g cm has density %g g/cm^3, below -mpm_vacuum_density %g of its material's lightest initial density (near vacuum)\n", rank, mpm->steps,
+                          (double)mpm->time, (double)pts.f[MPM_FIELD_ID][xmin], (double)pts.f[MPM_FIELD_POSITION][xmin * d], (double)pts.f[MPM_FIELD_DENSITY][xmin], (double)mpm->vacuum_density));
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(PetscFree(count));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, n, 2, MPIU_INT, MPI_SUM, mpm->comm));
+  if (n[0] && mpm->diag.first_vacuum_step < 0) mpm->diag.first_vacuum_step = mpm->steps;
+  if (mpm->diag.empty_cells0 < 0) mpm->diag.empty_cells0 = n[1]; /* the first call (the initial state): gaps between bodies are not holes */
+  n[1] = PetscMax(0, n[1] - mpm->diag.empty_cells0);
+  if (n[1] && mpm->diag.first_empty_step < 0) {
+    mpm->diag.first_empty_step = mpm->steps;
+    PetscCall(PetscPrintf(mpm->comm, "warning: step %" PetscInt_FMT ", t = %g s: %" PetscInt_FMT " cell(s) emptied inside the material (resolution lost: no point between occupied cells)\n", mpm->steps, (double)mpm->time, n[1]));
+  }
+  mpm->diag.vacuum_points_max = PetscMax(mpm->diag.vacuum_points_max, n[0]);
+  mpm->diag.empty_cells_max   = PetscMax(mpm->diag.empty_cells_max, n[1]);
+  if (nvacuum) *nvacuum = n[0];
+  if (nempty) *nempty = n[1];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
