@@ -95,7 +95,7 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscCall(PetscOptionsReal("-mpm_isentrope_threshold", "Relative expansion of a point in one step above which its internal energy follows the EOS isentrope instead of -p^n dV (compatible update) [-], >= 0", "", mpm->isentrope_threshold,
                              &mpm->isentrope_threshold, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_isentrope_threshold", mpm->isentrope_threshold, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
-  PetscCall(PetscOptionsReal("-mpm_vacuum_density", "Density, as a fraction of the material's initial density, below which the report counts a point as vacuum [-], in (0, 1)", "", mpm->vacuum_density, &mpm->vacuum_density, NULL));
+  PetscCall(PetscOptionsReal("-mpm_vacuum_density", "Density, as a fraction of the lightest initial density of the point's material, below which the report counts it as vacuum [-], in (0, 1)", "", mpm->vacuum_density, &mpm->vacuum_density, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_vacuum_density", mpm->vacuum_density, 0.0, 1.0, PETSC_TRUE, PETSC_TRUE));
   PetscCall(PetscOptionsEnum("-mpm_scheme", "Stress update order", "", MPMSchemes, (PetscEnum)mpm->scheme, (PetscEnum *)&mpm->scheme, NULL));
   PetscCall(PetscOptionsEnum("-mpm_stress_integration", "Internal force quadrature: cell-averaged stress or point by point", "", MPMStressIntegrations, (PetscEnum)mpm->stress_integration, (PetscEnum *)&mpm->stress_integration, NULL));
