@@ -19,7 +19,10 @@ static inline PetscReal MPMDetIPlusDtL(PetscInt d, PetscReal dt, const PetscReal
    sum_I m_I |dv_I|^2 / 2 per step (the strong Sod shock sits 3.4 cells ahead with the midpoint rule, 0.2 with
    this one). Conservative (point integration's default): the gather has added the forces' work already.
    Midpoint: pbar = (p^n + p^{n+1})/2 from one predictor-corrector pass through the EOS (second order along an
-   isentrope, but it does more work on the points than the force did on the grid).
+   isentrope, but it does more work on the points than the force did on the grid). In the compatible update a
+   point whose volume grows by more than -mpm_isentrope_threshold in the step takes its pressure work along the
+   EOS isentrope instead (MPMEOSIsentrope: it cannot go negative, where -p^n dV does past dV/V = 1/(gamma - 1));
+   the energy this keeps above the linear work is summed for the report (mpm->diag).
    With a strength model, the work of the stress the force used, de = dt s^n : L / rho^n, also enters e, and
    the model gives s^{n+1} from F^{n+1} = (I + dt L) F^n (tracked only when a model or the shape functions
    read it). The update runs per material, over each material's points (a counting sort on the material field
