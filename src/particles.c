@@ -225,14 +225,6 @@ static void MPMBoxSeed(MPM mpm, const PetscReal x[], const PetscReal hs[], Petsc
     MPMPieceAdd(mpm, r, x, dV, vol, pc, np);
 }
 
-static PetscReal MPMEOSPressureOf(void *ctx, PetscReal rho, PetscReal e)
-{
-  PetscReal p, c2;
-
-  MPMEOSPressureKernel((MPMEOS)ctx, rho, e, &p, &c2);
-  return p;
-}
-
 /* The parts (at most one per material) that the site centred at xs seeds, their densities in rho[] and, for
    merged parts, their specific internal energies in e[]. */
 static PetscInt MPMSiteSeed(MPM mpm, const PetscReal xs[], MPMPiece pc[], PetscReal rho[], PetscReal e[])

@@ -74,14 +74,6 @@ PetscErrorCode MPMEOSTemperatureBatch(MPMEOS eos, PetscInt n, const PetscReal rh
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscReal MPMEOSPressureOnly(void *ctx, PetscReal rho, PetscReal e)
-{
-  PetscReal p, c2;
-
-  MPMEOSPressureKernel((MPMEOS)ctx, rho, e, &p, &c2);
-  return p;
-}
-
 /* The specific internal energy at density rho1 on the isentrope through (rho0, e0), de = p / rho^2 drho: the type's
    closed form, or classical RK4 in steps of at most 5% in ln rho (relative error below 1e-8 for the EOS here). */
 PetscReal MPMEOSIsentrope(MPMEOS eos, PetscReal rho0, PetscReal e0, PetscReal rho1)
@@ -94,6 +86,6 @@ PetscReal MPMEOSIsentrope(MPMEOS eos, PetscReal rho0, PetscReal e0, PetscReal rh
   n = (PetscInt)PetscCeilReal(PetscAbsReal(PetscLogReal(rho1 / rho0)) / 0.05);
   n = PetscMax(1, PetscMin(n, 1000));
   h = (rho1 - rho0) / n;
-  for (PetscInt i = 0; i < n; i++) e = MPMIsentropeStep(MPMEOSPressureOnly, eos, rho0 + i * h, e, h);
+  for (PetscInt i = 0; i < n; i++) e = MPMIsentropeStep(MPMEOSPressureOf, eos, rho0 + i * h, e, h);
   return e;
 }

@@ -47,3 +47,12 @@ static inline void MPMEOSEnergyKernel(MPMEOS eos, PetscReal rho, PetscReal T, Pe
 {
   eos->ops.energy(eos->data, rho, T, e);
 }
+
+/* p(rho, e) alone, in the form MPMIsentropeStep integrates (ctx: the MPMEOS). */
+static inline PetscReal MPMEOSPressureOf(void *ctx, PetscReal rho, PetscReal e)
+{
+  PetscReal p, c2;
+
+  MPMEOSPressureKernel((MPMEOS)ctx, rho, e, &p, &c2);
+  return p;
+}
