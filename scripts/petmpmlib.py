@@ -39,13 +39,15 @@ def run(exe, args, ranks=1, out=None, timeout=900):
 
 
 def final_fields(h5file):
-    """Every point field at the last output, ordered by persistent id: {name: array}."""
+    """Every point field at the last output, ordered by persistent id: {name: array}. A row holds particle_count
+    points (point splitting adds points during a run), then zeros."""
     import h5py
     import numpy as np
     with h5py.File(h5file, "r") as f:
-        ids = np.asarray(f["particle_fields/id"][-1]).ravel()
+        n = int(f["particle_count"][-1]) if "particle_count" in f else None
+        ids = np.asarray(f["particle_fields/id"][-1][:n]).ravel()
         order = np.argsort(ids)
-        return {k: np.asarray(f["particle_fields/" + k][-1])[order] for k in f["particle_fields"] if k != "xyz"}
+        return {k: np.asarray(f["particle_fields/" + k][-1][:n])[order] for k in f["particle_fields"] if k != "xyz"}
 
 
 def fit_rate(h, err):

@@ -82,7 +82,7 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
               for (PetscInt k = 0; k < d; k++) Fn[a * d + b] += dt * L[p * d * d + a * d + k] * F[p * d * d + k * d + b];
             }
           for (PetscInt a = 0; a < d * d; a++) F[p * d * d + a] = Fn[a];
-          if (shape->ops.admissible && !shape->ops.admissible(shape->data, &mpm->grid, Fn) && (bad < 0 || p < bad)) bad = p;
+          if (shape->ops.admissible && !shape->ops.admissible(shape->data, &mpm->grid, MPMPointDomain(d, F, pts.f[MPM_FIELD_DOMAINSCALE], p, Fn)) && (bad < 0 || p < bad)) bad = p;
         }
         if (Str && !conservative) {
           PetscReal work = 0.0;

@@ -97,6 +97,15 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscCall(MPMOptionsCheckRange("-mpm_isentrope_threshold", mpm->isentrope_threshold, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
   PetscCall(PetscOptionsReal("-mpm_vacuum_density", "Density, as a fraction of the lightest initial density of the point's material, below which the report counts it as vacuum [-], in (0, 1)", "", mpm->vacuum_density, &mpm->vacuum_density, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_vacuum_density", mpm->vacuum_density, 0.0, 1.0, PETSC_TRUE, PETSC_TRUE));
+  PetscCall(PetscOptionsBool("-mpm_split", "Split a point whose domain stretches beyond -mpm_split_length cells along an axis into two (mass, momentum, energy, volume and first moment conserved)", "", mpm->split, &mpm->split, NULL));
+  if (mpm->split) {
+    PetscInt level = 10;
+    mpm->split_length = 1.0;
+    PetscCall(PetscOptionsReal("-mpm_split_length", "Length of a point's domain along an axis above which it splits [cells], >= 1 / ppc (the lattice spacing)", "", mpm->split_length, &mpm->split_length, NULL));
+    PetscCall(MPMOptionsCheckRange("-mpm_split_length", mpm->split_length, 1.0 / mpm->ppc, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+    PetscCall(PetscOptionsRangeInt("-mpm_split_max_level", "Most times a point's domain may be halved along one axis [-], 1 to 40", "", level, &level, NULL, 1, 40));
+    mpm->split_min_scale = PetscPowReal(0.5, (PetscReal)level - 1) * (1.0 - 1e-12);
+  }
   PetscCall(PetscOptionsEnum("-mpm_scheme", "Stress update order", "", MPMSchemes, (PetscEnum)mpm->scheme, (PetscEnum *)&mpm->scheme, NULL));
   PetscCall(PetscOptionsEnum("-mpm_stress_integration", "Internal force quadrature: cell-averaged stress or point by point", "", MPMStressIntegrations, (PetscEnum)mpm->stress_integration, (PetscEnum *)&mpm->stress_integration, NULL));
   /* point integration: the conservative update is exact and converges (weak Sod L1 rate 0.9 against 0.6 with compatible) */
@@ -175,12 +184,13 @@ PetscErrorCode MPMSetUp(MPM mpm)
     if (walls) PetscCall(MPMModuleAdd(mpm, "MPMWalls", MPM_PHASE_GRID_VELOCITY, MPMWallsApply, NULL));
     if (mpm->scheme == MPM_SCHEME_MUSL) PetscCall(MPMModuleAdd(mpm, "MPMRemapMomentum", MPM_PHASE_POINT_KINEMATICS, MPMRemapApply, NULL));
     if (mpm->viscosity) PetscCall(MPMModuleAdd(mpm, "MPMViscosity", MPM_PHASE_POINT_STATE, MPMViscosityModuleApply, NULL));
+    if (mpm->split) PetscCall(MPMModuleAdd(mpm, "MPMSplit", MPM_PHASE_POINT_ADAPT, MPMSplitApply, NULL));
   }
 
   PetscCall(MPMCreateGrid(mpm));
   PetscCall(MPMShapeSetUp(mpm->shape, &mpm->grid, mpm->ppc));
   mpm->kern = mpm->transfer_kernel == MPM_TRANSFER_SPECIALISED && mpm->shape->kernels ? &mpm->shape->kernels[mpm->grid.dim - 1] : NULL;
-  if (mpm->shape->needs_F || (mpm->exact && mpm->exact->ops.initial)) mpm->track_F = PETSC_TRUE; /* the points carry F */
+  if (mpm->shape->needs_F || mpm->split || (mpm->exact && mpm->exact->ops.initial)) mpm->track_F = PETSC_TRUE; /* the points carry F */
   if (!mpm->exact->ops.evaluate) PetscCall(MPMExactDestroy(&mpm->exact));
   PetscCall(MPMPointsSelectFields(mpm));
   PetscCall(MPMCreatePoints(mpm));
@@ -255,7 +265,7 @@ PetscErrorCode MPMDestroy(MPM *mpm)
   PetscCall(MPMViscosityDestroy(&m->viscosity));
   PetscCall(MPMExactDestroy(&m->exact));
   PetscCall(MPMModulesDestroy(m));
-  PetscCall(PetscFree(m->output_times));
+  PetscCall(PetscFree2(m->output_times, m->output_count));
   PetscCall(PetscFree(m));
   *mpm = NULL;
   PetscFunctionReturn(PETSC_SUCCESS);

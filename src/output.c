@@ -1,10 +1,14 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* Output through PETSc's HDF5 viewer, one file DIR/petmpm.h5 for the run:
-     /particle_fields/<field>  (outputs, points[, block size])  every field of MPMFieldTable marked output,
+     /particle_fields/<field>  (outputs, points[, block size])  every point field marked output,
      /particle_fields/xyz      (outputs, points, 3)             positions padded to 3D for XDMF,
+     /particle_count           (outputs)                        points in each output: rows hold that many, then zeros,
      /grid/nodes               (outputs, vertices..., 1 + d)    nodal mass and velocity projected from the points,
      /time                     (outputs)                        written with the XDMF file,
      /exact/<field>            (points)                         exact solution at the final points, if the scene has one.
+   The point datasets are written here with HDF5 (chunked, unlimited in outputs and points) rather than by VecView,
+   whose datasets have a fixed number of points: point splitting (src/modules/split.c) adds points during the run,
+   and a row holds the points of its output followed by zeros. Rank r writes its points at the offset of ranks < r.
    DIR/petmpm.xmf (XDMF 2) describes the points over time, so ParaView and VisIt open them; it is rewritten
    through a temporary file after each output so that it is never left half-written. */
 #include "petmpmimpl.h"
@@ -81,7 +85,7 @@ PetscErrorCode MPMOutputOpen(MPM mpm)
 static PetscErrorCode MPMWriteXDMF(MPM mpm)
 {
   PetscMPIInt rank;
-  PetscInt    N = mpm->npoints0, S = mpm->noutputs;
+  PetscInt    Nmax = 0, S = mpm->noutputs;
   char        file[PETSC_MAX_PATH_LEN + 16], tmp[PETSC_MAX_PATH_LEN + 32];
   FILE       *fp;
 
@@ -92,25 +96,27 @@ static PetscErrorCode MPMWriteXDMF(MPM mpm)
   PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", file));
   fp = fopen(tmp, "w");
   PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write %s: %s", tmp, strerror(errno));
+  for (PetscInt s = 0; s < S; s++) Nmax = PetscMax(Nmax, mpm->output_count[s]);
   fprintf(fp, "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"2.0\">\n <Domain>\n  <Grid Name=\"points\" GridType=\"Collection\" CollectionType=\"Temporal\">\n");
   for (PetscInt s = 0; s < S; s++) {
+    const PetscInt N = mpm->output_count[s];
     fprintf(fp, "   <Grid Name=\"points_%" PetscInt_FMT "\" GridType=\"Uniform\">\n    <Time Value=\"%.17g\"/>\n", s, (double)mpm->output_times[s]);
     fprintf(fp, "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"%" PetscInt_FMT "\" NodesPerElement=\"1\"/>\n", N);
     fprintf(fp, "    <Geometry GeometryType=\"XYZ\">\n     <DataItem ItemType=\"HyperSlab\" Dimensions=\"%" PetscInt_FMT " 3\" Type=\"HyperSlab\">\n", N);
     fprintf(fp, "      <DataItem Dimensions=\"3 3\" Format=\"XML\">%" PetscInt_FMT " 0 0 1 1 1 1 %" PetscInt_FMT " 3</DataItem>\n", s, N);
-    fprintf(fp, "      <DataItem Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">petmpm.h5:/particle_fields/xyz</DataItem>\n     </DataItem>\n    </Geometry>\n", S, N);
+    fprintf(fp, "      <DataItem Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">petmpm.h5:/particle_fields/xyz</DataItem>\n     </DataItem>\n    </Geometry>\n", S, Nmax);
     for (PetscInt f = 0; f < mpm->nfields; f++) {
       const PetscInt bs = MPMFieldBlockSize(mpm->field[f].bs, mpm->grid.dim);
       if (!mpm->field_on[f] || !mpm->field[f].output || bs > MPM_MAX_DIM) continue; /* tensors have no XDMF attribute here */
       if (bs == 1) {
         fprintf(fp, "    <Attribute Name=\"%s\" AttributeType=\"Scalar\" Center=\"Node\">\n     <DataItem ItemType=\"HyperSlab\" Dimensions=\"%" PetscInt_FMT "\" Type=\"HyperSlab\">\n", mpm->field[f].name, N);
         fprintf(fp, "      <DataItem Dimensions=\"3 2\" Format=\"XML\">%" PetscInt_FMT " 0 1 1 1 %" PetscInt_FMT "</DataItem>\n", s, N);
-        fprintf(fp, "      <DataItem Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">petmpm.h5:/particle_fields/%s</DataItem>\n", S, N, mpm->field[f].name);
+        fprintf(fp, "      <DataItem Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">petmpm.h5:/particle_fields/%s</DataItem>\n", S, Nmax, mpm->field[f].name);
       } else {
         fprintf(fp, "    <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"Node\">\n     <DataItem ItemType=\"HyperSlab\" Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT "\" Type=\"HyperSlab\">\n", mpm->field[f].name, bs == 3 ? "Vector" : "Matrix",
                 N, bs);
         fprintf(fp, "      <DataItem Dimensions=\"3 3\" Format=\"XML\">%" PetscInt_FMT " 0 0 1 1 1 1 %" PetscInt_FMT " %" PetscInt_FMT "</DataItem>\n", s, N, bs);
-        fprintf(fp, "      <DataItem Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT " %" PetscInt_FMT "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">petmpm.h5:/particle_fields/%s</DataItem>\n", S, N, bs, mpm->field[f].name);
+        fprintf(fp, "      <DataItem Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT " %" PetscInt_FMT "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">petmpm.h5:/particle_fields/%s</DataItem>\n", S, Nmax, bs, mpm->field[f].name);
       }
       fprintf(fp, "     </DataItem>\n    </Attribute>\n");
     }
@@ -122,30 +128,79 @@ static PetscErrorCode MPMWriteXDMF(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Positions padded to three components, for the XDMF geometry. */
-static PetscErrorCode MPMWriteXYZ(MPM mpm)
+/* Row k of the point dataset /particle_fields/<name>: this rank's n points x bs values at the offset of the ranks
+   before it, N points in all. The dataset is (outputs, points) for bs = 1, else (outputs, points, bs), chunked and
+   unlimited in its first two dimensions, zero-filled: a row with fewer points than an earlier one ends in zeros. */
+static PetscErrorCode MPMWritePointRow(MPM mpm, const char name[], PetscInt bs, PetscInt n, PetscInt offset, PetscInt N, const PetscReal *a)
 {
-  const PetscInt d = mpm->grid.dim;
-  PetscInt       n;
-  Vec            xyz;
-  PetscScalar   *a;
-  PetscReal     *x;
+  const int rank = bs == 1 ? 2 : 3;
+  hid_t     file, grp, dset, fspace, mspace, dxpl;
+  hsize_t   dims[3] = {(hsize_t)mpm->noutputs + 1, (hsize_t)N, (hsize_t)bs}, start[3] = {(hsize_t)mpm->noutputs, (hsize_t)offset, 0}, count[3] = {1, (hsize_t)n, (hsize_t)bs};
 
   PetscFunctionBegin;
-  PetscCall(DMSwarmGetLocalSize(mpm->swarm, &n));
-  PetscCall(VecCreateMPI(mpm->comm, 3 * n, PETSC_DETERMINE, &xyz));
-  PetscCall(VecSetBlockSize(xyz, 3));
-  PetscCall(PetscObjectSetName((PetscObject)xyz, "xyz"));
-  PetscCall(VecGetArray(xyz, &a));
-  PetscCall(DMSwarmGetField(mpm->swarm, MPMFieldTable[MPM_FIELD_POSITION].name, NULL, NULL, (void **)&x));
+  PetscCall(PetscViewerHDF5GetFileId(mpm->h5, &file));
+  grp = H5Lexists(file, "particle_fields", H5P_DEFAULT) > 0 ? H5Gopen2(file, "particle_fields", H5P_DEFAULT) : H5Gcreate2(file, "particle_fields", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  PetscCheck(grp >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot open /particle_fields in %s/petmpm.h5", mpm->outdir);
+  if (H5Lexists(grp, name, H5P_DEFAULT) > 0) {
+    hsize_t cur[3];
+    dset   = H5Dopen2(grp, name, H5P_DEFAULT);
+    fspace = H5Dget_space(dset);
+    PetscCheck(dset >= 0 && fspace >= 0 && H5Sget_simple_extent_dims(fspace, cur, NULL) == rank, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot open /particle_fields/%s", name);
+    H5Sclose(fspace);
+    dims[1] = PetscMax(dims[1], cur[1]);
+    PetscCheck(H5Dset_extent(dset, dims) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot extend /particle_fields/%s", name);
+  } else {
+    const hsize_t maxdims[3] = {H5S_UNLIMITED, H5S_UNLIMITED, (hsize_t)bs}, chunk[3] = {1, (hsize_t)PetscMax(1, PetscMin(N, 65536 / bs)), (hsize_t)bs};
+    const double  zero       = 0.0;
+    hid_t         dcpl       = H5Pcreate(H5P_DATASET_CREATE);
+    PetscCheck(H5Pset_chunk(dcpl, rank, chunk) >= 0 && H5Pset_fill_value(dcpl, H5T_NATIVE_DOUBLE, &zero) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: dataset properties of /particle_fields/%s", name);
+    fspace = H5Screate_simple(rank, dims, maxdims);
+    dset   = H5Dcreate2(grp, name, H5T_NATIVE_DOUBLE, fspace, H5P_DEFAULT, dcpl, H5P_DEFAULT);
+    H5Sclose(fspace);
+    H5Pclose(dcpl);
+    PetscCheck(dset >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot create /particle_fields/%s", name);
+  }
+  fspace = H5Dget_space(dset);
+  mspace = H5Screate_simple(rank, count, NULL);
+  if (n) {
+    PetscCheck(H5Sselect_hyperslab(fspace, H5S_SELECT_SET, start, NULL, count, NULL) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: selection in /particle_fields/%s", name);
+  } else {
+    H5Sselect_none(fspace);
+    H5Sselect_none(mspace);
+  }
+  dxpl = H5Pcreate(H5P_DATASET_XFER);
+  H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE);
+  PetscCheck(H5Dwrite(dset, H5T_NATIVE_DOUBLE, mspace, fspace, dxpl, a) >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot write /particle_fields/%s in %s/petmpm.h5", name, mpm->outdir);
+  H5Pclose(dxpl);
+  H5Sclose(mspace);
+  H5Sclose(fspace);
+  H5Dclose(dset);
+  H5Gclose(grp);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Every point field marked output, and the positions padded to three components for the XDMF geometry. */
+static PetscErrorCode MPMWritePoints(MPM mpm)
+{
+  const PetscInt d = mpm->grid.dim;
+  PetscInt       n, offset = 0, N;
+  PetscReal     *xyz;
+  MPMPoints      pts;
+
+  PetscFunctionBegin;
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  n = pts.n;
+  PetscCallMPI(MPI_Exscan(&n, &offset, 1, MPIU_INT, MPI_SUM, mpm->comm));
+  PetscCall(MPIU_Allreduce(&n, &N, 1, MPIU_INT, MPI_SUM, mpm->comm));
+  for (PetscInt f = 0; f < mpm->nfields; f++)
+    if (mpm->field_on[f] && mpm->field[f].output) PetscCall(MPMWritePointRow(mpm, mpm->field[f].name, MPMFieldBlockSize(mpm->field[f].bs, d), n, offset, N, pts.f[f]));
+  PetscCall(PetscMalloc1(3 * n + 1, &xyz));
   for (PetscInt p = 0; p < n; p++)
-    for (PetscInt k = 0; k < 3; k++) a[3 * p + k] = k < d ? x[p * d + k] : 0.0;
-  PetscCall(DMSwarmRestoreField(mpm->swarm, MPMFieldTable[MPM_FIELD_POSITION].name, NULL, NULL, (void **)&x));
-  PetscCall(VecRestoreArray(xyz, &a));
-  PetscCall(PetscViewerHDF5PushGroup(mpm->h5, "/particle_fields"));
-  PetscCall(VecView(xyz, mpm->h5));
-  PetscCall(PetscViewerHDF5PopGroup(mpm->h5));
-  PetscCall(VecDestroy(&xyz));
+    for (PetscInt k = 0; k < 3; k++) xyz[3 * p + k] = k < d ? pts.f[MPM_FIELD_POSITION][p * d + k] : 0.0;
+  PetscCall(MPMWritePointRow(mpm, "xyz", 3, n, offset, N, xyz));
+  PetscCall(PetscFree(xyz));
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  mpm->output_count[mpm->noutputs] = N;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -188,26 +243,20 @@ PetscErrorCode MPMOutputWrite(MPM mpm, PetscInt step, PetscReal t)
   if (!mpm->h5 || step == mpm->last_output_step) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscLogEventBegin(mpm->log.output, 0, 0, 0, 0));
   PetscCall(MPMDiagnoseVacuum(mpm, NULL, NULL));
-  PetscCall(DMSetOutputSequenceNumber(mpm->swarm, k, t));
   PetscCall(PetscViewerHDF5SetTimestep(mpm->h5, k));
-  for (PetscInt f = 0; f < mpm->nfields; f++) {
-    Vec v;
-    if (!mpm->field_on[f] || !mpm->field[f].output) continue;
-    PetscCall(DMSwarmCreateGlobalVectorFromField(mpm->swarm, mpm->field[f].name, &v));
-    PetscCall(PetscObjectSetName((PetscObject)v, mpm->field[f].name));
-    PetscCall(VecView(v, mpm->h5));
-    PetscCall(DMSwarmDestroyGlobalVectorFromField(mpm->swarm, mpm->field[f].name, &v));
-  }
-  PetscCall(MPMWriteXYZ(mpm));
-  PetscCall(MPMWriteGrid(mpm));
   if (mpm->noutputs == mpm->output_times_cap) {
     PetscReal *times;
+    PetscInt  *count;
     mpm->output_times_cap = PetscMax(16, 2 * mpm->output_times_cap);
-    PetscCall(PetscMalloc1(mpm->output_times_cap, &times));
+    PetscCall(PetscMalloc2(mpm->output_times_cap, &times, mpm->output_times_cap, &count));
     if (mpm->noutputs) PetscCall(PetscArraycpy(times, mpm->output_times, mpm->noutputs));
-    PetscCall(PetscFree(mpm->output_times));
+    if (mpm->noutputs) PetscCall(PetscArraycpy(count, mpm->output_count, mpm->noutputs));
+    PetscCall(PetscFree2(mpm->output_times, mpm->output_count));
     mpm->output_times = times;
+    mpm->output_count = count;
   }
+  PetscCall(MPMWritePoints(mpm));
+  PetscCall(MPMWriteGrid(mpm));
   mpm->output_times[mpm->noutputs++] = t;
   mpm->last_output_step              = step;
   PetscCall(PetscViewerFlush(mpm->h5));
@@ -274,6 +323,14 @@ PetscErrorCode MPMOutputClose(MPM mpm)
       PetscCall(VecRestoreArray(t, &a));
     }
     PetscCall(PetscViewerHDF5PushGroup(mpm->h5, "/"));
+    PetscCall(VecView(t, mpm->h5));
+    if (!rank) {
+      PetscScalar *a;
+      PetscCall(VecGetArray(t, &a));
+      for (PetscInt s = 0; s < mpm->noutputs; s++) a[s] = mpm->output_count[s];
+      PetscCall(VecRestoreArray(t, &a));
+    }
+    PetscCall(PetscObjectSetName((PetscObject)t, "particle_count"));
     PetscCall(VecView(t, mpm->h5));
     PetscCall(PetscViewerHDF5PopGroup(mpm->h5));
     PetscCall(VecDestroy(&t));

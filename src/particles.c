@@ -21,7 +21,8 @@ const MPMFieldInfo MPMFieldTable[MPM_NUM_FIELDS] = {
   {"plasticstrain", 1, "-", "equivalent plastic strain eps_p (plastic strength models)", PETSC_TRUE},
   {"refposition", 0, "cm", "reference (initial lattice) position X_p", PETSC_TRUE},
   {"material", 1, "-", "material index", PETSC_TRUE},
-  {"id", 1, "-", "persistent id: the point's seeding lattice index", PETSC_TRUE},
+  {"id", 1, "-", "persistent id: the point's seeding lattice index; children of a split take ids from the number of lattice sites up", PETSC_TRUE},
+  {"domainscale", 0, "-", "domain scale s_p: the point's domain is F_p diag(s_p h / (2 ppc)) [-1, 1]^d (halved along an axis at each split)", PETSC_FALSE},
 };
 
 /* Block size of a table entry: 0 means d, -1 means d*d. */
@@ -53,6 +54,7 @@ PetscErrorCode MPMPointsSelectFields(MPM mpm)
   mpm->field_on[MPM_FIELD_STRESS]        = mpm->has_stress;
   mpm->field_on[MPM_FIELD_PLASTICSTRAIN] = mpm->has_stress;
   mpm->field_on[MPM_FIELD_REFPOSITION]   = (PetscBool)(mpm->exact != NULL);
+  mpm->field_on[MPM_FIELD_DOMAINSCALE]   = mpm->split;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -307,6 +309,7 @@ PetscErrorCode MPMCreatePoints(MPM mpm)
         pts.f[MPM_FIELD_POSITION][n * d + k] = pc[i].x[k];
         if (pts.f[MPM_FIELD_REFPOSITION]) pts.f[MPM_FIELD_REFPOSITION][n * d + k] = pc[i].x[k];
         pts.f[MPM_FIELD_VELOCITY][n * d + k] = reg ? reg->v[k] : pc[i].mv[k];
+        if (pts.f[MPM_FIELD_DOMAINSCALE]) pts.f[MPM_FIELD_DOMAINSCALE][n * d + k] = 1.0;
       }
       if (!reg) MPMEOSTemperatureKernel(mpm->mat[pc[i].material].eos, rho[i], e[i], &T);
       for (PetscInt k = 0; k < d * d; k++) {
@@ -326,6 +329,9 @@ PetscErrorCode MPMCreatePoints(MPM mpm)
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   PetscCall(DMSwarmGetSize(mpm->swarm, &mpm->npoints0));
+  mpm->npoints = mpm->npoints0;
+  mpm->next_id = 1.0;
+  for (PetscInt k = 0; k < d; k++) mpm->next_id *= (PetscReal)g->cells[k] * mpm->ppc; /* the lattice sites */
   PetscCheck(mpm->npoints0 > 0, mpm->comm, PETSC_ERR_USER_INPUT, "No region of -mpm_regions overlaps the domain: the scene has no material points");
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -369,7 +375,7 @@ PetscErrorCode MPMMigrate(MPM mpm)
     if (counts[0]) {
       PetscCall(DMSwarmMigrate(mpm->swarm, PETSC_TRUE));
       PetscCall(DMSwarmGetSize(mpm->swarm, &ntotal));
-      PetscCheck(ntotal == mpm->npoints0, mpm->comm, PETSC_ERR_PLIB, "Step %" PetscInt_FMT ": migration changed the number of points from %" PetscInt_FMT " to %" PetscInt_FMT, mpm->steps, mpm->npoints0, ntotal);
+      PetscCheck(ntotal == mpm->npoints, mpm->comm, PETSC_ERR_PLIB, "Step %" PetscInt_FMT ": migration changed the number of points from %" PetscInt_FMT " to %" PetscInt_FMT, mpm->steps, mpm->npoints, ntotal);
     }
   }
   PetscCall(PetscLogEventEnd(mpm->log.migrate, 0, 0, 0, 0));

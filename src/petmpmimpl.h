@@ -32,6 +32,7 @@ typedef enum {
   MPM_FIELD_REFPOSITION,
   MPM_FIELD_MATERIAL,
   MPM_FIELD_ID,
+  MPM_FIELD_DOMAINSCALE,
   MPM_NUM_FIELDS
 } MPMField;
 
@@ -73,6 +74,7 @@ typedef enum {
   MPM_PHASE_GRID_VELOCITY,    /* wherever nodal velocities are formed (advance, MUSL remap): walls, later rigid bodies and contact */
   MPM_PHASE_POINT_KINEMATICS, /* after grid to points: the MUSL remap                                            */
   MPM_PHASE_POINT_STATE,      /* before the constitutive update: artificial viscosity                            */
+  MPM_PHASE_POINT_ADAPT,      /* after the constitutive update: point splitting                                  */
   MPM_NUM_PHASES
 } MPMPhase;
 
@@ -105,6 +107,8 @@ typedef struct {
   PetscInt  empty_cells_max;             /* most cells emptied inside the material at one step                         */
   PetscInt  empty_cells0;                /* such cells in the initial state (gaps between bodies), -1 before the first count */
   PetscInt  first_vacuum_step, first_empty_step;
+  PetscInt  points_split;  /* points this rank split (each split adds one point)                       */
+  PetscInt  split_refused; /* point-steps that called for a split the level limit refused (this rank) */
 } MPMDiagnostics;
 
 struct _p_MPM {
@@ -122,6 +126,10 @@ struct _p_MPM {
   PetscReal            isentrope_threshold;        /* relative expansion per step above which e follows the isentrope [-] */
   PetscReal            vacuum_density;             /* points below this fraction of their material's initial density count as vacuum [-] */
   MPMDtLimit           dt_limit;                   /* what set the current step's size */
+  PetscBool            split;                      /* -mpm_split: the point splitting module is in the step  */
+  PetscReal            split_length;               /* a domain longer than this along an axis splits [cells] */
+  PetscReal            split_min_scale;            /* smallest domain scale a split may leave: 2^-max_level [-] */
+  PetscReal            next_id;                    /* the next unused point id (splitting)                  */
   PetscInt             sort_interval;              /* steps between sorts of the points by cell, 0: never  */
   PetscInt             output_interval;            /* steps between outputs, 0: start and end only      */
   PetscReal            tout[MPM_MAX_OUTPUT_TIMES]; /* -mpm_output_times: steps land on them [s] */
@@ -169,13 +177,16 @@ struct _p_MPM {
   PetscInt    last_output_step;
   /* run bookkeeping */
   PetscInt       npoints0; /* global number of points at start                    */
+  PetscInt       npoints;  /* global number of points now (splitting adds points) */
   PetscReal      mass0, energy0, momentum0[MPM_MAX_DIM];
   PetscReal      wall_loop, wall_setup, wall_output;
   PetscInt       steps;
+  PetscReal      point_steps; /* sum over the steps of the global number of points (the cost measure) */
   PetscReal      time;
   PetscReal      dt; /* size of the step being taken [s] */
   PetscInt       noutputs;
   PetscReal     *output_times;
+  PetscInt      *output_count; /* global number of points in each output */
   PetscInt       output_times_cap;
   PetscInt       nchecks;
   MPMCheck       checks[MPM_MAX_CHECKS];
@@ -185,6 +196,16 @@ struct _p_MPM {
   PetscBool      failed;                  /* the run cannot go on (MPMSetFailure)                 */
   char           failure[1024];           /* why                                                  */
 };
+
+/* The deformation of point p's domain that the shape functions read: F_p diag(s_p), with s_p the domain scale that
+   point splitting halves (s NULL: 1), or NULL where the points carry no F. */
+static inline const PetscReal *MPMPointDomain(PetscInt d, const PetscReal *F, const PetscReal *s, PetscInt p, PetscReal Fs[])
+{
+  if (!F || !s) return F ? &F[p * d * d] : NULL;
+  for (PetscInt a = 0; a < d; a++)
+    for (PetscInt b = 0; b < d; b++) Fs[a * d + b] = F[p * d * d + a * d + b] * s[p * d + b];
+  return Fs;
+}
 
 /* Loops c over the owned nodes (their index in the global nodal vector) of the box the step's node loops sweep:
    outside it every node holds zeros (MPMGridZeroForScatter). */
@@ -218,6 +239,7 @@ PETSC_INTERN PetscErrorCode MPMModulesDestroy(MPM);
 PETSC_INTERN PetscErrorCode MPMWallsApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMGravityApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMRemapApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
+PETSC_INTERN PetscErrorCode MPMSplitApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMViscosityModuleApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMScatter(MPM, PetscBool, PetscReal);
 PETSC_INTERN PetscErrorCode MPMGather(MPM, PetscReal, PetscReal, PetscBool, PetscBool);

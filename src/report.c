@@ -240,7 +240,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   const MPMGrid *g = &mpm->grid;
   PetscReal      err[MPM_NERR][3], rhomin = 0, dmass, denergy, mass, energy, mom[MPM_MAX_DIM], shock_cells = -1.0, pss;
   PetscInt       nonfinite = 0, npoints, nvac, nempty;
-  PetscReal      eisen, nisen;
+  PetscReal      eisen, nisen, nsplit, nrefuse;
   PetscMPIInt    size, rank;
 
   PetscFunctionBegin;
@@ -252,10 +252,12 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   PetscCall(MPMComputeChecks(mpm));
   PetscCall(MPMDiagnoseVacuum(mpm, &nvac, &nempty));
   {
-    PetscReal s[2] = {mpm->diag.isentrope_energy, (PetscReal)mpm->diag.isentrope_points};
-    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 2, MPIU_REAL, MPIU_SUM, mpm->comm));
-    eisen = s[0];
-    nisen = s[1];
+    PetscReal s[4] = {mpm->diag.isentrope_energy, (PetscReal)mpm->diag.isentrope_points, (PetscReal)mpm->diag.points_split, (PetscReal)mpm->diag.split_refused};
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 4, MPIU_REAL, MPIU_SUM, mpm->comm));
+    eisen   = s[0];
+    nisen   = s[1];
+    nsplit  = s[2];
+    nrefuse = s[3];
   }
   for (PetscInt c = 0; c < mpm->nchecks; c++) {
     PetscBool is;
@@ -264,7 +266,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   }
   dmass   = (mass - mpm->mass0) / mpm->mass0; /* signed relative changes, printed and reported alike */
   denergy = mpm->energy0 != 0 ? (energy - mpm->energy0) / PetscAbsReal(mpm->energy0) : energy;
-  pss     = mpm->wall_loop > 0 ? (PetscReal)npoints * mpm->steps / mpm->wall_loop : 0.0;
+  pss     = mpm->wall_loop > 0 ? mpm->point_steps / mpm->wall_loop : 0.0;
 
   PetscCall(
     PetscPrintf(mpm->comm, "petmpm %s: %" PetscInt_FMT " points, %" PetscInt_FMT " steps to t = %g s in %.3f s (%.3g point-steps/s on %d rank(s))\n", mpm->scene, npoints, mpm->steps, (double)mpm->time, (double)mpm->wall_loop, (double)pss, size));
@@ -272,6 +274,8 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   PetscCall(PetscPrintf(mpm->comm, "  time step set by: sound %" PetscInt_FMT ", acceleration %" PetscInt_FMT ", volume %" PetscInt_FMT ", landing %" PetscInt_FMT " steps; isentropic expansion %.3e of the energy (%.0f point-steps)\n",
                         mpm->diag.dt_limit[MPM_DT_SOUND], mpm->diag.dt_limit[MPM_DT_ACCELERATION], mpm->diag.dt_limit[MPM_DT_VOLUME], mpm->diag.dt_limit[MPM_DT_LANDING], (double)(mpm->energy0 != 0 ? eisen / PetscAbsReal(mpm->energy0) : eisen),
                         (double)nisen));
+  if (mpm->split)
+    PetscCall(PetscPrintf(mpm->comm, "  point splitting: %.0f points split (%" PetscInt_FMT " points at start); %.0f splits refused at -mpm_split_max_level\n", (double)nsplit, mpm->npoints0, (double)nrefuse));
   if (mpm->diag.vacuum_points_max || mpm->diag.empty_cells_max)
     PetscCall(PetscPrintf(mpm->comm,
                           "  warning: resolution lost: up to %" PetscInt_FMT " points below the vacuum density (first at step %" PetscInt_FMT "), up to %" PetscInt_FMT " cells emptied inside the material (first at step %" PetscInt_FMT ")\n",
@@ -294,7 +298,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write the report %s (-mpm_report): %s", tmp, strerror(errno));
     fprintf(fp, "{\n  \"scene\": \"%s\",\n  \"dim\": %" PetscInt_FMT ",\n  \"cells\": [", mpm->scene, g->dim);
     for (PetscInt k = 0; k < g->dim; k++) fprintf(fp, "%s%" PetscInt_FMT, k ? ", " : "", g->cells[k]);
-    fprintf(fp, "],\n  \"points_per_cell\": %" PetscInt_FMT ",\n  \"particles\": %" PetscInt_FMT ",\n  \"ranks\": %d,\n", mpm->ppc, npoints, size);
+    fprintf(fp, "],\n  \"points_per_cell\": %" PetscInt_FMT ",\n  \"particles\": %" PetscInt_FMT ",\n  \"particles_initial\": %" PetscInt_FMT ",\n  \"ranks\": %d,\n", mpm->ppc, npoints, mpm->npoints0, size);
     fprintf(fp, "  \"shape\": \"%s\",\n  \"update\": \"%s\",\n  \"viscosity\": \"%s\",\n  \"scheme\": \"%s\",\n  \"stress_integration\": \"%s\",\n", shapetype, MPMUpdateTypes[mpm->update], visctype, MPMSchemes[mpm->scheme],
             MPMStressIntegrations[mpm->stress_integration]);
     fprintf(fp, "  \"energy_update\": \"%s\",\n  \"ke_fix\": %s,\n", MPMEnergyUpdates[mpm->energy_update], mpm->ke_fix ? "true" : "false");
@@ -314,8 +318,8 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     for (PetscInt l = 0; l < MPM_NUM_DT_LIMITS; l++) fprintf(fp, "%s\"%s\": %" PetscInt_FMT, l ? ", " : "", MPMDtLimitNames[l], mpm->diag.dt_limit[l]);
     fprintf(fp,
             "}, \"vacuum_points\": %" PetscInt_FMT ", \"vacuum_points_max\": %" PetscInt_FMT ", \"first_vacuum_step\": %" PetscInt_FMT ", \"empty_cells\": %" PetscInt_FMT ", \"empty_cells_max\": %" PetscInt_FMT
-            ", \"first_empty_step\": %" PetscInt_FMT "}",
-            nvac, mpm->diag.vacuum_points_max, mpm->diag.first_vacuum_step, nempty, mpm->diag.empty_cells_max, mpm->diag.first_empty_step);
+            ", \"first_empty_step\": %" PetscInt_FMT ", \"points_split\": %.0f, \"split_refused\": %.0f}",
+            nvac, mpm->diag.vacuum_points_max, mpm->diag.first_vacuum_step, nempty, mpm->diag.empty_cells_max, mpm->diag.first_empty_step, (double)nsplit, (double)nrefuse);
     fprintf(fp, ",\n  \"min_density\": %.10g,\n  \"nonfinite\": %" PetscInt_FMT ",\n  \"checks\": [", (double)rhomin, nonfinite);
     for (PetscInt c = 0; c < mpm->nchecks; c++)
       fprintf(fp, "%s\n    {\"name\": \"%s\", \"value\": %.10g, \"reference\": %.10g, \"rel_error\": %.6e}", c ? "," : "", mpm->checks[c].name, (double)mpm->checks[c].value, (double)mpm->checks[c].reference,

@@ -126,12 +126,14 @@ PetscErrorCode MPMStep(MPM mpm, PetscReal t, PetscReal dt)
 
   PetscFunctionBegin;
   mpm->dt = dt;
+  mpm->point_steps += mpm->npoints;
   PetscCall(MPMGridAdvance(mpm, &ctx));                                                          /* (mv)_I += dt_kick f_I; walls      */
   PetscCall(MPMGridToParticles(mpm, &ctx));                                                      /* v_p; USL: x_p, L_p                */
   PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_KINEMATICS, &ctx));                             /* MUSL: v_I from v_p; x_p, L_p */
   PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_STATE, &ctx));                                  /* q_p: artificial viscosity          */
   PetscCall(MPMConstitutive(mpm, dt));                                                           /* rho_p, e_p, p_p, c_p, T_p, s_p    */
   if (mpm->failed) PetscFunctionReturn(PETSC_SUCCESS);                                           /* the time loop stops               */
+  PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_ADAPT, &ctx));                                  /* point splitting                   */
   PetscCall(MPMMigrate(mpm));                                                                    /* points follow their cells         */
   if (mpm->sort_interval && mpm->steps % mpm->sort_interval == 0) PetscCall(MPMSortPoints(mpm)); /* and stay in cell order */
   PetscFunctionReturn(PETSC_SUCCESS);

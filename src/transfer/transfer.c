@@ -52,6 +52,7 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
     const PetscReal *x = pts.f[MPM_FIELD_POSITION], *v = pts.f[MPM_FIELD_VELOCITY], *m = pts.f[MPM_FIELD_MASS];
     const PetscReal *V = pts.f[MPM_FIELD_VOLUME], *pr = pts.f[MPM_FIELD_PRESSURE], *q = pts.f[MPM_FIELD_VISCOSITY];
     const PetscReal *F = mpm->track_F ? pts.f[MPM_FIELD_DEFGRAD] : NULL, *S = pts.f[MPM_FIELD_STRESS], *X = pts.f[MPM_FIELD_REFPOSITION];
+    const PetscReal *ds = mpm->shape->needs_F ? pts.f[MPM_FIELD_DOMAINSCALE] : NULL; /* split points' domains */
 
     if (mpm->kern && !body) { /* the specialised kernel, then the cell sums of the cell rule */
       const MPMTransferArgs A = {.n = pts.n, .x = (PetscReal *)x, .v = (PetscReal *)v, .m = m, .V = V, .pr = pr, .q = q, .S = S};
@@ -61,9 +62,9 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
     } else
       for (PetscInt p = 0; p < pts.n; p++) {
         const PetscReal P              = pr[p] + q[p];
-        PetscReal       b[MPM_MAX_DIM] = {0, 0, 0};
+        PetscReal       b[MPM_MAX_DIM] = {0, 0, 0}, Fs[MPM_MAX_DIM * MPM_MAX_DIM];
         if (body) mpm->exact->ops.bodyforce(mpm->exact->data, tn, &X[p * d], F ? &F[p * d * d] : NULL, b);
-        MPMShapeEvaluate(mpm->shape, g, &x[p * d], F ? &F[p * d * d] : NULL, &st);
+        MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, F, ds, p, Fs), &st);
         for (PetscInt a = 0; a < st.n; a++) {
           MPMNode        *nd = &node[st.node[a]];
           const PetscReal wm = st.w[a] * m[p];
@@ -148,6 +149,7 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
     const PetscBool  cellwork = (PetscBool)(work && mpm->stress_integration == MPM_STRESS_CELL);
     const PetscReal  wfac     = 0.5 * kick;
     const PetscReal *F        = mpm->track_F ? pts.f[MPM_FIELD_DEFGRAD] : NULL;
+    const PetscReal *ds       = mpm->shape->needs_F ? pts.f[MPM_FIELD_DOMAINSCALE] : NULL; /* split points' domains */
 
     if (cellwork) { /* cellS[c] <- (V_c / sum_p V_p) div vbar at the cell rule's point: the cell's work per unit P_p V_p */
       for (PetscInt c = 0; c < g->ncells; c++) {
@@ -166,8 +168,8 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
       mpm->kern->g2p[(velocity ? MPM_G2P_VELOCITY : 0) | (kinematics ? MPM_G2P_KINEMATICS : 0) | (work ? MPM_G2P_WORK : 0)](g, mpm->shape->data, &A, node);
     } else
       for (PetscInt p = 0; p < pts.n; p++) {
-        PetscReal vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Lb[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, dv2 = 0.0, R = 0.0;
-        MPMShapeEvaluate(mpm->shape, g, &x[p * d], F ? &F[p * d * d] : NULL, &st);
+        PetscReal vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Lb[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, dv2 = 0.0, R = 0.0, Fs[MPM_MAX_DIM * MPM_MAX_DIM];
+        MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, F, ds, p, Fs), &st);
         for (PetscInt a = 0; a < st.n; a++) {
           const MPMNode *nd = &node[st.node[a]];
           for (PetscInt i = 0; i < d; i++) {

@@ -1,0 +1,131 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* Point splitting module (point phase MPM_PHASE_POINT_ADAPT, after the constitutive update; -mpm_split). A point's
+   domain is the parallelepiped x_p + F_p diag(s_p l0) [-1, 1]^d, with l0 = h / (2 ppc) the lattice half-spacing and
+   s_p its domain scale (1 when seeded, halved along an axis at each split). When the domain's length along a
+   reference axis k, 2 |F_p e_k| s_k l0_k measured in cells, exceeds -mpm_split_length, the point splits along that
+   axis into two children at x_p -+ F_p e_k s_k l0_k / 2 (the centres of the two halves of its domain) with half its
+   mass and volume and all of its other state (velocity, specific energy, stress, F, plastic strain): mass, momentum,
+   kinetic and internal energy, volume and the first moment sum_p m_p x_p are conserved exactly, and the children's
+   domains tile the parent's. So a stretching region keeps points at most -mpm_split_length cells apart (a near-vacuum
+   rarefaction keeps at least one point per cell), and a CPDI domain is split before its corners leave the reach of
+   the ghost layer. One child keeps the parent's id; the other takes the next unused id, given in the order of the
+   parents' (id, material) over all ranks, so that the ids do not depend on the number of ranks. Cf.
+   Ma, Lu & Komanduri, CMES 2006 (splitting of GIMP/CPDI domains), and Homel, Brannon & Guilkey 2016 (CPDI
+   splitting). The registered point fields are copied: a module's field must be intensive. */
+#include "../petmpmimpl.h"
+
+/* The axis along which point p should split (-1: none) and whether a split was refused at the level limit. */
+static inline PetscInt MPMSplitAxis(const MPM mpm, const PetscReal *F, const PetscReal *s, PetscBool *refused)
+{
+  const MPMGrid *g = &mpm->grid;
+  const PetscInt d = g->dim;
+  PetscReal      best = mpm->split_length;
+  PetscInt       axis = -1;
+
+  for (PetscInt k = 0; k < d; k++) {
+    PetscReal len2 = 0.0, len;
+    for (PetscInt i = 0; i < d; i++) len2 += PetscSqr(F[i * d + k] / g->h[i]);
+    len = 2.0 * PetscSqrtReal(len2) * s[k] * 0.5 * g->h[k] / mpm->ppc; /* cells */
+    if (len > best) {
+      best = len;
+      axis = k;
+    }
+  }
+  if (axis >= 0 && s[axis] < mpm->split_min_scale) {
+    *refused = PETSC_TRUE;
+    axis     = -1;
+  }
+  return axis;
+}
+
+/* Orders splitting parents by id, then material (the parts of a cut lattice site share its id). */
+static int MPMSplitCompare(const void *a, const void *b)
+{
+  const PetscReal *x = (const PetscReal *)a, *y = (const PetscReal *)b;
+  return x[0] < y[0] ? -1 : x[0] > y[0] ? 1 : x[1] < y[1] ? -1 : x[1] > y[1] ? 1 : 0;
+}
+
+PetscErrorCode MPMSplitApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
+{
+  const MPMGrid *g = &mpm->grid;
+  const PetscInt d = g->dim;
+  PetscInt      *axis, n, nsplit = 0, nrefused = 0, counts[2];
+  MPMPoints      pts;
+
+  PetscFunctionBegin;
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  n = pts.n;
+  PetscCall(PetscMalloc1(n + 1, &axis));
+  for (PetscInt p = 0; p < n; p++) {
+    PetscBool refused = PETSC_FALSE;
+    axis[p]           = MPMSplitAxis(mpm, &pts.f[MPM_FIELD_DEFGRAD][p * d * d], &pts.f[MPM_FIELD_DOMAINSCALE][p * d], &refused);
+    nsplit += axis[p] >= 0;
+    nrefused += refused;
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  counts[0] = nsplit;
+  counts[1] = nrefused;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, counts, 2, MPIU_INT, MPI_SUM, mpm->comm));
+  mpm->diag.split_refused += nrefused;
+  if (!counts[0]) {
+    PetscCall(PetscFree(axis));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(DMSwarmAddNPoints(mpm->swarm, nsplit));
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  { /* every rank gathers the (id, material) of every splitting parent and sorts them: child i of the sorted list takes next_id + i */
+    PetscMPIInt  size, *rcount, *displ, nloc = (PetscMPIInt)(2 * nsplit);
+    PetscReal   *mine, *all;
+    PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
+    PetscCall(PetscMalloc4(2 * nsplit + 1, &mine, 2 * counts[0], &all, size, &rcount, size, &displ));
+    for (PetscInt p = 0, i = 0; p < n; p++)
+      if (axis[p] >= 0) {
+        mine[i++] = pts.f[MPM_FIELD_ID][p];
+        mine[i++] = pts.f[MPM_FIELD_MATERIAL][p];
+      }
+    PetscCallMPI(MPI_Allgather(&nloc, 1, MPI_INT, rcount, 1, MPI_INT, mpm->comm));
+    displ[0] = 0;
+    for (PetscMPIInt r = 1; r < size; r++) displ[r] = displ[r - 1] + rcount[r - 1];
+    PetscCallMPI(MPI_Allgatherv(mine, nloc, MPIU_REAL, all, rcount, displ, MPIU_REAL, mpm->comm));
+    qsort(all, counts[0], 2 * sizeof(PetscReal), MPMSplitCompare);
+    for (PetscInt p = 0; p < n; p++) /* the parent's place in the sorted list, kept in axis[] as axis + d * place */
+      if (axis[p] >= 0) {
+        const PetscReal key[2] = {pts.f[MPM_FIELD_ID][p], pts.f[MPM_FIELD_MATERIAL][p]};
+        const PetscReal *hit   = (const PetscReal *)bsearch(key, all, counts[0], 2 * sizeof(PetscReal), MPMSplitCompare);
+        PetscCheck(hit, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Point %.0f: not among the splitting parents", (double)key[0]);
+        axis[p] += d * (PetscInt)((hit - all) / 2);
+      }
+    PetscCall(PetscFree4(mine, all, rcount, displ));
+  }
+  for (PetscInt p = 0, c = n; p < n; p++) {
+    const PetscInt   k = axis[p] % d, place = axis[p] / d;
+    const PetscReal *F = &pts.f[MPM_FIELD_DEFGRAD][p * d * d];
+    PetscReal        sk, a;
+    if (axis[p] < 0) continue;
+    sk = pts.f[MPM_FIELD_DOMAINSCALE][p * d + k];
+    a  = 0.5 * sk * 0.5 * g->h[k] / mpm->ppc; /* half of the half-width */
+    for (PetscInt f = 0; f < mpm->nfields; f++) {
+      const PetscInt bs = MPMFieldBlockSize(mpm->field[f].bs, d);
+      if (pts.f[f]) PetscCall(PetscArraycpy(&pts.f[f][c * bs], &pts.f[f][p * bs], bs));
+    }
+    for (PetscInt i = 0; i < d; i++) {
+      pts.f[MPM_FIELD_POSITION][p * d + i] -= F[i * d + k] * a;
+      pts.f[MPM_FIELD_POSITION][c * d + i] += F[i * d + k] * a;
+    }
+    if (pts.f[MPM_FIELD_REFPOSITION]) {
+      pts.f[MPM_FIELD_REFPOSITION][p * d + k] -= a;
+      pts.f[MPM_FIELD_REFPOSITION][c * d + k] += a;
+    }
+    pts.f[MPM_FIELD_MASS][p] = pts.f[MPM_FIELD_MASS][c] = 0.5 * pts.f[MPM_FIELD_MASS][p];
+    pts.f[MPM_FIELD_VOLUME][p] = pts.f[MPM_FIELD_VOLUME][c] = 0.5 * pts.f[MPM_FIELD_VOLUME][p];
+    pts.f[MPM_FIELD_DOMAINSCALE][p * d + k] = pts.f[MPM_FIELD_DOMAINSCALE][c * d + k] = 0.5 * sk;
+    pts.f[MPM_FIELD_ID][c] = mpm->next_id + place;
+    c++;
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(PetscFree(axis));
+  mpm->next_id += counts[0];
+  mpm->npoints += counts[0];
+  mpm->diag.points_split += nsplit;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
