@@ -21,6 +21,7 @@ An expectation file is {"doc": "...", "cases": [CASE, ...]}; a CASE is
   fit_rate) must satisfy op (rate may be a list); expect then applies to every run of the sweep, expect_last and
   compare to the finest;
 - compare: a report key against factor times the same key of an earlier case (op <, <=, >, >=).
+A relative "-options_file" in args (a method file, inputs/methods/cpdi1.opts) is taken from the source tree.
 """
 import json
 import os
@@ -42,7 +43,9 @@ def check(ok, what):
 
 
 def run_case(case, out, extra=()):
-    args = ["-options_file", lib.scene_path(case["scene"]), *case.get("args", []), *extra]
+    extra_args = case.get("args", [])  # a method file (-options_file inputs/methods/X.opts) is relative to the source tree
+    extra_args = [os.path.join(SRC, a) if i and extra_args[i - 1] == "-options_file" and not os.path.isabs(a) else a for i, a in enumerate(extra_args)]
+    args = ["-options_file", lib.scene_path(case["scene"]), *extra_args, *extra]
     rep, p = lib.run(EXE, args, case.get("ranks", 1), out)
     if rep is None:
         print(p.stdout[-3000:], p.stderr[-3000:])
