@@ -4,7 +4,9 @@
    between two occupied cells along a grid line: a hole one cell wide or more that the points left open, as in a
    near-vacuum rarefaction that Lagrangian points cannot fill, or a spall). Run at every output and at the end;
    the first time either appears the run says so, and the report gives the largest counts and when they first
-   appeared. Empty cells the initial state has (gaps between bodies) are the baseline, not holes. Holes are found among each rank's owned cells (a hole across a rank boundary is not counted). */
+   appeared. Empty cells the initial state has (gaps between bodies) are the baseline, not holes. Where the shape
+   functions spread a point over its deformed domain (CPDI), a cell counts as occupied when a point's domain, the
+   box of half-widths sum_k |F_ik s_k| h_k / (2 ppc), overlaps it: a domain that covers a cell leaves no hole there. Holes are found among each rank's owned cells (a hole across a rank boundary is not counted). */
 #include "petmpmimpl.h"
 
 PetscErrorCode MPMDiagnoseVacuum(MPM mpm, PetscInt *nvacuum, PetscInt *nempty)
@@ -21,8 +23,26 @@ PetscErrorCode MPMDiagnoseVacuum(MPM mpm, PetscInt *nvacuum, PetscInt *nempty)
   PetscCall(PetscCalloc1(g->ncells, &count));
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   for (PetscInt p = 0; p < pts.n; p++) {
-    const PetscInt c = MPMLocalCell(g, &pts.f[MPM_FIELD_POSITION][p * d]);
-    if (c >= 0) count[c]++;
+    const PetscReal *x = &pts.f[MPM_FIELD_POSITION][p * d];
+    if (mpm->shape->needs_F) { /* the cells the point's domain overlaps */
+      const PetscReal *F = &pts.f[MPM_FIELD_DEFGRAD][p * d * d], *s = pts.f[MPM_FIELD_DOMAINSCALE];
+      PetscInt         a[MPM_MAX_DIM] = {0, 0, 0}, b[MPM_MAX_DIM] = {0, 0, 0};
+      PetscBool        in             = PETSC_TRUE;
+      for (PetscInt i = 0; i < d; i++) {
+        PetscReal r = 0.0;
+        for (PetscInt k = 0; k < d; k++) r += PetscAbsReal(F[i * d + k] * (s ? s[p * d + k] : 1.0)) * 0.5 * g->h[k] / mpm->ppc;
+        r *= 1.0 - 1e-9; /* a domain that ends on a face does not reach into the next cell */
+        a[i] = PetscMax(0, (PetscInt)PetscFloorReal((x[i] - r - g->lo[i]) / g->h[i]) - g->cs[i]);
+        b[i] = PetscMin(g->cm[i] - 1, (PetscInt)PetscFloorReal((x[i] + r - g->lo[i]) / g->h[i]) - g->cs[i]);
+        in   = (PetscBool)(in && a[i] <= b[i]);
+      }
+      for (PetscInt k2 = a[2]; in && k2 <= b[2]; k2++)
+        for (PetscInt k1 = a[1]; k1 <= b[1]; k1++)
+          for (PetscInt k0 = a[0]; k0 <= b[0]; k0++) count[(k2 * g->cm[1] + k1) * g->cm[0] + k0]++;
+    } else {
+      const PetscInt c = MPMLocalCell(g, x);
+      if (c >= 0) count[c]++;
+    }
     if (!(pts.f[MPM_FIELD_DENSITY][p] >= mpm->vacuum_density * rhomin[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]])) {
       if (!n[0]) xmin = p;
       n[0]++;

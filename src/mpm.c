@@ -99,9 +99,9 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscCall(MPMOptionsCheckRange("-mpm_vacuum_density", mpm->vacuum_density, 0.0, 1.0, PETSC_TRUE, PETSC_TRUE));
   PetscCall(PetscOptionsBool("-mpm_split", "Split a point whose domain stretches beyond -mpm_split_length cells along an axis into two (mass, momentum, energy, volume and first moment conserved)", "", mpm->split, &mpm->split, NULL));
   if (mpm->split) {
-    PetscInt level = 10;
-    mpm->split_length = 1.0;
-    PetscCall(PetscOptionsReal("-mpm_split_length", "Length of a point's domain along an axis above which it splits [cells], >= 1 / ppc (the lattice spacing)", "", mpm->split_length, &mpm->split_length, NULL));
+    PetscInt level = 20;
+    mpm->split_length = PetscMax(1.0, 1.5 / mpm->ppc);
+    PetscCall(PetscOptionsReal("-mpm_split_length", "Length of a point's domain along an axis above which it splits [cells], default max(1, 1.5 / ppc), >= 1 / ppc (the lattice spacing)", "", mpm->split_length, &mpm->split_length, NULL));
     PetscCall(MPMOptionsCheckRange("-mpm_split_length", mpm->split_length, 1.0 / mpm->ppc, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
     PetscCall(PetscOptionsRangeInt("-mpm_split_max_level", "Most times a point's domain may be halved along one axis [-], 1 to 40", "", level, &level, NULL, 1, 40));
     mpm->split_min_scale = PetscPowReal(0.5, (PetscReal)level - 1) * (1.0 - 1e-12);
