@@ -94,7 +94,7 @@ def main():
     ranks = [int(r) for r in a.ranks.split(",")]
     blk = "25,25,105" if a.quick else "50,50,210"  # the 0.4 x 0.4 x 2.4 bar in a 0.6 x 0.6 x 2.6 box: 8 points per cell
     cases = [
-        ("sod", "weak Sod 1D, linear, 4 ppc, 1024 cells", "sod_weak.opts", [], "mpm1d", ["sod", "5"]),
+        ("sod", "weak Sod 1D, linear, 4 ppc, 1024 cells", "sod_weak.opts", ["-options_file", os.path.join(SRC, "inputs", "methods", "cth.opts")], "mpm1d", ["sod", "5"]),
         ("block8", "3D block, linear, 8 ppc, USL, MG + JC", "bar_impact_3d.opts",
          ["-mpm_cells", blk, "-mpm_ppc", "2", "-mpm_scheme", "usl", "-ts_max_steps", "5" if a.quick else "10"], "mpm3d", ["cell", "10"]),
         ("block8q", "3D block, bspline2, 8 ppc, USL, MG + JC", "bar_impact_3d.opts",

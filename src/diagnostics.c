@@ -27,7 +27,7 @@ PetscErrorCode MPMDiagnoseVacuum(MPM mpm, PetscInt *nvacuum, PetscInt *nempty)
     if (mpm->shape->needs_F) { /* the cells the point's domain overlaps */
       const PetscReal *F = &pts.f[MPM_FIELD_DEFGRAD][p * d * d], *s = pts.f[MPM_FIELD_DOMAINSCALE];
       PetscInt         a[MPM_MAX_DIM] = {0, 0, 0}, b[MPM_MAX_DIM] = {0, 0, 0};
-      PetscBool        in             = PETSC_TRUE;
+      PetscBool        in = PETSC_TRUE;
       for (PetscInt i = 0; i < d; i++) {
         PetscReal r = 0.0;
         for (PetscInt k = 0; k < d; k++) r += PetscAbsReal(F[i * d + k] * (s ? s[p * d + k] : 1.0)) * 0.5 * g->h[k] / mpm->ppc;

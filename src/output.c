@@ -151,8 +151,8 @@ static PetscErrorCode MPMWritePointRow(MPM mpm, const char name[], PetscInt bs, 
     PetscCheck(H5Dset_extent(dset, dims) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot extend /particle_fields/%s", name);
   } else {
     const hsize_t maxdims[3] = {H5S_UNLIMITED, H5S_UNLIMITED, (hsize_t)bs}, chunk[3] = {1, (hsize_t)PetscMax(1, PetscMin(N, 65536 / bs)), (hsize_t)bs};
-    const double  zero       = 0.0;
-    hid_t         dcpl       = H5Pcreate(H5P_DATASET_CREATE);
+    const double  zero = 0.0;
+    hid_t         dcpl = H5Pcreate(H5P_DATASET_CREATE);
     PetscCheck(H5Pset_chunk(dcpl, rank, chunk) >= 0 && H5Pset_fill_value(dcpl, H5T_NATIVE_DOUBLE, &zero) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: dataset properties of /particle_fields/%s", name);
     fspace = H5Screate_simple(rank, dims, maxdims);
     dset   = H5Dcreate2(grp, name, H5T_NATIVE_DOUBLE, fspace, H5P_DEFAULT, dcpl, H5P_DEFAULT);

@@ -274,8 +274,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   PetscCall(PetscPrintf(mpm->comm, "  time step set by: sound %" PetscInt_FMT ", acceleration %" PetscInt_FMT ", volume %" PetscInt_FMT ", landing %" PetscInt_FMT " steps; isentropic expansion %.3e of the energy (%.0f point-steps)\n",
                         mpm->diag.dt_limit[MPM_DT_SOUND], mpm->diag.dt_limit[MPM_DT_ACCELERATION], mpm->diag.dt_limit[MPM_DT_VOLUME], mpm->diag.dt_limit[MPM_DT_LANDING], (double)(mpm->energy0 != 0 ? eisen / PetscAbsReal(mpm->energy0) : eisen),
                         (double)nisen));
-  if (mpm->split)
-    PetscCall(PetscPrintf(mpm->comm, "  point splitting: %.0f points split (%" PetscInt_FMT " points at start); %.0f splits refused at -mpm_split_max_level\n", (double)nsplit, mpm->npoints0, (double)nrefuse));
+  if (mpm->split) PetscCall(PetscPrintf(mpm->comm, "  point splitting: %.0f points split (%" PetscInt_FMT " points at start); %.0f splits refused at -mpm_split_max_level\n", (double)nsplit, mpm->npoints0, (double)nrefuse));
   if (mpm->diag.vacuum_points_max || mpm->diag.empty_cells_max)
     PetscCall(PetscPrintf(mpm->comm,
                           "  warning: resolution lost: up to %" PetscInt_FMT " points below the vacuum density (first at step %" PetscInt_FMT "), up to %" PetscInt_FMT " cells emptied inside the material (first at step %" PetscInt_FMT ")\n",

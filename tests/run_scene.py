@@ -22,6 +22,9 @@ An expectation file is {"doc": "...", "cases": [CASE, ...]}; a CASE is
   compare to the finest;
 - compare: a report key against factor times the same key of an earlier case (op <, <=, >, >=).
 A relative "-options_file" in args (a method file, inputs/methods/cpdi1.opts) is taken from the source tree.
+"method": NAME at the top of the file (or in a case, where null means none) puts inputs/methods/NAME.opts between
+the scene and the case's args: "cth" pins a file's expectations to the CTH study's configuration, where they were
+measured, rather than to the program's default method.
 """
 import json
 import os
@@ -34,6 +37,7 @@ import petmpmlib as lib  # noqa: E402
 
 EXE = os.path.join(BUILD, "petmpm")
 failures = []
+METHOD = None  # the file's "method"
 
 
 def check(ok, what):
@@ -43,7 +47,8 @@ def check(ok, what):
 
 
 def run_case(case, out, extra=()):
-    extra_args = case.get("args", [])  # a method file (-options_file inputs/methods/X.opts) is relative to the source tree
+    method = case.get("method", METHOD)  # inputs/methods/NAME.opts after the scene, before the case's args
+    extra_args = (["-options_file", f"inputs/methods/{method}.opts"] if method else []) + case.get("args", [])  # a method file (-options_file inputs/methods/X.opts) is relative to the source tree
     extra_args = [os.path.join(SRC, a) if i and extra_args[i - 1] == "-options_file" and not os.path.isabs(a) else a for i, a in enumerate(extra_args)]
     args = ["-options_file", lib.scene_path(case["scene"]), *extra_args, *extra]
     rep, p = lib.run(EXE, args, case.get("ranks", 1), out)
@@ -69,6 +74,8 @@ def compare(case, rep, label, done):
 def main():
     with open(os.path.join(SRC, "tests", "scenes", NAME + ".json")) as f:
         spec = json.load(f)
+    global METHOD
+    METHOD = spec.get("method")
     done = {}
     with tempfile.TemporaryDirectory() as d:
         for case in spec["cases"]:

@@ -17,6 +17,8 @@ import xml.etree.ElementTree as ET
 BUILD, SRC, NAME = sys.argv[1], sys.argv[2], sys.argv[3]
 EXE = os.path.join(BUILD, "petmpm")
 SCENE = os.path.join(SRC, "inputs", "sod_weak.opts")
+CTH = os.path.join(SRC, "inputs", "methods", "cth.opts")
+SCENE_CTH = ["-options_file", SCENE, "-options_file", CTH]  # weak Sod in the CTH study's configuration, where these checks were measured
 FLYER = os.path.join(SRC, "inputs", "flyer_plate.opts")
 sys.path.insert(0, os.path.join(SRC, "scripts"))
 import petmpmlib as lib  # noqa: E402
@@ -43,7 +45,7 @@ def run(args, ranks=1, expect_ok=True):
 
 def sod(out, extra=(), ranks=1):
     rep = os.path.join(out, "report.json")
-    p = run(["-options_file", SCENE, "-mpm_output", out, "-mpm_report", rep, *extra], ranks)
+    p = run([*SCENE_CTH, "-mpm_output", out, "-mpm_report", rep, *extra], ranks)
     with open(rep) as f:
         return json.load(f), p
 
@@ -90,17 +92,17 @@ def test_bad_input():
         h5 = os.path.join(d, "petmpm.h5")
         before = open(h5, "rb").read()
         cases = [
-            (["-options_file", SCENE, "-mpm_shape_type", "quadratic", "-mpm_output", d], "-mpm_shape_type"),
-            (["-options_file", SCENE, "-mpm_update_type", "apic", "-mpm_output", d], "-mpm_update_type"),
-            (["-options_file", SCENE, "-mpm_viscosity_type", "huge", "-mpm_output", d], "-mpm_viscosity_type"),
+            ([*SCENE_CTH, "-mpm_shape_type", "quadratic", "-mpm_output", d], "-mpm_shape_type"),
+            ([*SCENE_CTH, "-mpm_update_type", "apic", "-mpm_output", d], "-mpm_update_type"),
+            ([*SCENE_CTH, "-mpm_viscosity_type", "huge", "-mpm_output", d], "-mpm_viscosity_type"),
             (["-mpm_output", d], "-mpm_materials"),
-            (["-options_file", SCENE, "-mpm_output", "/proc/petmpm/none"], "/proc/petmpm/none"),
-            (["-options_file", SCENE, "-mpm_output", d, "-mpm_report", "/proc/petmpm/r.json"], "-mpm_report"),
-            (["-options_file", SCENE, "-mpm_shpae_type", "linear", "-mpm_output", d], "-mpm_shpae_type"),
-            (["-options_file", SCENE, "-mat_gas_eos_idealgas_gamma", "0.8", "-mpm_output", d], "-mat_gas_eos_idealgas_gamma"),
-            (["-options_file", SCENE, "-mpm_cfl", "1.5", "-mpm_output", d], "-mpm_cfl"),
-            (["-options_file", SCENE, "-region_left_material", "steel", "-mpm_output", d], "-region_left_material"),
-            (["-options_file", SCENE, "-mpm_cells", "64,64", "-mpm_output", d], "-mpm_cells"),
+            ([*SCENE_CTH, "-mpm_output", "/proc/petmpm/none"], "/proc/petmpm/none"),
+            ([*SCENE_CTH, "-mpm_output", d, "-mpm_report", "/proc/petmpm/r.json"], "-mpm_report"),
+            ([*SCENE_CTH, "-mpm_shpae_type", "linear", "-mpm_output", d], "-mpm_shpae_type"),
+            ([*SCENE_CTH, "-mat_gas_eos_idealgas_gamma", "0.8", "-mpm_output", d], "-mat_gas_eos_idealgas_gamma"),
+            ([*SCENE_CTH, "-mpm_cfl", "1.5", "-mpm_output", d], "-mpm_cfl"),
+            ([*SCENE_CTH, "-region_left_material", "steel", "-mpm_output", d], "-region_left_material"),
+            ([*SCENE_CTH, "-mpm_cells", "64,64", "-mpm_output", d], "-mpm_cells"),
             (["-options_file", FLYER, "-mat_copper_eos_miegruneisen_s", "0.9", "-mpm_output", d], "-mat_copper_eos_miegruneisen_s"),
             (["-options_file", FLYER, "-mat_copper_strength_G", "-1", "-mpm_output", d], "-mat_copper_strength_G"),
             (["-options_file", FLYER, "-mat_copper_strength_type", "johnsoncook", "-mat_copper_strength_johnsoncook_Tm", "0.01", "-mpm_exact_type", "none", "-mpm_output", d], "-mat_copper_strength_johnsoncook_Tm"),
@@ -118,18 +120,18 @@ def test_log_view():
     """-log_view shows one event per step phase and none for modules the scene did not ask for."""
     with tempfile.TemporaryDirectory() as d:
         phases = ["MPMParticlesToGrid", "MPMGridAdvance", "MPMGridToParticles", "MPMConstitutive", "MPMMigrate"]
-        p = run(["-options_file", SCENE, "-mpm_cells", "64", "-mpm_output", d, "-mpm_viscosity_type", "none", "-log_view"])
+        p = run([*SCENE_CTH, "-mpm_cells", "64", "-mpm_output", d, "-mpm_viscosity_type", "none", "-log_view"])
         rows = {line.split()[0] for line in p.stdout.splitlines() if line.startswith("MPM")}
         check(all(ph in rows for ph in phases), f"phase events present: {sorted(rows & set(phases))}")
         check("MPMViscosity" not in rows and "MPMGravity" not in rows and "MPMRemapMomentum" not in rows, "no event rows for viscosity, gravity, MUSL remap when not asked for")
-        p = run(["-options_file", SCENE, "-mpm_cells", "64", "-mpm_output", d, "-mpm_scheme", "musl", "-log_view"])
+        p = run([*SCENE_CTH, "-mpm_cells", "64", "-mpm_output", d, "-mpm_scheme", "musl", "-log_view"])
         rows = {line.split()[0] for line in p.stdout.splitlines() if line.startswith("MPM")}
         check("MPMViscosity" in rows and "MPMRemapMomentum" in rows, "viscosity and remap rows appear when the scene asks for them")
 
 
 def test_help():
     """-help lists every option of the scene's objects."""
-    p = run(["-options_file", SCENE, "-mpm_viscosity_type", "limited", "-help"])
+    p = run([*SCENE_CTH, "-mpm_viscosity_type", "limited", "-help"])
     needed = ["-mpm_cells", "-mpm_ppc", "-mpm_cfl", "-mpm_shape_type", "-mpm_update_type", "-mpm_viscosity_type",
               "-mpm_viscosity_limited_bq", "-mpm_viscosity_limited_bl", "-mpm_scheme", "-mpm_output", "-mpm_report", "-mat_gas_eos_idealgas_gamma",
               "-region_left_density", "-mpm_exact_riemann_x0", "-ts_max_time", "-mpm_energy_update", "-mpm_ke_fix",
@@ -208,7 +210,7 @@ def test_failure():
     import h5py
     with tempfile.TemporaryDirectory() as d:
         off = ["-mpm_dt_volume", "1e30", "-mpm_dt_acceleration", "1e30", "-mpm_isentrope_threshold", "1e30"]
-        p = run(["-options_file", os.path.join(SRC, "inputs", "leblanc.opts"), *off, "-mpm_output", d], expect_ok=False)
+        p = run(["-options_file", os.path.join(SRC, "inputs", "leblanc.opts"), "-options_file", CTH, *off, "-mpm_output", d], expect_ok=False)
         text = p.stdout + p.stderr
         ok = p.returncode != 0 and "non-physical state" in text and all(w in text for w in ("step 2,", "point", "at x =", "rho =", "det(I + dt L)"))
         check(ok, f"LeBlanc without the expansion limits: exit {p.returncode}, diagnosis names step 2, point, x, rho")
@@ -216,7 +218,7 @@ def test_failure():
             n = f["particle_fields/density"].shape[0]
         times = [float(e.get("Value")) for e in ET.parse(os.path.join(d, "petmpm.xmf")).iter("Time")]
         check(n == 2 and len(times) == 2 and times[-1] > 0, f"last state written for diagnosis: {n} outputs, XDMF times {times}")
-        p = run(["-options_file", SCENE, "-mpm_cells", "64", "-mpm_dt_min", "1e-6", "-mpm_output", d], expect_ok=False)
+        p = run([*SCENE_CTH, "-mpm_cells", "64", "-mpm_dt_min", "1e-6", "-mpm_output", d], expect_ok=False)
         text = p.stdout + p.stderr
         check(p.returncode != 0 and "-mpm_dt_min" in text and "set by point" in text and "at x =" in text, f"time-step floor: exit {p.returncode}, names -mpm_dt_min and the point that sets dt")
 
@@ -306,7 +308,7 @@ def test_study():
         return subprocess.run(["/usr/bin/python3", tool, *args, "--exe", EXE], capture_output=True, text=True, env=ENV, timeout=600)
 
     with tempfile.TemporaryDirectory() as d:
-        args = [SCENE, "--cells", "32,64", "--shape", "linear,gimp", "--out", d]
+        args = [SCENE, "--cells", "32,64", "--shape", "linear,gimp", "--method", "cth", "--out", d]
         p = tool_run(args)
         with open(os.path.join(d, "results.csv")) as f:
             rows = list(csv.DictReader(f))

@@ -120,7 +120,7 @@ static PetscErrorCode CheckClassBase(PetscInt *fails)
   PetscFunctionBegin;
   PetscCall(MPMShapeCreate(PETSC_COMM_SELF, &shape));
   PetscCall(MPMShapeGetType(shape, &type));
-  PetscCall(PetscStrcmp(type, MPMSHAPELINEAR, &same));
+  PetscCall(PetscStrcmp(type, MPMSHAPECPDI, &same)); /* the default method's shape */
   ok = same;
   PetscCall(MPMShapeSetType(shape, MPMSHAPEGIMP));
   data = shape->data;

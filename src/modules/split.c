@@ -17,8 +17,8 @@
 /* The axis along which point p should split (-1: none) and whether a split was refused at the level limit. */
 static inline PetscInt MPMSplitAxis(const MPM mpm, const PetscReal *F, const PetscReal *s, PetscBool *refused)
 {
-  const MPMGrid *g = &mpm->grid;
-  const PetscInt d = g->dim;
+  const MPMGrid *g    = &mpm->grid;
+  const PetscInt d    = g->dim;
   PetscReal      best = mpm->split_length;
   PetscInt       axis = -1;
 
@@ -74,8 +74,8 @@ PetscErrorCode MPMSplitApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
   PetscCall(DMSwarmAddNPoints(mpm->swarm, nsplit));
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   { /* every rank gathers the (id, material) of every splitting parent and sorts them: child i of the sorted list takes next_id + i */
-    PetscMPIInt  size, *rcount, *displ, nloc = (PetscMPIInt)(2 * nsplit);
-    PetscReal   *mine, *all;
+    PetscMPIInt size, *rcount, *displ, nloc = (PetscMPIInt)(2 * nsplit);
+    PetscReal  *mine, *all;
     PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
     PetscCall(PetscMalloc4(2 * nsplit + 1, &mine, 2 * counts[0], &all, size, &rcount, size, &displ));
     for (PetscInt p = 0, i = 0; p < n; p++)
@@ -90,8 +90,8 @@ PetscErrorCode MPMSplitApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
     qsort(all, counts[0], 2 * sizeof(PetscReal), MPMSplitCompare);
     for (PetscInt p = 0; p < n; p++) /* the parent's place in the sorted list, kept in axis[] as axis + d * place */
       if (axis[p] >= 0) {
-        const PetscReal key[2] = {pts.f[MPM_FIELD_ID][p], pts.f[MPM_FIELD_MATERIAL][p]};
-        const PetscReal *hit   = (const PetscReal *)bsearch(key, all, counts[0], 2 * sizeof(PetscReal), MPMSplitCompare);
+        const PetscReal  key[2] = {pts.f[MPM_FIELD_ID][p], pts.f[MPM_FIELD_MATERIAL][p]};
+        const PetscReal *hit    = (const PetscReal *)bsearch(key, all, counts[0], 2 * sizeof(PetscReal), MPMSplitCompare);
         PetscCheck(hit, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Point %.0f: not among the splitting parents", (double)key[0]);
         axis[p] += d * (PetscInt)((hit - all) / 2);
       }
@@ -119,7 +119,7 @@ PetscErrorCode MPMSplitApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
     pts.f[MPM_FIELD_MASS][p] = pts.f[MPM_FIELD_MASS][c] = 0.5 * pts.f[MPM_FIELD_MASS][p];
     pts.f[MPM_FIELD_VOLUME][p] = pts.f[MPM_FIELD_VOLUME][c] = 0.5 * pts.f[MPM_FIELD_VOLUME][p];
     pts.f[MPM_FIELD_DOMAINSCALE][p * d + k] = pts.f[MPM_FIELD_DOMAINSCALE][c * d + k] = 0.5 * sk;
-    pts.f[MPM_FIELD_ID][c] = mpm->next_id + place;
+    pts.f[MPM_FIELD_ID][c]                                                            = mpm->next_id + place;
     c++;
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));

@@ -33,7 +33,7 @@ static PetscErrorCode MPMShapeViewClass(void *obj, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static const MPMClass MPMShapeClass = {"shape function", "shape", "Shape functions", "MPMShape", "Shape function N_I(x)", MPMSHAPELINEAR, &MPMShapeList, sizeof(MPMShapeOps), MPMShapeReset, NULL, MPMShapeViewClass, MPMShapeDestroyClass};
+static const MPMClass MPMShapeClass = {"shape function", "shape", "Shape functions", "MPMShape", "Shape function N_I(x)", MPMSHAPECPDI, &MPMShapeList, sizeof(MPMShapeOps), MPMShapeReset, NULL, MPMShapeViewClass, MPMShapeDestroyClass};
 
 MPM_CLASS_INTERFACE(MPMShape)
 
@@ -42,7 +42,7 @@ PetscErrorCode MPMShapeCreate(MPI_Comm comm, MPMShape *shape)
   PetscFunctionBegin;
   PetscCall(MPMObjectCreate(comm, &MPMShapeClass, sizeof(struct _p_MPMShape), shape));
   PetscCall(MPMObjectSetOptionsPrefix(*shape, "mpm_"));
-  PetscCall(MPMShapeSetType(*shape, MPMSHAPELINEAR));
+  PetscCall(MPMShapeSetType(*shape, MPMSHAPECPDI)); /* the default method: docs/shock-capturing.md */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -13,7 +13,7 @@ static PetscErrorCode MPMViscosityReset(void *obj)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static const MPMClass MPMViscosityClass = {"artificial viscosity", "viscosity", "Artificial viscosity", "MPMViscosity", "Artificial viscosity q", MPMVISCOSITYNONE, &MPMViscosityList, sizeof(MPMViscosityOps), MPMViscosityReset, NULL, NULL, NULL};
+static const MPMClass MPMViscosityClass = {"artificial viscosity", "viscosity", "Artificial viscosity", "MPMViscosity", "Artificial viscosity q", MPMVISCOSITYVNR, &MPMViscosityList, sizeof(MPMViscosityOps), MPMViscosityReset, NULL, NULL, NULL};
 
 MPM_CLASS_INTERFACE(MPMViscosity)
 
@@ -22,7 +22,7 @@ PetscErrorCode MPMViscosityCreate(MPI_Comm comm, MPMViscosity *visc)
   PetscFunctionBegin;
   PetscCall(MPMObjectCreate(comm, &MPMViscosityClass, sizeof(struct _p_MPMViscosity), visc));
   PetscCall(MPMObjectSetOptionsPrefix(*visc, "mpm_"));
-  PetscCall(MPMViscositySetType(*visc, MPMVISCOSITYNONE));
+  PetscCall(MPMViscositySetType(*visc, MPMVISCOSITYVNR)); /* the default method */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -155,7 +155,7 @@ PetscErrorCode MPMShapeCreate_CPDI(MPMShape shape)
 
   PetscFunctionBegin;
   PetscCall(PetscNew(&cp));
-  cp->reach = 2;
+  cp->reach = 3;
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) cp->l0[k] = 0.25; /* until MPMShapeSetUp */
   shape->data               = cp;
   shape->needs_F            = PETSC_TRUE;
