@@ -41,6 +41,7 @@ verification: build
 	$(if $(FRESH),rm -rf $(addprefix docs/studies/,$(STUDIES)))
 	for s in $(STUDIES); do $(PY) scripts/study --study scripts/studies/$$s.json --out docs/studies/$$s || exit 1; done
 	$(PY) scripts/study --summary $(addprefix docs/studies/,$(STUDIES)) --markdown docs/verification.md
+	$(PY) scripts/hardcases.py --exe $(BUILD)/petmpm --out docs/hard-cases.md
 
 format:
 	clang-format -i $$(git ls-files '*.c' '*.h')

@@ -101,6 +101,7 @@ def test_bad_input():
             ([*SCENE_CTH, "-mpm_shpae_type", "linear", "-mpm_output", d], "-mpm_shpae_type"),
             ([*SCENE_CTH, "-mat_gas_eos_idealgas_gamma", "0.8", "-mpm_output", d], "-mat_gas_eos_idealgas_gamma"),
             ([*SCENE_CTH, "-mpm_cfl", "1.5", "-mpm_output", d], "-mpm_cfl"),
+            (["-options_file", SCENE, "-mpm_split_length", "0.5", "-mpm_output", d], "-mpm_split_length"),
             ([*SCENE_CTH, "-region_left_material", "steel", "-mpm_output", d], "-region_left_material"),
             ([*SCENE_CTH, "-mpm_cells", "64,64", "-mpm_output", d], "-mpm_cells"),
             (["-options_file", FLYER, "-mat_copper_eos_miegruneisen_s", "0.9", "-mpm_output", d], "-mat_copper_eos_miegruneisen_s"),
