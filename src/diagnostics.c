@@ -25,12 +25,13 @@ PetscErrorCode MPMDiagnoseVacuum(MPM mpm, PetscInt *nvacuum, PetscInt *nempty)
   for (PetscInt p = 0; p < pts.n; p++) {
     const PetscReal *x = &pts.f[MPM_FIELD_POSITION][p * d];
     if (mpm->shape->needs_F) { /* the cells the point's domain overlaps */
-      const PetscReal *F = &pts.f[MPM_FIELD_DEFGRAD][p * d * d], *s = pts.f[MPM_FIELD_DOMAINSCALE];
+      PetscReal        Fs[MPM_MAX_DIM * MPM_MAX_DIM];
+      const PetscReal *R              = MPMPointDomain(d, pts.f[MPM_FIELD_DEFGRAD], pts.f[MPM_FIELD_DOMAINSCALE], p, Fs);
       PetscInt         a[MPM_MAX_DIM] = {0, 0, 0}, b[MPM_MAX_DIM] = {0, 0, 0};
       PetscBool        in = PETSC_TRUE;
       for (PetscInt i = 0; i < d; i++) {
         PetscReal r = 0.0;
-        for (PetscInt k = 0; k < d; k++) r += PetscAbsReal(F[i * d + k] * (s ? s[p * d + k] : 1.0)) * 0.5 * g->h[k] / mpm->ppc;
+        for (PetscInt k = 0; k < d; k++) r += PetscAbsReal(R[i * d + k]) * MPMLatticeHalfWidth(mpm, k);
         r *= 1.0 - 1e-9; /* a domain that ends on a face does not reach into the next cell */
         a[i] = PetscMax(0, (PetscInt)PetscFloorReal((x[i] - r - g->lo[i]) / g->h[i]) - g->cs[i]);
         b[i] = PetscMin(g->cm[i] - 1, (PetscInt)PetscFloorReal((x[i] + r - g->lo[i]) / g->h[i]) - g->cs[i]);

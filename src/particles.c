@@ -237,7 +237,7 @@ static PetscInt MPMSiteSeed(MPM mpm, const PetscReal xs[], MPMPiece pc[], PetscR
   PetscInt       np = 0, n = 0;
 
   for (PetscInt k = 0; k < d; k++) {
-    hs[k] = 0.5 * g->h[k] / mpm->ppc;
+    hs[k] = MPMLatticeHalfWidth(mpm, k);
     Vs *= 2.0 * hs[k];
   }
   MPMBoxSeed(mpm, xs, hs, 0, vol, pc, &np);

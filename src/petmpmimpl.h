@@ -197,6 +197,12 @@ struct _p_MPM {
   char           failure[1024];           /* why                                                  */
 };
 
+/* l0_k = h_k / (2 ppc): the half-width of a seeded point's domain (its lattice site) along axis k [cm]. */
+static inline PetscReal MPMLatticeHalfWidth(const MPM mpm, PetscInt k)
+{
+  return 0.5 * mpm->grid.h[k] / mpm->ppc;
+}
+
 /* The deformation of point p's domain that the shape functions read: F_p diag(s_p), with s_p the domain scale that
    point splitting halves (s NULL: 1), or NULL where the points carry no F. */
 static inline const PetscReal *MPMPointDomain(PetscInt d, const PetscReal *F, const PetscReal *s, PetscInt p, PetscReal Fs[])

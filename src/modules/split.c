@@ -25,7 +25,7 @@ static inline PetscInt MPMSplitAxis(const MPM mpm, const PetscReal *F, const Pet
   for (PetscInt k = 0; k < d; k++) {
     PetscReal len2 = 0.0, len;
     for (PetscInt i = 0; i < d; i++) len2 += PetscSqr(F[i * d + k] / g->h[i]);
-    len = 2.0 * PetscSqrtReal(len2) * s[k] * 0.5 * g->h[k] / mpm->ppc; /* cells */
+    len = 2.0 * PetscSqrtReal(len2) * s[k] * MPMLatticeHalfWidth(mpm, k); /* cells */
     if (len > best) {
       best = len;
       axis = k;
@@ -49,13 +49,13 @@ PetscErrorCode MPMSplitApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
 {
   const MPMGrid *g = &mpm->grid;
   const PetscInt d = g->dim;
-  PetscInt      *axis, n, nsplit = 0, nrefused = 0, counts[2];
+  PetscInt      *axis, *place, n, nsplit = 0, nrefused = 0, counts[2];
   MPMPoints      pts;
 
   PetscFunctionBegin;
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   n = pts.n;
-  PetscCall(PetscMalloc1(n + 1, &axis));
+  PetscCall(PetscMalloc2(n + 1, &axis, n + 1, &place));
   for (PetscInt p = 0; p < n; p++) {
     PetscBool refused = PETSC_FALSE;
     axis[p]           = MPMSplitAxis(mpm, &pts.f[MPM_FIELD_DEFGRAD][p * d * d], &pts.f[MPM_FIELD_DOMAINSCALE][p * d], &refused);
@@ -68,7 +68,7 @@ PetscErrorCode MPMSplitApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, counts, 2, MPIU_INT, MPI_SUM, mpm->comm));
   mpm->diag.split_refused += nrefused;
   if (!counts[0]) {
-    PetscCall(PetscFree(axis));
+    PetscCall(PetscFree2(axis, place));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(DMSwarmAddNPoints(mpm->swarm, nsplit));
@@ -88,22 +88,22 @@ PetscErrorCode MPMSplitApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
     for (PetscMPIInt r = 1; r < size; r++) displ[r] = displ[r - 1] + rcount[r - 1];
     PetscCallMPI(MPI_Allgatherv(mine, nloc, MPIU_REAL, all, rcount, displ, MPIU_REAL, mpm->comm));
     qsort(all, counts[0], 2 * sizeof(PetscReal), MPMSplitCompare);
-    for (PetscInt p = 0; p < n; p++) /* the parent's place in the sorted list, kept in axis[] as axis + d * place */
+    for (PetscInt p = 0; p < n; p++) /* the parent's place in the sorted list */
       if (axis[p] >= 0) {
         const PetscReal  key[2] = {pts.f[MPM_FIELD_ID][p], pts.f[MPM_FIELD_MATERIAL][p]};
         const PetscReal *hit    = (const PetscReal *)bsearch(key, all, counts[0], 2 * sizeof(PetscReal), MPMSplitCompare);
         PetscCheck(hit, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Point %.0f: not among the splitting parents", (double)key[0]);
-        axis[p] += d * (PetscInt)((hit - all) / 2);
+        place[p] = (PetscInt)((hit - all) / 2);
       }
     PetscCall(PetscFree4(mine, all, rcount, displ));
   }
   for (PetscInt p = 0, c = n; p < n; p++) {
-    const PetscInt   k = axis[p] % d, place = axis[p] / d;
+    const PetscInt   k = axis[p];
     const PetscReal *F = &pts.f[MPM_FIELD_DEFGRAD][p * d * d];
     PetscReal        sk, a;
-    if (axis[p] < 0) continue;
+    if (k < 0) continue;
     sk = pts.f[MPM_FIELD_DOMAINSCALE][p * d + k];
-    a  = 0.5 * sk * 0.5 * g->h[k] / mpm->ppc; /* half of the half-width */
+    a  = 0.5 * sk * MPMLatticeHalfWidth(mpm, k); /* half of the half-width */
     for (PetscInt f = 0; f < mpm->nfields; f++) {
       const PetscInt bs = MPMFieldBlockSize(mpm->field[f].bs, d);
       if (pts.f[f]) PetscCall(PetscArraycpy(&pts.f[f][c * bs], &pts.f[f][p * bs], bs));
@@ -119,11 +119,11 @@ PetscErrorCode MPMSplitApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
     pts.f[MPM_FIELD_MASS][p] = pts.f[MPM_FIELD_MASS][c] = 0.5 * pts.f[MPM_FIELD_MASS][p];
     pts.f[MPM_FIELD_VOLUME][p] = pts.f[MPM_FIELD_VOLUME][c] = 0.5 * pts.f[MPM_FIELD_VOLUME][p];
     pts.f[MPM_FIELD_DOMAINSCALE][p * d + k] = pts.f[MPM_FIELD_DOMAINSCALE][c * d + k] = 0.5 * sk;
-    pts.f[MPM_FIELD_ID][c]                                                            = mpm->next_id + place;
+    pts.f[MPM_FIELD_ID][c]                                                            = mpm->next_id + place[p];
     c++;
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-  PetscCall(PetscFree(axis));
+  PetscCall(PetscFree2(axis, place));
   mpm->next_id += counts[0];
   mpm->npoints += counts[0];
   mpm->diag.points_split += nsplit;
