@@ -44,6 +44,7 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   m->update                 = MPM_UPDATE_BLEND;
   m->alpha                  = 0.99;
   m->split                  = PETSC_TRUE;
+  m->conduction             = 2.0;
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
     m->grid.cells[k] = 1;
     m->grid.lo[k]    = 0.0;
@@ -103,6 +104,9 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscCall(MPMOptionsCheckRange("-mpm_isentrope_threshold", mpm->isentrope_threshold, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
   PetscCall(PetscOptionsReal("-mpm_vacuum_density", "Density, as a fraction of the lightest initial density of the point's material, below which the report counts it as vacuum [-], in (0, 1)", "", mpm->vacuum_density, &mpm->vacuum_density, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_vacuum_density", mpm->vacuum_density, 0.0, 1.0, PETSC_TRUE, PETSC_TRUE));
+  PetscCall(PetscOptionsReal("-mpm_conduction", "Artificial heat conduction C_h: a compressing point mixes its specific internal energy with its material's points on its nodes at the rate C_h |div v| [-], >= 0 (0: off)", "", mpm->conduction,
+                             &mpm->conduction, NULL));
+  PetscCall(MPMOptionsCheckRange("-mpm_conduction", mpm->conduction, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
   PetscCall(PetscOptionsBool("-mpm_split", "Split a point whose domain stretches beyond -mpm_split_length cells along an axis into two (mass, momentum, energy, volume and first moment conserved)", "", mpm->split, &mpm->split, NULL));
   if (mpm->split) {
     PetscInt level    = 20;
@@ -190,6 +194,7 @@ PetscErrorCode MPMSetUp(MPM mpm)
     if (walls) PetscCall(MPMModuleAdd(mpm, "MPMWalls", MPM_PHASE_GRID_VELOCITY, MPMWallsApply, NULL));
     if (mpm->scheme == MPM_SCHEME_MUSL) PetscCall(MPMModuleAdd(mpm, "MPMRemapMomentum", MPM_PHASE_POINT_KINEMATICS, MPMRemapApply, NULL));
     if (mpm->viscosity) PetscCall(MPMModuleAdd(mpm, "MPMViscosity", MPM_PHASE_POINT_STATE, MPMViscosityModuleApply, NULL));
+    if (mpm->conduction > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMConduction", MPM_PHASE_POINT_END, MPMConductionApply, NULL));
     if (mpm->split) PetscCall(MPMModuleAdd(mpm, "MPMSplit", MPM_PHASE_POINT_ADAPT, MPMSplitApply, NULL));
   }
 
@@ -261,6 +266,9 @@ PetscErrorCode MPMDestroy(MPM *mpm)
   PetscCall(PetscFree2(m->cellV, m->cellS));
   PetscCall(PetscFree2(m->widx, m->work));
   PetscCall(DMDestroy(&m->swarm));
+  PetscCall(VecDestroy(&m->cond_l));
+  PetscCall(VecDestroy(&m->cond_g));
+  PetscCall(DMDestroy(&m->cond_da));
   PetscCall(DMDestroy(&m->da));
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) PetscCall(PetscFree(m->grid.rank_start[k]));
   for (PetscInt i = 0; i < m->nmat; i++) {

@@ -75,6 +75,7 @@ typedef enum {
   MPM_PHASE_POINT_KINEMATICS, /* after grid to points: the MUSL remap                                            */
   MPM_PHASE_POINT_STATE,      /* before the constitutive update: artificial viscosity                            */
   MPM_PHASE_POINT_ADAPT,      /* after the constitutive update: point splitting                                  */
+  MPM_PHASE_POINT_END,        /* after migration, each point on the rank that owns its cell: heat conduction    */
   MPM_NUM_PHASES
 } MPMPhase;
 
@@ -126,6 +127,7 @@ struct _p_MPM {
   PetscReal            isentrope_threshold;        /* relative expansion per step above which e follows the isentrope [-] */
   PetscReal            vacuum_density;             /* points below this fraction of their material's initial density count as vacuum [-] */
   MPMDtLimit           dt_limit;                   /* what set the current step's size */
+  PetscReal            conduction;                 /* -mpm_conduction: artificial heat conduction coefficient C_h [-], 0: off */
   PetscBool            split;                      /* -mpm_split: the point splitting module is in the step  */
   PetscReal            split_length;               /* a domain longer than this along an axis splits [cells] */
   PetscReal            split_min_scale;            /* smallest domain scale a split may leave: 2^-max_level [-] */
@@ -169,6 +171,8 @@ struct _p_MPM {
   PetscReal   *work;                                     /* 7 values per point of a chunk of MPM_CHUNK points        */
   PetscInt     box_lo[MPM_MAX_DIM], box_hi[MPM_MAX_DIM]; /* owned nodes the node loops sweep (MPMGridZeroForScatter) */
   PetscReal   *cellV, *cellS;                            /* per local cell: sum V_p, sum V_p (p_p + q_p); in the gather of the conservative update with the cell rule, cellS is the cell's work per unit P_p V_p */
+  DM           cond_da;                                  /* the conduction module's nodal sums sum N w, sum N w T */
+  Vec          cond_l, cond_g;                           /* its ghosted local and global vectors (cond_g: several ranks) */
   TS           ts;
   Vec          tsu; /* the TS state: empty; the MPM state lives in the grid and swarm */
   /* output */
@@ -246,6 +250,7 @@ PETSC_INTERN PetscErrorCode MPMWallsApply(MPMModule, MPM, const MPMStepContext *
 PETSC_INTERN PetscErrorCode MPMGravityApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMRemapApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMSplitApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
+PETSC_INTERN PetscErrorCode MPMConductionApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMViscosityModuleApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMScatter(MPM, PetscBool, PetscReal);
 PETSC_INTERN PetscErrorCode MPMGather(MPM, PetscReal, PetscReal, PetscBool, PetscBool);

@@ -136,5 +136,6 @@ PetscErrorCode MPMStep(MPM mpm, PetscReal t, PetscReal dt)
   PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_ADAPT, &ctx));                                  /* point splitting                   */
   PetscCall(MPMMigrate(mpm));                                                                    /* points follow their cells         */
   if (mpm->sort_interval && mpm->steps % mpm->sort_interval == 0) PetscCall(MPMSortPoints(mpm)); /* and stay in cell order */
+  PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_END, &ctx));                                    /* heat conduction                   */
   PetscFunctionReturn(PETSC_SUCCESS);
 }

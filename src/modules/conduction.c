@@ -1,0 +1,111 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* Artificial heat conduction module (point phase MPM_PHASE_POINT_END, after migration; -mpm_conduction C_h > 0).
+   Why: a point keeps the entropy the shock gave it, and points that meet a shock at different phases of the grid get
+   different entropies (on Noh's implosion p / rho^gamma of neighbouring points varied by +-25%). A Lagrangian zone
+   code sees every zone shocked alike, and an Eulerian code's remap mixes the difference away; points have neither,
+   so the difference stays as density noise. Noh (J. Comput. Phys. 72 (1987) 78) proposed an artificial heat flux for
+   the same cause at a wall (wall heating). Here a point that the step compressed exchanges heat with the points on
+   its nodes, by temperature:
+     m_p de_p = w_p (sum_I N_I(x_p) T_I - T_p),  T_I = sum_q N_I(x_q) w_q T_q / sum_q N_I(x_q) w_q,
+     w_p = beta_p m_p c_v,p,  beta_p = min(1, C_h max(0, -tr L_p) dt),
+   with c_v,p = de/dT at the point's density from its EOS. It is a diffusion with diffusivity about C_h h^2 |div v|
+   (the form of the quadratic viscosity) that acts only where the step compressed. Then
+   sum_p m_p de_p = sum_I T_I sum_q N_I w_q - sum_q w_q T_q = 0: internal energy is conserved to round-off. For an
+   EOS whose e is linear in T at fixed density (ideal gas, Mie-Gruneisen), T_p moves a fraction beta_p of the way to
+   its nodes' mean (no new extremum), and a point at rest or in expansion is untouched. Heat flows between materials by
+   temperature, so a gas split into two identical materials runs as one. It runs after migration, where each point's
+   nodes are in its rank's ghosted box, and the EOS then gives p, T and c for the new e. */
+#include "../petmpmimpl.h"
+
+/* The point's stencil (the transfers' shape functions and domain). */
+static inline void MPMConductionStencil(MPM mpm, const MPMPoints *pts, PetscInt p, MPMStencil *st)
+{
+  const PetscInt d = mpm->grid.dim;
+  PetscReal      Fs[MPM_MAX_DIM * MPM_MAX_DIM];
+
+  MPMShapeEvaluate(mpm->shape, &mpm->grid, &pts->f[MPM_FIELD_POSITION][p * d], MPMPointDomain(d, pts->f[MPM_FIELD_DEFGRAD], pts->f[MPM_FIELD_DOMAINSCALE], p, Fs), st);
+}
+
+PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
+{
+  const PetscInt  d   = mpm->grid.dim;
+  const PetscBool one = (PetscBool)(mpm->lnodes == mpm->nodes); /* one rank, no ghosts: the local array is the global one */
+  PetscReal      *w, *cv, *W;
+  PetscInt        nact = 0;
+  MPMPoints       pts;
+  MPMStencil      st;
+
+  PetscFunctionBegin;
+  if (!mpm->cond_da) {
+    PetscCall(DMDACreateCompatibleDMDA(mpm->da, 2, &mpm->cond_da));
+    PetscCall(DMCreateLocalVector(mpm->cond_da, &mpm->cond_l));
+    if (!one) PetscCall(DMCreateGlobalVector(mpm->cond_da, &mpm->cond_g));
+    PetscCall(VecZeroEntries(mpm->cond_l));
+  }
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  PetscCall(PetscCalloc2(pts.n + 1, &w, pts.n + 1, &cv));
+  {
+    const PetscReal *L = pts.f[MPM_FIELD_GRADV], *rho = pts.f[MPM_FIELD_DENSITY], *e = pts.f[MPM_FIELD_ENERGY];
+    for (PetscInt p = 0; p < pts.n; p++) { /* beta_p, c_v,p and the weight w_p = beta_p m_p c_v,p */
+      const MPMEOS E    = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].eos;
+      PetscReal    beta = 0.0, de, T0, T1;
+      for (PetscInt k = 0; k < d; k++) beta -= L[p * d * d + k * d + k];
+      beta = PetscMin(1.0, mpm->conduction * beta * ctx->dt);
+      if (beta < 1e-10) continue;                    /* expansion, rest, or too little to matter (and no denormal weights) */
+      de = 1e-3 * PetscMax(PetscAbsReal(e[p]), 1.0); /* a central difference wide enough that round-off in e does not reach c_v */
+      MPMEOSTemperatureKernel(E, rho[p], e[p] - de, &T0);
+      MPMEOSTemperatureKernel(E, rho[p], e[p] + de, &T1);
+      if (!(T1 > T0)) continue; /* an EOS without temperature */
+      cv[p] = 2.0 * de / (T1 - T0);
+      w[p]  = beta * pts.f[MPM_FIELD_MASS][p] * cv[p];
+      nact++;
+    }
+  }
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &nact, 1, MPIU_INT, MPI_SUM, mpm->comm));
+  if (nact) {
+    PetscReal *e = pts.f[MPM_FIELD_ENERGY], *T = pts.f[MPM_FIELD_TEMPERATURE];
+    if (!one) PetscCall(VecZeroEntries(mpm->cond_l));
+    PetscCall(VecGetArray(mpm->cond_l, &W));
+    for (PetscInt p = 0; p < pts.n; p++) { /* sum N w and sum N w T to the nodes */
+      if (w[p] == 0.0) continue;
+      MPMConductionStencil(mpm, &pts, p, &st);
+      for (PetscInt a = 0; a < st.n; a++) {
+        W[2 * st.node[a]] += st.w[a] * w[p];
+        W[2 * st.node[a] + 1] += st.w[a] * w[p] * T[p];
+      }
+    }
+    if (!one) {
+      PetscCall(VecRestoreArray(mpm->cond_l, &W));
+      PetscCall(VecZeroEntries(mpm->cond_g));
+      PetscCall(DMLocalToGlobal(mpm->cond_da, mpm->cond_l, ADD_VALUES, mpm->cond_g));
+      PetscCall(DMGlobalToLocal(mpm->cond_da, mpm->cond_g, INSERT_VALUES, mpm->cond_l));
+      PetscCall(VecGetArray(mpm->cond_l, &W));
+    }
+    for (PetscInt p = 0; p < pts.n; p++) { /* the heat each point receives, w_p (sum N T_I - T_p), kept in cv */
+      PetscReal Tbar = 0.0;
+      if (w[p] == 0.0) continue;
+      MPMConductionStencil(mpm, &pts, p, &st);
+      for (PetscInt a = 0; a < st.n; a++)
+        if (W[2 * st.node[a]] > 0.0) Tbar += st.w[a] * W[2 * st.node[a] + 1] / W[2 * st.node[a]];
+      cv[p] = w[p] * (Tbar - T[p]);
+    }
+    for (PetscInt p = 0; p < pts.n; p++) { /* e, then p, T and c from the EOS (c keeps a strength model's share) */
+      const MPMEOS E = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].eos;
+      PetscReal    p0, c20, c21, *c = &pts.f[MPM_FIELD_SOUNDSPEED][p];
+      if (w[p] == 0.0) continue;
+      MPMEOSPressureKernel(E, pts.f[MPM_FIELD_DENSITY][p], e[p], &p0, &c20);
+      e[p] += cv[p] / pts.f[MPM_FIELD_MASS][p];
+      MPMEOSPressureKernel(E, pts.f[MPM_FIELD_DENSITY][p], e[p], &pts.f[MPM_FIELD_PRESSURE][p], &c21);
+      MPMEOSTemperatureKernel(E, pts.f[MPM_FIELD_DENSITY][p], e[p], &T[p]);
+      *c = PetscSqrtReal(PetscMax(*c * *c - PetscMax(c20, 0.0) + PetscMax(c21, 0.0), 0.0));
+      if (one) { /* leave the array zero for the next step: clear the entries this point touched */
+        MPMConductionStencil(mpm, &pts, p, &st);
+        for (PetscInt a = 0; a < st.n; a++) W[2 * st.node[a]] = W[2 * st.node[a] + 1] = 0.0;
+      }
+    }
+    PetscCall(VecRestoreArray(mpm->cond_l, &W));
+  }
+  PetscCall(PetscFree2(w, cv));
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
