@@ -65,6 +65,7 @@ typedef const char *MPMExactType;
 #define MPMEXACTRIEMANN "riemann"
 #define MPMEXACTMMS "mms"
 #define MPMEXACTFLYER "flyer"
+#define MPMEXACTSEDOV "sedov"
 
 /* The MPM object */
 PETSC_EXTERN PetscErrorCode MPMInitializePackage(void);

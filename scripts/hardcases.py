@@ -16,7 +16,7 @@ SRC = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import petmpmlib as lib  # noqa: E402
 
-SCENES = ["toro123", "toro_blast", "toro_collide", "toro_contact", "noh", "leblanc", "woodward_colella", "sod_strong"]
+SCENES = ["toro123", "toro_blast", "toro_collide", "toro_contact", "noh", "leblanc", "woodward_colella", "sod_strong", "sedov_planar"]
 CONFIGS = {"default": [], "cth": ["-options_file", os.path.join(SRC, "inputs", "methods", "cth.opts")],
            "default, limited": ["-mpm_viscosity_type", "limited"], "default, no viscosity": ["-mpm_viscosity_type", "none"]}
 

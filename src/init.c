@@ -23,6 +23,7 @@ PETSC_EXTERN PetscErrorCode MPMViscosityCreate_Limited(MPMViscosity);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_None(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_Riemann(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_Flyer(MPMExact);
+PETSC_EXTERN PetscErrorCode MPMExactCreate_Sedov(MPMExact);
 
 static PetscBool MPMPackageInitialized = PETSC_FALSE;
 PetscClassId     MPM_CLASSID;
@@ -54,6 +55,7 @@ PetscErrorCode MPMInitializePackage(void)
   PetscCall(MPMExactRegister(MPMEXACTRIEMANN, MPMExactCreate_Riemann));
   PetscCall(MPMExactRegister(MPMEXACTMMS, MPMExactCreate_MMS));
   PetscCall(MPMExactRegister(MPMEXACTFLYER, MPMExactCreate_Flyer));
+  PetscCall(MPMExactRegister(MPMEXACTSEDOV, MPMExactCreate_Sedov));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -336,6 +336,47 @@ PetscErrorCode MPMCreatePoints(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* A point that the step carried across a wall is put back as its mirror image: at a symmetry plane the image is the
+   point that crossed in its place. Position, velocity and reference position reflect across the wall, a tensor
+   field T (F, L, the stress) becomes R T R with R the reflection, so mass, energy and the tangential momentum are
+   unchanged. With CPDI a point's velocity is the mean over its domain's corners, which need not vanish at a wall;
+   the report counts the reflections (robustness.wall_reflections). */
+static PetscErrorCode MPMReflectAtWalls(MPM mpm)
+{
+  const MPMGrid *g     = &mpm->grid;
+  const PetscInt d     = g->dim;
+  PetscBool      walls = PETSC_FALSE;
+  MPMPoints      pts;
+
+  PetscFunctionBegin;
+  for (PetscInt k = 0; k < d; k++) walls = (PetscBool)(walls || g->mirror_lo[k] || g->mirror_hi[k]);
+  if (!walls) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt p = 0; p < pts.n; p++)
+    for (PetscInt k = 0; k < d; k++) {
+      PetscReal *x = &pts.f[MPM_FIELD_POSITION][p * d], wall;
+      if (g->mirror_lo[k] && x[k] < g->lo[k])
+        wall = g->lo[k];
+      else if (g->mirror_hi[k] && x[k] > g->hi[k])
+        wall = g->hi[k];
+      else
+        continue;
+      x[k] = 2.0 * wall - x[k];
+      pts.f[MPM_FIELD_VELOCITY][p * d + k] *= -1.0;
+      if (pts.f[MPM_FIELD_REFPOSITION]) pts.f[MPM_FIELD_REFPOSITION][p * d + k] = 2.0 * wall - pts.f[MPM_FIELD_REFPOSITION][p * d + k];
+      for (PetscInt f = 0; f < mpm->nfields; f++) /* tensors: (R T R)_ij = -T_ij where exactly one of i, j is k */
+        if (pts.f[f] && mpm->field[f].bs == -1)
+          for (PetscInt i = 0; i < d; i++)
+            if (i != k) {
+              pts.f[f][p * d * d + i * d + k] *= -1.0;
+              pts.f[f][p * d * d + k * d + i] *= -1.0;
+            }
+      mpm->diag.wall_reflections++;
+    }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Sends every point to the rank that owns its cell. A point outside the domain, or a change in the global
    count, stops the run with a message: points are never lost silently. */
 PetscErrorCode MPMMigrate(MPM mpm)
@@ -348,6 +389,7 @@ PetscErrorCode MPMMigrate(MPM mpm)
 
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(mpm->log.migrate, 0, 0, 0, 0));
+  PetscCall(MPMReflectAtWalls(mpm));
   PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
   PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
   PetscCall(DMSwarmGetLocalSize(mpm->swarm, &n));
@@ -371,7 +413,7 @@ PetscErrorCode MPMMigrate(MPM mpm)
   {
     PetscInt counts[2] = {nmove, nout};
     PetscCall(MPIU_Allreduce(MPI_IN_PLACE, counts, 2, MPIU_INT, MPI_SUM, mpm->comm));
-    PetscCheck(!counts[1], mpm->comm, PETSC_ERR_NOT_CONVERGED, "Step %" PetscInt_FMT ": %" PetscInt_FMT " point(s) left the domain through a free boundary; enlarge the domain (-mpm_lo, -mpm_hi)", mpm->steps, counts[1]);
+    PetscCheck(!counts[1], mpm->comm, PETSC_ERR_NOT_CONVERGED, "Step %" PetscInt_FMT ": %" PetscInt_FMT " point(s) left the domain through a free face; enlarge the domain (-mpm_lo, -mpm_hi)", mpm->steps, counts[1]);
     if (counts[0]) {
       PetscCall(DMSwarmMigrate(mpm->swarm, PETSC_TRUE));
       PetscCall(DMSwarmGetSize(mpm->swarm, &ntotal));
@@ -402,6 +444,36 @@ PetscErrorCode MPMXProfile(MPM mpm, PetscInt nb, PetscReal xc[], PetscReal rho[]
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, sum, 2 * nb, MPIU_REAL, MPIU_SUM, mpm->comm));
   for (PetscInt b = 0; b < nb; b++) {
     xc[b]  = g->lo[0] + (b + 0.5) * (g->hi[0] - g->lo[0]) / nb;
+    rho[b] = sum[2 * b + 1] > 0 ? sum[2 * b] / sum[2 * b + 1] : 0.0;
+  }
+  PetscCall(PetscFree(sum));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Volume-weighted density profile in shells about centre c over the first dr directions (nb shells of width w from
+   r = 0: r = |x - c| measured over directions 0 .. nd-1), on every rank; a shell without points reads 0. */
+PetscErrorCode MPMRadialProfile(MPM mpm, const PetscReal c[], PetscInt nd, PetscInt nb, PetscReal w, PetscReal rc[], PetscReal rho[])
+{
+  const PetscInt d = mpm->grid.dim;
+  PetscReal     *sum;
+  MPMPoints      pts;
+
+  PetscFunctionBegin;
+  PetscCall(PetscCalloc1(2 * nb, &sum));
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt p = 0; p < pts.n; p++) {
+    PetscReal r2 = 0.0;
+    PetscInt  b;
+    for (PetscInt k = 0; k < nd; k++) r2 += PetscSqr(pts.f[MPM_FIELD_POSITION][p * d + k] - c[k]);
+    b = (PetscInt)PetscFloorReal(PetscSqrtReal(r2) / w);
+    if (b >= nb) continue;
+    sum[2 * b] += pts.f[MPM_FIELD_MASS][p];
+    sum[2 * b + 1] += pts.f[MPM_FIELD_VOLUME][p];
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, sum, 2 * nb, MPIU_REAL, MPIU_SUM, mpm->comm));
+  for (PetscInt b = 0; b < nb; b++) {
+    rc[b]  = (b + 0.5) * w;
     rho[b] = sum[2 * b + 1] > 0 ? sum[2 * b] / sum[2 * b + 1] : 0.0;
   }
   PetscCall(PetscFree(sum));

@@ -108,8 +108,9 @@ typedef struct {
   PetscInt  empty_cells_max;             /* most cells emptied inside the material at one step                         */
   PetscInt  empty_cells0;                /* such cells in the initial state (gaps between bodies), -1 before the first count */
   PetscInt  first_vacuum_step, first_empty_step;
-  PetscInt  points_split;  /* points this rank split (each split adds one point)                       */
-  PetscInt  split_refused; /* point-steps that called for a split the level limit refused (this rank) */
+  PetscInt  points_split;     /* points this rank split (each split adds one point)                       */
+  PetscInt  split_refused;    /* point-steps that called for a split the level limit refused (this rank) */
+  PetscInt  wall_reflections; /* points this rank put back across a wall (MPMMigrate)              */
 } MPMDiagnostics;
 
 struct _p_MPM {
@@ -273,3 +274,4 @@ PETSC_INTERN PetscErrorCode MPMExactInitialize(MPMExact, MPM);
 PETSC_INTERN PetscErrorCode MPMComputeChecks(MPM);
 PETSC_INTERN PetscErrorCode MPMAddCheck(MPM, const char[], PetscReal, PetscReal);
 PETSC_INTERN PetscErrorCode MPMXProfile(MPM, PetscInt, PetscReal[], PetscReal[]);
+PETSC_INTERN PetscErrorCode MPMRadialProfile(MPM, const PetscReal[], PetscInt, PetscInt, PetscReal, PetscReal[], PetscReal[]);

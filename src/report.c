@@ -123,6 +123,15 @@ PetscErrorCode MPMProbeMean(MPMProbe probe, MPMProbeQuantity quantity, MPMProbeW
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The volume-weighted density in nb shells of width w about the centre c, r measured over the first nd directions
+   (shell centres rc [cm], densities rho [g/cm^3], 0 where a shell holds no point): the caller's arrays. */
+PetscErrorCode MPMProbeRadialProfile(MPMProbe probe, const PetscReal c[], PetscInt nd, PetscInt nb, PetscReal w, PetscReal rc[], PetscReal rho[])
+{
+  PetscFunctionBegin;
+  PetscCall(MPMRadialProfile(probe->mpm, c, nd, nb, w, rc, rho));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode MPMProbeAddCheck(MPMProbe probe, const char name[], PetscReal value, PetscReal reference)
 {
   PetscFunctionBegin;
@@ -240,7 +249,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   const MPMGrid *g = &mpm->grid;
   PetscReal      err[MPM_NERR][3], rhomin = 0, dmass, denergy, mass, energy, mom[MPM_MAX_DIM], shock_cells = -1.0, pss;
   PetscInt       nonfinite = 0, npoints, nvac, nempty;
-  PetscReal      eisen, nisen, nsplit, nrefuse;
+  PetscReal      eisen, nisen, nsplit, nrefuse, nreflect;
   PetscMPIInt    size, rank;
 
   PetscFunctionBegin;
@@ -252,12 +261,13 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   PetscCall(MPMComputeChecks(mpm));
   PetscCall(MPMDiagnoseVacuum(mpm, &nvac, &nempty));
   {
-    PetscReal s[4] = {mpm->diag.isentrope_energy, (PetscReal)mpm->diag.isentrope_points, (PetscReal)mpm->diag.points_split, (PetscReal)mpm->diag.split_refused};
-    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 4, MPIU_REAL, MPIU_SUM, mpm->comm));
-    eisen   = s[0];
-    nisen   = s[1];
-    nsplit  = s[2];
-    nrefuse = s[3];
+    PetscReal s[5] = {mpm->diag.isentrope_energy, (PetscReal)mpm->diag.isentrope_points, (PetscReal)mpm->diag.points_split, (PetscReal)mpm->diag.split_refused, (PetscReal)mpm->diag.wall_reflections};
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 5, MPIU_REAL, MPIU_SUM, mpm->comm));
+    eisen    = s[0];
+    nisen    = s[1];
+    nsplit   = s[2];
+    nrefuse  = s[3];
+    nreflect = s[4];
   }
   for (PetscInt c = 0; c < mpm->nchecks; c++) {
     PetscBool is;
@@ -275,6 +285,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
                         mpm->diag.dt_limit[MPM_DT_SOUND], mpm->diag.dt_limit[MPM_DT_ACCELERATION], mpm->diag.dt_limit[MPM_DT_VOLUME], mpm->diag.dt_limit[MPM_DT_LANDING], (double)(mpm->energy0 != 0 ? eisen / PetscAbsReal(mpm->energy0) : eisen),
                         (double)nisen));
   if (mpm->split) PetscCall(PetscPrintf(mpm->comm, "  point splitting: %.0f points split (%" PetscInt_FMT " points at start); %.0f splits refused at -mpm_split_max_level\n", (double)nsplit, mpm->npoints0, (double)nrefuse));
+  if (nreflect > 0) PetscCall(PetscPrintf(mpm->comm, "  %.0f point-steps carried a point across a wall; it was put back as its mirror image\n", (double)nreflect));
   if (mpm->diag.vacuum_points_max || mpm->diag.empty_cells_max)
     PetscCall(PetscPrintf(mpm->comm,
                           "  warning: resolution lost: up to %" PetscInt_FMT " points below the vacuum density (first at step %" PetscInt_FMT "), up to %" PetscInt_FMT " cells emptied inside the material (first at step %" PetscInt_FMT ")\n",
@@ -317,8 +328,8 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     for (PetscInt l = 0; l < MPM_NUM_DT_LIMITS; l++) fprintf(fp, "%s\"%s\": %" PetscInt_FMT, l ? ", " : "", MPMDtLimitNames[l], mpm->diag.dt_limit[l]);
     fprintf(fp,
             "}, \"vacuum_points\": %" PetscInt_FMT ", \"vacuum_points_max\": %" PetscInt_FMT ", \"first_vacuum_step\": %" PetscInt_FMT ", \"empty_cells\": %" PetscInt_FMT ", \"empty_cells_max\": %" PetscInt_FMT
-            ", \"first_empty_step\": %" PetscInt_FMT ", \"points_split\": %.0f, \"split_refused\": %.0f}",
-            nvac, mpm->diag.vacuum_points_max, mpm->diag.first_vacuum_step, nempty, mpm->diag.empty_cells_max, mpm->diag.first_empty_step, (double)nsplit, (double)nrefuse);
+            ", \"first_empty_step\": %" PetscInt_FMT ", \"points_split\": %.0f, \"split_refused\": %.0f, \"wall_reflections\": %.0f}",
+            nvac, mpm->diag.vacuum_points_max, mpm->diag.first_vacuum_step, nempty, mpm->diag.empty_cells_max, mpm->diag.first_empty_step, (double)nsplit, (double)nrefuse, (double)nreflect);
     fprintf(fp, ",\n  \"min_density\": %.10g,\n  \"nonfinite\": %" PetscInt_FMT ",\n  \"checks\": [", (double)rhomin, nonfinite);
     for (PetscInt c = 0; c < mpm->nchecks; c++)
       fprintf(fp, "%s\n    {\"name\": \"%s\", \"value\": %.10g, \"reference\": %.10g, \"rel_error\": %.6e}", c ? "," : "", mpm->checks[c].name, (double)mpm->checks[c].value, (double)mpm->checks[c].reference,

@@ -340,6 +340,28 @@ def test_study():
 
 
 
+def test_sedov():
+    """The Sedov similarity solution's xi0 (R = xi0 (E t^2 / rho0)^(1/(nu+2))) against the literature: Taylor's spherical
+    constant 1.033 for gamma = 1.4 (Kamm & Timmes' alpha = 0.851072), 1.1517 for gamma = 5/3, cylindrical alpha = 0.984
+    (xi0 = 1.0040), planar alpha = 0.538548 over one side (xi0 = (2 alpha)^(-1/3) = 0.97545); and the bad-input messages."""
+    import re
+    cases = [(1, 1.4, (2 * 0.538548) ** (-1 / 3)), (2, 1.4, 0.984 ** (-1 / 4)), (3, 1.4, 0.851072 ** (-1 / 5)), (3, 5 / 3, 1.15167)]
+    with tempfile.TemporaryDirectory() as d:
+        for dim, gamma, ref in cases:
+            cells = ",".join(["4"] * dim)
+            p = run(["-mpm_dim", str(dim), "-mpm_cells", cells, "-mpm_materials", "gas", "-mat_gas_eos_type", "idealgas", "-mat_gas_eos_idealgas_gamma", repr(gamma),
+                     "-mat_gas_eos_idealgas_cv", "1e10", "-mpm_regions", "a", "-region_a_material", "gas", "-region_a_density", "1", "-region_a_temperature", "1e-6",
+                     "-mpm_exact_type", "sedov", "-mpm_exact_sedov_energy", "1", "-mpm_view", "-ts_max_time", "0", "-mpm_output", os.path.join(d, "v")])
+            m = re.search(r"xi0 ([0-9.]+)", p.stdout)
+            xi0 = float(m.group(1)) if m else float("nan")
+            check(abs(xi0 - ref) < 1e-3 * ref, f"Sedov xi0 for nu = {dim}, gamma = {gamma:.4g}: {xi0:.6f} against {ref:.6f}")
+        for bad, needle in [(["-mpm_exact_sedov_energy", "-1"], "-mpm_exact_sedov_energy"), (["-mpm_exact_sedov_geometry", "spherical"], "-mpm_exact_sedov_geometry"),
+                            (["-mpm_exact_sedov_center", "5"], "-mpm_exact_sedov_center")]:
+            args = ["-options_file", os.path.join(SRC, "inputs", "sedov_planar.opts"), "-ts_max_time", "1e-9", "-mpm_output", os.path.join(d, "b")]
+            p = run(args + bad, expect_ok=False)
+            check(p.returncode != 0 and needle in p.stdout + p.stderr, f"sedov {' '.join(bad)}: exit {p.returncode}, message names {needle}")
+
+
 TESTS = {n[5:]: f for n, f in globals().items() if n.startswith("test_")}
 if NAME not in TESTS:
     raise SystemExit(f"unknown test {NAME}; known: {', '.join(TESTS)}")

@@ -125,7 +125,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, 
   const PetscInt   D        = MPM_KD;
   const PetscBool  velocity = (PetscBool)(mode & MPM_G2P_VELOCITY), kinematics = (PetscBool)(mode & MPM_G2P_KINEMATICS), work = (PetscBool)(mode & MPM_G2P_WORK);
   PetscReal       *x = A->x, *v = A->v, *L = A->L, *e = A->e;
-  const PetscReal *pr = A->pr, *q = A->q, *S = A->S, *rho = A->rho, alpha = A->alpha;
+  const PetscReal *S = A->S, alpha = A->alpha;
 
   {
     PetscReal vpic[MPM_KD] = {0}, dv[MPM_KD] = {0}, Lp[MPM_KD * MPM_KD] = {0}, Lb[MPM_KD * MPM_KD] = {0}, dv2 = 0.0, R = 0.0;
@@ -165,7 +165,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, 
           for (PetscInt i = 0; i < D; i++) div += Lb[i * D + i];
         if (A->stress)
           for (PetscInt i = 0; i < D * D; i++) sL += S[p * D * D + i] * Lb[i];
-        e[p] += A->wfac * (sL - (pr[p] + q[p]) * div) / rho[p];
+        e[p] += MPMWorkIncrement(A, p, e[p], sL, div);
       }
     }
     if (kinematics) {

@@ -113,6 +113,25 @@ PetscErrorCode MPMParticlesToGrid(MPM mpm, const MPMStepContext *ctx)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The conservative update in an expansion (MPMWorkIncrement): the change of e along the EOS isentrope from rho_p to
+   rho_p / (1 + eps) instead of the linear work of p + q; the energy this keeps above the linear work, m_p (de - de_lin),
+   is summed for the report (robustness.isentrope_energy), as in the compatible update. */
+typedef struct {
+  MPM              mpm;
+  const PetscReal *rho, *m, *mat;
+} MPMExpansion;
+
+static PetscReal MPMExpansionWork(void *ctx, PetscInt p, PetscReal e, PetscReal eps, PetscReal delin)
+{
+  MPMExpansion   *ex = (MPMExpansion *)ctx;
+  const MPMEOS    E  = ex->mpm->mat[(PetscInt)ex->mat[p]].eos;
+  const PetscReal de = MPMEOSIsentrope(E, ex->rho[p], e, ex->rho[p] / (1.0 + eps)) - e;
+
+  ex->mpm->diag.isentrope_energy += ex->m[p] * (de - delin);
+  ex->mpm->diag.isentrope_points++;
+  return de;
+}
+
 /* Gathers the grid velocity (stored in MPMNode::p after the advance) to the points:
    velocity:   v_p <- alpha (v_p + sum N_I (v_I - v_I^n)) + (1 - alpha) sum N_I v_I,
    kinematics: x_p += dt sum N_I v_I,  L_p = sum v_I (x) grad N_I.
@@ -163,8 +182,26 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
         mpm->cellS[c] = g->vcell / mpm->cellV[c] * div;
       }
     }
+    MPMExpansion          ex = {mpm, pts.f[MPM_FIELD_DENSITY], pts.f[MPM_FIELD_MASS], pts.f[MPM_FIELD_MATERIAL]};
+    const MPMTransferArgs A  = {.n         = pts.n,
+                                .x         = x,
+                                .v         = v,
+                                .L         = L,
+                                .e         = e,
+                                .pr        = pr,
+                                .q         = q,
+                                .S         = S,
+                                .rho       = rho,
+                                .cellwork  = cellwork ? mpm->cellS : NULL,
+                                .alpha     = alpha,
+                                .kefix     = kefix,
+                                .stress    = stress,
+                                .dt        = dt,
+                                .wfac      = wfac,
+                                .expand    = MPMExpansionWork,
+                                .ectx      = &ex,
+                                .threshold = mpm->isentrope_threshold};
     if (mpm->kern) {
-      const MPMTransferArgs A = {.n = pts.n, .x = x, .v = v, .L = L, .e = e, .pr = pr, .q = q, .S = S, .rho = rho, .cellwork = cellwork ? mpm->cellS : NULL, .alpha = alpha, .kefix = kefix, .stress = stress, .dt = dt, .wfac = wfac};
       mpm->kern->g2p[(velocity ? MPM_G2P_VELOCITY : 0) | (kinematics ? MPM_G2P_KINEMATICS : 0) | (work ? MPM_G2P_WORK : 0)](g, mpm->shape->data, &A, node);
     } else
       for (PetscInt p = 0; p < pts.n; p++) {
@@ -200,7 +237,7 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
               for (PetscInt i = 0; i < d; i++) div += Lb[i * d + i];
             if (stress)
               for (PetscInt i = 0; i < d * d; i++) sL += S[p * d * d + i] * Lb[i];
-            e[p] += wfac * (sL - (pr[p] + q[p]) * div) / rho[p];
+            e[p] += MPMWorkIncrement(&A, p, e[p], sL, div);
           }
         }
         if (kinematics) {

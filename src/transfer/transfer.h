@@ -25,15 +25,30 @@ enum {
 
 /* The point arrays a kernel reads and writes; entries a mode does not use may be NULL. */
 typedef struct {
-  PetscInt         n;              /* number of points                                            */
-  PetscReal       *x, *v, *L, *e;  /* position, velocity, velocity gradient, internal energy       */
-  const PetscReal *m, *V, *pr, *q; /* mass, volume, pressure, artificial viscosity                 */
-  const PetscReal *S, *rho;        /* deviatoric stress (d x d), density                           */
-  const PetscReal *cellwork;       /* conservative update with the cell rule: work per unit P V of each local cell, else NULL */
-  PetscReal        alpha;          /* FLIP fraction                                               */
-  PetscBool        kefix, stress;  /* kinetic-energy fix; the stress enters the work               */
-  PetscReal        dt, wfac;       /* step, half the kick (the work's time factor)                 */
+  PetscInt         n;                                                     /* number of points                                            */
+  PetscReal       *x, *v, *L, *e;                                         /* position, velocity, velocity gradient, internal energy       */
+  const PetscReal *m, *V, *pr, *q;                                        /* mass, volume, pressure, artificial viscosity                 */
+  const PetscReal *S, *rho;                                               /* deviatoric stress (d x d), density                           */
+  const PetscReal *cellwork;                                              /* conservative update with the cell rule: work per unit P V of each local cell, else NULL */
+  PetscReal        alpha;                                                 /* FLIP fraction                                               */
+  PetscBool        kefix, stress;                                         /* kinetic-energy fix; the stress enters the work               */
+  PetscReal        dt, wfac;                                              /* step, half the kick (the work's time factor)                 */
+  PetscReal (*expand)(void *, PetscInt, PetscReal, PetscReal, PetscReal); /* (ctx, p, e_p, eps, linear work) -> the pressure's work along the isentrope; NULL: always linear */
+  void     *ectx;
+  PetscReal threshold; /* relative expansion over the kick above which expand takes the pressure's work [-] */
 } MPMTransferArgs;
+
+/* The conservative update's energy increment of point p, dt_kick (s : Lbar - (p + q) tr Lbar) / rho, shared by the generic
+   and the specialised gathers. In an expansion eps = dt_kick tr Lbar beyond the threshold (-mpm_isentrope_threshold,
+   as the compatible update's) the share of p and q is replaced by the change along the EOS isentrope (A->expand counts
+   the difference for the report). Elsewhere it is the linear work, bit for bit. */
+static inline PetscReal MPMWorkIncrement(const MPMTransferArgs *A, PetscInt p, PetscReal e, PetscReal sL, PetscReal div)
+{
+  const PetscReal P = A->pr[p] + A->q[p], eps = A->wfac * div;
+
+  if (A->expand && eps > A->threshold) return A->wfac * sL / A->rho[p] + A->expand(A->ectx, p, e, eps, -P * eps / A->rho[p]);
+  return A->wfac * (sL - P * div) / A->rho[p];
+}
 
 typedef void (*MPMP2GKernel)(const MPMGrid *, const void *, const MPMTransferArgs *, MPMNode *);
 typedef void (*MPMG2PKernel)(const MPMGrid *, const void *, const MPMTransferArgs *, const MPMNode *);
