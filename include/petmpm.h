@@ -66,6 +66,7 @@ typedef const char *MPMExactType;
 #define MPMEXACTMMS "mms"
 #define MPMEXACTFLYER "flyer"
 #define MPMEXACTSEDOV "sedov"
+#define MPMEXACTNOH "noh"
 
 /* The MPM object */
 PETSC_EXTERN PetscErrorCode MPMInitializePackage(void);

@@ -24,6 +24,7 @@ PETSC_EXTERN PetscErrorCode MPMExactCreate_None(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_Riemann(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_Flyer(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_Sedov(MPMExact);
+PETSC_EXTERN PetscErrorCode MPMExactCreate_Noh(MPMExact);
 
 static PetscBool MPMPackageInitialized = PETSC_FALSE;
 PetscClassId     MPM_CLASSID;
@@ -56,6 +57,7 @@ PetscErrorCode MPMInitializePackage(void)
   PetscCall(MPMExactRegister(MPMEXACTMMS, MPMExactCreate_MMS));
   PetscCall(MPMExactRegister(MPMEXACTFLYER, MPMExactCreate_Flyer));
   PetscCall(MPMExactRegister(MPMEXACTSEDOV, MPMExactCreate_Sedov));
+  PetscCall(MPMExactRegister(MPMEXACTNOH, MPMExactCreate_Noh));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -450,9 +450,9 @@ PetscErrorCode MPMXProfile(MPM mpm, PetscInt nb, PetscReal xc[], PetscReal rho[]
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Volume-weighted density profile in shells about centre c over the first dr directions (nb shells of width w from
-   r = 0: r = |x - c| measured over directions 0 .. nd-1), on every rank; a shell without points reads 0. */
-PetscErrorCode MPMRadialProfile(MPM mpm, const PetscReal c[], PetscInt nd, PetscInt nb, PetscReal w, PetscReal rc[], PetscReal rho[])
+/* Volume-weighted density profile in shells about centre c (nb shells of width w from r = 0: r = |x - c| measured over
+   directions 0 .. nd-1), on every rank; a shell without points reads 0. vol (may be NULL): the points' volume in each. */
+PetscErrorCode MPMRadialProfile(MPM mpm, const PetscReal c[], PetscInt nd, PetscInt nb, PetscReal w, PetscReal rc[], PetscReal rho[], PetscReal vol[])
 {
   const PetscInt d = mpm->grid.dim;
   PetscReal     *sum;
@@ -475,6 +475,7 @@ PetscErrorCode MPMRadialProfile(MPM mpm, const PetscReal c[], PetscInt nd, Petsc
   for (PetscInt b = 0; b < nb; b++) {
     rc[b]  = (b + 0.5) * w;
     rho[b] = sum[2 * b + 1] > 0 ? sum[2 * b] / sum[2 * b + 1] : 0.0;
+    if (vol) vol[b] = sum[2 * b + 1];
   }
   PetscCall(PetscFree(sum));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -124,11 +124,12 @@ PetscErrorCode MPMProbeMean(MPMProbe probe, MPMProbeQuantity quantity, MPMProbeW
 }
 
 /* The volume-weighted density in nb shells of width w about the centre c, r measured over the first nd directions
-   (shell centres rc [cm], densities rho [g/cm^3], 0 where a shell holds no point): the caller's arrays. */
-PetscErrorCode MPMProbeRadialProfile(MPMProbe probe, const PetscReal c[], PetscInt nd, PetscInt nb, PetscReal w, PetscReal rc[], PetscReal rho[])
+   (shell centres rc [cm], densities rho [g/cm^3], 0 where a shell holds no point, and, if vol is not NULL, the points'
+   volume in each [cm^d]): the caller's arrays. */
+PetscErrorCode MPMProbeRadialProfile(MPMProbe probe, const PetscReal c[], PetscInt nd, PetscInt nb, PetscReal w, PetscReal rc[], PetscReal rho[], PetscReal vol[])
 {
   PetscFunctionBegin;
-  PetscCall(MPMRadialProfile(probe->mpm, c, nd, nb, w, rc, rho));
+  PetscCall(MPMRadialProfile(probe->mpm, c, nd, nb, w, rc, rho, vol));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

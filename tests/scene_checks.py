@@ -340,10 +340,11 @@ def test_study():
 
 
 
-def test_sedov():
-    """The Sedov similarity solution's xi0 (R = xi0 (E t^2 / rho0)^(1/(nu+2))) against the literature: Taylor's spherical
+def test_radial():
+    """The radial exact solutions. The Sedov similarity solution's xi0 (R = xi0 (E t^2 / rho0)^(1/(nu+2))) against the literature: Taylor's spherical
     constant 1.033 for gamma = 1.4 (Kamm & Timmes' alpha = 0.851072), 1.1517 for gamma = 5/3, cylindrical alpha = 0.984
-    (xi0 = 1.0040), planar alpha = 0.538548 over one side (xi0 = (2 alpha)^(-1/3) = 0.97545); and the bad-input messages."""
+    (xi0 = 1.0040), planar alpha = 0.538548 over one side (xi0 = (2 alpha)^(-1/3) = 0.97545); the Noh type's shocked
+    density ((gamma + 1)/(gamma - 1))^nu rho0 (4, 16, 64 for gamma = 5/3); and the bad-input messages of both."""
     import re
     cases = [(1, 1.4, (2 * 0.538548) ** (-1 / 3)), (2, 1.4, 0.984 ** (-1 / 4)), (3, 1.4, 0.851072 ** (-1 / 5)), (3, 5 / 3, 1.15167)]
     with tempfile.TemporaryDirectory() as d:
@@ -360,6 +361,17 @@ def test_sedov():
             args = ["-options_file", os.path.join(SRC, "inputs", "sedov_planar.opts"), "-ts_max_time", "1e-9", "-mpm_output", os.path.join(d, "b")]
             p = run(args + bad, expect_ok=False)
             check(p.returncode != 0 and needle in p.stdout + p.stderr, f"sedov {' '.join(bad)}: exit {p.returncode}, message names {needle}")
+        for dim, ref in ((1, 4.0), (2, 16.0), (3, 64.0)):
+            p = run(["-mpm_dim", str(dim), "-mpm_cells", ",".join(["4"] * dim), "-mpm_materials", "gas", "-mat_gas_eos_type", "idealgas", "-mat_gas_eos_idealgas_gamma", "1.6666666666666667",
+                     "-mat_gas_eos_idealgas_cv", "1e10", "-mpm_regions", "a", "-region_a_material", "gas", "-region_a_density", "1", "-region_a_temperature", "1e-6",
+                     "-mpm_exact_type", "noh", "-mpm_exact_noh_speed", "1e5", "-mpm_view", "-ts_max_time", "0", "-mpm_output", os.path.join(d, "v")])
+            m = re.search(r"shocked density ([0-9.e+]+)", p.stdout)
+            rho = float(m.group(1)) if m else float("nan")
+            check(abs(rho - ref) < 1e-9 * ref, f"Noh shocked density for nu = {dim}, gamma = 5/3: {rho} against {ref}")
+        for bad, needle in [(["-mpm_exact_noh_speed", "0"], "-mpm_exact_noh_speed"), (["-mpm_exact_noh_geometry", "spherical"], "-mpm_exact_noh_geometry"),
+                            (["-region_gas_velocity", "1e5,0"], "-region_gas_velocity")]:
+            p = run(["-options_file", os.path.join(SRC, "inputs", "noh_cylindrical.opts"), "-ts_max_time", "1e-9", "-mpm_output", os.path.join(d, "b")] + bad, expect_ok=False)
+            check(p.returncode != 0 and needle in p.stdout + p.stderr, f"noh {' '.join(bad)}: exit {p.returncode}, message names {needle}")
 
 
 TESTS = {n[5:]: f for n, f in globals().items() if n.startswith("test_")}

@@ -73,3 +73,59 @@ PetscErrorCode MPMExactComputeChecks(MPMExact exact, MPMProbe probe)
   if (exact->ops.checks) PetscCall(exact->ops.checks(exact, probe));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+/* The frame's options, -mpm_exact_<type>_geometry and _center (type: "sedov", "noh"). */
+PetscErrorCode MPMRadialFrameSetFromOptions(PetscOptionItems *PetscOptionsObject, const char type[], MPMRadialFrame *fr)
+{
+  const char *const geo[] = {"default", "planar", "cylindrical", "spherical"};
+  PetscInt          n = MPM_MAX_DIM, which = fr->nu;
+  char              name[64];
+
+  PetscFunctionBegin;
+  PetscCall(PetscSNPrintf(name, sizeof(name), "-exact_%s_geometry", type));
+  PetscCall(PetscOptionsEList(name, "Symmetry: planar, cylindrical or spherical (default: the grid's dimension)", "", geo, 4, geo[which], &which, NULL));
+  fr->nu = which;
+  PetscCall(PetscSNPrintf(name, sizeof(name), "-exact_%s_center", type));
+  PetscCall(PetscOptionsRealArray(name, "Centre [cm] (default: the domain's lower corner)", "", fr->c, &n, &fr->cset));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Checks the frame against the grid and fills its defaults, cell size and farthest radius. */
+PetscErrorCode MPMRadialFrameSetUp(MPMRadialFrame *fr, const MPMScene *sc, const char type[])
+{
+  const MPMGrid *g = sc->grid;
+
+  PetscFunctionBegin;
+  fr->dim = g->dim;
+  if (!fr->nu) fr->nu = g->dim;
+  PetscCheck(fr->nu <= g->dim, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_%s_geometry %s needs a %" PetscInt_FMT "D grid, the scene has -mpm_dim %" PetscInt_FMT, type, fr->nu == 2 ? "cylindrical" : "spherical", fr->nu, g->dim);
+  if (!fr->cset)
+    for (PetscInt k = 0; k < MPM_MAX_DIM; k++) fr->c[k] = k < g->dim ? g->lo[k] : 0.0;
+  fr->h    = g->hmin;
+  fr->rmax = 0.0;
+  for (PetscInt k = 0; k < fr->nu; k++) {
+    PetscCheck(fr->c[k] >= g->lo[k] && fr->c[k] <= g->hi[k], sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_%s_center: component %" PetscInt_FMT " = %g lies outside the domain [%g, %g]", type, k, (double)fr->c[k], (double)g->lo[k], (double)g->hi[k]);
+    fr->rmax += PetscSqr(PetscMax(g->hi[k] - fr->c[k], fr->c[k] - g->lo[k]));
+  }
+  fr->rmax = PetscSqrtReal(fr->rmax);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The ambient gas of a radial exact solution: the region at the domain's far corner, an ideal gas at rest (gamma, cv,
+   rho0, T0). */
+PetscErrorCode MPMSceneAmbientIdealGas(const MPMScene *sc, const char type[], PetscReal *gamma, PetscReal *cv, PetscReal *rho0, PetscReal *T0)
+{
+  const MPMGrid *g = sc->grid;
+  PetscReal      x[MPM_MAX_DIM];
+  PetscInt       r;
+
+  PetscFunctionBegin;
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) x[k] = k < g->dim ? g->hi[k] - 1e-6 * g->h[k] : 0.0;
+  r = MPMSceneRegionAt(sc, x);
+  PetscCheck(r >= 0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type %s: no region holds the far corner of the domain, where the ambient gas should be", type);
+  PetscCall(MPMEOSIdealGasGetParameters(sc->mat[sc->reg[r].material].eos, gamma, cv));
+  *rho0 = sc->reg[r].rho;
+  *T0   = sc->reg[r].T;
+  for (PetscInt k = 0; k < g->dim; k++) PetscCheck(sc->reg[r].v[k] == 0.0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type %s: the ambient gas (-region_%s_velocity) must be at rest", type, sc->reg[r].name);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

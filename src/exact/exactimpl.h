@@ -23,7 +23,7 @@ PETSC_INTERN PetscErrorCode MPMProbeDensityCrossing(MPMProbe, PetscReal, PetscRe
 PETSC_INTERN PetscErrorCode MPMProbeMean(MPMProbe, MPMProbeQuantity, MPMProbeWeight, PetscBool, PetscReal, PetscReal, PetscReal, PetscReal, PetscReal *, PetscBool *);
 PETSC_INTERN PetscErrorCode MPMProbeDensityProfile(MPMProbe, PetscInt *, const PetscReal **, const PetscReal **);
 PETSC_INTERN PetscErrorCode MPMProbeMax(MPMProbe, MPMProbeQuantity, PetscReal, PetscReal, PetscReal *, PetscBool *);
-PETSC_INTERN PetscErrorCode MPMProbeRadialProfile(MPMProbe, const PetscReal[], PetscInt, PetscInt, PetscReal, PetscReal[], PetscReal[]);
+PETSC_INTERN PetscErrorCode MPMProbeRadialProfile(MPMProbe, const PetscReal[], PetscInt, PetscInt, PetscReal, PetscReal[], PetscReal[], PetscReal[]);
 PETSC_INTERN PetscErrorCode MPMProbeAddCheck(MPMProbe, const char[], PetscReal, PetscReal);
 
 /* An exact solution knows the fields at a point and the scene's named scalar checks. */
@@ -46,3 +46,27 @@ PETSC_INTERN PetscErrorCode MPMExactEvaluate(MPMExact, PetscReal, const PetscRea
 PETSC_INTERN PetscErrorCode MPMExactComputeChecks(MPMExact, MPMProbe);
 PETSC_INTERN PetscBool      MPMExactInWindow(MPMExact, const PetscReal[]);
 PETSC_INTERN PetscReal      MPMProfileCrossing(PetscInt, const PetscReal[], const PetscReal[], PetscReal, PetscReal);
+
+/* A centre and a symmetry for the radial exact solutions (sedov, noh): r = |x - c| over the first nu directions
+   (nu = 1 planar, 2 cylindrical, 3 spherical). Options -mpm_exact_<type>_geometry (default: the grid's dimension)
+   and -mpm_exact_<type>_center (default: the domain's lower corner). */
+typedef struct {
+  PetscInt  nu;             /* 1 planar, 2 cylindrical, 3 spherical; 0 until set up: the grid's dimension */
+  PetscInt  dim;            /* the grid's dimension                                                       */
+  PetscReal c[MPM_MAX_DIM]; /* centre [cm]                                                                */
+  PetscBool cset;           /* the centre was given                                                       */
+  PetscReal h;              /* smallest cell size [cm]                                                    */
+  PetscReal rmax;           /* farthest point of the domain from the centre [cm]                          */
+} MPMRadialFrame;
+PETSC_INTERN PetscErrorCode MPMRadialFrameSetFromOptions(PetscOptionItems *, const char[], MPMRadialFrame *);
+PETSC_INTERN PetscErrorCode MPMRadialFrameSetUp(MPMRadialFrame *, const MPMScene *, const char[]);
+PETSC_INTERN PetscErrorCode MPMSceneAmbientIdealGas(const MPMScene *, const char[], PetscReal *, PetscReal *, PetscReal *, PetscReal *);
+
+/* |x - c| over the frame's nu directions [cm]. */
+static inline PetscReal MPMRadialFrameRadius(const MPMRadialFrame *fr, const PetscReal x[])
+{
+  PetscReal r2 = 0.0;
+
+  for (PetscInt k = 0; k < fr->nu; k++) r2 += PetscSqr(x[k] - fr->c[k]);
+  return PetscSqrtReal(r2);
+}

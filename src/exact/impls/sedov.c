@@ -26,23 +26,19 @@
 #define SEDOV_TABLE 6001
 
 typedef struct {
-  PetscInt  nu;                  /* 1 planar, 2 cylindrical, 3 spherical              */
-  PetscReal E;                   /* whole blast's energy [erg/cm^(3-nu)]              */
-  PetscReal c[MPM_MAX_DIM];      /* centre [cm]                                       */
-  PetscBool cset;                /* -mpm_exact_sedov_center given                     */
-  PetscReal gamma, cv, rho0, T0; /* ideal gas; ambient density [g/cm^3], T [eV]       */
-  PetscReal xi0, Ieng;           /* R = xi0 (E t^2/rho0)^(1/(nu+2)); energy integral  */
-  PetscReal h;                   /* smallest cell size [cm]: the profile's shell width */
-  PetscReal rmax;                /* farthest point of the domain from the centre [cm] */
-  PetscReal s[SEDOV_TABLE];      /* ln lambda, from 0 down                            */
-  PetscReal U[SEDOV_TABLE], G[SEDOV_TABLE], P[SEDOV_TABLE];
+  MPMRadialFrame fr;                  /* centre, symmetry nu, cell size (the profile's shell width), farthest radius */
+  PetscReal      E;                   /* whole blast's energy [erg/cm^(3-nu)]              */
+  PetscReal      gamma, cv, rho0, T0; /* ideal gas; ambient density [g/cm^3], T [eV]       */
+  PetscReal      xi0, Ieng;           /* R = xi0 (E t^2/rho0)^(1/(nu+2)); energy integral  */
+  PetscReal      s[SEDOV_TABLE];      /* ln lambda, from 0 down                            */
+  PetscReal      U[SEDOV_TABLE], G[SEDOV_TABLE], P[SEDOV_TABLE];
 } Exact_Sedov;
 
 /* d(U, ln G, P)/d ln(lambda) at lambda from the similarity equations (ln G: G falls as a high power of lambda at the
    centre). */
 static void SedovRHS(const Exact_Sedov *es, PetscReal lam, const PetscReal y[3], PetscReal dy[3])
 {
-  const PetscReal g = es->gamma, nu = (PetscReal)es->nu, delta = 2.0 / (nu + 2.0), k = 1.0 - 1.0 / delta;
+  const PetscReal g = es->gamma, nu = (PetscReal)es->fr.nu, delta = 2.0 / (nu + 2.0), k = 1.0 - 1.0 / delta;
   const PetscReal U = y[0], PG = y[2] * PetscExpReal(-y[1]), P = y[2], w = U - lam; /* PG = P / G */
   const PetscReal dU  = (-k * U * w + PG * (2.0 * k + g * (nu - 1.0) * U / lam)) / (w * w - g * PG);
   const PetscReal dlG = -((nu - 1.0) * U / lam + dU) / w;
@@ -55,8 +51,8 @@ static void SedovRHS(const Exact_Sedov *es, PetscReal lam, const PetscReal y[3],
 static PetscErrorCode SedovSolve(MPMExact exact)
 {
   Exact_Sedov    *es = (Exact_Sedov *)exact->data;
-  const PetscReal g = es->gamma, nu = (PetscReal)es->nu, delta = 2.0 / (nu + 2.0), ds = -PetscLogReal(1e6) / (SEDOV_TABLE - 1);
-  const PetscReal Snu = es->nu == 1 ? 2.0 : es->nu == 2 ? 2.0 * PETSC_PI : 4.0 * PETSC_PI;
+  const PetscReal g = es->gamma, nu = (PetscReal)es->fr.nu, delta = 2.0 / (nu + 2.0), ds = -PetscLogReal(1e6) / (SEDOV_TABLE - 1);
+  const PetscReal Snu = es->fr.nu == 1 ? 2.0 : es->fr.nu == 2 ? 2.0 * PETSC_PI : 4.0 * PETSC_PI;
 
   PetscFunctionBegin;
   es->s[0] = 0.0;
@@ -78,7 +74,7 @@ static PetscErrorCode SedovSolve(MPMExact exact)
     es->G[i + 1] = PetscExpReal(y[1] + ds * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1]) / 6.0);
     es->P[i + 1] = y[2] + ds * (k1[2] + 2 * k2[2] + 2 * k3[2] + k4[2]) / 6.0;
     PetscCheck(es->P[i + 1] > 0.0 && PetscIsNormalReal(es->P[i + 1]) && PetscIsNormalReal(es->U[i + 1]), exact->comm, PETSC_ERR_USER_INPUT,
-               "Sedov: the similarity solution for gamma = %g, nu = %" PetscInt_FMT " breaks down at lambda = %g (this solver covers the standard case, gamma < 7)", (double)g, es->nu, (double)PetscExpReal(s + ds));
+               "Sedov: the similarity solution for gamma = %g, nu = %" PetscInt_FMT " breaks down at lambda = %g (this solver covers the standard case, gamma < 7)", (double)g, es->fr.nu, (double)PetscExpReal(s + ds));
   }
   es->Ieng = 0.0; /* trapezoid in ln(lambda): the integrand times lambda^nu */
   for (PetscInt i = 0; i + 1 < SEDOV_TABLE; i++) {
@@ -96,18 +92,17 @@ static PetscErrorCode SedovSolve(MPMExact exact)
 /* Shock radius [cm] at time t. */
 static inline PetscReal SedovRadius(const Exact_Sedov *es, PetscReal t)
 {
-  return es->xi0 * PetscPowReal(es->E * t * t / es->rho0, 1.0 / (es->nu + 2.0));
+  return es->xi0 * PetscPowReal(es->E * t * t / es->rho0, 1.0 / (es->fr.nu + 2.0));
 }
 
 static void MPMExactEvaluate_Sedov(void *ctx, PetscReal t, const PetscReal x[], const PetscReal X[], PetscReal *rho, PetscReal v[], PetscReal *p, PetscReal *T)
 {
   const Exact_Sedov *es = (const Exact_Sedov *)ctx;
   const PetscReal    R  = t > 0.0 ? SedovRadius(es, t) : 0.0;
-  PetscReal          r2 = 0.0, r, lam, U, G, P, Rdot;
+  const PetscReal    r  = MPMRadialFrameRadius(&es->fr, x);
+  PetscReal          lam, U, G, P, Rdot;
 
   v[0] = v[1] = v[2] = 0.0;
-  for (PetscInt k = 0; k < es->nu; k++) r2 += PetscSqr(x[k] - es->c[k]);
-  r = PetscSqrtReal(r2);
   if (!(r < R)) { /* ambient, at rest */
     *rho = es->rho0;
     *T   = es->T0;
@@ -130,41 +125,21 @@ static void MPMExactEvaluate_Sedov(void *ctx, PetscReal t, const PetscReal x[], 
       P                 = (1 - w) * es->P[i] + w * es->P[i + 1];
     }
   }
-  Rdot = 2.0 / (es->nu + 2.0) * R / t;
+  Rdot = 2.0 / (es->fr.nu + 2.0) * R / t;
   *rho = es->rho0 * G;
   *p   = es->rho0 * Rdot * Rdot * P;
   *T   = *p / ((es->gamma - 1.0) * PetscMax(*rho, 1e-300) * es->cv);
-  for (PetscInt k = 0; k < es->nu; k++) v[k] = r > 0.0 ? Rdot * U * (x[k] - es->c[k]) / r : 0.0;
+  for (PetscInt k = 0; k < es->fr.nu; k++) v[k] = r > 0.0 ? Rdot * U * (x[k] - es->fr.c[k]) / r : 0.0;
 }
 
 static PetscErrorCode MPMExactSetUp_Sedov(MPMExact exact, const MPMScene *sc)
 {
-  Exact_Sedov    *es = (Exact_Sedov *)exact->data;
-  const MPMGrid  *g  = sc->grid;
-  PetscReal       x[MPM_MAX_DIM];
-  PetscInt        r;
-  const PetscBool given = (PetscBool)(es->nu > 0);
+  Exact_Sedov *es = (Exact_Sedov *)exact->data;
 
   PetscFunctionBegin;
-  if (!given) es->nu = g->dim;
-  PetscCheck(es->nu <= g->dim, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_sedov_geometry %s needs a %" PetscInt_FMT "D grid, the scene has -mpm_dim %" PetscInt_FMT, es->nu == 2 ? "cylindrical" : "spherical", es->nu, g->dim);
-  PetscCheck(es->E > 0.0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_sedov_energy must be > 0 (the whole blast's energy, erg/cm^%" PetscInt_FMT "), got %g", 3 - es->nu, (double)es->E);
-  if (!es->cset)
-    for (PetscInt k = 0; k < MPM_MAX_DIM; k++) es->c[k] = k < g->dim ? g->lo[k] : 0.0;
-  es->h    = g->hmin;
-  es->rmax = 0.0;
-  for (PetscInt k = 0; k < es->nu; k++) {
-    PetscCheck(es->c[k] >= g->lo[k] && es->c[k] <= g->hi[k], sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_sedov_center: component %" PetscInt_FMT " = %g lies outside the domain [%g, %g]", k, (double)es->c[k], (double)g->lo[k], (double)g->hi[k]);
-    es->rmax += PetscSqr(PetscMax(g->hi[k] - es->c[k], es->c[k] - g->lo[k]));
-  }
-  es->rmax = PetscSqrtReal(es->rmax);
-  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) x[k] = k < g->dim ? g->hi[k] - 1e-6 * g->h[k] : 0.0; /* the ambient gas: the region at the far corner */
-  r = MPMSceneRegionAt(sc, x);
-  PetscCheck(r >= 0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type sedov: no region holds the far corner of the domain, where the ambient gas should be");
-  PetscCall(MPMEOSIdealGasGetParameters(sc->mat[sc->reg[r].material].eos, &es->gamma, &es->cv));
-  es->rho0 = sc->reg[r].rho;
-  es->T0   = sc->reg[r].T;
-  for (PetscInt k = 0; k < g->dim; k++) PetscCheck(sc->reg[r].v[k] == 0.0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type sedov: the ambient gas (region %s) must be at rest", sc->reg[r].name);
+  PetscCall(MPMRadialFrameSetUp(&es->fr, sc, "sedov"));
+  PetscCheck(es->E > 0.0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_sedov_energy must be > 0 (the whole blast's energy, erg/cm^%" PetscInt_FMT "), got %g", 3 - es->fr.nu, (double)es->E);
+  PetscCall(MPMSceneAmbientIdealGas(sc, "sedov", &es->gamma, &es->cv, &es->rho0, &es->T0));
   PetscCall(SedovSolve(exact));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -179,12 +154,12 @@ static PetscErrorCode MPMExactChecks_Sedov(MPMExact exact, MPMProbe probe)
   PetscCall(MPMProbeGetTime(probe, &t));
   if (!(t > 0.0)) PetscFunctionReturn(PETSC_SUCCESS);
   R = SedovRadius(es, t);
-  if (R > es->rmax - 3.0 * es->h) PetscFunctionReturn(PETSC_SUCCESS); /* the shock has reached the boundary */
-  nb = (PetscInt)PetscCeilReal(es->rmax / es->h);
+  if (R > es->fr.rmax - 3.0 * es->fr.h) PetscFunctionReturn(PETSC_SUCCESS); /* the shock has reached the boundary */
+  nb = (PetscInt)PetscCeilReal(es->fr.rmax / es->fr.h);
   PetscCall(PetscMalloc2(nb, &rc, nb, &rho));
-  PetscCall(MPMProbeRadialProfile(probe, es->c, es->nu, nb, es->h, rc, rho));
+  PetscCall(MPMProbeRadialProfile(probe, es->fr.c, es->fr.nu, nb, es->fr.h, rc, rho, NULL));
   for (PetscInt b = 0; b < nb; b++)
-    if (rc[b] < R + 5.0 * es->h) peak = PetscMax(peak, rho[b]);
+    if (rc[b] < R + 5.0 * es->fr.h) peak = PetscMax(peak, rho[b]);
   PetscCall(MPMProbeAddCheck(probe, "shock_position", MPMProfileCrossing(nb, rc, rho, es->rho0 + 0.5 * (peak - es->rho0), R), R));
   PetscCall(MPMProbeAddCheck(probe, "peak_density", peak, es->rho0 * (es->gamma + 1.0) / (es->gamma - 1.0)));
   PetscCall(PetscFree2(rc, rho));
@@ -193,16 +168,12 @@ static PetscErrorCode MPMExactChecks_Sedov(MPMExact exact, MPMProbe probe)
 
 static PetscErrorCode MPMExactSetFromOptions_Sedov(MPMExact exact, PetscOptionItems *PetscOptionsObject)
 {
-  Exact_Sedov      *es    = (Exact_Sedov *)exact->data;
-  const char *const geo[] = {"default", "planar", "cylindrical", "spherical"};
-  PetscInt          n = MPM_MAX_DIM, which = es->nu;
+  Exact_Sedov *es = (Exact_Sedov *)exact->data;
 
   PetscFunctionBegin;
   PetscOptionsHeadBegin(PetscOptionsObject, "Exact Sedov-Taylor blast");
   PetscCall(PetscOptionsReal("-exact_sedov_energy", "Energy of the whole blast E [erg/cm^2 planar, erg/cm cylindrical, erg spherical], > 0; a domain with symmetry walls through the centre holds E/2, E/4 or E/8", "", es->E, &es->E, NULL));
-  PetscCall(PetscOptionsEList("-exact_sedov_geometry", "Symmetry of the blast: planar, cylindrical or spherical (default: the grid's dimension)", "", geo, 4, geo[which], &which, NULL));
-  es->nu = which;
-  PetscCall(PetscOptionsRealArray("-exact_sedov_center", "Centre of the blast [cm] (default: the domain's lower corner)", "", es->c, &n, &es->cset));
+  PetscCall(MPMRadialFrameSetFromOptions(PetscOptionsObject, "sedov", &es->fr));
   PetscOptionsHeadEnd();
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -212,7 +183,7 @@ static PetscErrorCode MPMExactView_Sedov(MPMExact exact, PetscViewer viewer)
   Exact_Sedov *es = (Exact_Sedov *)exact->data;
 
   PetscFunctionBegin;
-  PetscCall(PetscViewerASCIIPrintf(viewer, "Sedov blast, nu = %" PetscInt_FMT ", gamma %g, E %g, rho0 %g: xi0 %.6f (energy integral %.6f)\n", es->nu, (double)es->gamma, (double)es->E, (double)es->rho0, (double)es->xi0, (double)es->Ieng));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "Sedov blast, nu = %" PetscInt_FMT ", gamma %g, E %g, rho0 %g: xi0 %.6f (energy integral %.6f)\n", es->fr.nu, (double)es->gamma, (double)es->E, (double)es->rho0, (double)es->xi0, (double)es->Ieng));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
