@@ -424,60 +424,80 @@ PetscErrorCode MPMMigrate(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Volume-weighted density profile along x, binned by grid column (bin centres xc), on every rank. */
-PetscErrorCode MPMXProfile(MPM mpm, PetscInt nb, PetscReal xc[], PetscReal rho[])
+/* Sums m_p and V_p of the points into nb bins (bin(ctx, x_p) < 0 or >= nb: none) over all ranks, and gives the
+   volume-weighted density of each bin (0 for an empty one) and, if vol is not NULL, its points' volume. */
+static PetscErrorCode MPMBinnedDensity(MPM mpm, PetscInt nb, PetscInt (*bin)(const void *, const PetscReal[]), const void *ctx, PetscReal rho[], PetscReal vol[])
 {
-  const MPMGrid *g = &mpm->grid;
-  PetscReal     *sum;
-  MPMPoints      pts;
+  PetscReal *sum;
+  MPMPoints  pts;
 
   PetscFunctionBegin;
   PetscCall(PetscCalloc1(2 * nb, &sum));
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   for (PetscInt p = 0; p < pts.n; p++) {
-    PetscInt b = (PetscInt)PetscFloorReal((pts.f[MPM_FIELD_POSITION][p * g->dim] - g->lo[0]) / (g->hi[0] - g->lo[0]) * nb);
-    b          = PetscMax(0, PetscMin(nb - 1, b));
+    const PetscInt b = bin(ctx, &pts.f[MPM_FIELD_POSITION][p * mpm->grid.dim]);
+    if (b < 0 || b >= nb) continue;
     sum[2 * b] += pts.f[MPM_FIELD_MASS][p];
     sum[2 * b + 1] += pts.f[MPM_FIELD_VOLUME][p];
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, sum, 2 * nb, MPIU_REAL, MPIU_SUM, mpm->comm));
   for (PetscInt b = 0; b < nb; b++) {
-    xc[b]  = g->lo[0] + (b + 0.5) * (g->hi[0] - g->lo[0]) / nb;
     rho[b] = sum[2 * b + 1] > 0 ? sum[2 * b] / sum[2 * b + 1] : 0.0;
+    if (vol) vol[b] = sum[2 * b + 1];
   }
   PetscCall(PetscFree(sum));
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+typedef struct {
+  const MPMGrid *g;
+  PetscInt       nb;
+} MPMXBins;
+
+static PetscInt MPMXBin(const void *ctx, const PetscReal x[])
+{
+  const MPMXBins *xb = (const MPMXBins *)ctx;
+  const PetscInt  b  = (PetscInt)PetscFloorReal((x[0] - xb->g->lo[0]) / (xb->g->hi[0] - xb->g->lo[0]) * xb->nb);
+  return PetscMax(0, PetscMin(xb->nb - 1, b)); /* clamped: every point counts */
+}
+
+/* Volume-weighted density profile along x, binned by grid column (bin centres xc), on every rank. */
+PetscErrorCode MPMXProfile(MPM mpm, PetscInt nb, PetscReal xc[], PetscReal rho[])
+{
+  const MPMGrid *g  = &mpm->grid;
+  const MPMXBins xb = {g, nb};
+
+  PetscFunctionBegin;
+  PetscCall(MPMBinnedDensity(mpm, nb, MPMXBin, &xb, rho, NULL));
+  for (PetscInt b = 0; b < nb; b++) xc[b] = g->lo[0] + (b + 0.5) * (g->hi[0] - g->lo[0]) / nb;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+typedef struct {
+  const PetscReal *c;
+  PetscInt         nd;
+  PetscReal        w;
+} MPMShells;
+
+static PetscInt MPMShellBin(const void *ctx, const PetscReal x[])
+{
+  const MPMShells *sh = (const MPMShells *)ctx;
+  PetscReal        r2 = 0.0;
+
+  for (PetscInt k = 0; k < sh->nd; k++) r2 += PetscSqr(x[k] - sh->c[k]);
+  return (PetscInt)PetscMin(PetscFloorReal(PetscSqrtReal(r2) / sh->w), (PetscReal)PETSC_MAX_INT);
 }
 
 /* Volume-weighted density profile in shells about centre c (nb shells of width w from r = 0: r = |x - c| measured over
    directions 0 .. nd-1), on every rank; a shell without points reads 0. vol (may be NULL): the points' volume in each. */
 PetscErrorCode MPMRadialProfile(MPM mpm, const PetscReal c[], PetscInt nd, PetscInt nb, PetscReal w, PetscReal rc[], PetscReal rho[], PetscReal vol[])
 {
-  const PetscInt d = mpm->grid.dim;
-  PetscReal     *sum;
-  MPMPoints      pts;
+  const MPMShells sh = {c, nd, w};
 
   PetscFunctionBegin;
-  PetscCall(PetscCalloc1(2 * nb, &sum));
-  PetscCall(MPMPointsGetArrays(mpm, &pts));
-  for (PetscInt p = 0; p < pts.n; p++) {
-    PetscReal r2 = 0.0;
-    PetscInt  b;
-    for (PetscInt k = 0; k < nd; k++) r2 += PetscSqr(pts.f[MPM_FIELD_POSITION][p * d + k] - c[k]);
-    b = (PetscInt)PetscFloorReal(PetscSqrtReal(r2) / w);
-    if (b >= nb) continue;
-    sum[2 * b] += pts.f[MPM_FIELD_MASS][p];
-    sum[2 * b + 1] += pts.f[MPM_FIELD_VOLUME][p];
-  }
-  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, sum, 2 * nb, MPIU_REAL, MPIU_SUM, mpm->comm));
-  for (PetscInt b = 0; b < nb; b++) {
-    rc[b]  = (b + 0.5) * w;
-    rho[b] = sum[2 * b + 1] > 0 ? sum[2 * b] / sum[2 * b + 1] : 0.0;
-    if (vol) vol[b] = sum[2 * b + 1];
-  }
-  PetscCall(PetscFree(sum));
+  PetscCall(MPMBinnedDensity(mpm, nb, MPMShellBin, &sh, rho, vol));
+  for (PetscInt b = 0; b < nb; b++) rc[b] = (b + 0.5) * w;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -340,6 +340,13 @@ def test_study():
 
 
 
+def gas_view(d, dim, gamma, exact):
+    """-mpm_view of a cold ideal gas at rest on a 4-cell grid in dim dimensions with the given exact solution (no step)."""
+    return run(["-mpm_dim", str(dim), "-mpm_cells", ",".join(["4"] * dim), "-mpm_materials", "gas", "-mat_gas_eos_type", "idealgas", "-mat_gas_eos_idealgas_gamma", repr(gamma),
+                "-mat_gas_eos_idealgas_cv", "1e10", "-mpm_regions", "a", "-region_a_material", "gas", "-region_a_density", "1", "-region_a_temperature", "1e-6",
+                *exact, "-mpm_view", "-ts_max_time", "0", "-mpm_output", os.path.join(d, "v")])
+
+
 def test_radial():
     """The radial exact solutions. The Sedov similarity solution's xi0 (R = xi0 (E t^2 / rho0)^(1/(nu+2))) against the literature: Taylor's spherical
     constant 1.033 for gamma = 1.4 (Kamm & Timmes' alpha = 0.851072), 1.1517 for gamma = 5/3, cylindrical alpha = 0.984
@@ -349,10 +356,7 @@ def test_radial():
     cases = [(1, 1.4, (2 * 0.538548) ** (-1 / 3)), (2, 1.4, 0.984 ** (-1 / 4)), (3, 1.4, 0.851072 ** (-1 / 5)), (3, 5 / 3, 1.15167)]
     with tempfile.TemporaryDirectory() as d:
         for dim, gamma, ref in cases:
-            cells = ",".join(["4"] * dim)
-            p = run(["-mpm_dim", str(dim), "-mpm_cells", cells, "-mpm_materials", "gas", "-mat_gas_eos_type", "idealgas", "-mat_gas_eos_idealgas_gamma", repr(gamma),
-                     "-mat_gas_eos_idealgas_cv", "1e10", "-mpm_regions", "a", "-region_a_material", "gas", "-region_a_density", "1", "-region_a_temperature", "1e-6",
-                     "-mpm_exact_type", "sedov", "-mpm_exact_sedov_energy", "1", "-mpm_view", "-ts_max_time", "0", "-mpm_output", os.path.join(d, "v")])
+            p = gas_view(d, dim, gamma, ["-mpm_exact_type", "sedov", "-mpm_exact_sedov_energy", "1"])
             m = re.search(r"xi0 ([0-9.]+)", p.stdout)
             xi0 = float(m.group(1)) if m else float("nan")
             check(abs(xi0 - ref) < 1e-3 * ref, f"Sedov xi0 for nu = {dim}, gamma = {gamma:.4g}: {xi0:.6f} against {ref:.6f}")
@@ -362,9 +366,7 @@ def test_radial():
             p = run(args + bad, expect_ok=False)
             check(p.returncode != 0 and needle in p.stdout + p.stderr, f"sedov {' '.join(bad)}: exit {p.returncode}, message names {needle}")
         for dim, ref in ((1, 4.0), (2, 16.0), (3, 64.0)):
-            p = run(["-mpm_dim", str(dim), "-mpm_cells", ",".join(["4"] * dim), "-mpm_materials", "gas", "-mat_gas_eos_type", "idealgas", "-mat_gas_eos_idealgas_gamma", "1.6666666666666667",
-                     "-mat_gas_eos_idealgas_cv", "1e10", "-mpm_regions", "a", "-region_a_material", "gas", "-region_a_density", "1", "-region_a_temperature", "1e-6",
-                     "-mpm_exact_type", "noh", "-mpm_exact_noh_speed", "1e5", "-mpm_view", "-ts_max_time", "0", "-mpm_output", os.path.join(d, "v")])
+            p = gas_view(d, dim, 5 / 3, ["-mpm_exact_type", "noh", "-mpm_exact_noh_speed", "1e5"])
             m = re.search(r"shocked density ([0-9.e+]+)", p.stdout)
             rho = float(m.group(1)) if m else float("nan")
             check(abs(rho - ref) < 1e-9 * ref, f"Noh shocked density for nu = {dim}, gamma = 5/3: {rho} against {ref}")
