@@ -104,7 +104,7 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscCall(MPMOptionsCheckRange("-mpm_isentrope_threshold", mpm->isentrope_threshold, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
   PetscCall(PetscOptionsReal("-mpm_vacuum_density", "Density, as a fraction of the lightest initial density of the point's material, below which the report counts it as vacuum [-], in (0, 1)", "", mpm->vacuum_density, &mpm->vacuum_density, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_vacuum_density", mpm->vacuum_density, 0.0, 1.0, PETSC_TRUE, PETSC_TRUE));
-  PetscCall(PetscOptionsReal("-mpm_conduction", "Artificial heat conduction C_h: a compressing point mixes its specific internal energy with its material's points on its nodes at the rate C_h |div v| [-], >= 0 (0: off)", "", mpm->conduction,
+  PetscCall(PetscOptionsReal("-mpm_conduction", "Artificial heat conduction C_h: a point the step compressed exchanges heat, by temperature, with the points on its nodes at the rate C_h |div v| [-], >= 0 (0: off)", "", mpm->conduction,
                              &mpm->conduction, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_conduction", mpm->conduction, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
   PetscCall(PetscOptionsBool("-mpm_split", "Split a point whose domain stretches beyond -mpm_split_length cells along an axis into two (mass, momentum, energy, volume and first moment conserved)", "", mpm->split, &mpm->split, NULL));
