@@ -45,6 +45,7 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   m->alpha                  = 0.99;
   m->split                  = PETSC_TRUE;
   m->conduction             = 2.0;
+  m->domain_skew            = 0.5;
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
     m->grid.cells[k] = 1;
     m->grid.lo[k]    = 0.0;
@@ -107,6 +108,9 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscCall(PetscOptionsReal("-mpm_conduction", "Artificial heat conduction C_h: a point the step compressed exchanges heat, by temperature, with the points on its nodes at the rate C_h |div v| [-], >= 0 (0: off)", "", mpm->conduction,
                              &mpm->conduction, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_conduction", mpm->conduction, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+  PetscCall(PetscOptionsReal("-mpm_domain_skew", "A CPDI domain whose skewness |det R| / prod |R e_k| (1 for a box) falls below this is reset to the cube of the same volume, for materials that do not read F [-], in [0, 1) (0: never)", "",
+                             mpm->domain_skew, &mpm->domain_skew, NULL));
+  PetscCall(MPMOptionsCheckRange("-mpm_domain_skew", mpm->domain_skew, 0.0, 1.0, PETSC_FALSE, PETSC_TRUE));
   PetscCall(PetscOptionsBool("-mpm_split", "Split a point whose domain stretches beyond -mpm_split_length cells along an axis into two (mass, momentum, energy, volume and first moment conserved)", "", mpm->split, &mpm->split, NULL));
   if (mpm->split) {
     PetscInt level    = 20;
@@ -195,6 +199,7 @@ PetscErrorCode MPMSetUp(MPM mpm)
     if (mpm->scheme == MPM_SCHEME_MUSL) PetscCall(MPMModuleAdd(mpm, "MPMRemapMomentum", MPM_PHASE_POINT_KINEMATICS, MPMRemapApply, NULL));
     if (mpm->viscosity) PetscCall(MPMModuleAdd(mpm, "MPMViscosity", MPM_PHASE_POINT_STATE, MPMViscosityModuleApply, NULL));
     if (mpm->conduction > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMConduction", MPM_PHASE_POINT_END, MPMConductionApply, NULL));
+    if (mpm->shape->needs_F && mpm->grid.dim > 1 && mpm->domain_skew > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMDomain", MPM_PHASE_POINT_ADAPT, MPMDomainApply, NULL));
     if (mpm->split) PetscCall(MPMModuleAdd(mpm, "MPMSplit", MPM_PHASE_POINT_ADAPT, MPMSplitApply, NULL));
   }
 

@@ -111,6 +111,7 @@ typedef struct {
   PetscInt  points_split;     /* points this rank split (each split adds one point)                       */
   PetscInt  split_refused;    /* point-steps that called for a split the level limit refused (this rank) */
   PetscInt  wall_reflections; /* points this rank put back across a wall (MPMMigrate)              */
+  PetscInt  domain_resets;    /* point-steps whose skewed CPDI domain this rank reset to a cube (MPMDomainApply) */
 } MPMDiagnostics;
 
 struct _p_MPM {
@@ -129,6 +130,7 @@ struct _p_MPM {
   PetscReal            vacuum_density;             /* points below this fraction of their material's initial density count as vacuum [-] */
   MPMDtLimit           dt_limit;                   /* what set the current step's size */
   PetscReal            conduction;                 /* -mpm_conduction: artificial heat conduction coefficient C_h [-], 0: off */
+  PetscReal            domain_skew;                /* -mpm_domain_skew: a CPDI domain less square than this is reset to a cube [-], 0: never */
   PetscBool            split;                      /* -mpm_split: the point splitting module is in the step  */
   PetscReal            split_length;               /* a domain longer than this along an axis splits [cells] */
   PetscReal            split_min_scale;            /* smallest domain scale a split may leave: 2^-max_level [-] */
@@ -251,6 +253,7 @@ PETSC_INTERN PetscErrorCode MPMWallsApply(MPMModule, MPM, const MPMStepContext *
 PETSC_INTERN PetscErrorCode MPMGravityApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMRemapApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMSplitApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
+PETSC_INTERN PetscErrorCode MPMDomainApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMConductionApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMViscosityModuleApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMScatter(MPM, PetscBool, PetscReal);

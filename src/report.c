@@ -250,7 +250,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   const MPMGrid *g = &mpm->grid;
   PetscReal      err[MPM_NERR][3], rhomin = 0, dmass, denergy, mass, energy, mom[MPM_MAX_DIM], shock_cells = -1.0, pss;
   PetscInt       nonfinite = 0, npoints, nvac, nempty;
-  PetscReal      eisen, nisen, nsplit, nrefuse, nreflect;
+  PetscReal      eisen, nisen, nsplit, nrefuse, nreflect, nreset;
   PetscMPIInt    size, rank;
 
   PetscFunctionBegin;
@@ -262,13 +262,14 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   PetscCall(MPMComputeChecks(mpm));
   PetscCall(MPMDiagnoseVacuum(mpm, &nvac, &nempty));
   {
-    PetscReal s[5] = {mpm->diag.isentrope_energy, (PetscReal)mpm->diag.isentrope_points, (PetscReal)mpm->diag.points_split, (PetscReal)mpm->diag.split_refused, (PetscReal)mpm->diag.wall_reflections};
-    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 5, MPIU_REAL, MPIU_SUM, mpm->comm));
+    PetscReal s[6] = {mpm->diag.isentrope_energy, (PetscReal)mpm->diag.isentrope_points, (PetscReal)mpm->diag.points_split, (PetscReal)mpm->diag.split_refused, (PetscReal)mpm->diag.wall_reflections, (PetscReal)mpm->diag.domain_resets};
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 6, MPIU_REAL, MPIU_SUM, mpm->comm));
     eisen    = s[0];
     nisen    = s[1];
     nsplit   = s[2];
     nrefuse  = s[3];
     nreflect = s[4];
+    nreset   = s[5];
   }
   for (PetscInt c = 0; c < mpm->nchecks; c++) {
     PetscBool is;
@@ -329,8 +330,8 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     for (PetscInt l = 0; l < MPM_NUM_DT_LIMITS; l++) fprintf(fp, "%s\"%s\": %" PetscInt_FMT, l ? ", " : "", MPMDtLimitNames[l], mpm->diag.dt_limit[l]);
     fprintf(fp,
             "}, \"vacuum_points\": %" PetscInt_FMT ", \"vacuum_points_max\": %" PetscInt_FMT ", \"first_vacuum_step\": %" PetscInt_FMT ", \"empty_cells\": %" PetscInt_FMT ", \"empty_cells_max\": %" PetscInt_FMT
-            ", \"first_empty_step\": %" PetscInt_FMT ", \"points_split\": %.0f, \"split_refused\": %.0f, \"wall_reflections\": %.0f}",
-            nvac, mpm->diag.vacuum_points_max, mpm->diag.first_vacuum_step, nempty, mpm->diag.empty_cells_max, mpm->diag.first_empty_step, (double)nsplit, (double)nrefuse, (double)nreflect);
+            ", \"first_empty_step\": %" PetscInt_FMT ", \"points_split\": %.0f, \"split_refused\": %.0f, \"wall_reflections\": %.0f, \"domain_resets\": %.0f}",
+            nvac, mpm->diag.vacuum_points_max, mpm->diag.first_vacuum_step, nempty, mpm->diag.empty_cells_max, mpm->diag.first_empty_step, (double)nsplit, (double)nrefuse, (double)nreflect, (double)nreset);
     fprintf(fp, ",\n  \"min_density\": %.10g,\n  \"nonfinite\": %" PetscInt_FMT ",\n  \"checks\": [", (double)rhomin, nonfinite);
     for (PetscInt c = 0; c < mpm->nchecks; c++)
       fprintf(fp, "%s\n    {\"name\": \"%s\", \"value\": %.10g, \"reference\": %.10g, \"rel_error\": %.6e}", c ? "," : "", mpm->checks[c].name, (double)mpm->checks[c].value, (double)mpm->checks[c].reference,

@@ -1,0 +1,49 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* Domain regularisation module (point phase MPM_PHASE_POINT_ADAPT, before splitting; shape functions that read a
+   point's domain, CPDI; -mpm_domain_skew). A point's domain is the parallelepiped R = F diag(s) l0 (split.c). In a
+   sheared flow its edges turn towards each other and the domain becomes a sliver: in the cylindrical Sedov blast a
+   point's F reached [[40, -31], [-86, 67]], edges 95 l0 long and a fraction of a cell apart, and the domain-averaged
+   gradient weights reached 1.4e4 1/cm against 1/h = 64, so L_p was noise and the run blew up. Splitting halves a
+   domain along reference axes and cannot undo shear. When the domain's skewness
+     sigma = |det R| / prod_k |R e_k|     (1 for a box, -> 0 for a sliver; in 2D the sine of the edges' angle)
+   falls below -mpm_domain_skew, and the point's material does not read F (a fluid, or a hypoelastic strength model,
+   which integrate rates; a hyperelastic one is left alone), the domain is replaced by the square (cube) of the same
+   volume: F <- |det R|^(1/d) diag(1/s), so that F diag(s) = |det R|^(1/d) I. Mass, volume, momentum and energy are
+   unchanged; only the domain over which the shape functions average changes. The splitting that follows then halves
+   a square along each axis in turn, so a near vacuum that opens in two directions keeps about one point per cell
+   (a principal-axes rectangle of the same sliver split along its length 440,520 times where the cube split 25,961).
+   Axis-aligned stretching and compression (a planar tube on a 2D or 3D grid) leave a box and are never touched. The
+   report counts the resets (robustness.domain_resets). */
+#include "../petmpmimpl.h"
+
+PetscErrorCode MPMDomainApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
+{
+  const PetscInt d = mpm->grid.dim;
+  MPMPoints      pts;
+
+  PetscFunctionBegin;
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt p = 0; p < pts.n; p++) {
+    const MPMStrength S = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].strength;
+    PetscReal        *F = &pts.f[MPM_FIELD_DEFGRAD][p * d * d], R[MPM_MAX_DIM * MPM_MAX_DIM], edges = 1.0, det;
+    const PetscReal  *s = pts.f[MPM_FIELD_DOMAINSCALE] ? &pts.f[MPM_FIELD_DOMAINSCALE][p * d] : NULL;
+    if (S && S->needs_F) continue;
+    for (PetscInt i = 0; i < d; i++)
+      for (PetscInt k = 0; k < d; k++) R[i * d + k] = F[i * d + k] * (s ? s[k] : 1.0);
+    for (PetscInt k = 0; k < d; k++) {
+      PetscReal len2 = 0.0;
+      for (PetscInt i = 0; i < d; i++) len2 += R[i * d + k] * R[i * d + k];
+      edges *= PetscSqrtReal(len2);
+    }
+    det = PetscAbsReal(MPMDeterminant(d, R));
+    if (!(det < mpm->domain_skew * edges)) continue;
+    {
+      const PetscReal a = d == 2 ? PetscSqrtReal(det) : PetscCbrtReal(det);
+      for (PetscInt i = 0; i < d; i++)
+        for (PetscInt k = 0; k < d; k++) F[i * d + k] = i == k ? a / (s ? s[k] : 1.0) : 0.0;
+    }
+    mpm->diag.domain_resets++;
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
