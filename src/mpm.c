@@ -113,7 +113,7 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscCall(MPMOptionsCheckRange("-mpm_domain_skew", mpm->domain_skew, 0.0, 1.0, PETSC_FALSE, PETSC_TRUE));
   PetscCall(PetscOptionsBool("-mpm_split", "Split a point whose domain stretches beyond -mpm_split_length cells along an axis into two (mass, momentum, energy, volume and first moment conserved)", "", mpm->split, &mpm->split, NULL));
   if (mpm->split) {
-    PetscInt level    = 20;
+    PetscInt level    = 30;
     mpm->split_length = PetscMax(1.0, 1.5 / mpm->ppc);
     PetscCall(PetscOptionsReal("-mpm_split_length", "Length of a point's domain along an axis above which it splits [cells], default max(1, 1.5 / ppc), >= 1 / ppc (the lattice spacing)", "", mpm->split_length, &mpm->split_length, NULL));
     PetscCall(MPMOptionsCheckRange("-mpm_split_length", mpm->split_length, 1.0 / mpm->ppc, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
