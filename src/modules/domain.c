@@ -25,11 +25,11 @@ PetscErrorCode MPMDomainApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx,
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   for (PetscInt p = 0; p < pts.n; p++) {
     const MPMStrength S = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].strength;
-    PetscReal        *F = &pts.f[MPM_FIELD_DEFGRAD][p * d * d], R[MPM_MAX_DIM * MPM_MAX_DIM], edges = 1.0, det;
+    PetscReal        *F = &pts.f[MPM_FIELD_DEFGRAD][p * d * d], Rs[MPM_MAX_DIM * MPM_MAX_DIM], edges = 1.0, det;
     const PetscReal  *s = pts.f[MPM_FIELD_DOMAINSCALE] ? &pts.f[MPM_FIELD_DOMAINSCALE][p * d] : NULL;
+    const PetscReal  *R;
     if (S && S->needs_F) continue;
-    for (PetscInt i = 0; i < d; i++)
-      for (PetscInt k = 0; k < d; k++) R[i * d + k] = F[i * d + k] * (s ? s[k] : 1.0);
+    R = MPMPointDomain(d, pts.f[MPM_FIELD_DEFGRAD], pts.f[MPM_FIELD_DOMAINSCALE], p, Rs); /* F diag(s) */
     for (PetscInt k = 0; k < d; k++) {
       PetscReal len2 = 0.0;
       for (PetscInt i = 0; i < d; i++) len2 += R[i * d + k] * R[i * d + k];
