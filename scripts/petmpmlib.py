@@ -74,7 +74,7 @@ def get(report, path, h=None):
         if c is None:
             raise KeyError(f"the report has no check {parts[1]} (has: {', '.join(x['name'] for x in report['checks'])})")
         if parts[2] == "error_cells":
-            return abs(c["value"] - c["reference"]) / h
+            return abs(c["value"] - c["reference"]) / h if c["value"] is not None else None
         return c[parts[2]]
     v = report
     for p in parts:

@@ -94,10 +94,8 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
         for (PetscInt i = 0; i < n; i++) {
           const PetscInt p = idx[i];
           if (dvol[i] * rho[p] > mpm->isentrope_threshold) {
-            const PetscReal de = MPMEOSIsentrope(E, rho[p], e[p], rho1[i]) - e[p] + pr[p] * dvol[i]; /* above the linear update */
-            e1[i] += de;
-            mpm->diag.isentrope_energy += m[p] * de;
-            mpm->diag.isentrope_points++;
+            const PetscReal delin = -pr[p] * dvol[i]; /* the linear update's pressure work, already in e1 */
+            e1[i] += MPMIsentropeWork(mpm, E, m[p], rho[p], e[p], rho1[i], delin) - delin;
           }
         }
       if (Str) PetscCall(MPMStrengthStressBatch(Str, d, dt, n, idx, L, F, rho1, T, S, pts.f[MPM_FIELD_PLASTICSTRAIN], cs2)); /* s^{n+1}, eps_p */

@@ -204,6 +204,18 @@ struct _p_MPM {
   char           failure[1024];           /* why                                                  */
 };
 
+/* The change of e from rho0 to rho1 along the EOS isentrope through (rho0, e0), in place of the linear work delin
+   of a large expansion (the compatible update in MPMConstitutive, the conservative one in the gather): the energy
+   this keeps above the linear work, m (de - delin), and the point-step are counted for the report. */
+static inline PetscReal MPMIsentropeWork(MPM mpm, MPMEOS E, PetscReal m, PetscReal rho0, PetscReal e0, PetscReal rho1, PetscReal delin)
+{
+  const PetscReal de = MPMEOSIsentrope(E, rho0, e0, rho1) - e0;
+
+  mpm->diag.isentrope_energy += m * (de - delin);
+  mpm->diag.isentrope_points++;
+  return de;
+}
+
 /* l0_k = h_k / (2 ppc): the half-width of a seeded point's domain (its lattice site) along axis k [cm]. */
 static inline PetscReal MPMLatticeHalfWidth(const MPM mpm, PetscInt k)
 {

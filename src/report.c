@@ -173,6 +173,14 @@ PetscErrorCode MPMAddCheck(MPM mpm, const char name[], PetscReal value, PetscRea
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* A number for the JSON report: printed with fmt, or null where it is not finite (JSON has no inf or nan). */
+static const char *MPMJSONReal(PetscReal v, const char *fmt, char buf[32])
+{
+  if (PetscIsInfOrNanReal(v)) return "null";
+  snprintf(buf, 32, fmt, (double)v);
+  return buf;
+}
+
 /* err[q][0..2]: L1, L2, Linf of field q; nonfinite and min density over all points. */
 static PetscErrorCode MPMComputeErrors(MPM mpm, PetscReal err[][3], PetscInt *nonfinite, PetscReal *rhomin)
 {
@@ -306,6 +314,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     MPMViscosityType visctype = MPMVISCOSITYNONE; /* none is not in the step */
     PetscCall(MPMShapeGetType(mpm->shape, &shapetype));
     if (mpm->viscosity) PetscCall(MPMViscosityGetType(mpm->viscosity, &visctype));
+    char num[2][32];
     fp = fopen(tmp, "w");
     PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write the report %s (-mpm_report): %s", tmp, strerror(errno));
     fprintf(fp, "{\n  \"scene\": \"%s\",\n  \"dim\": %" PetscInt_FMT ",\n  \"cells\": [", mpm->scene, g->dim);
@@ -322,7 +331,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
       for (PetscInt q = 0; q < MPMNumErrors(mpm); q++) fprintf(fp, "    \"%s\": {\"L1\": %.10g, \"L2\": %.10g, \"Linf\": %.10g}%s\n", MPMErrorNames[q], (double)err[q][0], (double)err[q][1], (double)err[q][2], q + 1 < MPMNumErrors(mpm) ? "," : "");
       fprintf(fp, "  },\n");
     }
-    if (shock_cells >= 0) fprintf(fp, "  \"shock_position_error_cells\": %.6g,\n", (double)shock_cells);
+    if (shock_cells >= 0) fprintf(fp, "  \"shock_position_error_cells\": %s,\n", MPMJSONReal(shock_cells, "%.6g", num[0]));
     fprintf(fp, "  \"conservation\": {\"mass\": %.6e, \"total_energy\": %.6e, \"momentum\": [", (double)dmass, (double)denergy);
     for (PetscInt k = 0; k < g->dim; k++) fprintf(fp, "%s%.6e", k ? ", " : "", (double)(mom[k] - mpm->momentum0[k]));
     fprintf(fp, "]},\n  \"energy_accounted\": %.6e,\n", (double)(mpm->energy0 != 0 ? (denergy * PetscAbsReal(mpm->energy0) - eisen) / PetscAbsReal(mpm->energy0) : denergy - eisen));
@@ -334,8 +343,8 @@ PetscErrorCode MPMWriteReport(MPM mpm)
             nvac, mpm->diag.vacuum_points_max, mpm->diag.first_vacuum_step, nempty, mpm->diag.empty_cells_max, mpm->diag.first_empty_step, (double)nsplit, (double)nrefuse, (double)nreflect, (double)nreset);
     fprintf(fp, ",\n  \"min_density\": %.10g,\n  \"nonfinite\": %" PetscInt_FMT ",\n  \"checks\": [", (double)rhomin, nonfinite);
     for (PetscInt c = 0; c < mpm->nchecks; c++)
-      fprintf(fp, "%s\n    {\"name\": \"%s\", \"value\": %.10g, \"reference\": %.10g, \"rel_error\": %.6e}", c ? "," : "", mpm->checks[c].name, (double)mpm->checks[c].value, (double)mpm->checks[c].reference,
-              (double)MPMRelErr(mpm->checks[c].value, mpm->checks[c].reference));
+      fprintf(fp, "%s\n    {\"name\": \"%s\", \"value\": %s, \"reference\": %.10g, \"rel_error\": %s}", c ? "," : "", mpm->checks[c].name, MPMJSONReal(mpm->checks[c].value, "%.10g", num[0]), (double)mpm->checks[c].reference,
+              MPMJSONReal(MPMRelErr(mpm->checks[c].value, mpm->checks[c].reference), "%.6e", num[1]));
     fprintf(fp, "%s]\n}\n", mpm->nchecks ? "\n  " : "");
     PetscCheck(!fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write the report %s: %s", tmp, strerror(errno));
     PetscCheck(!rename(tmp, mpm->report), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot rename %s to %s: %s", tmp, mpm->report, strerror(errno));

@@ -30,8 +30,8 @@ PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepContext *
 {
   const PetscInt  d   = mpm->grid.dim;
   const PetscBool one = (PetscBool)(mpm->lnodes == mpm->nodes); /* one rank, no ghosts: the local array is the global one */
-  PetscReal      *w, *cv, *W;
-  PetscInt        nact = 0;
+  PetscReal      *w, *heat, *W;
+  PetscInt        nact = 0, lo = PETSC_MAX_INT, hi = -1; /* the flat range of nodes the scatter touched */
   MPMPoints       pts;
   MPMStencil      st;
 
@@ -43,7 +43,7 @@ PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepContext *
     PetscCall(VecZeroEntries(mpm->cond_l));
   }
   PetscCall(MPMPointsGetArrays(mpm, &pts));
-  PetscCall(PetscCalloc2(pts.n + 1, &w, pts.n + 1, &cv));
+  PetscCall(PetscCalloc2(pts.n + 1, &w, pts.n + 1, &heat));
   {
     const PetscReal *L = pts.f[MPM_FIELD_GRADV], *rho = pts.f[MPM_FIELD_DENSITY], *e = pts.f[MPM_FIELD_ENERGY];
     for (PetscInt p = 0; p < pts.n; p++) { /* beta_p, c_v,p and the weight w_p = beta_p m_p c_v,p */
@@ -55,9 +55,8 @@ PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepContext *
       de = 1e-3 * PetscMax(PetscAbsReal(e[p]), 1.0); /* a central difference wide enough that round-off in e does not reach c_v */
       MPMEOSTemperatureKernel(E, rho[p], e[p] - de, &T0);
       MPMEOSTemperatureKernel(E, rho[p], e[p] + de, &T1);
-      if (!(T1 > T0)) continue; /* an EOS without temperature */
-      cv[p] = 2.0 * de / (T1 - T0);
-      w[p]  = beta * pts.f[MPM_FIELD_MASS][p] * cv[p];
+      if (!(T1 > T0)) continue;                                        /* an EOS without temperature */
+      w[p] = beta * pts.f[MPM_FIELD_MASS][p] * (2.0 * de / (T1 - T0)); /* c_v = 2 de / (T1 - T0) */
       nact++;
     }
   }
@@ -72,6 +71,8 @@ PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepContext *
       for (PetscInt a = 0; a < st.n; a++) {
         W[2 * st.node[a]] += st.w[a] * w[p];
         W[2 * st.node[a] + 1] += st.w[a] * w[p] * T[p];
+        lo = PetscMin(lo, st.node[a]);
+        hi = PetscMax(hi, st.node[a]);
       }
     }
     if (!one) {
@@ -81,31 +82,28 @@ PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepContext *
       PetscCall(DMGlobalToLocal(mpm->cond_da, mpm->cond_g, INSERT_VALUES, mpm->cond_l));
       PetscCall(VecGetArray(mpm->cond_l, &W));
     }
-    for (PetscInt p = 0; p < pts.n; p++) { /* the heat each point receives, w_p (sum N T_I - T_p), kept in cv */
+    for (PetscInt p = 0; p < pts.n; p++) { /* the heat each point receives, w_p (sum N T_I - T_p) */
       PetscReal Tbar = 0.0;
       if (w[p] == 0.0) continue;
       MPMConductionStencil(mpm, &pts, p, &st);
       for (PetscInt a = 0; a < st.n; a++)
         if (W[2 * st.node[a]] > 0.0) Tbar += st.w[a] * W[2 * st.node[a] + 1] / W[2 * st.node[a]];
-      cv[p] = w[p] * (Tbar - T[p]);
+      heat[p] = w[p] * (Tbar - T[p]);
     }
     for (PetscInt p = 0; p < pts.n; p++) { /* e, then p, T and c from the EOS (c keeps a strength model's share) */
       const MPMEOS E = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].eos;
       PetscReal    p0, c20, c21, *c = &pts.f[MPM_FIELD_SOUNDSPEED][p];
       if (w[p] == 0.0) continue;
       MPMEOSPressureKernel(E, pts.f[MPM_FIELD_DENSITY][p], e[p], &p0, &c20);
-      e[p] += cv[p] / pts.f[MPM_FIELD_MASS][p];
+      e[p] += heat[p] / pts.f[MPM_FIELD_MASS][p];
       MPMEOSPressureKernel(E, pts.f[MPM_FIELD_DENSITY][p], e[p], &pts.f[MPM_FIELD_PRESSURE][p], &c21);
       MPMEOSTemperatureKernel(E, pts.f[MPM_FIELD_DENSITY][p], e[p], &T[p]);
       *c = PetscSqrtReal(PetscMax(*c * *c - PetscMax(c20, 0.0) + PetscMax(c21, 0.0), 0.0));
-      if (one) { /* leave the array zero for the next step: clear the entries this point touched */
-        MPMConductionStencil(mpm, &pts, p, &st);
-        for (PetscInt a = 0; a < st.n; a++) W[2 * st.node[a]] = W[2 * st.node[a] + 1] = 0.0;
-      }
     }
+    if (one && hi >= lo) PetscCall(PetscArrayzero(&W[2 * lo], 2 * (hi - lo + 1))); /* zero for the next step (one rank: no VecZeroEntries) */
     PetscCall(VecRestoreArray(mpm->cond_l, &W));
   }
-  PetscCall(PetscFree2(w, cv));
+  PetscCall(PetscFree2(w, heat));
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -123,13 +123,9 @@ typedef struct {
 
 static PetscReal MPMExpansionWork(void *ctx, PetscInt p, PetscReal e, PetscReal eps, PetscReal delin)
 {
-  MPMExpansion   *ex = (MPMExpansion *)ctx;
-  const MPMEOS    E  = ex->mpm->mat[(PetscInt)ex->mat[p]].eos;
-  const PetscReal de = MPMEOSIsentrope(E, ex->rho[p], e, ex->rho[p] / (1.0 + eps)) - e;
+  MPMExpansion *ex = (MPMExpansion *)ctx;
 
-  ex->mpm->diag.isentrope_energy += ex->m[p] * (de - delin);
-  ex->mpm->diag.isentrope_points++;
-  return de;
+  return MPMIsentropeWork(ex->mpm, ex->mpm->mat[(PetscInt)ex->mat[p]].eos, ex->m[p], ex->rho[p], e, ex->rho[p] / (1.0 + eps), delin);
 }
 
 /* Gathers the grid velocity (stored in MPMNode::p after the advance) to the points:
