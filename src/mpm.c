@@ -45,6 +45,8 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   m->alpha                  = 0.99;
   m->split                  = PETSC_TRUE;
   m->conduction             = 2.0;
+  m->pressure_relax         = 0.25;
+  m->pressure_relax_mach    = 0.01;
   m->domain_skew            = 0.5;
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
     m->grid.cells[k] = 1;
@@ -108,6 +110,14 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscCall(PetscOptionsReal("-mpm_conduction", "Artificial heat conduction C_h: a point the step compressed exchanges heat, by temperature, with the points on its nodes at the rate C_h |div v| [-], >= 0 (0: off)", "", mpm->conduction,
                              &mpm->conduction, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_conduction", mpm->conduction, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+  PetscCall(
+    PetscOptionsReal("-mpm_pressure_relax", "Sub-cell pressure relaxation K_r: fluid points of a cell exchange volume towards a common pressure at the acoustic rate K_r c / h [-], >= 0 (0: off)", "", mpm->pressure_relax, &mpm->pressure_relax, NULL));
+  PetscCall(MPMOptionsCheckRange("-mpm_pressure_relax", mpm->pressure_relax, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+  if (mpm->pressure_relax > 0.0) {
+    PetscCall(PetscOptionsReal("-mpm_pressure_relax_mach", "A point whose velocity jump across a cell |div v| h exceeds this fraction of its sound speed (a shock, a fast expansion) does not relax [-], > 0", "", mpm->pressure_relax_mach,
+                               &mpm->pressure_relax_mach, NULL));
+    PetscCall(MPMOptionsCheckRange("-mpm_pressure_relax_mach", mpm->pressure_relax_mach, 0.0, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
+  }
   PetscCall(PetscOptionsReal("-mpm_domain_skew", "A CPDI domain whose skewness |det R| / prod |R e_k| (1 for a box) falls below this is reset to the cube of the same volume, for materials that do not read F [-], in [0, 1) (0: never)", "",
                              mpm->domain_skew, &mpm->domain_skew, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_domain_skew", mpm->domain_skew, 0.0, 1.0, PETSC_FALSE, PETSC_TRUE));
@@ -199,6 +209,7 @@ PetscErrorCode MPMSetUp(MPM mpm)
     if (mpm->scheme == MPM_SCHEME_MUSL) PetscCall(MPMModuleAdd(mpm, "MPMRemapMomentum", MPM_PHASE_POINT_KINEMATICS, MPMRemapApply, NULL));
     if (mpm->viscosity) PetscCall(MPMModuleAdd(mpm, "MPMViscosity", MPM_PHASE_POINT_STATE, MPMViscosityModuleApply, NULL));
     if (mpm->conduction > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMConduction", MPM_PHASE_POINT_END, MPMConductionApply, NULL));
+    if (mpm->pressure_relax > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMRelax", MPM_PHASE_POINT_END, MPMRelaxApply, NULL));
     if (mpm->shape->needs_F && mpm->grid.dim > 1 && mpm->domain_skew > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMDomain", MPM_PHASE_POINT_ADAPT, MPMDomainApply, NULL));
     if (mpm->split) PetscCall(MPMModuleAdd(mpm, "MPMSplit", MPM_PHASE_POINT_ADAPT, MPMSplitApply, NULL));
   }
@@ -271,9 +282,9 @@ PetscErrorCode MPMDestroy(MPM *mpm)
   PetscCall(PetscFree2(m->cellV, m->cellS));
   PetscCall(PetscFree2(m->widx, m->work));
   PetscCall(DMDestroy(&m->swarm));
-  PetscCall(VecDestroy(&m->cond_l));
-  PetscCall(VecDestroy(&m->cond_g));
-  PetscCall(DMDestroy(&m->cond_da));
+  PetscCall(VecDestroy(&m->mean_l));
+  PetscCall(VecDestroy(&m->mean_g));
+  PetscCall(DMDestroy(&m->mean_da));
   PetscCall(DMDestroy(&m->da));
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) PetscCall(PetscFree(m->grid.rank_start[k]));
   for (PetscInt i = 0; i < m->nmat; i++) {

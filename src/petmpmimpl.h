@@ -75,7 +75,7 @@ typedef enum {
   MPM_PHASE_POINT_KINEMATICS, /* after grid to points: the MUSL remap                                            */
   MPM_PHASE_POINT_STATE,      /* before the constitutive update: artificial viscosity                            */
   MPM_PHASE_POINT_ADAPT,      /* after the constitutive update: point splitting                                  */
-  MPM_PHASE_POINT_END,        /* after migration, each point on the rank that owns its cell: heat conduction    */
+  MPM_PHASE_POINT_END,        /* after migration, each point on the rank that owns its cell: heat conduction, pressure relaxation */
   MPM_NUM_PHASES
 } MPMPhase;
 
@@ -130,6 +130,8 @@ struct _p_MPM {
   PetscReal            vacuum_density;             /* points below this fraction of their material's initial density count as vacuum [-] */
   MPMDtLimit           dt_limit;                   /* what set the current step's size */
   PetscReal            conduction;                 /* -mpm_conduction: artificial heat conduction coefficient C_h [-], 0: off */
+  PetscReal            pressure_relax;             /* -mpm_pressure_relax: sub-cell pressure relaxation rate K_r [-], 0: off */
+  PetscReal            pressure_relax_mach;        /* points whose |div v| h / c exceeds this do not relax [-] */
   PetscReal            domain_skew;                /* -mpm_domain_skew: a CPDI domain less square than this is reset to a cube [-], 0: never */
   PetscBool            split;                      /* -mpm_split: the point splitting module is in the step  */
   PetscReal            split_length;               /* a domain longer than this along an axis splits [cells] */
@@ -174,8 +176,8 @@ struct _p_MPM {
   PetscReal   *work;                                     /* 7 values per point of a chunk of MPM_CHUNK points        */
   PetscInt     box_lo[MPM_MAX_DIM], box_hi[MPM_MAX_DIM]; /* owned nodes the node loops sweep (MPMGridZeroForScatter) */
   PetscReal   *cellV, *cellS;                            /* per local cell: sum V_p, sum V_p (p_p + q_p); in the gather of the conservative update with the cell rule, cellS is the cell's work per unit P_p V_p */
-  DM           cond_da;                                  /* the conduction module's nodal sums sum N w, sum N w T */
-  Vec          cond_l, cond_g;                           /* its ghosted local and global vectors (cond_g: several ranks) */
+  DM           mean_da;                                  /* the point-exchange modules' nodal sums sum N w, sum N w q (nodemean.c) */
+  Vec          mean_l, mean_g;                           /* its ghosted local and global vectors (mean_g: several ranks) */
   TS           ts;
   Vec          tsu; /* the TS state: empty; the MPM state lives in the grid and swarm */
   /* output */
@@ -267,6 +269,9 @@ PETSC_INTERN PetscErrorCode MPMRemapApply(MPMModule, MPM, const MPMStepContext *
 PETSC_INTERN PetscErrorCode MPMSplitApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMDomainApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMConductionApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
+PETSC_INTERN PetscErrorCode MPMRelaxApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
+PETSC_INTERN PetscErrorCode MPMPointsNodalMean(MPM, const MPMPoints *, const PetscReal[], const PetscReal[], PetscReal[], PetscReal[]);
+PETSC_INTERN void           MPMPointEOSUpdate(MPM, MPMPoints *, PetscInt, PetscReal, PetscReal);
 PETSC_INTERN PetscErrorCode MPMViscosityModuleApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMScatter(MPM, PetscBool, PetscReal);
 PETSC_INTERN PetscErrorCode MPMGather(MPM, PetscReal, PetscReal, PetscBool, PetscBool);

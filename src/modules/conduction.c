@@ -14,36 +14,19 @@
    EOS whose e is linear in T at fixed density (ideal gas, Mie-Gruneisen), T_p moves a fraction beta_p of the way to
    its nodes' mean (no new extremum), and a point at rest or in expansion is untouched. Heat flows between materials by
    temperature, so a gas split into two identical materials runs as one. It runs after migration, where each point's
-   nodes are in its rank's ghosted box, and the EOS then gives p, T and c for the new e. */
+   nodes are in its rank's ghosted box (MPMPointsNodalMean, nodemean.c), and the EOS then gives p, T and c for the new e. */
 #include "../petmpmimpl.h"
-
-/* The point's stencil (the transfers' shape functions and domain). */
-static inline void MPMConductionStencil(MPM mpm, const MPMPoints *pts, PetscInt p, MPMStencil *st)
-{
-  const PetscInt d = mpm->grid.dim;
-  PetscReal      Fs[MPM_MAX_DIM * MPM_MAX_DIM];
-
-  MPMShapeEvaluate(mpm->shape, &mpm->grid, &pts->f[MPM_FIELD_POSITION][p * d], MPMPointDomain(d, pts->f[MPM_FIELD_DEFGRAD], pts->f[MPM_FIELD_DOMAINSCALE], p, Fs), st);
-}
 
 PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
 {
-  const PetscInt  d   = mpm->grid.dim;
-  const PetscBool one = (PetscBool)(mpm->lnodes == mpm->nodes); /* one rank, no ghosts: the local array is the global one */
-  PetscReal      *w, *heat, *W;
-  PetscInt        nact = 0, lo = PETSC_MAX_INT, hi = -1; /* the flat range of nodes the scatter touched */
-  MPMPoints       pts;
-  MPMStencil      st;
+  const PetscInt d    = mpm->grid.dim;
+  PetscInt       nact = 0;
+  PetscReal     *w, *Tbar;
+  MPMPoints      pts;
 
   PetscFunctionBegin;
-  if (!mpm->cond_da) {
-    PetscCall(DMDACreateCompatibleDMDA(mpm->da, 2, &mpm->cond_da));
-    PetscCall(DMCreateLocalVector(mpm->cond_da, &mpm->cond_l));
-    if (!one) PetscCall(DMCreateGlobalVector(mpm->cond_da, &mpm->cond_g));
-    PetscCall(VecZeroEntries(mpm->cond_l));
-  }
   PetscCall(MPMPointsGetArrays(mpm, &pts));
-  PetscCall(PetscCalloc2(pts.n + 1, &w, pts.n + 1, &heat));
+  PetscCall(PetscCalloc2(pts.n + 1, &w, pts.n + 1, &Tbar));
   {
     const PetscReal *L = pts.f[MPM_FIELD_GRADV], *rho = pts.f[MPM_FIELD_DENSITY], *e = pts.f[MPM_FIELD_ENERGY];
     for (PetscInt p = 0; p < pts.n; p++) { /* beta_p, c_v,p and the weight w_p = beta_p m_p c_v,p */
@@ -62,48 +45,11 @@ PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepContext *
   }
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &nact, 1, MPIU_INT, MPI_SUM, mpm->comm));
   if (nact) {
-    PetscReal *e = pts.f[MPM_FIELD_ENERGY], *T = pts.f[MPM_FIELD_TEMPERATURE];
-    if (!one) PetscCall(VecZeroEntries(mpm->cond_l));
-    PetscCall(VecGetArray(mpm->cond_l, &W));
-    for (PetscInt p = 0; p < pts.n; p++) { /* sum N w and sum N w T to the nodes */
-      if (w[p] == 0.0) continue;
-      MPMConductionStencil(mpm, &pts, p, &st);
-      for (PetscInt a = 0; a < st.n; a++) {
-        W[2 * st.node[a]] += st.w[a] * w[p];
-        W[2 * st.node[a] + 1] += st.w[a] * w[p] * T[p];
-        lo = PetscMin(lo, st.node[a]);
-        hi = PetscMax(hi, st.node[a]);
-      }
-    }
-    if (!one) {
-      PetscCall(VecRestoreArray(mpm->cond_l, &W));
-      PetscCall(VecZeroEntries(mpm->cond_g));
-      PetscCall(DMLocalToGlobal(mpm->cond_da, mpm->cond_l, ADD_VALUES, mpm->cond_g));
-      PetscCall(DMGlobalToLocal(mpm->cond_da, mpm->cond_g, INSERT_VALUES, mpm->cond_l));
-      PetscCall(VecGetArray(mpm->cond_l, &W));
-    }
-    for (PetscInt p = 0; p < pts.n; p++) { /* the heat each point receives, w_p (sum N T_I - T_p) */
-      PetscReal Tbar = 0.0;
-      if (w[p] == 0.0) continue;
-      MPMConductionStencil(mpm, &pts, p, &st);
-      for (PetscInt a = 0; a < st.n; a++)
-        if (W[2 * st.node[a]] > 0.0) Tbar += st.w[a] * W[2 * st.node[a] + 1] / W[2 * st.node[a]];
-      heat[p] = w[p] * (Tbar - T[p]);
-    }
-    for (PetscInt p = 0; p < pts.n; p++) { /* e, then p, T and c from the EOS (c keeps a strength model's share) */
-      const MPMEOS E = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].eos;
-      PetscReal    p0, c20, c21, *c = &pts.f[MPM_FIELD_SOUNDSPEED][p];
-      if (w[p] == 0.0) continue;
-      MPMEOSPressureKernel(E, pts.f[MPM_FIELD_DENSITY][p], e[p], &p0, &c20);
-      e[p] += heat[p] / pts.f[MPM_FIELD_MASS][p];
-      MPMEOSPressureKernel(E, pts.f[MPM_FIELD_DENSITY][p], e[p], &pts.f[MPM_FIELD_PRESSURE][p], &c21);
-      MPMEOSTemperatureKernel(E, pts.f[MPM_FIELD_DENSITY][p], e[p], &T[p]);
-      *c = PetscSqrtReal(PetscMax(*c * *c - PetscMax(c20, 0.0) + PetscMax(c21, 0.0), 0.0));
-    }
-    if (one && hi >= lo) PetscCall(PetscArrayzero(&W[2 * lo], 2 * (hi - lo + 1))); /* zero for the next step (one rank: no VecZeroEntries) */
-    PetscCall(VecRestoreArray(mpm->cond_l, &W));
+    PetscCall(MPMPointsNodalMean(mpm, &pts, w, pts.f[MPM_FIELD_TEMPERATURE], Tbar, NULL));
+    for (PetscInt p = 0; p < pts.n; p++) /* the heat w_p (sum N T_I - T_p); then p, T and c from the EOS */
+      if (w[p] != 0.0) MPMPointEOSUpdate(mpm, &pts, p, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_ENERGY][p] + w[p] * (Tbar[p] - pts.f[MPM_FIELD_TEMPERATURE][p]) / pts.f[MPM_FIELD_MASS][p]);
   }
-  PetscCall(PetscFree2(w, heat));
+  PetscCall(PetscFree2(w, Tbar));
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

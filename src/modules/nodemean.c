@@ -1,0 +1,83 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* The exchange step of the point-exchange modules (heat conduction; MPMPointEOSUpdate also pressure relaxation): points with weight
+   w_p > 0 carrying a quantity q_p put it on their nodes as the weighted nodal mean
+     q_I = sum_q N_I(x_q) w_q q_q / sum_q N_I(x_q) w_q,
+   summed over ranks, and read back qbar_p = sum_I N_I(x_p) q_I and (optionally) q2bar_p = sum_I N_I(x_p) q_I^2.
+   An exchange w_p sum_I N_I(x_p) (q_p - q_I) X_I then sums to zero over the points for any nodal X_I (partition of
+   the nodal sums), which is what makes the modules conservative. It runs after migration, where each point's nodes
+   are in its rank's ghosted box. */
+#include "../petmpmimpl.h"
+
+/* The point's stencil (the transfers' shape functions and domain). */
+static inline void MPMNodalMeanStencil(MPM mpm, const MPMPoints *pts, PetscInt p, MPMStencil *st)
+{
+  const PetscInt d = mpm->grid.dim;
+  PetscReal      Fs[MPM_MAX_DIM * MPM_MAX_DIM];
+
+  MPMShapeEvaluate(mpm->shape, &mpm->grid, &pts->f[MPM_FIELD_POSITION][p * d], MPMPointDomain(d, pts->f[MPM_FIELD_DEFGRAD], pts->f[MPM_FIELD_DOMAINSCALE], p, Fs), st);
+}
+
+PetscErrorCode MPMPointsNodalMean(MPM mpm, const MPMPoints *pts, const PetscReal w[], const PetscReal q[], PetscReal qbar[], PetscReal q2bar[])
+{
+  const PetscBool one = (PetscBool)(mpm->lnodes == mpm->nodes); /* one rank, no ghosts: the local array is the global one */
+  PetscInt        lo = PETSC_MAX_INT, hi = -1;                  /* the flat range of nodes the scatter touched */
+  PetscReal      *W;
+  MPMStencil      st;
+
+  PetscFunctionBegin;
+  if (!mpm->mean_da) {
+    PetscCall(DMDACreateCompatibleDMDA(mpm->da, 2, &mpm->mean_da));
+    PetscCall(DMCreateLocalVector(mpm->mean_da, &mpm->mean_l));
+    if (!one) PetscCall(DMCreateGlobalVector(mpm->mean_da, &mpm->mean_g));
+    PetscCall(VecZeroEntries(mpm->mean_l));
+  }
+  if (!one) PetscCall(VecZeroEntries(mpm->mean_l));
+  PetscCall(VecGetArray(mpm->mean_l, &W));
+  for (PetscInt p = 0; p < pts->n; p++) { /* sum N w and sum N w q to the nodes */
+    if (w[p] == 0.0) continue;
+    MPMNodalMeanStencil(mpm, pts, p, &st);
+    for (PetscInt a = 0; a < st.n; a++) {
+      W[2 * st.node[a]] += st.w[a] * w[p];
+      W[2 * st.node[a] + 1] += st.w[a] * w[p] * q[p];
+      lo = PetscMin(lo, st.node[a]);
+      hi = PetscMax(hi, st.node[a]);
+    }
+  }
+  if (!one) {
+    PetscCall(VecRestoreArray(mpm->mean_l, &W));
+    PetscCall(VecZeroEntries(mpm->mean_g));
+    PetscCall(DMLocalToGlobal(mpm->mean_da, mpm->mean_l, ADD_VALUES, mpm->mean_g));
+    PetscCall(DMGlobalToLocal(mpm->mean_da, mpm->mean_g, INSERT_VALUES, mpm->mean_l));
+    PetscCall(VecGetArray(mpm->mean_l, &W));
+  }
+  for (PetscInt p = 0; p < pts->n; p++) { /* the interpolants of q_I and q_I^2 at the point */
+    PetscReal s1 = 0.0, s2 = 0.0;
+    if (w[p] == 0.0) continue;
+    MPMNodalMeanStencil(mpm, pts, p, &st);
+    for (PetscInt a = 0; a < st.n; a++)
+      if (W[2 * st.node[a]] > 0.0) {
+        const PetscReal qI = W[2 * st.node[a] + 1] / W[2 * st.node[a]];
+        s1 += st.w[a] * qI;
+        s2 += st.w[a] * qI * qI;
+      }
+    qbar[p] = s1;
+    if (q2bar) q2bar[p] = s2;
+  }
+  if (one && hi >= lo) PetscCall(PetscArrayzero(&W[2 * lo], 2 * (hi - lo + 1))); /* zero for the next call (one rank: no VecZeroEntries) */
+  PetscCall(VecRestoreArray(mpm->mean_l, &W));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* After a module changed the points' e (and rho): p, T and c from the EOS; c keeps a strength model's share. */
+void MPMPointEOSUpdate(MPM mpm, MPMPoints *pts, PetscInt p, PetscReal rho1, PetscReal e1)
+{
+  const MPMEOS E = mpm->mat[(PetscInt)pts->f[MPM_FIELD_MATERIAL][p]].eos;
+  PetscReal    p0, c20, c21, *c = &pts->f[MPM_FIELD_SOUNDSPEED][p];
+
+  MPMEOSPressureKernel(E, pts->f[MPM_FIELD_DENSITY][p], pts->f[MPM_FIELD_ENERGY][p], &p0, &c20);
+  pts->f[MPM_FIELD_DENSITY][p] = rho1;
+  pts->f[MPM_FIELD_ENERGY][p]  = e1;
+  MPMEOSPressureKernel(E, rho1, e1, &pts->f[MPM_FIELD_PRESSURE][p], &c21);
+  MPMEOSTemperatureKernel(E, rho1, e1, &pts->f[MPM_FIELD_TEMPERATURE][p]);
+  *c = PetscSqrtReal(PetscMax(*c * *c - PetscMax(c20, 0.0) + PetscMax(c21, 0.0), 0.0));
+}
