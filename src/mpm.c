@@ -46,7 +46,7 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   m->split                  = PETSC_TRUE;
   m->conduction             = 2.0;
   m->pressure_relax         = 0.25;
-  m->pressure_relax_mach    = 0.01;
+  m->pressure_relax_mach    = 0.005;
   m->domain_skew            = 0.5;
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
     m->grid.cells[k] = 1;

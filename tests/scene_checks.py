@@ -379,7 +379,7 @@ def test_radial():
 def test_implosion_points():
     """Noh's planar implosion (inputs/noh.opts) at N = 512 and 2N = 1024 cells in the default method: every point of the
     shocked plateau more than 8 cells from the wall heating at x = 0 and 12 cells behind the shocks at |x| = 0.2 within
-    10% of the exact density 4 (measured 3.0% at both), and the L1 density error falling with refinement. The
+    10% of the exact density 4 (measured 4.4% and 3.9%), and the L1 density error falling with refinement. The
     relaxation takes about 10 cells behind the shock to remove the mode (a fixed number of cells, so its share of the
     L1 error falls as 1/N). Without the sub-cell pressure relaxation (-mpm_pressure_relax 0) the shock leaves the points
     of a cell at four densities between 3.2 and 5.0 (up to 26% off) at both resolutions: the test asserts that the
