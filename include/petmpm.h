@@ -67,6 +67,7 @@ typedef const char *MPMExactType;
 #define MPMEXACTFLYER "flyer"
 #define MPMEXACTSEDOV "sedov"
 #define MPMEXACTNOH "noh"
+#define MPMEXACTANVIL "anvil"
 
 /* The MPM object */
 PETSC_EXTERN PetscErrorCode MPMInitializePackage(void);

@@ -25,6 +25,7 @@ PETSC_EXTERN PetscErrorCode MPMExactCreate_Riemann(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_Flyer(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_Sedov(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_Noh(MPMExact);
+PETSC_EXTERN PetscErrorCode MPMExactCreate_Anvil(MPMExact);
 
 static PetscBool MPMPackageInitialized = PETSC_FALSE;
 PetscClassId     MPM_CLASSID;
@@ -58,6 +59,7 @@ PetscErrorCode MPMInitializePackage(void)
   PetscCall(MPMExactRegister(MPMEXACTFLYER, MPMExactCreate_Flyer));
   PetscCall(MPMExactRegister(MPMEXACTSEDOV, MPMExactCreate_Sedov));
   PetscCall(MPMExactRegister(MPMEXACTNOH, MPMExactCreate_Noh));
+  PetscCall(MPMExactRegister(MPMEXACTANVIL, MPMExactCreate_Anvil));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

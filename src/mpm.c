@@ -46,6 +46,7 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   m->split                  = PETSC_TRUE;
   m->conduction             = 2.0;
   m->pressure_relax         = 0.25;
+  m->rest_time              = -1.0;
   m->pressure_relax_mach    = 0.005;
   m->domain_skew            = 0.5;
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
@@ -161,6 +162,9 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   for (PetscInt i = 0; i < mpm->ntout; i++) PetscCheck(mpm->tout[i] > 0.0 && (i == 0 || mpm->tout[i] > mpm->tout[i - 1]), mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_output_times: %g; valid are increasing times > 0 s", (double)mpm->tout[i]);
   PetscCall(PetscOptionsString("-mpm_report", "JSON report FILE (errors, conservation, cost)", "", mpm->report, mpm->report, sizeof(mpm->report), NULL));
   PetscCall(PetscOptionsBool("-mpm_view", "Print the configuration of the run", "", mpm->view, &mpm->view, NULL));
+  PetscCall(PetscOptionsReal("-mpm_stop_at_rest", "Stop the run once the kinetic energy has fallen below this fraction of its initial value (an impact that has come to rest) [-], in [0, 1) (0: run to -ts_max_time)", "", mpm->rest_fraction,
+                             &mpm->rest_fraction, NULL));
+  PetscCall(MPMOptionsCheckRange("-mpm_stop_at_rest", mpm->rest_fraction, 0.0, 1.0, PETSC_FALSE, PETSC_TRUE));
   PetscCall(MPMSceneSetFromOptions(mpm, PetscOptionsObject));
   PetscOptionsEnd();
   PetscCall(MPMShapeSetFromOptions(mpm->shape));
@@ -218,7 +222,7 @@ PetscErrorCode MPMSetUp(MPM mpm)
   PetscCall(MPMShapeSetUp(mpm->shape, &mpm->grid, mpm->ppc));
   mpm->kern = mpm->transfer_kernel == MPM_TRANSFER_SPECIALISED && mpm->shape->kernels ? &mpm->shape->kernels[mpm->grid.dim - 1] : NULL;
   if (mpm->shape->needs_F || mpm->split || (mpm->exact && mpm->exact->ops.initial)) mpm->track_F = PETSC_TRUE; /* the points carry F */
-  if (!mpm->exact->ops.evaluate) PetscCall(MPMExactDestroy(&mpm->exact));
+  if (!mpm->exact->ops.evaluate && !mpm->exact->ops.checks) PetscCall(MPMExactDestroy(&mpm->exact));           /* none */
   PetscCall(MPMPointsSelectFields(mpm));
   PetscCall(MPMCreatePoints(mpm));
   if (mpm->exact) {
@@ -232,7 +236,7 @@ PetscErrorCode MPMSetUp(MPM mpm)
   PetscCall(MPMDiagnoseVacuum(mpm, NULL, NULL)); /* the baseline: gaps between bodies in the initial state */
   PetscCall(MPMCheckUnusedOptions(mpm));
   PetscCall(MPMOutputOpen(mpm));
-  PetscCall(MPMGlobalSums(mpm, &mpm->mass0, &mpm->energy0, mpm->momentum0));
+  PetscCall(MPMGlobalSums(mpm, &mpm->mass0, &mpm->energy0, mpm->momentum0, &mpm->kinetic0));
   if (mpm->view) PetscCall(MPMView(mpm, PETSC_VIEWER_STDOUT_(mpm->comm)));
   PetscCall(PetscLogStagePop());
   mpm->wall_setup = MPI_Wtime() - t0;

@@ -275,7 +275,7 @@ PetscErrorCode MPMOutputWriteExact(MPM mpm)
   MPMPoints      pts;
 
   PetscFunctionBegin;
-  if (!mpm->h5 || !mpm->exact) PetscFunctionReturn(PETSC_SUCCESS);
+  if (!mpm->h5 || !mpm->exact || !mpm->exact->ops.evaluate) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscViewerHDF5PopTimestepping(mpm->h5));
   PetscCall(DMSwarmGetLocalSize(mpm->swarm, &n));
   PetscCall(MPMPointsGetArrays(mpm, &pts));

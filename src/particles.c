@@ -86,7 +86,7 @@ PetscInt MPMSceneRegionAt(const MPMScene *sc, const PetscReal x[])
     PetscReal        r2  = 0.0;
     for (PetscInt k = 0; k < sc->grid->dim; k++) {
       in = (PetscBool)(in && x[k] >= reg->lo[k] && x[k] <= reg->hi[k]);
-      r2 += PetscSqr(x[k] - reg->center[k]);
+      if (k != reg->axis) r2 += PetscSqr(x[k] - reg->center[k]);
     }
     if (in && r2 >= reg->rmin * reg->rmin && (reg->rmax >= PETSC_MAX_REAL || r2 <= reg->rmax * reg->rmax)) return r;
   }

@@ -187,7 +187,9 @@ struct _p_MPM {
   /* run bookkeeping */
   PetscInt       npoints0; /* global number of points at start                    */
   PetscInt       npoints;  /* global number of points now (splitting adds points) */
-  PetscReal      mass0, energy0, momentum0[MPM_MAX_DIM];
+  PetscReal      mass0, energy0, momentum0[MPM_MAX_DIM], kinetic0;
+  PetscReal      rest_fraction; /* -mpm_stop_at_rest: stop once the kinetic energy is below this fraction of kinetic0, 0: never */
+  PetscReal      rest_time;     /* when it did [s], -1 before */
   PetscReal      wall_loop, wall_setup, wall_output;
   PetscInt       steps;
   PetscReal      point_steps; /* sum over the steps of the global number of points (the cost measure) */
@@ -286,7 +288,7 @@ PETSC_INTERN PetscErrorCode MPMCreateTS(MPM);
 PETSC_INTERN PetscErrorCode MPMOutputOpen(MPM);
 PETSC_INTERN PetscErrorCode MPMOutputWrite(MPM, PetscInt, PetscReal);
 PETSC_INTERN PetscErrorCode MPMOutputClose(MPM);
-PETSC_INTERN PetscErrorCode MPMGlobalSums(MPM, PetscReal *, PetscReal *, PetscReal[]);
+PETSC_INTERN PetscErrorCode MPMGlobalSums(MPM, PetscReal *, PetscReal *, PetscReal[], PetscReal *);
 PETSC_INTERN PetscErrorCode MPMSceneSetFromOptions(MPM, PetscOptionItems *);
 PETSC_INTERN PetscErrorCode MPMSceneView(MPM, PetscViewer);
 PETSC_INTERN PetscErrorCode MPMGetScene(MPM, MPMScene *);

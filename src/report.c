@@ -13,7 +13,8 @@ static const char *const MPMErrorNames[MPM_NERR] = {"density", "velocity", "pres
 /* Error fields the exact solution defines: the displacement u_p = x_p - X_p only where it knows u(X, t). */
 static PetscInt MPMNumErrors(MPM mpm)
 {
-  return mpm->exact && mpm->exact->ops.displacement ? MPM_NERR : MPM_NERR - 1;
+  if (!mpm->exact || !mpm->exact->ops.evaluate) return 0; /* none, or a validation against measured numbers: checks only */
+  return mpm->exact->ops.displacement ? MPM_NERR : MPM_NERR - 1;
 }
 
 /* The probe through which an exact solution measures its checks (src/exact/exactimpl.h). */
@@ -133,6 +134,53 @@ PetscErrorCode MPMProbeRadialProfile(MPMProbe probe, const PetscReal c[], PetscI
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The extent of the body along direction a and about the line through c parallel to a, from the points' domains
+   (so a surface is where the outermost points' domains end, not their centres): zmax = max_p (x_p,a + e_p(e_a)),
+   and rmax = max_p (r_p + e_p(n_p)) over the points whose domain reaches into lo <= x_a <= hi, with r_p the distance
+   of x_p from the line and n_p the unit vector away from it. A point's domain is the parallelepiped with edges
+   F diag(s) l0 (l0 the lattice spacing h / ppc), its half extent along n e_p(n) = sum_j |n . R e_j| / 2; a point
+   without F is the cube of its volume. On every rank; found is false where no point reaches the band. */
+PetscErrorCode MPMProbeExtent(MPMProbe probe, PetscInt a, const PetscReal c[], PetscReal lo, PetscReal hi, PetscReal *zmax, PetscReal *rmax, PetscBool *found)
+{
+  MPM            mpm    = probe->mpm;
+  const PetscInt d      = mpm->grid.dim;
+  PetscReal      ext[2] = {-PETSC_MAX_REAL, -PETSC_MAX_REAL};
+  MPMPoints      pts;
+
+  PetscFunctionBegin;
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt p = 0; p < pts.n; p++) {
+    const PetscReal *x              = &pts.f[MPM_FIELD_POSITION][p * d];
+    PetscReal        n[MPM_MAX_DIM] = {0, 0, 0}, r = 0.0, ez = 0.0, er = 0.0, Rs[MPM_MAX_DIM * MPM_MAX_DIM];
+    const PetscReal *R = pts.f[MPM_FIELD_DEFGRAD] ? MPMPointDomain(d, pts.f[MPM_FIELD_DEFGRAD], pts.f[MPM_FIELD_DOMAINSCALE], p, Rs) : NULL;
+    for (PetscInt k = 0; k < d; k++)
+      if (k != a) {
+        n[k] = x[k] - c[k];
+        r += n[k] * n[k];
+      }
+    r = PetscSqrtReal(r);
+    for (PetscInt k = 0; k < d; k++) n[k] = r > 0.0 ? n[k] / r : 0.0;
+    if (R)
+      for (PetscInt j = 0; j < d; j++) {
+        const PetscReal l0 = mpm->grid.h[j] / mpm->ppc;
+        PetscReal       nr = 0.0;
+        for (PetscInt k = 0; k < d; k++) nr += n[k] * R[k * d + j];
+        ez += 0.5 * PetscAbsReal(R[a * d + j]) * l0;
+        er += 0.5 * PetscAbsReal(nr) * l0;
+      }
+    else
+      ez = er = 0.5 * PetscPowReal(pts.f[MPM_FIELD_VOLUME][p], 1.0 / d);
+    ext[0] = PetscMax(ext[0], x[a] + ez);
+    if (x[a] + ez >= lo && x[a] - ez <= hi) ext[1] = PetscMax(ext[1], r + er);
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, ext, 2, MPIU_REAL, MPIU_MAX, mpm->comm));
+  *zmax  = ext[0];
+  *rmax  = ext[1];
+  *found = (PetscBool)(ext[1] > -PETSC_MAX_REAL);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode MPMProbeAddCheck(MPMProbe probe, const char name[], PetscReal value, PetscReal reference)
 {
   PetscFunctionBegin;
@@ -200,7 +248,7 @@ static PetscErrorCode MPMComputeErrors(MPM mpm, PetscReal err[][3], PetscInt *no
         if (PetscIsInfOrNanReal(pts.f[f][p * bs + k])) bad++;
     }
     rmin = PetscMin(rmin, pts.f[MPM_FIELD_DENSITY][p]);
-    if (mpm->exact && MPMExactInWindow(mpm->exact, &pts.f[MPM_FIELD_POSITION][p * d])) {
+    if (mpm->exact && mpm->exact->ops.evaluate && MPMExactInWindow(mpm->exact, &pts.f[MPM_FIELD_POSITION][p * d])) {
       const PetscReal V = pts.f[MPM_FIELD_VOLUME][p];
       PetscReal       ex[MPM_NERR], nu[MPM_NERR], vex[MPM_MAX_DIM] = {0, 0, 0}, uex[MPM_MAX_DIM] = {0, 0, 0}, dv2 = 0.0, v2 = 0.0, du2 = 0.0, u2 = 0.0;
       PetscCall(MPMExactEvaluate(mpm->exact, mpm->time, &pts.f[MPM_FIELD_POSITION][p * d], &pts.f[MPM_FIELD_REFPOSITION][p * d], &ex[0], vex, &ex[2], &ex[3]));
@@ -256,7 +304,7 @@ static PetscReal MPMRelErr(PetscReal v, PetscReal r)
 PetscErrorCode MPMWriteReport(MPM mpm)
 {
   const MPMGrid *g = &mpm->grid;
-  PetscReal      err[MPM_NERR][3], rhomin = 0, dmass, denergy, mass, energy, mom[MPM_MAX_DIM], shock_cells = -1.0, pss;
+  PetscReal      err[MPM_NERR][3], rhomin = 0, dmass, denergy, mass, energy, mom[MPM_MAX_DIM], kinetic, shock_cells = -1.0, pss;
   PetscInt       nonfinite = 0, npoints, nvac, nempty;
   PetscReal      eisen, nisen, nsplit, nrefuse, nreflect, nreset;
   PetscMPIInt    size, rank;
@@ -266,7 +314,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
   PetscCall(DMSwarmGetSize(mpm->swarm, &npoints));
   PetscCall(MPMComputeErrors(mpm, err, &nonfinite, &rhomin));
-  PetscCall(MPMGlobalSums(mpm, &mass, &energy, mom));
+  PetscCall(MPMGlobalSums(mpm, &mass, &energy, mom, &kinetic));
   PetscCall(MPMComputeChecks(mpm));
   PetscCall(MPMDiagnoseVacuum(mpm, &nvac, &nempty));
   {
@@ -295,6 +343,12 @@ PetscErrorCode MPMWriteReport(MPM mpm)
                         mpm->diag.dt_limit[MPM_DT_SOUND], mpm->diag.dt_limit[MPM_DT_ACCELERATION], mpm->diag.dt_limit[MPM_DT_VOLUME], mpm->diag.dt_limit[MPM_DT_LANDING], (double)(mpm->energy0 != 0 ? eisen / PetscAbsReal(mpm->energy0) : eisen),
                         (double)nisen));
   if (mpm->split) PetscCall(PetscPrintf(mpm->comm, "  point splitting: %.0f points split (%" PetscInt_FMT " points at start); %.0f splits refused at -mpm_split_max_level\n", (double)nsplit, mpm->npoints0, (double)nrefuse));
+  if (mpm->rest_fraction > 0.0) {
+    if (mpm->rest_time >= 0.0)
+      PetscCall(PetscPrintf(mpm->comm, "  at rest: the kinetic energy fell below %g of its initial value at t = %g s (-mpm_stop_at_rest)\n", (double)mpm->rest_fraction, (double)mpm->rest_time));
+    else
+      PetscCall(PetscPrintf(mpm->comm, "  warning: not at rest at the final time: kinetic energy %.3g of its initial value, above -mpm_stop_at_rest %g\n", (double)(mpm->kinetic0 > 0 ? kinetic / mpm->kinetic0 : 0.0), (double)mpm->rest_fraction));
+  }
   if (nreflect > 0) PetscCall(PetscPrintf(mpm->comm, "  %.0f point-steps carried a point across a wall; it was put back as its mirror image\n", (double)nreflect));
   if (mpm->diag.vacuum_points_max || mpm->diag.empty_cells_max)
     PetscCall(PetscPrintf(mpm->comm,
@@ -314,7 +368,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     MPMViscosityType visctype = MPMVISCOSITYNONE; /* none is not in the step */
     PetscCall(MPMShapeGetType(mpm->shape, &shapetype));
     if (mpm->viscosity) PetscCall(MPMViscosityGetType(mpm->viscosity, &visctype));
-    char num[2][32];
+    char num[3][32];
     fp = fopen(tmp, "w");
     PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write the report %s (-mpm_report): %s", tmp, strerror(errno));
     fprintf(fp, "{\n  \"scene\": \"%s\",\n  \"dim\": %" PetscInt_FMT ",\n  \"cells\": [", mpm->scene, g->dim);
@@ -326,7 +380,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     fprintf(fp, "  \"steps\": %" PetscInt_FMT ",\n  \"time\": %.17g,\n  \"wall_seconds\": %.6g,\n  \"setup_seconds\": %.6g,\n  \"output_seconds\": %.6g,\n", mpm->steps, (double)mpm->time, (double)mpm->wall_loop, (double)mpm->wall_setup,
             (double)mpm->wall_output);
     fprintf(fp, "  \"particle_steps_per_second\": %.6g,\n  \"particle_steps_per_second_per_rank\": %.6g,\n", (double)pss, (double)(pss / size));
-    if (mpm->exact) {
+    if (MPMNumErrors(mpm)) {
       fprintf(fp, "  \"errors\": {\n");
       for (PetscInt q = 0; q < MPMNumErrors(mpm); q++) fprintf(fp, "    \"%s\": {\"L1\": %.10g, \"L2\": %.10g, \"Linf\": %.10g}%s\n", MPMErrorNames[q], (double)err[q][0], (double)err[q][1], (double)err[q][2], q + 1 < MPMNumErrors(mpm) ? "," : "");
       fprintf(fp, "  },\n");
@@ -334,7 +388,8 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     if (shock_cells >= 0) fprintf(fp, "  \"shock_position_error_cells\": %s,\n", MPMJSONReal(shock_cells, "%.6g", num[0]));
     fprintf(fp, "  \"conservation\": {\"mass\": %.6e, \"total_energy\": %.6e, \"momentum\": [", (double)dmass, (double)denergy);
     for (PetscInt k = 0; k < g->dim; k++) fprintf(fp, "%s%.6e", k ? ", " : "", (double)(mom[k] - mpm->momentum0[k]));
-    fprintf(fp, "]},\n  \"energy_accounted\": %.6e,\n", (double)(mpm->energy0 != 0 ? (denergy * PetscAbsReal(mpm->energy0) - eisen) / PetscAbsReal(mpm->energy0) : denergy - eisen));
+    fprintf(fp, "]},\n  \"kinetic_energy_fraction\": %s,\n  \"rest_time\": %.10g,\n", MPMJSONReal(mpm->kinetic0 > 0 ? kinetic / mpm->kinetic0 : 0.0, "%.6e", num[0]), (double)mpm->rest_time);
+    fprintf(fp, "  \"energy_accounted\": %.6e,\n", (double)(mpm->energy0 != 0 ? (denergy * PetscAbsReal(mpm->energy0) - eisen) / PetscAbsReal(mpm->energy0) : denergy - eisen));
     fprintf(fp, "  \"robustness\": {\"isentrope_energy\": %.6e, \"isentrope_point_steps\": %.0f, \"dt_limit\": {", (double)(mpm->energy0 != 0 ? eisen / PetscAbsReal(mpm->energy0) : eisen), (double)nisen);
     for (PetscInt l = 0; l < MPM_NUM_DT_LIMITS; l++) fprintf(fp, "%s\"%s\": %" PetscInt_FMT, l ? ", " : "", MPMDtLimitNames[l], mpm->diag.dt_limit[l]);
     fprintf(fp,
@@ -343,7 +398,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
             nvac, mpm->diag.vacuum_points_max, mpm->diag.first_vacuum_step, nempty, mpm->diag.empty_cells_max, mpm->diag.first_empty_step, (double)nsplit, (double)nrefuse, (double)nreflect, (double)nreset);
     fprintf(fp, ",\n  \"min_density\": %.10g,\n  \"nonfinite\": %" PetscInt_FMT ",\n  \"checks\": [", (double)rhomin, nonfinite);
     for (PetscInt c = 0; c < mpm->nchecks; c++)
-      fprintf(fp, "%s\n    {\"name\": \"%s\", \"value\": %s, \"reference\": %.10g, \"rel_error\": %s}", c ? "," : "", mpm->checks[c].name, MPMJSONReal(mpm->checks[c].value, "%.10g", num[0]), (double)mpm->checks[c].reference,
+      fprintf(fp, "%s\n    {\"name\": \"%s\", \"value\": %s, \"reference\": %s, \"rel_error\": %s}", c ? "," : "", mpm->checks[c].name, MPMJSONReal(mpm->checks[c].value, "%.10g", num[0]), MPMJSONReal(mpm->checks[c].reference, "%.10g", num[2]),
               MPMJSONReal(MPMRelErr(mpm->checks[c].value, mpm->checks[c].reference), "%.6e", num[1]));
     fprintf(fp, "%s]\n}\n", mpm->nchecks ? "\n  " : "");
     PetscCheck(!fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write the report %s: %s", tmp, strerror(errno));
@@ -353,10 +408,10 @@ PetscErrorCode MPMWriteReport(MPM mpm)
 }
 
 /* Total mass sum m_p, total energy sum m_p (e_p + |v_p|^2 / 2) and momentum sum m_p v_p over all ranks. */
-PetscErrorCode MPMGlobalSums(MPM mpm, PetscReal *mass, PetscReal *energy, PetscReal momentum[])
+PetscErrorCode MPMGlobalSums(MPM mpm, PetscReal *mass, PetscReal *energy, PetscReal momentum[], PetscReal *kinetic)
 {
   const PetscInt d                  = mpm->grid.dim;
-  PetscReal      s[2 + MPM_MAX_DIM] = {0, 0, 0, 0, 0};
+  PetscReal      s[3 + MPM_MAX_DIM] = {0, 0, 0, 0, 0, 0};
   MPMPoints      pts;
 
   PetscFunctionBegin;
@@ -370,11 +425,13 @@ PetscErrorCode MPMGlobalSums(MPM mpm, PetscReal *mass, PetscReal *energy, PetscR
     }
     s[0] += m;
     s[1] += m * (pts.f[MPM_FIELD_ENERGY][p] + 0.5 * v2);
+    s[2 + MPM_MAX_DIM] += 0.5 * m * v2;
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 2 + MPM_MAX_DIM, MPIU_REAL, MPIU_SUM, mpm->comm));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 3 + MPM_MAX_DIM, MPIU_REAL, MPIU_SUM, mpm->comm));
   *mass   = s[0];
   *energy = s[1];
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) momentum[k] = s[2 + k];
+  if (kinetic) *kinetic = s[2 + MPM_MAX_DIM];
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -5,6 +5,8 @@
      -region_<r>_material a        its material
      -region_<r>_lo, _hi           its box [cm] (default: the whole domain)
      -region_<r>_center, _rmin, _rmax  and a spherical shell (annulus in 2D) [cm] (default: everything)
+     -region_<r>_axis x|y|z        the shell's distance leaves out this direction: a cylinder (tube) about the axis
+                                   through the centre, its ends the box's faces (2D: a slab |x_k - c_k| <= rmax)
      -region_<r>_density           initial density [g/cm^3] (> 0)
      -region_<r>_temperature       initial temperature [eV] (>= 0)
      -region_<r>_velocity          initial velocity [cm/s] */
@@ -45,11 +47,18 @@ static PetscErrorCode MPMRegionSetFromOptions(MPM mpm, MPMRegion *r)
   r->rho  = -1.0;
   r->rmin = 0.0;
   r->rmax = PETSC_MAX_REAL;
+  r->axis = -1;
   PetscOptionsBegin(mpm->comm, prefix, "Region of the scene", "MPM");
   PetscCall(PetscOptionsString("-material", "Material that fills the region (one of -mpm_materials)", "", mat, mat, sizeof(mat), &set));
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-lo", "Lower corner of the region's box [cm]", d, r->lo));
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-hi", "Upper corner of the region's box [cm]", d, r->hi));
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-center", "Centre of the region's shell rmin <= |x - center| <= rmax [cm]", d, r->center));
+  {
+    const char *const axes[] = {"none", "x", "y", "z"};
+    PetscInt          which  = r->axis + 1;
+    PetscCall(PetscOptionsEList("-axis", "Axis of a cylindrical region: |x - center| leaves out this direction, so rmin <= r <= rmax is a tube about the axis through -center, its ends the box's faces", "", axes, d + 1, axes[which], &which, NULL));
+    r->axis = which - 1;
+  }
   PetscCall(PetscOptionsReal("-rmin", "Inner radius of the region's shell [cm], >= 0", "", r->rmin, &r->rmin, NULL));
   PetscCall(PetscOptionsReal("-rmax", "Outer radius of the region's shell [cm], > rmin", "", r->rmax, &r->rmax, NULL));
   PetscCall(PetscOptionsReal("-density", "Initial density rho [g/cm^3], > 0", "", r->rho, &r->rho, NULL));

@@ -21,6 +21,7 @@ typedef struct {
   PetscReal lo[MPM_MAX_DIM];                 /* box lower corner [cm]                               */
   PetscReal hi[MPM_MAX_DIM];                 /* box upper corner [cm]                               */
   PetscReal center[MPM_MAX_DIM], rmin, rmax; /* and rmin <= |x - center| <= rmax [cm]      */
+  PetscInt  axis;                            /* |x - center| leaves out this direction (a cylinder about it), -1: none */
   PetscReal rho;                             /* initial density [g/cm^3]                            */
   PetscReal T;                               /* initial temperature [eV]                            */
   PetscReal v[MPM_MAX_DIM];                  /* initial velocity [cm/s]                             */

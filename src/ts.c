@@ -79,6 +79,14 @@ static PetscErrorCode MPMTSPostStep(TS ts)
     }
   } else if (mpm->output_interval > 0 && step % mpm->output_interval == 0)
     PetscCall(MPMOutputWrite(mpm, step, t));
+  if (mpm->rest_fraction > 0.0) { /* an impact that has come to rest: the loop stops, MPMSolve writes the final state */
+    PetscReal mass, energy, mom[MPM_MAX_DIM], kinetic;
+    PetscCall(MPMGlobalSums(mpm, &mass, &energy, mom, &kinetic));
+    if (kinetic < mpm->rest_fraction * mpm->kinetic0) {
+      mpm->rest_time = t;
+      PetscCall(TSSetConvergedReason(ts, TS_CONVERGED_USER));
+    }
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -8,3 +8,8 @@
 #    define PETSC_SUCCESS 0
 #  endif
 #endif
+
+#if !defined(PETSC_NAN) /* PETSc 3.19 and later define it */
+#  include <math.h>
+#  define PETSC_NAN ((PetscReal)NAN)
+#endif

@@ -25,6 +25,7 @@ PETSC_INTERN PetscErrorCode MPMProbeDensityProfile(MPMProbe, PetscInt *, const P
 PETSC_INTERN PetscErrorCode MPMProbeMax(MPMProbe, MPMProbeQuantity, PetscReal, PetscReal, PetscReal *, PetscBool *);
 PETSC_INTERN PetscErrorCode MPMProbeRadialProfile(MPMProbe, const PetscReal[], PetscInt, PetscInt, PetscReal, PetscReal[], PetscReal[], PetscReal[]);
 PETSC_INTERN PetscErrorCode MPMProbeAddCheck(MPMProbe, const char[], PetscReal, PetscReal);
+PETSC_INTERN PetscErrorCode MPMProbeExtent(MPMProbe, PetscInt, const PetscReal[], PetscReal, PetscReal, PetscReal *, PetscReal *, PetscBool *);
 
 /* An exact solution knows the fields at a point and the scene's named scalar checks. */
 typedef struct {
@@ -34,7 +35,7 @@ typedef struct {
   void (*initial)(void *, const PetscReal[], PetscReal[], PetscReal[], PetscReal[]);                                             /* X -> x, v, F at t = 0 (points that do not start at rest on their lattice site) */
   void (*bodyforce)(void *, PetscReal, const PetscReal[], const PetscReal[], PetscReal[]);                                       /* (t, X, F) -> b [cm/s^2], applied as m_p b */
   void (*displacement)(void *, PetscReal, const PetscReal[], PetscReal[]);                                                       /* (t, X) -> u [cm]                      */
-  PetscErrorCode (*checks)(MPMExact, MPMProbe);                                                                                  /* the scene's named checks, measured by the probe */
+  PetscErrorCode (*checks)(MPMExact, MPMProbe); /* the scene's named checks, measured by the probe; a type with checks and no evaluate is a validation against measured numbers */
 } MPMExactOps;
 struct _p_MPMExact {
   MPM_CLASS_HEADER(MPMExactOps);
