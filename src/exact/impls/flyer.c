@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
-/* Exact solution of the 1D flyer plate (../shared/reference/copper.md): a rod X in [lo, lo + L0] (the scene's
+/* Exact solution of the 1D flyer plate (../shared/reference/copper.md), on a 1D grid or, in uniaxial strain along
+   x between walls, on a 2D or 3D one (the rod filling the domain across x): a rod X in [lo, lo + L0] (the scene's
    first region, at density rho0 and temperature T0) moving at -up onto the symmetry wall at x = lo, in uniaxial
    strain, for any EOS and a strength model none or elastic (hypoelastic: s_xx = (4/3) G ln(rho0/rho) whatever the
    path). The longitudinal stress P_xx = p - s_xx (compression positive).
@@ -168,7 +169,12 @@ static PetscErrorCode MPMExactSetUp_Flyer(MPMExact exact, const MPMScene *sc)
   PetscReal        c2;
 
   PetscFunctionBegin;
-  PetscCheck(sc->grid->dim == 1 && sc->nreg >= 1, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer needs a 1D scene whose first region is the rod");
+  PetscCheck(sc->nreg >= 1, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer needs a scene whose first region is the rod");
+  for (PetscInt k = 1; k < sc->grid->dim; k++) { /* on a 2D or 3D grid: uniaxial strain along x between walls */
+    PetscCheck(sc->bc_lo[k] == MPM_BC_WALL && sc->bc_hi[k] == MPM_BC_WALL, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer on a %" PetscInt_FMT "D grid is uniaxial strain along x: -mpm_bc_lo and -mpm_bc_hi must be wall in direction %" PetscInt_FMT, sc->grid->dim, k);
+    PetscCheck(reg->lo[k] <= sc->grid->lo[k] && reg->hi[k] >= sc->grid->hi[k], sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer: the rod (-region_%s_lo, _hi) must fill the domain across x (direction %" PetscInt_FMT ")", reg->name, k);
+    PetscCheck(reg->v[k] == 0.0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer: the rod moves along x only (-region_%s_velocity component %" PetscInt_FMT " is %g)", reg->name, k, (double)reg->v[k]);
+  }
   PetscCheck(sc->bc_lo[0] == MPM_BC_WALL, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer needs -mpm_bc_lo wall (the symmetry wall the rod hits)");
   ef->lo   = sc->grid->lo[0];
   ef->L0   = PetscMin(reg->hi[0], sc->grid->hi[0]) - ef->lo;
