@@ -37,6 +37,7 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
   const PetscBool trackF = mpm->track_F, stress = mpm->has_stress;
   MPMShape        shape = mpm->shape;
   PetscInt        bad = -1, nbad, start[MPM_MAX_MATERIALS + 1] = {0};
+  PetscReal      *Lsh = NULL; /* axisymmetric: L - L_tt I, what the strength models see */
 
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(mpm->log.constitutive, 0, 0, 0, 0));
@@ -45,6 +46,12 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
     PetscCall(PetscFree2(mpm->widx, mpm->work));
     mpm->nwork = pts.n + pts.n / 4;
     PetscCall(PetscMalloc2(mpm->nwork, &mpm->widx, 7 * MPM_CHUNK, &mpm->work));
+  }
+  if (mpm->grid.axisym) { /* the hoop rate L_tt: the volume change gets (1 + dt L_tt), and the strength models the in-plane block
+                             L - L_tt I, whose deviatoric rates and work s : (L - L_tt I) are those of the 3D L with L_tt (docs/algorithm.md) */
+    PetscCall(PetscMalloc1(pts.n * d * d + 1, &Lsh));
+    for (PetscInt p = 0; p < pts.n; p++)
+      for (PetscInt i = 0; i < d * d; i++) Lsh[p * d * d + i] = pts.f[MPM_FIELD_GRADV][p * d * d + i] - (i % (d + 1) == 0 ? pts.f[MPM_FIELD_HOOPRATE][p] : 0.0);
   }
   if (mpm->nmat == 1) { /* one material: every point in order */
     start[1] = pts.n;
@@ -69,7 +76,7 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
 
       for (PetscInt i = 0; i < n; i++) { /* kinematics: rho^{n+1}, d(1/rho), F^{n+1}; e from the work of p^n + q (and s^n) */
         const PetscInt  p = idx[i];
-        const PetscReal J = MPMDetIPlusDtL(d, dt, &L[p * d * d]);
+        const PetscReal J = MPMDetIPlusDtL(d, dt, &L[p * d * d]) * (Lsh ? 1.0 + dt * pts.f[MPM_FIELD_HOOPRATE][p] : 1.0);
         rho1[i]           = rho[p] / J;
         dvol[i]           = 1.0 / rho1[i] - 1.0 / rho[p];
         e1[i]             = conservative ? e[p] : e[p] - (pr[p] + q[p]) * dvol[i]; /* conservative: the gather added the work already */
@@ -86,7 +93,7 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
         }
         if (Str && !conservative) {
           PetscReal work = 0.0;
-          for (PetscInt a = 0; a < d * d; a++) work += S[p * d * d + a] * L[p * d * d + a];
+          for (PetscInt a = 0; a < d * d; a++) work += S[p * d * d + a] * (Lsh ? Lsh : L)[p * d * d + a];
           e1[i] += dt * work / rho[p];
         }
       }
@@ -98,7 +105,7 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
             e1[i] += MPMIsentropeWork(mpm, E, m[p], rho[p], e[p], rho1[i], delin) - delin;
           }
         }
-      if (Str) PetscCall(MPMStrengthStressBatch(Str, d, dt, n, idx, L, F, rho1, T, S, pts.f[MPM_FIELD_PLASTICSTRAIN], cs2)); /* s^{n+1}, eps_p */
+      if (Str) PetscCall(MPMStrengthStressBatch(Str, d, dt, n, idx, Lsh ? Lsh : L, F, rho1, T, S, pts.f[MPM_FIELD_PLASTICSTRAIN], cs2)); /* s^{n+1}, eps_p */
       if (midpoint) {
         PetscCall(MPMEOSPressureBatch(E, n, rho1, e1, pn, c2)); /* predictor */
         for (PetscInt i = 0; i < n; i++) e1[i] = e[idx[i]] - (0.5 * (pr[idx[i]] + pn[i]) + q[idx[i]]) * dvol[i];
@@ -124,6 +131,7 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
                           (double)pts.f[MPM_FIELD_ID][bad], (double)pts.f[MPM_FIELD_POSITION][bad * d], (double)rho[bad], (double)e[bad], (double)pr[bad], (double)(c[bad] * c[bad]), (double)MPMDetIPlusDtL(d, dt, &L[bad * d * d]),
                           (double)(trackF ? MPMDeterminant(d, &F[bad * d * d]) : 1.0), shape->ops.admissible ? "; a CPDI domain must stay inside -mpm_shape_cpdi_reach cells of its point" : ""));
   }
+  PetscCall(PetscFree(Lsh));
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   PetscCall(PetscLogFlops(30.0 * pts.n));
   nbad = bad >= 0 ? 1 : 0;

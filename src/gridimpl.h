@@ -35,6 +35,7 @@ typedef struct {
   PetscInt  nranks[MPM_MAX_DIM];     /* ranks per direction                                     */
   PetscBool mirror_lo[MPM_MAX_DIM];  /* lower face is a wall: shape functions fold onto it by reflection */
   PetscBool mirror_hi[MPM_MAX_DIM];  /* upper face is a wall                                    */
+  PetscBool axisym;                  /* -mpm_axisymmetric: 2D, x = r >= 0, y = z; volumes per radian, V = r dA */
 } MPMGrid;
 
 /* Nodal data: a struct overlay on the DMDA vector (dof = sizeof(MPMNode)/sizeof(PetscScalar)). */

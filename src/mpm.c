@@ -153,6 +153,12 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscCall(MPMOptionsDimEnums(PetscOptionsObject, "-mpm_bc_hi", "Boundary at the upper face of each direction", MPMBoundaryTypes, g->dim, (PetscEnum *)mpm->bc_hi));
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-mpm_gravity", "Body acceleration g [cm/s^2]; enables the gravity module", g->dim, mpm->gravity));
   for (PetscInt k = 0; k < g->dim; k++) mpm->has_gravity = (PetscBool)(mpm->has_gravity || mpm->gravity[k] != 0.0);
+  PetscCall(PetscOptionsBool("-mpm_axisymmetric", "Axisymmetric 2D: x is the radius r >= 0 (the axis x = 0 a wall), y the axial coordinate; volumes, masses and energies per radian", "", g->axisym, &g->axisym, NULL));
+  if (g->axisym) {
+    PetscCheck(g->dim == 2, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_axisymmetric needs -mpm_dim 2 (x = r, y = z), got %" PetscInt_FMT, g->dim);
+    PetscCheck(g->lo[0] == 0.0 && mpm->bc_lo[0] == MPM_BC_WALL, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_axisymmetric: the axis is x = 0: -mpm_lo must be 0 in x (got %g) and -mpm_bc_lo wall in x", (double)g->lo[0]);
+    PetscCheck(mpm->stress_integration == MPM_STRESS_POINT, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_axisymmetric needs -mpm_stress_integration point (the cell rule has no hoop term)");
+  }
   PetscCall(PetscOptionsString("-mpm_output", "Output directory DIR (DIR/petmpm.h5, DIR/petmpm.xmf)", "", mpm->outdir, mpm->outdir, sizeof(mpm->outdir), NULL));
   PetscCall(PetscOptionsBoundedInt("-mpm_sort_interval", "Steps between sorts of the points by cell (transfers then find their nodes in cache); 0: never", "", mpm->sort_interval, &mpm->sort_interval, NULL, 0));
   PetscCall(PetscOptionsBoundedInt("-mpm_output_interval", "Steps between outputs; 0: first and last state only", "", mpm->output_interval, &mpm->output_interval, NULL, 0));
@@ -220,7 +226,9 @@ PetscErrorCode MPMSetUp(MPM mpm)
 
   PetscCall(MPMCreateGrid(mpm));
   PetscCall(MPMShapeSetUp(mpm->shape, &mpm->grid, mpm->ppc));
-  mpm->kern = mpm->transfer_kernel == MPM_TRANSFER_SPECIALISED && mpm->shape->kernels ? &mpm->shape->kernels[mpm->grid.dim - 1] : NULL;
+  mpm->kern = mpm->transfer_kernel == MPM_TRANSFER_SPECIALISED && mpm->shape->kernels && !mpm->grid.axisym ? &mpm->shape->kernels[mpm->grid.dim - 1] : NULL; /* the specialised kernels have no hoop terms */
+  for (PetscInt i = 0; i < mpm->nmat; i++)
+    PetscCheck(!mpm->grid.axisym || !mpm->mat[i].strength || !mpm->mat[i].strength->needs_F, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_axisymmetric: material %s's strength model reads F, which has no hoop component here; use a hypoelastic type", mpm->mat[i].name);
   if (mpm->shape->needs_F || mpm->split || (mpm->exact && mpm->exact->ops.initial)) mpm->track_F = PETSC_TRUE; /* the points carry F */
   if (!mpm->exact->ops.evaluate && !mpm->exact->ops.checks) PetscCall(MPMExactDestroy(&mpm->exact));           /* none */
   PetscCall(MPMPointsSelectFields(mpm));

@@ -23,6 +23,7 @@ const MPMFieldInfo MPMFieldTable[MPM_NUM_FIELDS] = {
   {"material", 1, "-", "material index", PETSC_TRUE},
   {"id", 1, "-", "persistent id: the point's seeding lattice index; children of a split take ids from the number of lattice sites up", PETSC_TRUE},
   {"domainscale", 0, "-", "domain scale s_p: the point's domain is F_p diag(s_p h / (2 ppc)) [-1, 1]^d (halved along an axis at each split)", PETSC_FALSE},
+  {"hooprate", 1, "1/s", "hoop strain rate L_tt = v_r / r (axisymmetric)", PETSC_FALSE},
 };
 
 /* Block size of a table entry: 0 means d, -1 means d*d. */
@@ -55,6 +56,7 @@ PetscErrorCode MPMPointsSelectFields(MPM mpm)
   mpm->field_on[MPM_FIELD_PLASTICSTRAIN] = mpm->has_stress;
   mpm->field_on[MPM_FIELD_REFPOSITION]   = (PetscBool)(mpm->exact != NULL);
   mpm->field_on[MPM_FIELD_DOMAINSCALE]   = mpm->split;
+  mpm->field_on[MPM_FIELD_HOOPRATE]      = mpm->grid.axisym;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -211,6 +213,7 @@ static void MPMBoxSeed(MPM mpm, const PetscReal x[], const PetscReal hs[], Petsc
     dV *= 2.0 * hs[k];
     naxes += (cuts >> k) & 1;
   }
+  if (mpm->grid.axisym) dV *= x[0]; /* per radian: int r dr dz over the box, exact */
   if (cuts && depth < (naxes == 1 ? MPM_SEED_DEPTH : 3))
     for (PetscInt c = 0; c < (1 << d); c++) {
       PetscReal xc[MPM_MAX_DIM] = {0.0, 0.0, 0.0}, hc[MPM_MAX_DIM] = {0.0, 0.0, 0.0};
@@ -240,6 +243,7 @@ static PetscInt MPMSiteSeed(MPM mpm, const PetscReal xs[], MPMPiece pc[], PetscR
     hs[k] = MPMLatticeHalfWidth(mpm, k);
     Vs *= 2.0 * hs[k];
   }
+  if (g->axisym) Vs *= xs[0];
   MPMBoxSeed(mpm, xs, hs, 0, vol, pc, &np);
   for (PetscInt i = 0; i < np; i++) {
     const MPMEOS eos = mpm->mat[pc[i].material].eos;

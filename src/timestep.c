@@ -31,7 +31,7 @@ PetscErrorCode MPMComputeTimeStep(MPM mpm, PetscBool diagnose, PetscReal *dt)
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   for (PetscInt p = 0; p < pts.n; p++) {
     const PetscReal *v = &pts.f[MPM_FIELD_VELOCITY][p * d], *L = &pts.f[MPM_FIELD_GRADV][p * d * d], q = pts.f[MPM_FIELD_VISCOSITY][p];
-    PetscReal        v2 = 0.0, divv = 0.0, s;
+    PetscReal        v2 = 0.0, divv = pts.f[MPM_FIELD_HOOPRATE] ? pts.f[MPM_FIELD_HOOPRATE][p] : 0.0, s;
     for (PetscInt k = 0; k < d; k++) {
       v2 += v[k] * v[k];
       divv += L[k * d + k];

@@ -98,12 +98,14 @@ PetscErrorCode MPMRadialFrameSetUp(MPMRadialFrame *fr, const MPMScene *sc, const
   PetscFunctionBegin;
   fr->dim = g->dim;
   if (!fr->nu) fr->nu = g->dim;
-  PetscCheck(fr->nu <= g->dim, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_%s_geometry %s needs a %" PetscInt_FMT "D grid, the scene has -mpm_dim %" PetscInt_FMT, type, fr->nu == 2 ? "cylindrical" : "spherical", fr->nu, g->dim);
+  fr->nr = g->axisym ? fr->nu - 1 : fr->nu; /* axisymmetric: x is already the distance from the axis */
+  PetscCheck(!g->axisym || fr->nu >= 2, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_%s_geometry planar on an axisymmetric grid: valid are cylindrical (about the axis) and spherical (about a point of it)", type);
+  PetscCheck(fr->nr <= g->dim, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_%s_geometry %s needs a %" PetscInt_FMT "D grid, the scene has -mpm_dim %" PetscInt_FMT, type, fr->nu == 2 ? "cylindrical" : "spherical", fr->nu, g->dim);
   if (!fr->cset)
     for (PetscInt k = 0; k < MPM_MAX_DIM; k++) fr->c[k] = k < g->dim ? g->lo[k] : 0.0;
   fr->h    = g->hmin;
   fr->rmax = 0.0;
-  for (PetscInt k = 0; k < fr->nu; k++) {
+  for (PetscInt k = 0; k < fr->nr; k++) {
     PetscCheck(fr->c[k] >= g->lo[k] && fr->c[k] <= g->hi[k], sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_%s_center: component %" PetscInt_FMT " = %g lies outside the domain [%g, %g]", type, k, (double)fr->c[k], (double)g->lo[k], (double)g->hi[k]);
     fr->rmax += PetscSqr(PetscMax(g->hi[k] - fr->c[k], fr->c[k] - g->lo[k]));
   }

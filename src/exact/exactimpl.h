@@ -53,6 +53,7 @@ PETSC_INTERN PetscReal      MPMProfileCrossing(PetscInt, const PetscReal[], cons
    and -mpm_exact_<type>_center (default: the domain's lower corner). */
 typedef struct {
   PetscInt  nu;             /* 1 planar, 2 cylindrical, 3 spherical; 0 until set up: the grid's dimension */
+  PetscInt  nr;             /* directions the radius is measured over: nu, or nu - 1 on an axisymmetric grid (x = r) */
   PetscInt  dim;            /* the grid's dimension                                                       */
   PetscReal c[MPM_MAX_DIM]; /* centre [cm]                                                                */
   PetscBool cset;           /* the centre was given                                                       */
@@ -68,6 +69,6 @@ static inline PetscReal MPMRadialFrameRadius(const MPMRadialFrame *fr, const Pet
 {
   PetscReal r2 = 0.0;
 
-  for (PetscInt k = 0; k < fr->nu; k++) r2 += PetscSqr(x[k] - fr->c[k]);
+  for (PetscInt k = 0; k < fr->nr; k++) r2 += PetscSqr(x[k] - fr->c[k]);
   return PetscSqrtReal(r2);
 }

@@ -31,7 +31,7 @@ PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepContext *
     const PetscReal *L = pts.f[MPM_FIELD_GRADV], *rho = pts.f[MPM_FIELD_DENSITY], *e = pts.f[MPM_FIELD_ENERGY];
     for (PetscInt p = 0; p < pts.n; p++) { /* beta_p, c_v,p and the weight w_p = beta_p m_p c_v,p */
       const MPMEOS E    = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].eos;
-      PetscReal    beta = 0.0, de, T0, T1;
+      PetscReal    beta = pts.f[MPM_FIELD_HOOPRATE] ? -pts.f[MPM_FIELD_HOOPRATE][p] : 0.0, de, T0, T1;
       for (PetscInt k = 0; k < d; k++) beta -= L[p * d * d + k * d + k];
       beta = PetscMin(1.0, mpm->conduction * beta * ctx->dt);
       if (beta < 1e-10) continue;                    /* expansion, rest, or too little to matter (and no denormal weights) */

@@ -52,7 +52,7 @@ PetscErrorCode MPMRelaxApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
   PetscCall(PetscMalloc3(pts.n + 1, &cell, pts.n + 1, &w, pts.n + 1, &q));
   for (PetscInt p = 0; p < pts.n; p++) { /* the cell, volume weight and bulk modulus of each fluid point */
     const MPMMaterial *mat = &mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]];
-    PetscReal          pr, c2, div = 0.0;
+    PetscReal          pr, c2, div = pts.f[MPM_FIELD_HOOPRATE] ? pts.f[MPM_FIELD_HOOPRATE][p] : 0.0;
     w[p] = q[p] = 0.0;
     cell[p]     = MPMLocalCell(&mpm->grid, &pts.f[MPM_FIELD_POSITION][p * d]);
     if (mat->strength || cell[p] < 0) continue;

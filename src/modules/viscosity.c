@@ -18,6 +18,7 @@ PetscErrorCode MPMViscosityModuleApply(MPMModule mod, MPM mpm, const MPMStepCont
   vc.rho   = pts.f[MPM_FIELD_DENSITY];
   vc.c     = pts.f[MPM_FIELD_SOUNDSPEED];
   vc.L     = pts.f[MPM_FIELD_GRADV];
+  vc.hoop  = pts.f[MPM_FIELD_HOOPRATE];
   vc.q     = pts.f[MPM_FIELD_VISCOSITY];
   vc.dt    = ctx->dt;
   PetscCall(MPMViscosityApply(mpm->viscosity, &vc));

@@ -62,7 +62,8 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
     } else
       for (PetscInt p = 0; p < pts.n; p++) {
         const PetscReal P              = pr[p] + q[p];
-        PetscReal       b[MPM_MAX_DIM] = {0, 0, 0}, Fs[MPM_MAX_DIM * MPM_MAX_DIM];
+        PetscReal       b[MPM_MAX_DIM] = {0, 0, 0}, Fs[MPM_MAX_DIM * MPM_MAX_DIM], hoop = 0.0;
+        if (force && g->axisym) hoop = V[p] * (P + (stress ? S[p * 4] + S[p * 4 + 3] : 0.0)) / x[p * d]; /* -sigma_tt V / r, sigma_tt = -P - (s_rr + s_zz) */
         if (body) mpm->exact->ops.bodyforce(mpm->exact->data, tn, &X[p * d], F ? &F[p * d * d] : NULL, b);
         MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, F, ds, p, Fs), &st);
         for (PetscInt a = 0; a < st.n; a++) {
@@ -81,6 +82,7 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
             }
           if (body)
             for (PetscInt k = 0; k < d; k++) nd->f[k] += st.s[a][k] * wm * b[k];
+          if (hoop != 0.0) nd->f[0] += st.s[a][0] * hoop * st.w[a];
         }
         if (cellrule) MPMCellRuleAdd(mpm, &x[p * d], V[p], P);
       }
@@ -202,6 +204,7 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
     } else
       for (PetscInt p = 0; p < pts.n; p++) {
         PetscReal vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Lb[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, dv2 = 0.0, R = 0.0, Fs[MPM_MAX_DIM * MPM_MAX_DIM];
+        PetscReal Lbtt = 0.0; /* axisymmetric: the hoop rate of vbar, sum N (2 v_I - dv_I)_r / r_p */
         MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, F, ds, p, Fs), &st);
         for (PetscInt a = 0; a < st.n; a++) {
           const MPMNode *nd = &node[st.node[a]];
@@ -214,6 +217,7 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
             for (PetscInt j = 0; j < d; j++) Lp[i * d + j] += vI * st.dw[a][j];
             if (work)
               for (PetscInt j = 0; j < d; j++) Lb[i * d + j] += (2.0 * vI - dvI) * st.dw[a][j];
+            if (work && g->axisym && i == 0) Lbtt += st.w[a] * (2.0 * vI - dvI) / x[p * d];
           }
         }
         if (velocity) {
@@ -233,10 +237,15 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
               for (PetscInt i = 0; i < d; i++) div += Lb[i * d + i];
             if (stress)
               for (PetscInt i = 0; i < d * d; i++) sL += S[p * d * d + i] * Lb[i];
+            if (g->axisym) { /* the hoop work: -P Lbar_tt + s_tt Lbar_tt, s_tt = -(s_rr + s_zz) */
+              div += Lbtt;
+              if (stress) sL -= (S[p * 4] + S[p * 4 + 3]) * Lbtt;
+            }
             e[p] += MPMWorkIncrement(&A, p, e[p], sL, div);
           }
         }
         if (kinematics) {
+          if (g->axisym) pts.f[MPM_FIELD_HOOPRATE][p] = vpic[0] / x[p * d]; /* L_tt = v_r / r at x^n, as L_p */
           for (PetscInt i = 0; i < d; i++) x[p * d + i] += dt * vpic[i];
           for (PetscInt i = 0; i < d * d; i++) L[p * d * d + i] = Lp[i];
         }

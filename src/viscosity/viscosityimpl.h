@@ -11,6 +11,7 @@ typedef struct {
   const MPMNode   *node;            /* the ghosted nodal vector after the advance: p holds v_I^{n+1}     */
   PetscInt         n;               /* local points                                                   */
   const PetscReal *x, *rho, *c, *L; /* position [cm], density, sound speed, velocity gradient (d x d) */
+  const PetscReal *hoop;            /* axisymmetric: the hoop rate v_r / r, in div v; NULL otherwise [1/s] */
   PetscReal       *q;               /* out: the viscous pressure q_p [dyn/cm^2]                         */
   PetscReal        dt;              /* the step [s]                                                   */
 } MPMViscosityContext;

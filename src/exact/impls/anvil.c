@@ -9,7 +9,8 @@
                     (the mushroom is widest at the anvil),
      width_0.2L0    W = 2 max_p (r_p + half extent) over the points whose domain reaches x_a = lo_a + 0.2 L0, against
                     -mpm_exact_anvil_width where the shot measured it (the report gives null otherwise).
-   A quarter rod on the symmetry walls x = 0 and y = 0 (centre on the axis there) measures the whole rod's D and W.
+   A quarter rod on the symmetry walls x = 0 and y = 0 (centre on the axis there) measures the whole rod's D and W;
+   on an axisymmetric grid (-mpm_axisymmetric) the rod is a box at x = r >= 0 and r is x itself.
    The numbers of the shots are in ../shared/reference/taylor_ofhc_copper.csv (Johnson & Cook 1983; Wilkins &
    Guinan 1973); the scene inputs/taylor_anvil_3d.opts gives the 190 m/s shot's. */
 #include "../exactimpl.h"
@@ -36,7 +37,7 @@ static PetscErrorCode MPMExactSetUp_Anvil(MPMExact exact, const MPMScene *sc)
   PetscCheck(ea->W >= 0.0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_anvil_width %g: valid is >= 0 cm (0: not measured)", (double)ea->W);
   ea->lo = sc->grid->lo[ea->a];
   ea->L0 = rod->hi[ea->a] - PetscMax(rod->lo[ea->a], ea->lo);
-  for (PetscInt k = 0; k < sc->grid->dim; k++) ea->c[k] = rod->axis >= 0 ? rod->center[k] : 0.5 * (rod->lo[k] + rod->hi[k]);
+  for (PetscInt k = 0; k < sc->grid->dim; k++) ea->c[k] = sc->grid->axisym ? 0.0 : (rod->axis >= 0 ? rod->center[k] : 0.5 * (rod->lo[k] + rod->hi[k])); /* axisymmetric: the axis x = 0 */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -48,7 +48,7 @@ static void MPMExactEvaluate_Noh(void *ctx, PetscReal t, const PetscReal x[], co
     *rho              = en->rho0 * s;
     *T                = en->T0 * PetscPowReal(s, g - 1.0);
     *p                = (g - 1.0) * (*rho) * en->cv * (*T);
-    for (PetscInt k = 0; k < en->fr.nu; k++) v[k] = r > 0.0 ? -en->u0 * (x[k] - en->fr.c[k]) / r : 0.0;
+    for (PetscInt k = 0; k < en->fr.nr; k++) v[k] = r > 0.0 ? -en->u0 * (x[k] - en->fr.c[k]) / r : 0.0;
   }
 }
 
@@ -61,7 +61,7 @@ static void MPMExactInitial_Noh(void *ctx, const PetscReal X[], PetscReal x[], P
 
   for (PetscInt k = 0; k < d; k++) {
     x[k] = X[k];
-    v[k] = k < en->fr.nu && r > 0.0 ? -en->u0 * (X[k] - en->fr.c[k]) / r : 0.0;
+    v[k] = k < en->fr.nr && r > 0.0 ? -en->u0 * (X[k] - en->fr.c[k]) / r : 0.0;
     for (PetscInt j = 0; j < d; j++) F[k * d + j] = k == j ? 1.0 : 0.0;
   }
 }
@@ -90,7 +90,7 @@ static PetscErrorCode MPMExactChecks_Noh(MPMExact exact, MPMProbe probe)
   if (!(rs > 2.0 * en->fr.h)) PetscFunctionReturn(PETSC_SUCCESS); /* no shocked region to measure yet */
   nb = (PetscInt)PetscCeilReal(en->fr.rmax / en->fr.h);
   PetscCall(PetscMalloc3(nb, &rc, nb, &rho, nb, &vol));
-  PetscCall(MPMProbeRadialProfile(probe, en->fr.c, en->fr.nu, nb, en->fr.h, rc, rho, vol));
+  PetscCall(MPMProbeRadialProfile(probe, en->fr.c, en->fr.nr, nb, en->fr.h, rc, rho, vol));
   xs = MPMProfileCrossing(nb, rc, rho, 0.5 * (rin + rahead), rs);
   if (xs < PETSC_MAX_REAL) PetscCall(MPMProbeAddCheck(probe, "shock_position", xs, rs)); /* none where the profile never crosses the level */
   for (PetscInt b = 0; b < nb; b++)

@@ -129,7 +129,7 @@ static void MPMExactEvaluate_Sedov(void *ctx, PetscReal t, const PetscReal x[], 
   *rho = es->rho0 * G;
   *p   = es->rho0 * Rdot * Rdot * P;
   *T   = *p / ((es->gamma - 1.0) * PetscMax(*rho, 1e-300) * es->cv);
-  for (PetscInt k = 0; k < es->fr.nu; k++) v[k] = r > 0.0 ? Rdot * U * (x[k] - es->fr.c[k]) / r : 0.0;
+  for (PetscInt k = 0; k < es->fr.nr; k++) v[k] = r > 0.0 ? Rdot * U * (x[k] - es->fr.c[k]) / r : 0.0;
 }
 
 static PetscErrorCode MPMExactSetUp_Sedov(MPMExact exact, const MPMScene *sc)
@@ -157,7 +157,7 @@ static PetscErrorCode MPMExactChecks_Sedov(MPMExact exact, MPMProbe probe)
   if (R > es->fr.rmax - 3.0 * es->fr.h) PetscFunctionReturn(PETSC_SUCCESS); /* the shock has reached the boundary */
   nb = (PetscInt)PetscCeilReal(es->fr.rmax / es->fr.h);
   PetscCall(PetscMalloc2(nb, &rc, nb, &rho));
-  PetscCall(MPMProbeRadialProfile(probe, es->fr.c, es->fr.nu, nb, es->fr.h, rc, rho, NULL));
+  PetscCall(MPMProbeRadialProfile(probe, es->fr.c, es->fr.nr, nb, es->fr.h, rc, rho, NULL));
   for (PetscInt b = 0; b < nb; b++)
     if (rc[b] < R + 5.0 * es->fr.h) peak = PetscMax(peak, rho[b]);
   xs = MPMProfileCrossing(nb, rc, rho, es->rho0 + 0.5 * (peak - es->rho0), R);

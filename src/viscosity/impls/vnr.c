@@ -28,7 +28,7 @@ static PetscErrorCode MPMViscosityApply_VNR(MPMViscosity visc, const MPMViscosit
 
   PetscFunctionBegin;
   for (PetscInt p = 0; p < ctx->n; p++) {
-    PetscReal divv = 0.0;
+    PetscReal divv = ctx->hoop ? ctx->hoop[p] : 0.0;
     for (PetscInt k = 0; k < d; k++) divv += L[p * d * d + k * d + k];
     q[p] = VNRViscosity(vnr->cq, vnr->cl, rho[p], c[p], h, divv);
   }
