@@ -20,6 +20,7 @@ SCENE = os.path.join(SRC, "inputs", "sod_weak.opts")
 CTH = os.path.join(SRC, "inputs", "methods", "cth.opts")
 SCENE_CTH = ["-options_file", SCENE, "-options_file", CTH]  # weak Sod in the CTH study's configuration, where these checks were measured
 FLYER = os.path.join(SRC, "inputs", "flyer_plate.opts")
+RZ = os.path.join(SRC, "inputs", "taylor_anvil_rz.opts")
 sys.path.insert(0, os.path.join(SRC, "scripts"))
 import petmpmlib as lib  # noqa: E402
 
@@ -109,6 +110,14 @@ def test_bad_input():
             (["-options_file", FLYER, "-mat_copper_strength_type", "johnsoncook", "-mat_copper_strength_johnsoncook_Tm", "0.01", "-mpm_exact_type", "none", "-mpm_output", d], "-mat_copper_strength_johnsoncook_Tm"),
             (["-options_file", FLYER, "-mat_copper_strength_type", "vonmises", "-mpm_output", d], "-mat_copper_strength_type"),
             (["-options_file", FLYER, "-mpm_output_times", "3e-5,2e-5", "-mpm_output", d], "-mpm_output_times"),
+            (["-options_file", FLYER, "-mpm_axisymmetric", "-mpm_output", d], "-mpm_axisymmetric"),
+            (["-options_file", RZ, "-mpm_lo", "0.1,0", "-mpm_output", d], "-mpm_axisymmetric"),
+            (["-options_file", RZ, "-mpm_stress_integration", "cell", "-mpm_output", d], "-mpm_axisymmetric"),
+            (["-options_file", RZ, "-mat_copper_strength_type", "neohookean", "-mpm_output", d], "-mpm_axisymmetric"),
+            (["-options_file", RZ, "-mpm_exact_type", "noh", "-mpm_exact_noh_speed", "1e5", "-mpm_exact_noh_geometry", "planar", "-mpm_output", d], "-mpm_exact_noh_geometry"),
+            (["-options_file", RZ, "-mpm_stop_at_rest", "1.5", "-mpm_output", d], "-mpm_stop_at_rest"),
+            (["-options_file", RZ, "-mpm_exact_anvil_length", "0", "-mpm_output", d], "-mpm_exact_anvil_length"),
+            ([*SCENE_CTH, "-mpm_pressure_relax", "-1", "-mpm_output", d], "-mpm_pressure_relax"),
         ]
         for args, needle in cases:
             p = run(args, expect_ok=False)
