@@ -2,6 +2,7 @@
 /* The point-state update of a step: density, internal energy (every energy-update variant but the work the
    conservative update adds in the gather), the strength models' stress and the EOS, and the initial state. */
 #include "petmpmimpl.h"
+#include "strength/hypoelastic.h"
 
 static inline PetscReal MPMDetIPlusDtL(PetscInt d, PetscReal dt, const PetscReal L[])
 {
@@ -105,7 +106,13 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
             e1[i] += MPMIsentropeWork(mpm, E, m[p], rho[p], e[p], rho1[i], delin) - delin;
           }
         }
-      if (Str) PetscCall(MPMStrengthStressBatch(Str, d, dt, n, idx, Lsh ? Lsh : L, F, rho1, T, S, pts.f[MPM_FIELD_PLASTICSTRAIN], cs2)); /* s^{n+1}, eps_p */
+      if (Str) { /* s^{n+1}, eps_p; the plastic work sum m sigma_eq d eps_p / rho for the report's energy budget */
+        PetscReal *epsp = pts.f[MPM_FIELD_PLASTICSTRAIN], eps0[MPM_CHUNK];
+        for (PetscInt i = 0; i < n; i++) eps0[i] = epsp[idx[i]];
+        PetscCall(MPMStrengthStressBatch(Str, d, dt, n, idx, Lsh ? Lsh : L, F, rho1, T, S, epsp, cs2));
+        for (PetscInt i = 0; i < n; i++)
+          if (epsp[idx[i]] > eps0[i]) mpm->diag.plastic_work += m[idx[i]] * MPMVonMisesStress(d, &S[idx[i] * d * d]) * (epsp[idx[i]] - eps0[i]) / rho1[i];
+      }
       if (midpoint) {
         PetscCall(MPMEOSPressureBatch(E, n, rho1, e1, pn, c2)); /* predictor */
         for (PetscInt i = 0; i < n; i++) e1[i] = e[idx[i]] - (0.5 * (pr[idx[i]] + pn[i]) + q[idx[i]]) * dvol[i];

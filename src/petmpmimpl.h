@@ -113,6 +113,7 @@ typedef struct {
   PetscInt  split_refused;    /* point-steps that called for a split the level limit refused (this rank) */
   PetscInt  wall_reflections; /* points this rank put back across a wall (MPMMigrate)              */
   PetscInt  domain_resets;    /* point-steps whose skewed CPDI domain this rank reset to a cube (MPMDomainApply) */
+  PetscReal plastic_work;     /* sum over the steps of m_p sigma_eq d eps_p / rho_p on this rank [erg] */
 } MPMDiagnostics;
 
 struct _p_MPM {

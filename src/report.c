@@ -5,6 +5,7 @@
      L1 = sum V_p |q_p - q(x_p)| / sum V_p |q(x_p)|,  L2 = sqrt(sum V_p (q_p - q(x_p))^2 / sum V_p q(x_p)^2),
      Linf = max |q_p - q(x_p)| / max |q(x_p)|;  for the velocity |.| is the Euclidean norm of the vector. */
 #include "petmpmimpl.h"
+#include "strength/hypoelastic.h"
 #include <errno.h>
 
 #define MPM_NERR 5
@@ -304,7 +305,7 @@ static PetscReal MPMRelErr(PetscReal v, PetscReal r)
 PetscErrorCode MPMWriteReport(MPM mpm)
 {
   const MPMGrid *g = &mpm->grid;
-  PetscReal      err[MPM_NERR][3], rhomin = 0, dmass, denergy, mass, energy, mom[MPM_MAX_DIM], kinetic, shock_cells = -1.0, pss;
+  PetscReal      err[MPM_NERR][3], rhomin = 0, dmass, denergy, mass, energy, mom[MPM_MAX_DIM], kinetic, wplastic = 0, eshear = 0, shock_cells = -1.0, pss;
   PetscInt       nonfinite = 0, npoints, nvac, nempty;
   PetscReal      eisen, nisen, nsplit, nrefuse, nreflect, nreset;
   PetscMPIInt    size, rank;
@@ -318,8 +319,20 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   PetscCall(MPMComputeChecks(mpm));
   PetscCall(MPMDiagnoseVacuum(mpm, &nvac, &nempty));
   {
-    PetscReal s[6] = {mpm->diag.isentrope_energy, (PetscReal)mpm->diag.isentrope_points, (PetscReal)mpm->diag.points_split, (PetscReal)mpm->diag.split_refused, (PetscReal)mpm->diag.wall_reflections, (PetscReal)mpm->diag.domain_resets};
-    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 6, MPIU_REAL, MPIU_SUM, mpm->comm));
+    PetscReal s[8] = {
+      mpm->diag.isentrope_energy, (PetscReal)mpm->diag.isentrope_points, (PetscReal)mpm->diag.points_split, (PetscReal)mpm->diag.split_refused, (PetscReal)mpm->diag.wall_reflections, (PetscReal)mpm->diag.domain_resets, mpm->diag.plastic_work, 0.0};
+    if (mpm->has_stress) { /* the elastic shear energy sum V sigma_eq^2 / (6 G) of the hypoelastic models (s : s / (4 G)) */
+      MPMPoints pts;
+      PetscCall(MPMPointsGetArrays(mpm, &pts));
+      for (PetscInt p = 0; p < pts.n; p++) {
+        const MPMStrength str = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].strength;
+        if (str && str->G > 0.0) s[7] += pts.f[MPM_FIELD_VOLUME][p] * PetscSqr(MPMVonMisesStress(g->dim, &pts.f[MPM_FIELD_STRESS][p * g->dim * g->dim])) / (6.0 * str->G);
+      }
+      PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+    }
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 8, MPIU_REAL, MPIU_SUM, mpm->comm));
+    wplastic = s[6];
+    eshear   = s[7];
     eisen    = s[0];
     nisen    = s[1];
     nsplit   = s[2];
@@ -349,6 +362,10 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     else
       PetscCall(PetscPrintf(mpm->comm, "  warning: not at rest at the final time: kinetic energy %.3g of its initial value, above -mpm_stop_at_rest %g\n", (double)(mpm->kinetic0 > 0 ? kinetic / mpm->kinetic0 : 0.0), (double)mpm->rest_fraction));
   }
+  if (mpm->has_stress && mpm->kinetic0 > 0.0)
+    PetscCall(PetscPrintf(mpm->comm, "  energy budget (of the initial kinetic energy): kinetic %.4f, internal change %.4f (plastic work %.4f, elastic shear %.4f, the rest %.4f), error %.2e\n", (double)(kinetic / mpm->kinetic0),
+                          (double)((energy - kinetic - (mpm->energy0 - mpm->kinetic0)) / mpm->kinetic0), (double)(wplastic / mpm->kinetic0), (double)(eshear / mpm->kinetic0),
+                          (double)((energy - kinetic - (mpm->energy0 - mpm->kinetic0) - wplastic - eshear) / mpm->kinetic0), (double)((energy - mpm->energy0) / mpm->kinetic0)));
   if (nreflect > 0) PetscCall(PetscPrintf(mpm->comm, "  %.0f point-steps carried a point across a wall; it was put back as its mirror image\n", (double)nreflect));
   if (mpm->diag.vacuum_points_max || mpm->diag.empty_cells_max)
     PetscCall(PetscPrintf(mpm->comm,
@@ -389,6 +406,9 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     fprintf(fp, "  \"conservation\": {\"mass\": %.6e, \"total_energy\": %.6e, \"momentum\": [", (double)dmass, (double)denergy);
     for (PetscInt k = 0; k < g->dim; k++) fprintf(fp, "%s%.6e", k ? ", " : "", (double)(mom[k] - mpm->momentum0[k]));
     fprintf(fp, "]},\n  \"kinetic_energy_fraction\": %s,\n  \"rest_time\": %.10g,\n", MPMJSONReal(mpm->kinetic0 > 0 ? kinetic / mpm->kinetic0 : 0.0, "%.6e", num[0]), (double)mpm->rest_time);
+    if (mpm->has_stress && mpm->kinetic0 > 0.0)
+      fprintf(fp, "  \"energy_budget\": {\"kinetic\": %.6e, \"internal_change\": %.6e, \"plastic_work\": %.6e, \"elastic_shear\": %.6e, \"error\": %.6e},\n", (double)(kinetic / mpm->kinetic0),
+              (double)((energy - kinetic - (mpm->energy0 - mpm->kinetic0)) / mpm->kinetic0), (double)(wplastic / mpm->kinetic0), (double)(eshear / mpm->kinetic0), (double)((energy - mpm->energy0) / mpm->kinetic0));
     fprintf(fp, "  \"energy_accounted\": %.6e,\n", (double)(mpm->energy0 != 0 ? (denergy * PetscAbsReal(mpm->energy0) - eisen) / PetscAbsReal(mpm->energy0) : denergy - eisen));
     fprintf(fp, "  \"robustness\": {\"isentrope_energy\": %.6e, \"isentrope_point_steps\": %.0f, \"dt_limit\": {", (double)(mpm->energy0 != 0 ? eisen / PetscAbsReal(mpm->energy0) : eisen), (double)nisen);
     for (PetscInt l = 0; l < MPM_NUM_DT_LIMITS; l++) fprintf(fp, "%s\"%s\": %" PetscInt_FMT, l ? ", " : "", MPMDtLimitNames[l], mpm->diag.dt_limit[l]);
