@@ -48,6 +48,7 @@ typedef const char *MPMShapeType;
 #define MPMSHAPEBSPLINE3 "bspline3"
 typedef const char *MPMEOSType;
 #define MPMEOSIDEALGAS "idealgas"
+#define MPMEOSTAIT "tait"
 #define MPMEOSNONE "none"
 #define MPMEOSMIEGRUNEISEN "miegruneisen"
 typedef const char *MPMStrengthType;

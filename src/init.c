@@ -9,6 +9,7 @@ PETSC_EXTERN PetscErrorCode MPMShapeCreate_CPDI(MPMShape);
 PETSC_EXTERN PetscErrorCode MPMShapeCreate_BSpline2(MPMShape);
 PETSC_EXTERN PetscErrorCode MPMShapeCreate_BSpline3(MPMShape);
 PETSC_EXTERN PetscErrorCode MPMEOSCreate_IdealGas(MPMEOS);
+PETSC_EXTERN PetscErrorCode MPMEOSCreate_Tait(MPMEOS);
 PETSC_EXTERN PetscErrorCode MPMEOSCreate_None(MPMEOS);
 PETSC_EXTERN PetscErrorCode MPMEOSCreate_MieGruneisen(MPMEOS);
 PETSC_EXTERN PetscErrorCode MPMStrengthCreate_None(MPMStrength);
@@ -43,6 +44,7 @@ PetscErrorCode MPMInitializePackage(void)
   PetscCall(MPMShapeRegister(MPMSHAPEBSPLINE2, MPMShapeCreate_BSpline2));
   PetscCall(MPMShapeRegister(MPMSHAPEBSPLINE3, MPMShapeCreate_BSpline3));
   PetscCall(MPMEOSRegister(MPMEOSIDEALGAS, MPMEOSCreate_IdealGas));
+  PetscCall(MPMEOSRegister(MPMEOSTAIT, MPMEOSCreate_Tait));
   PetscCall(MPMEOSRegister(MPMEOSNONE, MPMEOSCreate_None));
   PetscCall(MPMEOSRegister(MPMEOSMIEGRUNEISEN, MPMEOSCreate_MieGruneisen));
   PetscCall(MPMStrengthRegister(MPMSTRENGTHNONE, MPMStrengthCreate_None));

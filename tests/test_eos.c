@@ -72,6 +72,60 @@ static PetscErrorCode TestMieGruneisen(PetscInt *fails)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Tait water (weakly compressible; c0 = 1500 cm/s as a dam-break scene sets it): p = 0 and c = c0 at rho0, p =
+   B (eta^gamma - 1), the sound speed against the isentropic finite difference over eta in [0.9, 1.1] (tension
+   included), T(e(T)) round trip, and the closed-form isentrope against RK4 of de/drho = p / rho^2. */
+static PetscErrorCode TestTait(PetscInt *fails)
+{
+  MPMEOS          eos;
+  const PetscReal rho0 = 0.998, c0 = 1500.0, g = 7.0, B = rho0 * c0 * c0 / g;
+  PetscReal       p, c2, worst_c = 0, worst_T = 0, worst_p = 0, e, r, e1;
+  PetscBool       ok;
+
+  PetscFunctionBegin;
+  PetscCall(PetscOptionsSetValue(NULL, "-mat_w_eos_type", "tait"));
+  PetscCall(PetscOptionsSetValue(NULL, "-mat_w_eos_tait_c0", "1500"));
+  PetscCall(MPMEOSCreate(PETSC_COMM_WORLD, &eos));
+  PetscCall(MPMEOSSetOptionsPrefix(eos, "mat_w_"));
+  PetscCall(MPMEOSSetFromOptions(eos));
+  PetscCall(MPMEOSPressure(eos, rho0, 123.0, &p, &c2));
+  ok = (PetscBool)(p == 0.0 && PetscAbsReal(c2 - c0 * c0) < 1e-12 * c0 * c0);
+  for (PetscReal eta = 0.9; eta < 1.1001; eta += 0.01)
+    for (PetscReal Tt = 0.01; Tt < 0.1; Tt *= 1.9) {
+      const PetscReal rho = eta * rho0, h = 1e-4 * rho;
+      PetscReal       pp, pm, Tb, c2x;
+      PetscCall(MPMEOSEnergyFromTemperature(eos, rho, Tt, &e));
+      PetscCall(MPMEOSPressure(eos, rho, e, &p, &c2));
+      PetscCall(MPMEOSTemperature(eos, rho, e, &Tb));
+      PetscCall(MPMEOSPressure(eos, rho + h, e, &pp, &c2x)); /* barotropic: the isentrope and the cold curve share p(rho) */
+      PetscCall(MPMEOSPressure(eos, rho - h, e, &pm, &c2x));
+      worst_c = PetscMax(worst_c, PetscAbsReal((pp - pm) / (2 * h) - c2) / c2);
+      worst_T = PetscMax(worst_T, PetscAbsReal(Tb - Tt) / Tt);
+      worst_p = PetscMax(worst_p, PetscAbsReal(p - B * (PetscPowReal(eta, g) - 1.0)) / B);
+    }
+  e = 0.0; /* RK4 of de/drho = p/rho^2 from rho0 to 1.05 rho0, against the closed form */
+  r = rho0;
+  for (PetscInt i = 0; i < 1000; i++) {
+    const PetscReal h = 0.05 * rho0 / 1000;
+    PetscReal       k1, k2, k4;
+    PetscCall(MPMEOSPressure(eos, r, e, &p, &c2));
+    k1 = p / (r * r);
+    PetscCall(MPMEOSPressure(eos, r + 0.5 * h, e, &p, &c2));
+    k2 = p / PetscSqr(r + 0.5 * h);
+    PetscCall(MPMEOSPressure(eos, r + h, e, &p, &c2));
+    k4 = p / PetscSqr(r + h);
+    e += h * (k1 + 4 * k2 + k4) / 6;
+    r += h;
+  }
+  e1 = MPMEOSIsentrope(eos, rho0, 0.0, r);
+  ok = (PetscBool)(ok && worst_c < 1e-6 && worst_T < 1e-9 && worst_p < 1e-12 && PetscAbsReal(e1 - e) < 1e-9 * PetscAbsReal(e));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s tait: p = 0 and c = c0 at rho0, p = B (eta^gamma - 1) %.1e (tol 1e-12), sound speed vs FD %.2e (tol 1e-6), T round trip %.1e (tol 1e-9), isentrope to 1.05 rho0: %.8g vs RK4 %.8g erg/g\n",
+                        ok ? "PASSED" : "FAILED", (double)worst_p, (double)worst_c, (double)worst_T, (double)e1, (double)e));
+  if (!ok) (*fails)++;
+  PetscCall(MPMEOSDestroy(&eos));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* sqrt(3/2 s:s) of the 3D deviator a d x d block stands for (1D: s_yy = s_zz = -s_xx/2; 2D: s_zz = -(s_xx + s_yy)). */
 static PetscReal VonMises(PetscInt d, const PetscReal s[])
 {
@@ -253,6 +307,7 @@ int main(int argc, char **argv)
     PetscCall(MPMStrengthDestroy(&nh));
   }
   PetscCall(TestMieGruneisen(&fails));
+  PetscCall(TestTait(&fails));
   PetscCall(TestReturnMapping(&fails));
   PetscCall(PetscFinalize());
   return fails ? 1 : 0;
