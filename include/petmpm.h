@@ -57,6 +57,7 @@ typedef const char *MPMStrengthType;
 #define MPMSTRENGTHELASTIC "elastic"
 #define MPMSTRENGTHVONMISES "vonmises"
 #define MPMSTRENGTHJOHNSONCOOK "johnsoncook"
+#define MPMSTRENGTHNEWTONIAN "newtonian"
 typedef const char *MPMViscosityType;
 #define MPMVISCOSITYNONE "none"
 #define MPMVISCOSITYVNR "vnr"

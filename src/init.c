@@ -17,6 +17,7 @@ PETSC_EXTERN PetscErrorCode MPMStrengthCreate_NeoHookean(MPMStrength);
 PETSC_EXTERN PetscErrorCode MPMStrengthCreate_Elastic(MPMStrength);
 PETSC_EXTERN PetscErrorCode MPMStrengthCreate_VonMises(MPMStrength);
 PETSC_EXTERN PetscErrorCode MPMStrengthCreate_JohnsonCook(MPMStrength);
+PETSC_EXTERN PetscErrorCode MPMStrengthCreate_Newtonian(MPMStrength);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_MMS(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMViscosityCreate_None(MPMViscosity);
 PETSC_EXTERN PetscErrorCode MPMViscosityCreate_VNR(MPMViscosity);
@@ -52,6 +53,7 @@ PetscErrorCode MPMInitializePackage(void)
   PetscCall(MPMStrengthRegister(MPMSTRENGTHELASTIC, MPMStrengthCreate_Elastic));
   PetscCall(MPMStrengthRegister(MPMSTRENGTHVONMISES, MPMStrengthCreate_VonMises));
   PetscCall(MPMStrengthRegister(MPMSTRENGTHJOHNSONCOOK, MPMStrengthCreate_JohnsonCook));
+  PetscCall(MPMStrengthRegister(MPMSTRENGTHNEWTONIAN, MPMStrengthCreate_Newtonian));
   PetscCall(MPMViscosityRegister(MPMVISCOSITYNONE, MPMViscosityCreate_None));
   PetscCall(MPMViscosityRegister(MPMVISCOSITYVNR, MPMViscosityCreate_VNR));
   PetscCall(MPMViscosityRegister(MPMVISCOSITYLIMITED, MPMViscosityCreate_Limited));

@@ -3,8 +3,9 @@
 #include "petmpmimpl.h"
 
 /* dt = min of
-     sound:        C h_min / max_p (c_p + |v_p| + 2 nu_p / h_min), nu_p = q_p / (rho_p |div v_p|) the viscous
-                   diffusivity, so that the artificial viscosity's own (diffusive) limit is respected;
+     sound:        C h_min / max_p (c_p + |v_p| + 2 nu_p / h_min + 2 d mu_p / (rho_p h_min)), nu_p = q_p / (rho_p |div v_p|)
+                   the artificial viscosity's diffusivity and mu_p a Newtonian material's viscosity, so that their own
+                   (diffusive) limits are respected;
      volume:       dV_max / max_p |tr L_p|: no point's volume changes by more than the fraction dV_max
                    (-mpm_dt_volume) in a step at the rate of its last step (a point that would grow 7-fold in one
                    step at the sound-speed step, as where a dense gas expands into a light one, cannot take the
@@ -37,6 +38,10 @@ PetscErrorCode MPMComputeTimeStep(MPM mpm, PetscBool diagnose, PetscReal *dt)
       divv += L[k * d + k];
     }
     s = pts.f[MPM_FIELD_SOUNDSPEED][p] + PetscSqrtReal(v2);
+    if (mpm->has_stress) { /* a viscous material's diffusion limit dt <= h^2 / (2 d nu) */
+      const MPMStrength str = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].strength;
+      if (str && str->mu > 0.0) s += 2.0 * d * str->mu / (pts.f[MPM_FIELD_DENSITY][p] * h);
+    }
     if (q > 0.0 && divv != 0.0) s += 2.0 * q / (pts.f[MPM_FIELD_DENSITY][p] * PetscAbsReal(divv) * h);
     if (!(s <= mx[0])) { /* also catches NaN */
       mx[0] = s;

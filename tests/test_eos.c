@@ -308,6 +308,29 @@ int main(int argc, char **argv)
   }
   PetscCall(TestMieGruneisen(&fails));
   PetscCall(TestTait(&fails));
+  {
+    /* Newtonian viscosity: s = 2 mu D' with the 3D trace. Simple shear L = [[0, g], [0, 0]]: s_xy = s_yx = mu g,
+       no normal stress; 2D stretch L = diag(a, 0): s_xx = 4 mu a / 3, s_yy = -2 mu a / 3; 1D: s_xx = 4 mu a / 3;
+       no wave speed; the stress does not remember the previous step */
+    MPMStrength     nv;
+    const PetscReal mu = 0.37, g = 2.5, a = -1.3;
+    PetscReal       L[4] = {0, g, 0, 0}, s[4] = {9, 9, 9, 9}, c2, err, L2[4] = {a, 0, 0, 0}, eps = 0;
+    PetscCall(PetscOptionsSetValue(NULL, "-mat_v_strength_type", "newtonian"));
+    PetscCall(PetscOptionsSetValue(NULL, "-mat_v_strength_newtonian_mu", "0.37"));
+    PetscCall(MPMStrengthCreate(PETSC_COMM_WORLD, &nv));
+    PetscCall(MPMStrengthSetOptionsPrefix(nv, "mat_v_"));
+    PetscCall(MPMStrengthSetFromOptions(nv));
+    PetscCall(MPMStrengthStress(nv, 2, 1e-3, L, NULL, 1.0, 0.0, s, &eps, &c2));
+    err = PetscAbsReal(s[1] - mu * g) + PetscAbsReal(s[2] - mu * g) + PetscAbsReal(s[0]) + PetscAbsReal(s[3]) + PetscAbsReal(c2);
+    PetscCall(MPMStrengthStress(nv, 2, 1e-3, L2, NULL, 1.0, 0.0, s, &eps, &c2));
+    err += PetscAbsReal(s[0] - 4 * mu * a / 3) + PetscAbsReal(s[3] + 2 * mu * a / 3) + PetscAbsReal(s[1]) + PetscAbsReal(s[2]);
+    PetscCall(MPMStrengthStress(nv, 1, 1e-3, &a, NULL, 1.0, 0.0, s, &eps, &c2));
+    err += PetscAbsReal(s[0] - 4 * mu * a / 3);
+    err /= mu * g;
+    if (!(err < 1e-14)) fails++;
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s newtonian: simple shear, 2D and 1D stretch against s = 2 mu D' (3D trace), rel. error %.1e (tol 1e-14), no wave speed\n", err < 1e-14 ? "PASSED" : "FAILED", (double)err));
+    PetscCall(MPMStrengthDestroy(&nv));
+  }
   PetscCall(TestReturnMapping(&fails));
   PetscCall(PetscFinalize());
   return fails ? 1 : 0;

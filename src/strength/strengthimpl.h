@@ -24,6 +24,7 @@ struct _p_MPMStrength {
   MPM_CLASS_HEADER(MPMStrengthOps);
   PetscBool needs_F; /* the model reads the deformation gradient           */
   PetscReal G;       /* shear modulus of the hypoelastic types [dyn/cm^2] */
+  PetscReal mu;      /* dynamic viscosity of the viscous types [g/(cm s)]: the time step's diffusion limit */
 };
 
 PETSC_INTERN PetscErrorCode MPMStrengthStressBatch(MPMStrength, PetscInt, PetscReal, PetscInt, const PetscInt[], const PetscReal[], const PetscReal[], const PetscReal[], const PetscReal[], PetscReal[], PetscReal[], PetscReal[]);
