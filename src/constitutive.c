@@ -43,14 +43,14 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(mpm->log.constitutive, 0, 0, 0, 0));
   PetscCall(MPMPointsGetArrays(mpm, &pts));
-  if (pts.n > mpm->nwork) { /* workspace: the material index lists; 7 values per point of a chunk */
-    PetscCall(PetscFree2(mpm->widx, mpm->work));
+  if (pts.n > mpm->nwork) { /* workspace: the material index lists; 7 values per point of a chunk; axisymmetric: L - L_tt I per point */
+    PetscCall(PetscFree3(mpm->widx, mpm->work, mpm->wL));
     mpm->nwork = pts.n + pts.n / 4;
-    PetscCall(PetscMalloc2(mpm->nwork, &mpm->widx, 7 * MPM_CHUNK, &mpm->work));
+    PetscCall(PetscMalloc3(mpm->nwork, &mpm->widx, 7 * MPM_CHUNK, &mpm->work, mpm->grid.axisym ? mpm->nwork * d * d : 0, &mpm->wL));
   }
   if (mpm->grid.axisym) { /* the hoop rate L_tt: the volume change gets (1 + dt L_tt), and the strength models the in-plane block
                              L - L_tt I, whose deviatoric rates and work s : (L - L_tt I) are those of the 3D L with L_tt (docs/algorithm.md) */
-    PetscCall(PetscMalloc1(pts.n * d * d + 1, &Lsh));
+    Lsh = mpm->wL;
     for (PetscInt p = 0; p < pts.n; p++)
       for (PetscInt i = 0; i < d * d; i++) Lsh[p * d * d + i] = pts.f[MPM_FIELD_GRADV][p * d * d + i] - (i % (d + 1) == 0 ? pts.f[MPM_FIELD_HOOPRATE][p] : 0.0);
   }
@@ -138,7 +138,6 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
                           (double)pts.f[MPM_FIELD_ID][bad], (double)pts.f[MPM_FIELD_POSITION][bad * d], (double)rho[bad], (double)e[bad], (double)pr[bad], (double)(c[bad] * c[bad]), (double)MPMDetIPlusDtL(d, dt, &L[bad * d * d]),
                           (double)(trackF ? MPMDeterminant(d, &F[bad * d * d]) : 1.0), shape->ops.admissible ? "; a CPDI domain must stay inside -mpm_shape_cpdi_reach cells of its point" : ""));
   }
-  PetscCall(PetscFree(Lsh));
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   PetscCall(PetscLogFlops(30.0 * pts.n));
   nbad = bad >= 0 ? 1 : 0;

@@ -228,7 +228,8 @@ PetscErrorCode MPMSetUp(MPM mpm)
   PetscCall(MPMShapeSetUp(mpm->shape, &mpm->grid, mpm->ppc));
   mpm->kern = mpm->transfer_kernel == MPM_TRANSFER_SPECIALISED && mpm->shape->kernels && !mpm->grid.axisym ? &mpm->shape->kernels[mpm->grid.dim - 1] : NULL; /* the specialised kernels have no hoop terms */
   for (PetscInt i = 0; i < mpm->nmat; i++)
-    PetscCheck(!mpm->grid.axisym || !mpm->mat[i].strength || !mpm->mat[i].strength->needs_F, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_axisymmetric: material %s's strength model reads F, which has no hoop component here; use a hypoelastic type", mpm->mat[i].name);
+    PetscCheck(!mpm->grid.axisym || !mpm->mat[i].strength || !mpm->mat[i].strength->needs_F, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_axisymmetric: material %s's strength model reads F, which has no hoop component here; use a hypoelastic type",
+               mpm->mat[i].name);
   if (mpm->shape->needs_F || mpm->split || (mpm->exact && mpm->exact->ops.initial)) mpm->track_F = PETSC_TRUE; /* the points carry F */
   if (!mpm->exact->ops.evaluate && !mpm->exact->ops.checks) PetscCall(MPMExactDestroy(&mpm->exact));           /* none */
   PetscCall(MPMPointsSelectFields(mpm));
@@ -292,7 +293,7 @@ PetscErrorCode MPMDestroy(MPM *mpm)
   PetscCall(VecDestroy(&m->nodes));
   PetscCall(VecDestroy(&m->lnodes));
   PetscCall(PetscFree2(m->cellV, m->cellS));
-  PetscCall(PetscFree2(m->widx, m->work));
+  PetscCall(PetscFree3(m->widx, m->work, m->wL));
   PetscCall(DMDestroy(&m->swarm));
   PetscCall(VecDestroy(&m->mean_l));
   PetscCall(VecDestroy(&m->mean_g));

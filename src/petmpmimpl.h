@@ -175,6 +175,7 @@ struct _p_MPM {
   PetscInt     nfields;
   PetscInt     nwork;                                    /* capacity of the constitutive workspace [points]         */
   PetscInt    *widx;                                     /* the local points of each material, material by material  */
+  PetscReal   *wL;                                       /* axisymmetric: L_p - L_tt,p I, what the strength models see */
   PetscReal   *work;                                     /* 7 values per point of a chunk of MPM_CHUNK points        */
   PetscInt     box_lo[MPM_MAX_DIM], box_hi[MPM_MAX_DIM]; /* owned nodes the node loops sweep (MPMGridZeroForScatter) */
   PetscReal   *cellV, *cellS;                            /* per local cell: sum V_p, sum V_p (p_p + q_p); in the gather of the conservative update with the cell rule, cellS is the cell's work per unit P_p V_p */
@@ -236,6 +237,15 @@ static inline const PetscReal *MPMPointDomain(PetscInt d, const PetscReal *F, co
   for (PetscInt a = 0; a < d; a++)
     for (PetscInt b = 0; b < d; b++) Fs[a * d + b] = F[p * d * d + a * d + b] * s[p * d + b];
   return Fs;
+}
+
+/* div v_p = tr L_p, plus the hoop rate v_r / r on an axisymmetric grid. */
+static inline PetscReal MPMPointDivergence(const MPMPoints *pts, PetscInt d, PetscInt p)
+{
+  PetscReal div = pts->f[MPM_FIELD_HOOPRATE] ? pts->f[MPM_FIELD_HOOPRATE][p] : 0.0;
+
+  for (PetscInt k = 0; k < d; k++) div += pts->f[MPM_FIELD_GRADV][p * d * d + k * d + k];
+  return div;
 }
 
 /* Loops c over the owned nodes (their index in the global nodal vector) of the box the step's node loops sweep:

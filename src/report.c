@@ -305,7 +305,8 @@ static PetscReal MPMRelErr(PetscReal v, PetscReal r)
 PetscErrorCode MPMWriteReport(MPM mpm)
 {
   const MPMGrid *g = &mpm->grid;
-  PetscReal      err[MPM_NERR][3], rhomin = 0, dmass, denergy, mass, energy, mom[MPM_MAX_DIM], kinetic, wplastic = 0, eshear = 0, shock_cells = -1.0, pss;
+  PetscReal      err[MPM_NERR][3], rhomin = 0, dmass, denergy, mass, energy, mom[MPM_MAX_DIM], kinetic, wplastic = 0, eshear = 0, eb[5] = {0, 0, 0, 0, 0}, shock_cells = -1.0, pss;
+  PetscBool      budget;
   PetscInt       nonfinite = 0, npoints, nvac, nempty;
   PetscReal      eisen, nisen, nsplit, nrefuse, nreflect, nreset;
   PetscMPIInt    size, rank;
@@ -345,7 +346,15 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     PetscCall(PetscStrcmp(mpm->checks[c].name, "shock_position", &is));
     if (is) shock_cells = PetscAbsReal(mpm->checks[c].value - mpm->checks[c].reference) / g->h[0];
   }
-  dmass   = (mass - mpm->mass0) / mpm->mass0; /* signed relative changes, printed and reported alike */
+  dmass  = (mass - mpm->mass0) / mpm->mass0; /* signed relative changes, printed and reported alike */
+  budget = (PetscBool)(mpm->has_stress && mpm->kinetic0 > 0.0);
+  if (budget) { /* over the initial kinetic energy: kinetic, internal change, plastic work, elastic shear energy, total change */
+    eb[0] = kinetic / mpm->kinetic0;
+    eb[1] = (energy - kinetic - (mpm->energy0 - mpm->kinetic0)) / mpm->kinetic0;
+    eb[2] = wplastic / mpm->kinetic0;
+    eb[3] = eshear / mpm->kinetic0;
+    eb[4] = (energy - mpm->energy0) / mpm->kinetic0;
+  }
   denergy = mpm->energy0 != 0 ? (energy - mpm->energy0) / PetscAbsReal(mpm->energy0) : energy;
   pss     = mpm->wall_loop > 0 ? mpm->point_steps / mpm->wall_loop : 0.0;
 
@@ -362,10 +371,9 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     else
       PetscCall(PetscPrintf(mpm->comm, "  warning: not at rest at the final time: kinetic energy %.3g of its initial value, above -mpm_stop_at_rest %g\n", (double)(mpm->kinetic0 > 0 ? kinetic / mpm->kinetic0 : 0.0), (double)mpm->rest_fraction));
   }
-  if (mpm->has_stress && mpm->kinetic0 > 0.0)
-    PetscCall(PetscPrintf(mpm->comm, "  energy budget (of the initial kinetic energy): kinetic %.4f, internal change %.4f (plastic work %.4f, elastic shear %.4f, the rest %.4f), error %.2e\n", (double)(kinetic / mpm->kinetic0),
-                          (double)((energy - kinetic - (mpm->energy0 - mpm->kinetic0)) / mpm->kinetic0), (double)(wplastic / mpm->kinetic0), (double)(eshear / mpm->kinetic0),
-                          (double)((energy - kinetic - (mpm->energy0 - mpm->kinetic0) - wplastic - eshear) / mpm->kinetic0), (double)((energy - mpm->energy0) / mpm->kinetic0)));
+  if (budget)
+    PetscCall(PetscPrintf(mpm->comm, "  energy budget (of the initial kinetic energy): kinetic %.4f, internal change %.4f (plastic work %.4f, elastic shear %.4f, the rest %.4f), error %.2e\n", (double)eb[0], (double)eb[1], (double)eb[2],
+                          (double)eb[3], (double)(eb[1] - eb[2] - eb[3]), (double)eb[4]));
   if (nreflect > 0) PetscCall(PetscPrintf(mpm->comm, "  %.0f point-steps carried a point across a wall; it was put back as its mirror image\n", (double)nreflect));
   if (mpm->diag.vacuum_points_max || mpm->diag.empty_cells_max)
     PetscCall(PetscPrintf(mpm->comm,
@@ -406,9 +414,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     fprintf(fp, "  \"conservation\": {\"mass\": %.6e, \"total_energy\": %.6e, \"momentum\": [", (double)dmass, (double)denergy);
     for (PetscInt k = 0; k < g->dim; k++) fprintf(fp, "%s%.6e", k ? ", " : "", (double)(mom[k] - mpm->momentum0[k]));
     fprintf(fp, "]},\n  \"kinetic_energy_fraction\": %s,\n  \"rest_time\": %.10g,\n", MPMJSONReal(mpm->kinetic0 > 0 ? kinetic / mpm->kinetic0 : 0.0, "%.6e", num[0]), (double)mpm->rest_time);
-    if (mpm->has_stress && mpm->kinetic0 > 0.0)
-      fprintf(fp, "  \"energy_budget\": {\"kinetic\": %.6e, \"internal_change\": %.6e, \"plastic_work\": %.6e, \"elastic_shear\": %.6e, \"error\": %.6e},\n", (double)(kinetic / mpm->kinetic0),
-              (double)((energy - kinetic - (mpm->energy0 - mpm->kinetic0)) / mpm->kinetic0), (double)(wplastic / mpm->kinetic0), (double)(eshear / mpm->kinetic0), (double)((energy - mpm->energy0) / mpm->kinetic0));
+    if (budget) fprintf(fp, "  \"energy_budget\": {\"kinetic\": %.6e, \"internal_change\": %.6e, \"plastic_work\": %.6e, \"elastic_shear\": %.6e, \"error\": %.6e},\n", (double)eb[0], (double)eb[1], (double)eb[2], (double)eb[3], (double)eb[4]);
     fprintf(fp, "  \"energy_accounted\": %.6e,\n", (double)(mpm->energy0 != 0 ? (denergy * PetscAbsReal(mpm->energy0) - eisen) / PetscAbsReal(mpm->energy0) : denergy - eisen));
     fprintf(fp, "  \"robustness\": {\"isentrope_energy\": %.6e, \"isentrope_point_steps\": %.0f, \"dt_limit\": {", (double)(mpm->energy0 != 0 ? eisen / PetscAbsReal(mpm->energy0) : eisen), (double)nisen);
     for (PetscInt l = 0; l < MPM_NUM_DT_LIMITS; l++) fprintf(fp, "%s\"%s\": %" PetscInt_FMT, l ? ", " : "", MPMDtLimitNames[l], mpm->diag.dt_limit[l]);

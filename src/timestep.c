@@ -31,12 +31,9 @@ PetscErrorCode MPMComputeTimeStep(MPM mpm, PetscBool diagnose, PetscReal *dt)
   PetscCall(PetscLogEventBegin(mpm->log.timestep, 0, 0, 0, 0));
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   for (PetscInt p = 0; p < pts.n; p++) {
-    const PetscReal *v = &pts.f[MPM_FIELD_VELOCITY][p * d], *L = &pts.f[MPM_FIELD_GRADV][p * d * d], q = pts.f[MPM_FIELD_VISCOSITY][p];
-    PetscReal        v2 = 0.0, divv = pts.f[MPM_FIELD_HOOPRATE] ? pts.f[MPM_FIELD_HOOPRATE][p] : 0.0, s;
-    for (PetscInt k = 0; k < d; k++) {
-      v2 += v[k] * v[k];
-      divv += L[k * d + k];
-    }
+    const PetscReal *v = &pts.f[MPM_FIELD_VELOCITY][p * d], q = pts.f[MPM_FIELD_VISCOSITY][p], divv = MPMPointDivergence(&pts, d, p);
+    PetscReal        v2 = 0.0, s;
+    for (PetscInt k = 0; k < d; k++) v2 += v[k] * v[k];
     s = pts.f[MPM_FIELD_SOUNDSPEED][p] + PetscSqrtReal(v2);
     if (mpm->has_stress) { /* a viscous material's diffusion limit dt <= h^2 / (2 d nu) */
       const MPMStrength str = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].strength;

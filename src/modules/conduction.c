@@ -28,12 +28,10 @@ PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepContext *
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   PetscCall(PetscCalloc2(pts.n + 1, &w, pts.n + 1, &Tbar));
   {
-    const PetscReal *L = pts.f[MPM_FIELD_GRADV], *rho = pts.f[MPM_FIELD_DENSITY], *e = pts.f[MPM_FIELD_ENERGY];
+    const PetscReal *rho = pts.f[MPM_FIELD_DENSITY], *e = pts.f[MPM_FIELD_ENERGY];
     for (PetscInt p = 0; p < pts.n; p++) { /* beta_p, c_v,p and the weight w_p = beta_p m_p c_v,p */
       const MPMEOS E    = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].eos;
-      PetscReal    beta = pts.f[MPM_FIELD_HOOPRATE] ? -pts.f[MPM_FIELD_HOOPRATE][p] : 0.0, de, T0, T1;
-      for (PetscInt k = 0; k < d; k++) beta -= L[p * d * d + k * d + k];
-      beta = PetscMin(1.0, mpm->conduction * beta * ctx->dt);
+      PetscReal    beta = PetscMin(1.0, -mpm->conduction * MPMPointDivergence(&pts, d, p) * ctx->dt), de, T0, T1;
       if (beta < 1e-10) continue;                    /* expansion, rest, or too little to matter (and no denormal weights) */
       de = 1e-3 * PetscMax(PetscAbsReal(e[p]), 1.0); /* a central difference wide enough that round-off in e does not reach c_v */
       MPMEOSTemperatureKernel(E, rho[p], e[p] - de, &T0);

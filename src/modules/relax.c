@@ -52,15 +52,14 @@ PetscErrorCode MPMRelaxApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
   PetscCall(PetscMalloc3(pts.n + 1, &cell, pts.n + 1, &w, pts.n + 1, &q));
   for (PetscInt p = 0; p < pts.n; p++) { /* the cell, volume weight and bulk modulus of each fluid point */
     const MPMMaterial *mat = &mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]];
-    PetscReal          pr, c2, div = pts.f[MPM_FIELD_HOOPRATE] ? pts.f[MPM_FIELD_HOOPRATE][p] : 0.0;
+    PetscReal          pr, c2;
     w[p] = q[p] = 0.0;
     cell[p]     = MPMLocalCell(&mpm->grid, &pts.f[MPM_FIELD_POSITION][p * d]);
     if ((mat->strength && (mat->strength->G > 0.0 || mat->strength->needs_F)) || cell[p] < 0) continue; /* solids keep their pressure pattern: a viscous liquid relaxes */
     MPMEOSPressureKernel(mat->eos, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_ENERGY][p], &pr, &c2);
     if (!(c2 > 0.0)) continue;
-    for (PetscInt k = 0; k < d; k++) div += pts.f[MPM_FIELD_GRADV][p * d * d + k * d + k];
-    if (PetscAbsReal(div) * mpm->grid.hmin > mpm->pressure_relax_mach * PetscSqrtReal(c2)) continue; /* in a shock or a fast expansion */
-    if (pts.f[MPM_FIELD_DOMAINSCALE]) {                                                              /* a point made by splitting: the material expanded towards vacuum here */
+    if (PetscAbsReal(MPMPointDivergence(&pts, d, p)) * mpm->grid.hmin > mpm->pressure_relax_mach * PetscSqrtReal(c2)) continue; /* in a shock or a fast expansion */
+    if (pts.f[MPM_FIELD_DOMAINSCALE]) {                                                                                         /* a point made by splitting: the material expanded towards vacuum here */
       PetscBool split = PETSC_FALSE;
       for (PetscInt k = 0; k < d; k++) split = (PetscBool)(split || pts.f[MPM_FIELD_DOMAINSCALE][p * d + k] < 1.0);
       if (split) continue;

@@ -7,6 +7,13 @@
 #pragma once
 #include "strengthimpl.h"
 
+/* The strain-rate deviator D' = D - tr(D)/3 I of D = (L + L^T)/2, with the 3D trace (the unresolved directions do not
+   deform), component (i, j) of the d x d block; trD = sum_k L_kk. */
+static inline PetscReal MPMStrainRateDeviator(PetscInt d, const PetscReal L[], PetscReal trD, PetscInt i, PetscInt j)
+{
+  return 0.5 * (L[i * d + j] + L[j * d + i]) - (i == j ? trD / 3.0 : 0.0);
+}
+
 /* s <- s + dt (2 G D' + W s - s W): the Jaumann (objective) rate, D = (L + L^T)/2, W = (L - L^T)/2,
    D' = D - tr(D)/3 I with the 3D trace (the unresolved directions have zero strain rate). */
 static inline void MPMHypoelasticTrial(PetscInt d, PetscReal dt, PetscReal G, const PetscReal L[], PetscReal s[])
@@ -21,7 +28,7 @@ static inline void MPMHypoelasticTrial(PetscInt d, PetscReal dt, PetscReal G, co
         const PetscReal Wik = 0.5 * (L[i * d + k] - L[k * d + i]), Wkj = 0.5 * (L[k * d + j] - L[j * d + k]);
         rot += Wik * s[k * d + j] - s[i * d + k] * Wkj;
       }
-      ds[i * d + j] = 2.0 * G * (0.5 * (L[i * d + j] + L[j * d + i]) - (i == j ? trD / 3.0 : 0.0)) + rot;
+      ds[i * d + j] = 2.0 * G * MPMStrainRateDeviator(d, L, trD, i, j) + rot;
     }
   for (PetscInt i = 0; i < d * d; i++) s[i] += dt * ds[i];
 }

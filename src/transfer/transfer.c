@@ -63,7 +63,7 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
       for (PetscInt p = 0; p < pts.n; p++) {
         const PetscReal P              = pr[p] + q[p];
         PetscReal       b[MPM_MAX_DIM] = {0, 0, 0}, Fs[MPM_MAX_DIM * MPM_MAX_DIM], hoop = 0.0;
-        if (force && g->axisym) hoop = V[p] * (P + (stress ? S[p * 4] + S[p * 4 + 3] : 0.0)) / x[p * d]; /* -sigma_tt V / r, sigma_tt = -P - (s_rr + s_zz) */
+        if (force && g->axisym) hoop = V[p] * (P + (stress ? S[p * d * d] + S[p * d * d + d + 1] : 0.0)) / x[p * d]; /* -sigma_tt V / r, sigma_tt = -P - (s_rr + s_zz) */
         if (body) mpm->exact->ops.bodyforce(mpm->exact->data, tn, &X[p * d], F ? &F[p * d * d] : NULL, b);
         MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, F, ds, p, Fs), &st);
         for (PetscInt a = 0; a < st.n; a++) {
@@ -239,7 +239,7 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
               for (PetscInt i = 0; i < d * d; i++) sL += S[p * d * d + i] * Lb[i];
             if (g->axisym) { /* the hoop work: -P Lbar_tt + s_tt Lbar_tt, s_tt = -(s_rr + s_zz) */
               div += Lbtt;
-              if (stress) sL -= (S[p * 4] + S[p * 4 + 3]) * Lbtt;
+              if (stress) sL -= (S[p * d * d] + S[p * d * d + d + 1]) * Lbtt;
             }
             e[p] += MPMWorkIncrement(&A, p, e[p], sL, div);
           }

@@ -171,7 +171,8 @@ static PetscErrorCode MPMExactSetUp_Flyer(MPMExact exact, const MPMScene *sc)
   PetscFunctionBegin;
   PetscCheck(sc->nreg >= 1, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer needs a scene whose first region is the rod");
   for (PetscInt k = 1; k < sc->grid->dim; k++) { /* on a 2D or 3D grid: uniaxial strain along x between walls */
-    PetscCheck(sc->bc_lo[k] == MPM_BC_WALL && sc->bc_hi[k] == MPM_BC_WALL, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer on a %" PetscInt_FMT "D grid is uniaxial strain along x: -mpm_bc_lo and -mpm_bc_hi must be wall in direction %" PetscInt_FMT, sc->grid->dim, k);
+    PetscCheck(sc->bc_lo[k] == MPM_BC_WALL && sc->bc_hi[k] == MPM_BC_WALL, sc->comm, PETSC_ERR_USER_INPUT,
+               "-mpm_exact_type flyer on a %" PetscInt_FMT "D grid is uniaxial strain along x: -mpm_bc_lo and -mpm_bc_hi must be wall in direction %" PetscInt_FMT, sc->grid->dim, k);
     PetscCheck(reg->lo[k] <= sc->grid->lo[k] && reg->hi[k] >= sc->grid->hi[k], sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer: the rod (-region_%s_lo, _hi) must fill the domain across x (direction %" PetscInt_FMT ")", reg->name, k);
     PetscCheck(reg->v[k] == 0.0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type flyer: the rod moves along x only (-region_%s_velocity component %" PetscInt_FMT " is %g)", reg->name, k, (double)reg->v[k]);
   }

@@ -20,7 +20,7 @@ static void MPMStrengthStress_Newtonian(void *ctx, PetscInt d, PetscReal dt, con
 
   for (PetscInt i = 0; i < d; i++) trD += L[i * d + i];
   for (PetscInt i = 0; i < d; i++)
-    for (PetscInt j = 0; j < d; j++) s[i * d + j] = 2.0 * nt->mu * (0.5 * (L[i * d + j] + L[j * d + i]) - (i == j ? trD / 3.0 : 0.0));
+    for (PetscInt j = 0; j < d; j++) s[i * d + j] = 2.0 * nt->mu * MPMStrainRateDeviator(d, L, trD, i, j);
   *c2 = 0.0;
 }
 
