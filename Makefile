@@ -42,6 +42,7 @@ verification: build
 	for s in $(STUDIES); do $(PY) scripts/study --study scripts/studies/$$s.json --out docs/studies/$$s || exit 1; done
 	$(PY) scripts/study --summary $(addprefix docs/studies/,$(STUDIES)) --markdown docs/verification.md
 	$(PY) scripts/hardcases.py --exe $(BUILD)/petmpm --out docs/hard-cases.md
+	$(PY) scripts/taylor.py --exe $(BUILD)/petmpm
 
 format:
 	clang-format -i $$(git ls-files '*.c' '*.h')

@@ -1,0 +1,87 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-2-Clause
+"""The Taylor anvil tables of docs/validation-taylor.md: the 190 m/s rod in 3D (inputs/taylor_anvil_3d.opts) and
+axisymmetric (inputs/taylor_anvil_rz.opts) at R0/6, R0/9 and R0/12 cells, every shot of
+../shared/reference/taylor_ofhc_copper.csv on the rz rod at R0/12, and the rz rod at R0/9 with each shape family at
+1, 2 and 3 points per cell per direction. Writes a markdown file (default docs/validation-taylor-runs.md) and the
+final-profile plot of the three 3D runs (docs/taylor_profile.png, scripts/taylor_profile.py).
+
+usage: scripts/taylor.py [--exe build/petmpm] [--out docs/validation-taylor-runs.md] [--quick]
+"""
+import argparse
+import os
+import subprocess
+import sys
+import tempfile
+
+SRC = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import petmpmlib as lib  # noqa: E402
+
+SHOTS = [("Johnson & Cook 1983", 1.3e4, 2.54, 1.956, 0.991), ("Johnson & Cook 1983", 1.46e4, 2.54, 1.869, 1.067),
+         ("Johnson & Cook 1983", 1.9e4, 2.54, 1.621, 1.356), ("Wilkins & Guinan 1973", 2.1e4, 2.347, 1.509, 1.658)]
+RES = {6: ("16,16,42", "16,42"), 9: ("24,24,63", "24,63"), 12: ("32,32,84", "32,84")}
+
+
+def run(exe, scene, args, out):
+    rep, p = lib.run(exe, ["-options_file", os.path.join(SRC, "inputs", scene + ".opts"), *args], 1, out)
+    if rep is None:  # the failure's diagnosis: the step and the point
+        lines = [ln for ln in (p.stdout + p.stderr).splitlines() if ln.startswith("[0] step")]
+        return None, lines[:1] or ["failed"]
+    return rep, None
+
+
+def check(rep, name, what="value"):
+    return next(c[what] for c in rep["checks"] if c["name"] == name)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--exe", default=os.path.join(SRC, "build", "petmpm"))
+    ap.add_argument("--out", default=os.path.join(SRC, "docs", "validation-taylor-runs.md"))
+    ap.add_argument("--quick", action="store_true", help="R0/6 and R0/9 only, no 3D R0/12")
+    a = ap.parse_args()
+    md = ["# Taylor anvil runs", "", "Made by `scripts/taylor.py` (one rank); discussed in [validation-taylor.md](validation-taylor.md). Lengths in mm;",
+          "`error`: against the shot; energy: the report's `energy_budget` (of the impact's kinetic energy); wall: the time loop [s].", ""]
+    with tempfile.TemporaryDirectory() as tmp:
+        md += ["## 190 m/s, 3D quarter rod and axisymmetric rod", "",
+               "| cells a radius | model | Lf | error | Dmax | error | width at 0.2 L0 | at rest [us] | plastic work | budget error | points | wall |", "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+        h5 = []
+        for n, (c3, c2) in RES.items():
+            if a.quick and n == 12:
+                continue
+            for scene, cells in (("taylor_anvil_3d", c3), ("taylor_anvil_rz", c2)):
+                out = os.path.join(tmp, f"{scene}{n}")
+                rep, err = run(a.exe, scene, ["-mpm_cells", cells], out)
+                if rep is None:
+                    md.append(f"| {n} | {scene} | failed: {err} |")
+                    continue
+                if scene.endswith("3d"):
+                    h5.append(f"R0/{n}={os.path.join(out, 'petmpm.h5')}")
+                b = rep["energy_budget"]
+                md.append(f"| {n} | {'3D' if scene.endswith('3d') else 'rz'} | {10 * check(rep, 'final_length'):.2f} | {100 * (check(rep, 'final_length') / 1.621 - 1):+.1f}% | "
+                          f"{10 * check(rep, 'footprint'):.2f} | {100 * (check(rep, 'footprint') / 1.356 - 1):+.1f}% | {10 * check(rep, 'width_0.2L0'):.2f} | "
+                          f"{1e6 * rep['rest_time']:.1f} | {100 * b['plastic_work']:.1f}% | {b['error']:.0e} | {rep['particles']} | {rep['wall_seconds']:.1f} |")
+        if h5:
+            subprocess.run([sys.executable, os.path.join(SRC, "scripts", "taylor_profile.py"), os.path.join(SRC, "docs", "taylor_profile.png"), "16.21", "13.56", *h5], check=True)
+        md += ["", "## Every shot, axisymmetric rod at R0/12 (R0/9 with --quick)", "", "| shot | V [m/s] | Lf measured / computed | error | Dmax measured / computed | error |", "|---|---|---|---|---|---|"]
+        for src, v, L0, lf, dm in SHOTS:
+            rep, err = run(a.exe, "taylor_anvil_rz", ["-mpm_cells", RES[9 if a.quick else 12][1], "-region_rod_hi", f"0.381,{L0}", "-region_rod_velocity", f"0,-{v}",
+                                                      "-mpm_exact_anvil_length", str(lf), "-mpm_exact_anvil_diameter", str(dm)], os.path.join(tmp, "shot"))
+            if rep is None:
+                md.append(f"| {src} | {v / 100:.0f} | failed: {err} |")
+                continue
+            md.append(f"| {src} | {v / 100:.0f} | {10 * lf:.2f} / {10 * check(rep, 'final_length'):.2f} | {100 * (check(rep, 'final_length') / lf - 1):+.1f}% | "
+                      f"{10 * dm:.2f} / {10 * check(rep, 'footprint'):.2f} | {100 * (check(rep, 'footprint') / dm - 1):+.1f}% |")
+        md += ["", "## Shape families and points per cell, axisymmetric rod at R0/9", "", "| shape | ppc | Lf | Dmax | wall |", "|---|---|---|---|---|"]
+        for shape in ("cpdi", "bspline2", "gimp", "linear"):
+            for ppc in (1, 2, 3):
+                rep, err = run(a.exe, "taylor_anvil_rz", ["-mpm_cells", RES[9][1], "-mpm_shape_type", shape, "-mpm_ppc", str(ppc)], os.path.join(tmp, "shape"))
+                md.append(f"| {shape} | {ppc} | " + (f"{10 * check(rep, 'final_length'):.2f} | {10 * check(rep, 'footprint'):.2f} | {rep['wall_seconds']:.1f} |" if rep else f"failed: {' '.join(err)[:90]} | | |"))
+    with open(a.out, "w") as f:
+        f.write("\n".join(md) + "\n")
+    print(f"wrote {a.out}")
+
+
+if __name__ == "__main__":
+    main()
