@@ -70,6 +70,8 @@ typedef const char *MPMExactType;
 #define MPMEXACTSEDOV "sedov"
 #define MPMEXACTNOH "noh"
 #define MPMEXACTANVIL "anvil"
+#define MPMEXACTHYDROSTATIC "hydrostatic"
+#define MPMEXACTDAMBREAK "dambreak"
 
 /* The MPM object */
 PETSC_EXTERN PetscErrorCode MPMInitializePackage(void);

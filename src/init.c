@@ -28,6 +28,8 @@ PETSC_EXTERN PetscErrorCode MPMExactCreate_Flyer(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_Sedov(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_Noh(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_Anvil(MPMExact);
+PETSC_EXTERN PetscErrorCode MPMExactCreate_Hydrostatic(MPMExact);
+PETSC_EXTERN PetscErrorCode MPMExactCreate_DamBreak(MPMExact);
 
 static PetscBool MPMPackageInitialized = PETSC_FALSE;
 PetscClassId     MPM_CLASSID;
@@ -64,6 +66,8 @@ PetscErrorCode MPMInitializePackage(void)
   PetscCall(MPMExactRegister(MPMEXACTSEDOV, MPMExactCreate_Sedov));
   PetscCall(MPMExactRegister(MPMEXACTNOH, MPMExactCreate_Noh));
   PetscCall(MPMExactRegister(MPMEXACTANVIL, MPMExactCreate_Anvil));
+  PetscCall(MPMExactRegister(MPMEXACTHYDROSTATIC, MPMExactCreate_Hydrostatic));
+  PetscCall(MPMExactRegister(MPMEXACTDAMBREAK, MPMExactCreate_DamBreak));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

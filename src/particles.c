@@ -116,6 +116,7 @@ PetscErrorCode MPMGetScene(MPM mpm, MPMScene *sc)
   sc->nreg  = mpm->nreg;
   sc->mat   = mpm->mat;
   sc->reg   = mpm->reg;
+  sc->gravity = mpm->gravity;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -279,8 +280,16 @@ PetscErrorCode MPMCreatePoints(MPM mpm)
   PetscReal      rho[MPM_MAX_MATERIALS], e[MPM_MAX_MATERIALS];
   MPMPiece       pc[MPM_MAX_MATERIALS];
   MPMPoints      pts;
+  MPMHydrostatic *hs[MPM_MAX_REGIONS] = {NULL};
+  MPMScene        sc;
 
   PetscFunctionBegin;
+  PetscCall(MPMGetScene(mpm, &sc));
+  for (PetscInt r = 0; r < mpm->nreg; r++)
+    if (mpm->reg[r].hydrostatic) {
+      PetscCall(PetscNew(&hs[r]));
+      PetscCall(MPMHydrostaticSetUp(&sc, r, hs[r]));
+    }
   PetscCall(DMCreate(mpm->comm, &mpm->swarm));
   PetscCall(PetscObjectSetName((PetscObject)mpm->swarm, "points"));
   PetscCall(DMSetType(mpm->swarm, DMSWARM));
@@ -321,9 +330,13 @@ PetscErrorCode MPMCreatePoints(MPM mpm)
         if (pts.f[MPM_FIELD_STRESS]) pts.f[MPM_FIELD_STRESS][n * d * d + k] = 0.0;
         if (pts.f[MPM_FIELD_DEFGRAD]) pts.f[MPM_FIELD_DEFGRAD][n * d * d + k] = k % (d + 1) == 0 ? 1.0 : 0.0;
       }
-      pts.f[MPM_FIELD_VOLUME][n]      = pc[i].V;
-      pts.f[MPM_FIELD_DENSITY][n]     = reg ? reg->rho : rho[i];
-      pts.f[MPM_FIELD_MASS][n]        = pc[i].m;
+      pts.f[MPM_FIELD_VOLUME][n]  = pc[i].V;
+      pts.f[MPM_FIELD_DENSITY][n] = reg ? reg->rho : rho[i];
+      pts.f[MPM_FIELD_MASS][n]    = pc[i].m;
+      if (reg && hs[pc[i].region]) {
+        PetscCall(MPMHydrostaticAt(hs[pc[i].region], pc[i].x, &pts.f[MPM_FIELD_DENSITY][n], NULL));
+        pts.f[MPM_FIELD_MASS][n] = pts.f[MPM_FIELD_DENSITY][n] * pc[i].V;
+      }
       pts.f[MPM_FIELD_TEMPERATURE][n] = T;
       pts.f[MPM_FIELD_VISCOSITY][n]   = 0.0;
       if (pts.f[MPM_FIELD_PLASTICSTRAIN]) pts.f[MPM_FIELD_PLASTICSTRAIN][n] = 0.0;
@@ -332,6 +345,7 @@ PetscErrorCode MPMCreatePoints(MPM mpm)
     }
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  for (PetscInt r = 0; r < mpm->nreg; r++) PetscCall(PetscFree(hs[r]));
   PetscCall(DMSwarmGetSize(mpm->swarm, &mpm->npoints0));
   mpm->npoints = mpm->npoints0;
   mpm->next_id = 1.0;

@@ -54,7 +54,7 @@ typedef struct {
 } MPMPoints;
 
 #define MPM_CHUNK 256 /* points per batch of the constitutive update */
-#define MPM_MAX_CHECKS 16
+#define MPM_MAX_CHECKS 64
 #define MPM_MAX_OUTPUT_TIMES 64
 
 typedef struct {

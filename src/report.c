@@ -72,6 +72,11 @@ static inline PetscReal MPMProbeValue(const MPMPoints *pts, PetscInt d, MPMProbe
     return pts->f[MPM_FIELD_VELOCITY][p * d];
   case MPM_PROBE_TEMPERATURE:
     return pts->f[MPM_FIELD_TEMPERATURE][p];
+  case MPM_PROBE_SPEED: {
+    PetscReal v2 = 0.0;
+    for (PetscInt k = 0; k < d; k++) v2 += PetscSqr(pts->f[MPM_FIELD_VELOCITY][p * d + k]);
+    return PetscSqrtReal(v2);
+  }
   }
   return 0.0;
 }
@@ -141,19 +146,38 @@ PetscErrorCode MPMProbeRadialProfile(MPMProbe probe, const PetscReal c[], PetscI
    of x_p from the line and n_p the unit vector away from it. A point's domain is the parallelepiped with edges
    F diag(s) l0 (l0 the lattice spacing h / ppc), its half extent along n e_p(n) = sum_j |n . R e_j| / 2; a point
    without F is the cube of its volume. On every rank; found is false where no point reaches the band. */
+/* Half the extent of point p's domain along the unit vector n [cm]: its lattice site deformed by F diag(s) where the
+   points carry F, else a cube of its volume. */
+static PetscReal MPMPointHalfExtent(MPM mpm, const MPMPoints *pts, PetscInt p, const PetscReal n[])
+{
+  const PetscInt   d = mpm->grid.dim;
+  PetscReal        Rs[MPM_MAX_DIM * MPM_MAX_DIM], e = 0.0;
+  const PetscReal *R = pts->f[MPM_FIELD_DEFGRAD] ? MPMPointDomain(d, pts->f[MPM_FIELD_DEFGRAD], pts->f[MPM_FIELD_DOMAINSCALE], p, Rs) : NULL;
+
+  if (!R) return 0.5 * PetscPowReal(pts->f[MPM_FIELD_VOLUME][p], 1.0 / d);
+  for (PetscInt j = 0; j < d; j++) {
+    PetscReal nr = 0.0;
+    for (PetscInt k = 0; k < d; k++) nr += n[k] * R[k * d + j];
+    e += 0.5 * PetscAbsReal(nr) * (mpm->grid.h[j] / mpm->ppc);
+  }
+  return e;
+}
+
+/* Over the points whose domain reaches lo <= x_a <= hi: the farthest reach of the domains along the axis a (zmax,
+   over every point) and from the axis through c (rmax: |x - c| over the other directions plus the half extent). */
 PetscErrorCode MPMProbeExtent(MPMProbe probe, PetscInt a, const PetscReal c[], PetscReal lo, PetscReal hi, PetscReal *zmax, PetscReal *rmax, PetscBool *found)
 {
   MPM            mpm    = probe->mpm;
   const PetscInt d      = mpm->grid.dim;
-  PetscReal      ext[2] = {-PETSC_MAX_REAL, -PETSC_MAX_REAL};
+  PetscReal      ext[2] = {-PETSC_MAX_REAL, -PETSC_MAX_REAL}, na[MPM_MAX_DIM] = {0, 0, 0};
   MPMPoints      pts;
 
   PetscFunctionBegin;
+  na[a] = 1.0;
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   for (PetscInt p = 0; p < pts.n; p++) {
     const PetscReal *x              = &pts.f[MPM_FIELD_POSITION][p * d];
-    PetscReal        n[MPM_MAX_DIM] = {0, 0, 0}, r = 0.0, ez = 0.0, er = 0.0, Rs[MPM_MAX_DIM * MPM_MAX_DIM];
-    const PetscReal *R = pts.f[MPM_FIELD_DEFGRAD] ? MPMPointDomain(d, pts.f[MPM_FIELD_DEFGRAD], pts.f[MPM_FIELD_DOMAINSCALE], p, Rs) : NULL;
+    PetscReal        n[MPM_MAX_DIM] = {0, 0, 0}, r = 0.0, ez, er;
     for (PetscInt k = 0; k < d; k++)
       if (k != a) {
         n[k] = x[k] - c[k];
@@ -161,16 +185,8 @@ PetscErrorCode MPMProbeExtent(MPMProbe probe, PetscInt a, const PetscReal c[], P
       }
     r = PetscSqrtReal(r);
     for (PetscInt k = 0; k < d; k++) n[k] = r > 0.0 ? n[k] / r : 0.0;
-    if (R)
-      for (PetscInt j = 0; j < d; j++) {
-        const PetscReal l0 = mpm->grid.h[j] / mpm->ppc;
-        PetscReal       nr = 0.0;
-        for (PetscInt k = 0; k < d; k++) nr += n[k] * R[k * d + j];
-        ez += 0.5 * PetscAbsReal(R[a * d + j]) * l0;
-        er += 0.5 * PetscAbsReal(nr) * l0;
-      }
-    else
-      ez = er = 0.5 * PetscPowReal(pts.f[MPM_FIELD_VOLUME][p], 1.0 / d);
+    ez     = MPMPointHalfExtent(mpm, &pts, p, na);
+    er     = MPMPointHalfExtent(mpm, &pts, p, n);
     ext[0] = PetscMax(ext[0], x[a] + ez);
     if (x[a] + ez >= lo && x[a] - ez <= hi) ext[1] = PetscMax(ext[1], r + er);
   }
@@ -179,6 +195,56 @@ PetscErrorCode MPMProbeExtent(MPMProbe probe, PetscInt a, const PetscReal c[], P
   *zmax  = ext[0];
   *rmax  = ext[1];
   *found = (PetscBool)(ext[1] > -PETSC_MAX_REAL);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The farthest reach along the axis b of the domains of the points whose domain reaches lo <= x_a <= hi [cm]: a
+   surge front along the floor, a column's height at a wall. found is false where no domain reaches there. */
+PetscErrorCode MPMProbeReach(MPMProbe probe, PetscInt b, PetscInt a, PetscReal lo, PetscReal hi, PetscReal *max, PetscBool *found)
+{
+  MPM            mpm = probe->mpm;
+  const PetscInt d   = mpm->grid.dim;
+  PetscReal      m = -PETSC_MAX_REAL, na[MPM_MAX_DIM] = {0, 0, 0}, nb[MPM_MAX_DIM] = {0, 0, 0};
+  MPMPoints      pts;
+
+  PetscFunctionBegin;
+  na[a] = nb[b] = 1.0;
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt p = 0; p < pts.n; p++) {
+    const PetscReal *x  = &pts.f[MPM_FIELD_POSITION][p * d];
+    const PetscReal  ea = MPMPointHalfExtent(mpm, &pts, p, na);
+    if (x[a] + ea >= lo && x[a] - ea <= hi) m = PetscMax(m, x[b] + MPMPointHalfExtent(mpm, &pts, p, nb));
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &m, 1, MPIU_REAL, MPIU_MAX, mpm->comm));
+  *max   = m;
+  *found = (PetscBool)(m > -PETSC_MAX_REAL);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The largest relative deviation |q_p - q(x_p)| / |q(x_p)| of a point quantity from the exact solution, over the
+   points where |q(x_p)| >= qmin (away from a free surface where the exact value goes to zero). */
+PetscErrorCode MPMProbeMaxDeviation(MPMProbe probe, MPMProbeQuantity quantity, PetscReal qmin, PetscReal *max, PetscBool *found)
+{
+  MPM            mpm = probe->mpm;
+  const PetscInt d   = mpm->grid.dim;
+  PetscReal      m   = -1.0;
+  MPMPoints      pts;
+
+  PetscFunctionBegin;
+  PetscCheck(mpm->exact && mpm->exact->ops.evaluate, mpm->comm, PETSC_ERR_PLIB, "MPMProbeMaxDeviation needs an exact solution with fields");
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt p = 0; p < pts.n; p++) {
+    PetscReal ex[4], v[MPM_MAX_DIM], q;
+    PetscCall(MPMExactEvaluate(mpm->exact, mpm->time, &pts.f[MPM_FIELD_POSITION][p * d], pts.f[MPM_FIELD_REFPOSITION] ? &pts.f[MPM_FIELD_REFPOSITION][p * d] : NULL, &ex[0], v, &ex[2], &ex[3]));
+    ex[1] = v[0];
+    q     = quantity == MPM_PROBE_PRESSURE ? ex[2] : quantity == MPM_PROBE_DENSITY ? ex[0] : quantity == MPM_PROBE_TEMPERATURE ? ex[3] : ex[1];
+    if (PetscAbsReal(q) >= qmin && q != 0.0) m = PetscMax(m, PetscAbsReal(MPMProbeValue(&pts, d, quantity, p) - q) / PetscAbsReal(q));
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &m, 1, MPIU_REAL, MPIU_MAX, mpm->comm));
+  *max   = m;
+  *found = (PetscBool)(m >= 0.0);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

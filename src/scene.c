@@ -9,8 +9,10 @@
                                    through the centre, its ends the box's faces (2D: a slab |x_k - c_k| <= rmax)
      -region_<r>_density           initial density [g/cm^3] (> 0)
      -region_<r>_temperature       initial temperature [eV] (>= 0)
-     -region_<r>_velocity          initial velocity [cm/s] */
+     -region_<r>_velocity          initial velocity [cm/s]
+     -region_<r>_hydrostatic       start in hydrostatic equilibrium under -mpm_gravity (the density is the top's) */
 #include "petmpmimpl.h"
+#include "eos/eosimpl.h"
 
 static PetscErrorCode MPMSceneNames(PetscOptionItems *PetscOptionsObject, const char opt[], const char text[], PetscInt max, char names[][MPM_MAX_NAME], PetscInt *n)
 {
@@ -64,7 +66,9 @@ static PetscErrorCode MPMRegionSetFromOptions(MPM mpm, MPMRegion *r)
   PetscCall(PetscOptionsReal("-density", "Initial density rho [g/cm^3], > 0", "", r->rho, &r->rho, NULL));
   PetscCall(PetscOptionsReal("-temperature", "Initial temperature T [eV], >= 0", "", r->T, &r->T, NULL));
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-velocity", "Initial velocity v [cm/s]", d, r->v));
+  PetscCall(PetscOptionsBool("-hydrostatic", "Start in hydrostatic equilibrium under -mpm_gravity: -density is the density at the top of the region's box (along g); below it dp/dz = rho g at the region's temperature", "", r->hydrostatic, &r->hydrostatic, NULL));
   PetscOptionsEnd();
+  PetscCheck(!r->hydrostatic || mpm->has_gravity, mpm->comm, PETSC_ERR_USER_INPUT, "-%shydrostatic needs a gravity: give -mpm_gravity (now zero)", prefix);
   for (r->material = 0; r->material < mpm->nmat; r->material++) {
     PetscBool match;
     PetscCall(PetscStrcmp(mat, mpm->mat[r->material].name, &match));
@@ -138,5 +142,87 @@ PetscErrorCode MPMSceneView(MPM mpm, PetscViewer viewer)
     const MPMRegion *r = &mpm->reg[i];
     PetscCall(PetscViewerASCIIPrintf(viewer, "Region %s: %s, x in [%g, %g], rho %g g/cm^3, T %g eV, v %g cm/s\n", r->name, mpm->mat[r->material].name, (double)r->lo[0], (double)r->hi[0], (double)r->rho, (double)r->T, (double)r->v[0]));
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Hydrostatic start (-region_<r>_hydrostatic): the pressure at depth z below the top of the region's box, measured
+   along g, solves dp/dz = rho(p) |g| from p(rho_r, T_r) at the top, rho(p) the density of the region's material at
+   pressure p and the region's temperature. Tabulated at MPM_HYDRO_N depths with RK4 steps; a point takes rho(p(z))
+   and m = rho V, so the column starts at rest in equilibrium instead of falling onto itself. */
+/* rho with p(rho, e(rho, T)) = p: secant steps from the region's density. */
+static PetscErrorCode MPMHydrostaticDensity(const MPMHydrostatic *hs, PetscReal p, PetscReal *rho)
+{
+  PetscReal r0 = hs->rho0, r1 = hs->rho0 * (1.0 + 1e-4), f0, f1, e, c2;
+
+  PetscFunctionBegin;
+  MPMEOSEnergyKernel(hs->eos, r0, hs->T, &e);
+  MPMEOSPressureKernel(hs->eos, r0, e, &f0, &c2);
+  f0 -= p;
+  for (PetscInt it = 0; it < 60 && f0 != 0.0; it++) {
+    PetscReal r2;
+    MPMEOSEnergyKernel(hs->eos, r1, hs->T, &e);
+    MPMEOSPressureKernel(hs->eos, r1, e, &f1, &c2);
+    f1 -= p;
+    if (f1 == f0) break;
+    r2 = r1 - f1 * (r1 - r0) / (f1 - f0);
+    r0 = r1;
+    f0 = f1;
+    r1 = r2;
+    if (PetscAbsReal(r1 - r0) <= 1e-14 * r1) break;
+  }
+  PetscCheck(r1 > 0.0 && PetscIsNormalReal(r1), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-region_<r>_hydrostatic: no density of the material gives the pressure %g at the region's temperature", (double)p);
+  *rho = r1;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMHydrostaticSetUp(const MPMScene *sc, PetscInt r, MPMHydrostatic *hs)
+{
+  const PetscInt   d   = sc->grid->dim;
+  const MPMRegion *reg = &sc->reg[r];
+  PetscReal      lo = PETSC_MAX_REAL, e, c2, rho;
+
+  PetscFunctionBegin;
+  hs->dim = d;
+  hs->g   = 0.0;
+  for (PetscInt k = 0; k < d; k++) hs->g += PetscSqr(sc->gravity[k]);
+  hs->g = PetscSqrtReal(hs->g);
+  for (PetscInt k = 0; k < d; k++) hs->ghat[k] = sc->gravity[k] / hs->g;
+  hs->top = -PETSC_MAX_REAL;
+  for (PetscInt c = 0; c < (1 << d); c++) { /* the box's corners: its extent along -g */
+    PetscReal s = 0.0;
+    for (PetscInt k = 0; k < d; k++) s -= hs->ghat[k] * ((c >> k) & 1 ? reg->hi[k] : reg->lo[k]);
+    hs->top = PetscMax(hs->top, s);
+    lo      = PetscMin(lo, s);
+  }
+  hs->dz   = (hs->top - lo) / MPM_HYDRO_N;
+  hs->eos  = sc->mat[reg->material].eos;
+  hs->T    = reg->T;
+  hs->rho0 = reg->rho;
+  MPMEOSEnergyKernel(hs->eos, reg->rho, reg->T, &e);
+  MPMEOSPressureKernel(hs->eos, reg->rho, e, &hs->p[0], &c2);
+  for (PetscInt i = 0; i < MPM_HYDRO_N; i++) { /* dp/dz = rho(p) g */
+    PetscReal k[4], p = hs->p[i];
+    for (PetscInt j = 0; j < 4; j++) {
+      PetscCall(MPMHydrostaticDensity(hs, j == 0 ? p : hs->p[i] + (j == 3 ? 1.0 : 0.5) * hs->dz * k[j - 1], &rho));
+      k[j] = rho * hs->g;
+    }
+    hs->p[i + 1] = p + hs->dz * (k[0] + 2.0 * k[1] + 2.0 * k[2] + k[3]) / 6.0;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The density and pressure at x: p(z) interpolated in the table (z < 0: the top's), rho(p); pr may be NULL. */
+PetscErrorCode MPMHydrostaticAt(const MPMHydrostatic *hs, const PetscReal x[], PetscReal *rho, PetscReal *pr)
+{
+  PetscReal z = hs->top, f, p;
+  PetscInt  i;
+
+  PetscFunctionBegin;
+  for (PetscInt k = 0; k < hs->dim; k++) z += hs->ghat[k] * x[k];
+  f = hs->dz > 0.0 ? PetscClipInterval(z / hs->dz, 0.0, (PetscReal)MPM_HYDRO_N) : 0.0;
+  i = PetscMin((PetscInt)f, MPM_HYDRO_N - 1);
+  p = hs->p[i] + (f - i) * (hs->p[i + 1] - hs->p[i]);
+  PetscCall(MPMHydrostaticDensity(hs, p, rho));
+  if (pr) *pr = p;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

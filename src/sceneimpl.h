@@ -25,6 +25,8 @@ typedef struct {
   PetscReal rho;                             /* initial density [g/cm^3]                            */
   PetscReal T;                               /* initial temperature [eV]                            */
   PetscReal v[MPM_MAX_DIM];                  /* initial velocity [cm/s]                             */
+  PetscBool hydrostatic;                     /* -region_<name>_hydrostatic: rho is the density at the top; below it the
+                                                points start in hydrostatic equilibrium under -mpm_gravity */
 } MPMRegion;
 
 typedef struct {
@@ -34,6 +36,20 @@ typedef struct {
   PetscInt               nmat, nreg;
   const MPMMaterial     *mat;
   const MPMRegion       *reg;
+  const PetscReal       *gravity; /* -mpm_gravity [cm/s^2] */
 } MPMScene;
+
+/* A region's hydrostatic state under the scene's gravity (-region_<r>_hydrostatic, src/scene.c): p(z) at depth z below
+   the top of its box, tabulated, and rho(p) at the region's temperature. */
+#define MPM_HYDRO_N 512
+typedef struct {
+  PetscInt  dim;
+  PetscReal ghat[MPM_MAX_DIM], top, dz; /* unit vector along g, the box's top -ghat.x [cm], the table's depth step [cm] */
+  PetscReal g, T, rho0;                 /* |g| [cm/s^2], the region's temperature [eV] and density at the top [g/cm^3]  */
+  PetscReal p[MPM_HYDRO_N + 1];         /* p at depth i dz [dyn/cm^2]                                                    */
+  MPMEOS    eos;
+} MPMHydrostatic;
+PETSC_INTERN PetscErrorCode MPMHydrostaticSetUp(const MPMScene *, PetscInt, MPMHydrostatic *);
+PETSC_INTERN PetscErrorCode MPMHydrostaticAt(const MPMHydrostatic *, const PetscReal[], PetscReal *, PetscReal *);
 
 PETSC_INTERN PetscInt MPMSceneRegionAt(const MPMScene *, const PetscReal[]);

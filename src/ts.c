@@ -117,6 +117,7 @@ PetscErrorCode MPMSolve(MPM mpm)
   PetscFunctionBegin;
   PetscCall(PetscLogStagePush(mpm->log.io));
   PetscCall(MPMOutputWrite(mpm, 0, 0.0));
+  if (mpm->exact && mpm->exact->check_start) PetscCall(MPMComputeChecks(mpm));
   PetscCall(PetscLogStagePop());
   PetscCall(PetscLogStagePush(mpm->log.loop));
   t0   = MPI_Wtime();

@@ -12,7 +12,8 @@ typedef enum {
   MPM_PROBE_DENSITY,    /* rho_p                                            */
   MPM_PROBE_PXX,        /* longitudinal stress P_xx = p + q - s_xx          */
   MPM_PROBE_VELOCITY,   /* v_p along x                                      */
-  MPM_PROBE_TEMPERATURE /* T_p                                            */
+  MPM_PROBE_TEMPERATURE, /* T_p                                            */
+  MPM_PROBE_SPEED        /* |v_p|                                          */
 } MPMProbeQuantity;
 typedef enum {
   MPM_PROBE_VOLUME, /* volume-weighted mean sum V q / sum V                          */
@@ -26,6 +27,8 @@ PETSC_INTERN PetscErrorCode MPMProbeMax(MPMProbe, MPMProbeQuantity, PetscReal, P
 PETSC_INTERN PetscErrorCode MPMProbeRadialProfile(MPMProbe, const PetscReal[], PetscInt, PetscInt, PetscReal, PetscReal[], PetscReal[], PetscReal[]);
 PETSC_INTERN PetscErrorCode MPMProbeAddCheck(MPMProbe, const char[], PetscReal, PetscReal);
 PETSC_INTERN PetscErrorCode MPMProbeExtent(MPMProbe, PetscInt, const PetscReal[], PetscReal, PetscReal, PetscReal *, PetscReal *, PetscBool *);
+PETSC_INTERN PetscErrorCode MPMProbeReach(MPMProbe, PetscInt, PetscInt, PetscReal, PetscReal, PetscReal *, PetscBool *);
+PETSC_INTERN PetscErrorCode MPMProbeMaxDeviation(MPMProbe, MPMProbeQuantity, PetscReal, PetscReal *, PetscBool *);
 
 /* An exact solution knows the fields at a point and the scene's named scalar checks. */
 typedef struct {
@@ -39,7 +42,8 @@ typedef struct {
 } MPMExactOps;
 struct _p_MPMExact {
   MPM_CLASS_HEADER(MPMExactOps);
-  PetscReal window[2]; /* error norms only for lo < x < hi [cm]: where no wave from the domain ends has arrived */
+  PetscReal window[2];    /* error norms only for lo < x < hi [cm]: where no wave from the domain ends has arrived */
+  PetscBool check_start; /* the checks are also measured on the initial state (a check against it)              */
 };
 
 PETSC_INTERN PetscErrorCode MPMExactSetUp(MPMExact, const MPMScene *);
