@@ -34,6 +34,7 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   m->isentrope_threshold    = 0.25;
   m->vacuum_density         = 1e-3;
   m->diag.first_vacuum_step = -1;
+  m->diag.first_popped_time = -1.0;
   m->diag.first_empty_step  = -1;
   m->diag.empty_cells0      = -1;
   m->output_interval        = 0;
@@ -118,6 +119,12 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
     PetscCall(PetscOptionsReal("-mpm_pressure_relax_mach", "A point whose velocity jump across a cell |div v| h exceeds this fraction of its sound speed (a shock, a fast expansion) does not relax [-], > 0", "", mpm->pressure_relax_mach,
                                &mpm->pressure_relax_mach, NULL));
     PetscCall(MPMOptionsCheckRange("-mpm_pressure_relax_mach", mpm->pressure_relax_mach, 0.0, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
+  }
+  PetscCall(PetscOptionsRangeInt("-mpm_popping_interval", "Steps between checks for popped points (a point with no other point in the cells around its own, or faster than -mpm_popping_speed) [-], >= 0 (0: off)", "", mpm->popping_interval,
+                                 &mpm->popping_interval, NULL, 0, PETSC_MAX_INT));
+  if (mpm->popping_interval > 0) {
+    PetscCall(PetscOptionsReal("-mpm_popping_speed", "A point faster than this has popped [cm/s], >= 0 (0: no speed criterion)", "", mpm->popping_speed, &mpm->popping_speed, NULL));
+    PetscCall(MPMOptionsCheckRange("-mpm_popping_speed", mpm->popping_speed, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
   }
   PetscCall(PetscOptionsReal("-mpm_domain_skew", "A CPDI domain whose skewness |det R| / prod |R e_k| (1 for a box) falls below this is reset to the cube of the same volume, for materials that do not read F [-], in [0, 1) (0: never)", "",
                              mpm->domain_skew, &mpm->domain_skew, NULL));
@@ -220,6 +227,7 @@ PetscErrorCode MPMSetUp(MPM mpm)
     if (mpm->viscosity) PetscCall(MPMModuleAdd(mpm, "MPMViscosity", MPM_PHASE_POINT_STATE, MPMViscosityModuleApply, NULL));
     if (mpm->conduction > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMConduction", MPM_PHASE_POINT_END, MPMConductionApply, NULL));
     if (mpm->pressure_relax > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMRelax", MPM_PHASE_POINT_END, MPMRelaxApply, NULL));
+    if (mpm->popping_interval > 0) PetscCall(MPMModuleAdd(mpm, "MPMPopping", MPM_PHASE_POINT_END, MPMPoppingApply, NULL));
     if (mpm->shape->needs_F && mpm->grid.dim > 1 && mpm->domain_skew > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMDomain", MPM_PHASE_POINT_ADAPT, MPMDomainApply, NULL));
     if (mpm->split) PetscCall(MPMModuleAdd(mpm, "MPMSplit", MPM_PHASE_POINT_ADAPT, MPMSplitApply, NULL));
   }
@@ -246,6 +254,7 @@ PetscErrorCode MPMSetUp(MPM mpm)
   PetscCall(MPMCheckUnusedOptions(mpm));
   PetscCall(MPMOutputOpen(mpm));
   PetscCall(MPMGlobalSums(mpm, &mpm->mass0, &mpm->energy0, mpm->momentum0, &mpm->kinetic0));
+  mpm->potential0 = mpm->potential;
   if (mpm->view) PetscCall(MPMView(mpm, PETSC_VIEWER_STDOUT_(mpm->comm)));
   PetscCall(PetscLogStagePop());
   mpm->wall_setup = MPI_Wtime() - t0;

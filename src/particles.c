@@ -108,14 +108,14 @@ static inline PetscInt MPMRegionAt(MPM mpm, const PetscReal x[])
 PetscErrorCode MPMGetScene(MPM mpm, MPMScene *sc)
 {
   PetscFunctionBegin;
-  sc->comm  = mpm->comm;
-  sc->grid  = &mpm->grid;
-  sc->bc_lo = mpm->bc_lo;
-  sc->bc_hi = mpm->bc_hi;
-  sc->nmat  = mpm->nmat;
-  sc->nreg  = mpm->nreg;
-  sc->mat   = mpm->mat;
-  sc->reg   = mpm->reg;
+  sc->comm    = mpm->comm;
+  sc->grid    = &mpm->grid;
+  sc->bc_lo   = mpm->bc_lo;
+  sc->bc_hi   = mpm->bc_hi;
+  sc->nmat    = mpm->nmat;
+  sc->nreg    = mpm->nreg;
+  sc->mat     = mpm->mat;
+  sc->reg     = mpm->reg;
   sc->gravity = mpm->gravity;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -274,12 +274,12 @@ static PetscInt MPMSiteSeed(MPM mpm, const PetscReal xs[], MPMPiece pc[], PetscR
 
 PetscErrorCode MPMCreatePoints(MPM mpm)
 {
-  const MPMGrid *g = &mpm->grid;
-  const PetscInt d = g->dim;
-  PetscInt       n = 0, npd = 1;
-  PetscReal      rho[MPM_MAX_MATERIALS], e[MPM_MAX_MATERIALS];
-  MPMPiece       pc[MPM_MAX_MATERIALS];
-  MPMPoints      pts;
+  const MPMGrid  *g = &mpm->grid;
+  const PetscInt  d = g->dim;
+  PetscInt        n = 0, npd = 1;
+  PetscReal       rho[MPM_MAX_MATERIALS], e[MPM_MAX_MATERIALS];
+  MPMPiece        pc[MPM_MAX_MATERIALS];
+  MPMPoints       pts;
   MPMHydrostatic *hs[MPM_MAX_REGIONS] = {NULL};
   MPMScene        sc;
 

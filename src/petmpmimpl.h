@@ -109,11 +109,15 @@ typedef struct {
   PetscInt  empty_cells_max;             /* most cells emptied inside the material at one step                         */
   PetscInt  empty_cells0;                /* such cells in the initial state (gaps between bodies), -1 before the first count */
   PetscInt  first_vacuum_step, first_empty_step;
-  PetscInt  points_split;     /* points this rank split (each split adds one point)                       */
-  PetscInt  split_refused;    /* point-steps that called for a split the level limit refused (this rank) */
-  PetscInt  wall_reflections; /* points this rank put back across a wall (MPMMigrate)              */
-  PetscInt  domain_resets;    /* point-steps whose skewed CPDI domain this rank reset to a cube (MPMDomainApply) */
-  PetscReal plastic_work;     /* sum over the steps of m_p sigma_eq d eps_p / rho_p on this rank [erg] */
+  PetscInt  points_split;                                   /* points this rank split (each split adds one point)                       */
+  PetscInt  split_refused;                                  /* point-steps that called for a split the level limit refused (this rank) */
+  PetscInt  wall_reflections;                               /* points this rank put back across a wall (MPMMigrate)              */
+  PetscInt  domain_resets;                                  /* point-steps whose skewed CPDI domain this rank reset to a cube (MPMDomainApply) */
+  PetscReal plastic_work;                                   /* sum over the steps of m_p sigma_eq d eps_p / rho_p on this rank [erg] */
+  PetscInt  popping_checks;                                 /* checks of the popping module (global)                                 */
+  PetscInt  popped_max;                                     /* most points popped at one check (global)                              */
+  PetscReal popped_sum;                                     /* popped points summed over the checks (global)                         */
+  PetscReal first_popped_time, first_popped_x[MPM_MAX_DIM]; /* when (-1: never) and where the first appeared [s, cm] */
 } MPMDiagnostics;
 
 struct _p_MPM {
@@ -136,6 +140,8 @@ struct _p_MPM {
   PetscReal            pressure_relax_mach;        /* points whose |div v| h / c exceeds this do not relax [-] */
   PetscReal            domain_skew;                /* -mpm_domain_skew: a CPDI domain less square than this is reset to a cube [-], 0: never */
   PetscBool            split;                      /* -mpm_split: the point splitting module is in the step  */
+  PetscInt             popping_interval;           /* -mpm_popping_interval: steps between popping checks, 0: off */
+  PetscReal            popping_speed;              /* -mpm_popping_speed: a point faster than this has popped [cm/s], 0: not checked */
   PetscReal            split_length;               /* a domain longer than this along an axis splits [cells] */
   PetscReal            split_min_scale;            /* smallest domain scale a split may leave: 2^-max_level [-] */
   PetscReal            next_id;                    /* the next unused point id (splitting)                  */
@@ -191,8 +197,9 @@ struct _p_MPM {
   PetscInt       npoints0; /* global number of points at start                    */
   PetscInt       npoints;  /* global number of points now (splitting adds points) */
   PetscReal      mass0, energy0, momentum0[MPM_MAX_DIM], kinetic0;
-  PetscReal      rest_fraction; /* -mpm_stop_at_rest: stop once the kinetic energy is below this fraction of kinetic0, 0: never */
-  PetscReal      rest_time;     /* when it did [s], -1 before */
+  PetscReal      potential0, potential; /* with gravity: -sum m g.x at t = 0 and at the last MPMGlobalSums [erg] */
+  PetscReal      rest_fraction;         /* -mpm_stop_at_rest: stop once the kinetic energy is below this fraction of kinetic0, 0: never */
+  PetscReal      rest_time;             /* when it did [s], -1 before */
   PetscReal      wall_loop, wall_setup, wall_output;
   PetscInt       steps;
   PetscReal      point_steps; /* sum over the steps of the global number of points (the cost measure) */
@@ -284,6 +291,8 @@ PETSC_INTERN PetscErrorCode MPMSplitApply(MPMModule, MPM, const MPMStepContext *
 PETSC_INTERN PetscErrorCode MPMDomainApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMConductionApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMRelaxApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
+PETSC_INTERN PetscErrorCode MPMNodalMeanSetUp(MPM);
+PETSC_INTERN PetscErrorCode MPMPoppingApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMPointsNodalMean(MPM, const MPMPoints *, const PetscReal[], const PetscReal[], PetscReal[], PetscReal[]);
 PETSC_INTERN void           MPMPointEOSUpdate(MPM, MPMPoints *, PetscInt, PetscReal, PetscReal);
 PETSC_INTERN PetscErrorCode MPMViscosityModuleApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);

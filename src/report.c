@@ -371,7 +371,7 @@ static PetscReal MPMRelErr(PetscReal v, PetscReal r)
 PetscErrorCode MPMWriteReport(MPM mpm)
 {
   const MPMGrid *g = &mpm->grid;
-  PetscReal      err[MPM_NERR][3], rhomin = 0, dmass, denergy, mass, energy, mom[MPM_MAX_DIM], kinetic, wplastic = 0, eshear = 0, eb[5] = {0, 0, 0, 0, 0}, shock_cells = -1.0, pss;
+  PetscReal      err[MPM_NERR][3], rhomin = 0, dmass, denergy, mass, energy, mom[MPM_MAX_DIM], kinetic, wplastic = 0, eshear = 0, eb[5] = {0, 0, 0, 0, 0}, gb[4] = {0, 0, 0, 0}, shock_cells = -1.0, pss;
   PetscBool      budget;
   PetscInt       nonfinite = 0, npoints, nvac, nempty;
   PetscReal      eisen, nisen, nsplit, nrefuse, nreflect, nreset;
@@ -431,6 +431,23 @@ PetscErrorCode MPMWriteReport(MPM mpm)
                         mpm->diag.dt_limit[MPM_DT_SOUND], mpm->diag.dt_limit[MPM_DT_ACCELERATION], mpm->diag.dt_limit[MPM_DT_VOLUME], mpm->diag.dt_limit[MPM_DT_LANDING], (double)(mpm->energy0 != 0 ? eisen / PetscAbsReal(mpm->energy0) : eisen),
                         (double)nisen));
   if (mpm->split) PetscCall(PetscPrintf(mpm->comm, "  point splitting: %.0f points split (%" PetscInt_FMT " points at start); %.0f splits refused at -mpm_split_max_level\n", (double)nsplit, mpm->npoints0, (double)nrefuse));
+  if (mpm->popping_interval > 0) {
+    const PetscReal *x = mpm->diag.first_popped_x;
+    if (mpm->diag.first_popped_time >= 0.0)
+      PetscCall(PetscPrintf(mpm->comm, "  popping: up to %" PetscInt_FMT " points popped at one check, %.0f point-checks in %" PetscInt_FMT " checks; the first at t = %g s, x = (%g, %g, %g) cm\n", mpm->diag.popped_max, (double)mpm->diag.popped_sum,
+                            mpm->diag.popping_checks, (double)mpm->diag.first_popped_time, (double)x[0], (double)x[1], (double)x[2]));
+    else
+      PetscCall(PetscPrintf(mpm->comm, "  popping: no point popped in %" PetscInt_FMT " checks\n", mpm->diag.popping_checks));
+  }
+  if (mpm->has_gravity) { /* potential energy released, and where it went */
+    gb[0] = mpm->potential0 - mpm->potential;
+    if (gb[0] != 0.0) {
+      gb[1] = (kinetic - mpm->kinetic0) / gb[0];
+      gb[2] = (energy - kinetic - mpm->potential - (mpm->energy0 - mpm->kinetic0 - mpm->potential0)) / gb[0];
+      gb[3] = (energy - mpm->energy0) / gb[0];
+    }
+    PetscCall(PetscPrintf(mpm->comm, "  gravity: potential energy released %.6g erg; of it kinetic %.4f, internal (viscous and numerical dissipation, compression) %.4f, error %.2e\n", (double)gb[0], (double)gb[1], (double)gb[2], (double)gb[3]));
+  }
   if (mpm->rest_fraction > 0.0) {
     if (mpm->rest_time >= 0.0)
       PetscCall(PetscPrintf(mpm->comm, "  at rest: the kinetic energy fell below %g of its initial value at t = %g s (-mpm_stop_at_rest)\n", (double)mpm->rest_fraction, (double)mpm->rest_time));
@@ -480,6 +497,12 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     fprintf(fp, "  \"conservation\": {\"mass\": %.6e, \"total_energy\": %.6e, \"momentum\": [", (double)dmass, (double)denergy);
     for (PetscInt k = 0; k < g->dim; k++) fprintf(fp, "%s%.6e", k ? ", " : "", (double)(mom[k] - mpm->momentum0[k]));
     fprintf(fp, "]},\n  \"kinetic_energy_fraction\": %s,\n  \"rest_time\": %.10g,\n", MPMJSONReal(mpm->kinetic0 > 0 ? kinetic / mpm->kinetic0 : 0.0, "%.6e", num[0]), (double)mpm->rest_time);
+    if (mpm->has_gravity) fprintf(fp, "  \"gravity_budget\": {\"released\": %.6e, \"kinetic\": %.6e, \"internal_change\": %.6e, \"error\": %.6e},\n", (double)gb[0], (double)gb[1], (double)gb[2], (double)gb[3]);
+    if (mpm->popping_interval > 0) {
+      const PetscReal *x = mpm->diag.first_popped_x;
+      fprintf(fp, "  \"popping\": {\"checks\": %" PetscInt_FMT ", \"popped_max\": %" PetscInt_FMT ", \"popped_sum\": %.0f, \"first_time\": %.10g, \"first_position\": [%.10g, %.10g, %.10g]},\n", mpm->diag.popping_checks, mpm->diag.popped_max,
+              (double)mpm->diag.popped_sum, (double)mpm->diag.first_popped_time, (double)x[0], (double)x[1], (double)x[2]);
+    }
     if (budget) fprintf(fp, "  \"energy_budget\": {\"kinetic\": %.6e, \"internal_change\": %.6e, \"plastic_work\": %.6e, \"elastic_shear\": %.6e, \"error\": %.6e},\n", (double)eb[0], (double)eb[1], (double)eb[2], (double)eb[3], (double)eb[4]);
     fprintf(fp, "  \"energy_accounted\": %.6e,\n", (double)(mpm->energy0 != 0 ? (denergy * PetscAbsReal(mpm->energy0) - eisen) / PetscAbsReal(mpm->energy0) : denergy - eisen));
     fprintf(fp, "  \"robustness\": {\"isentrope_energy\": %.6e, \"isentrope_point_steps\": %.0f, \"dt_limit\": {", (double)(mpm->energy0 != 0 ? eisen / PetscAbsReal(mpm->energy0) : eisen), (double)nisen);
@@ -499,15 +522,19 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Total mass sum m_p, total energy sum m_p (e_p + |v_p|^2 / 2) and momentum sum m_p v_p over all ranks. */
+/* Total mass sum m_p, total energy sum m_p (e_p + |v_p|^2 / 2), with gravity plus the potential energy -sum m_p g.x_p
+   (also kept in mpm->potential), and momentum sum m_p v_p over all ranks. */
 PetscErrorCode MPMGlobalSums(MPM mpm, PetscReal *mass, PetscReal *energy, PetscReal momentum[], PetscReal *kinetic)
 {
   const PetscInt d                  = mpm->grid.dim;
-  PetscReal      s[3 + MPM_MAX_DIM] = {0, 0, 0, 0, 0, 0};
+  PetscReal      s[4 + MPM_MAX_DIM] = {0, 0, 0, 0, 0, 0, 0};
   MPMPoints      pts;
 
   PetscFunctionBegin;
   PetscCall(MPMPointsGetArrays(mpm, &pts));
+  if (mpm->has_gravity)
+    for (PetscInt p = 0; p < pts.n; p++)
+      for (PetscInt k = 0; k < d; k++) s[3 + MPM_MAX_DIM] -= pts.f[MPM_FIELD_MASS][p] * mpm->gravity[k] * pts.f[MPM_FIELD_POSITION][p * d + k];
   for (PetscInt p = 0; p < pts.n; p++) {
     const PetscReal m = pts.f[MPM_FIELD_MASS][p], *v = &pts.f[MPM_FIELD_VELOCITY][p * d];
     PetscReal       v2 = 0.0;
@@ -520,9 +547,10 @@ PetscErrorCode MPMGlobalSums(MPM mpm, PetscReal *mass, PetscReal *energy, PetscR
     s[2 + MPM_MAX_DIM] += 0.5 * m * v2;
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 3 + MPM_MAX_DIM, MPIU_REAL, MPIU_SUM, mpm->comm));
-  *mass   = s[0];
-  *energy = s[1];
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 4 + MPM_MAX_DIM, MPIU_REAL, MPIU_SUM, mpm->comm));
+  *mass          = s[0];
+  *energy        = s[1] + s[3 + MPM_MAX_DIM]; /* with gravity the potential energy -sum m g.x */
+  mpm->potential = s[3 + MPM_MAX_DIM];
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) momentum[k] = s[2 + k];
   if (kinetic) *kinetic = s[2 + MPM_MAX_DIM];
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -66,7 +66,8 @@ static PetscErrorCode MPMRegionSetFromOptions(MPM mpm, MPMRegion *r)
   PetscCall(PetscOptionsReal("-density", "Initial density rho [g/cm^3], > 0", "", r->rho, &r->rho, NULL));
   PetscCall(PetscOptionsReal("-temperature", "Initial temperature T [eV], >= 0", "", r->T, &r->T, NULL));
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-velocity", "Initial velocity v [cm/s]", d, r->v));
-  PetscCall(PetscOptionsBool("-hydrostatic", "Start in hydrostatic equilibrium under -mpm_gravity: -density is the density at the top of the region's box (along g); below it dp/dz = rho g at the region's temperature", "", r->hydrostatic, &r->hydrostatic, NULL));
+  PetscCall(PetscOptionsBool("-hydrostatic", "Start in hydrostatic equilibrium under -mpm_gravity: -density is the density at the top of the region's box (along g); below it dp/dz = rho g at the region's temperature", "", r->hydrostatic,
+                             &r->hydrostatic, NULL));
   PetscOptionsEnd();
   PetscCheck(!r->hydrostatic || mpm->has_gravity, mpm->comm, PETSC_ERR_USER_INPUT, "-%shydrostatic needs a gravity: give -mpm_gravity (now zero)", prefix);
   for (r->material = 0; r->material < mpm->nmat; r->material++) {
@@ -179,7 +180,7 @@ PetscErrorCode MPMHydrostaticSetUp(const MPMScene *sc, PetscInt r, MPMHydrostati
 {
   const PetscInt   d   = sc->grid->dim;
   const MPMRegion *reg = &sc->reg[r];
-  PetscReal      lo = PETSC_MAX_REAL, e, c2, rho;
+  PetscReal        lo  = PETSC_MAX_REAL, e, c2, rho;
 
   PetscFunctionBegin;
   hs->dim = d;

@@ -8,10 +8,10 @@
 /* What a check may measure on the current state. */
 typedef struct _p_MPMProbe *MPMProbe;
 typedef enum {
-  MPM_PROBE_PRESSURE,   /* p_p                                              */
-  MPM_PROBE_DENSITY,    /* rho_p                                            */
-  MPM_PROBE_PXX,        /* longitudinal stress P_xx = p + q - s_xx          */
-  MPM_PROBE_VELOCITY,   /* v_p along x                                      */
+  MPM_PROBE_PRESSURE,    /* p_p                                              */
+  MPM_PROBE_DENSITY,     /* rho_p                                            */
+  MPM_PROBE_PXX,         /* longitudinal stress P_xx = p + q - s_xx          */
+  MPM_PROBE_VELOCITY,    /* v_p along x                                      */
   MPM_PROBE_TEMPERATURE, /* T_p                                            */
   MPM_PROBE_SPEED        /* |v_p|                                          */
 } MPMProbeQuantity;
@@ -42,7 +42,7 @@ typedef struct {
 } MPMExactOps;
 struct _p_MPMExact {
   MPM_CLASS_HEADER(MPMExactOps);
-  PetscReal window[2];    /* error norms only for lo < x < hi [cm]: where no wave from the domain ends has arrived */
+  PetscReal window[2];   /* error norms only for lo < x < hi [cm]: where no wave from the domain ends has arrived */
   PetscBool check_start; /* the checks are also measured on the initial state (a check against it)              */
 };
 

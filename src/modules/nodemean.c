@@ -17,6 +17,18 @@ static inline void MPMNodalMeanStencil(MPM mpm, const MPMPoints *pts, PetscInt p
   MPMShapeEvaluate(mpm->shape, &mpm->grid, &pts->f[MPM_FIELD_POSITION][p * d], MPMPointDomain(d, pts->f[MPM_FIELD_DEFGRAD], pts->f[MPM_FIELD_DOMAINSCALE], p, Fs), st);
 }
 
+/* The nodal sums' DMDA (2 values per node) and its vectors, made on first use; the local vector starts zeroed. */
+PetscErrorCode MPMNodalMeanSetUp(MPM mpm)
+{
+  PetscFunctionBegin;
+  if (mpm->mean_da) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(DMDACreateCompatibleDMDA(mpm->da, 2, &mpm->mean_da));
+  PetscCall(DMCreateLocalVector(mpm->mean_da, &mpm->mean_l));
+  if (mpm->lnodes != mpm->nodes) PetscCall(DMCreateGlobalVector(mpm->mean_da, &mpm->mean_g));
+  PetscCall(VecZeroEntries(mpm->mean_l));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode MPMPointsNodalMean(MPM mpm, const MPMPoints *pts, const PetscReal w[], const PetscReal q[], PetscReal qbar[], PetscReal q2bar[])
 {
   const PetscBool one = (PetscBool)(mpm->lnodes == mpm->nodes); /* one rank, no ghosts: the local array is the global one */
@@ -25,12 +37,7 @@ PetscErrorCode MPMPointsNodalMean(MPM mpm, const MPMPoints *pts, const PetscReal
   MPMStencil      st;
 
   PetscFunctionBegin;
-  if (!mpm->mean_da) {
-    PetscCall(DMDACreateCompatibleDMDA(mpm->da, 2, &mpm->mean_da));
-    PetscCall(DMCreateLocalVector(mpm->mean_da, &mpm->mean_l));
-    if (!one) PetscCall(DMCreateGlobalVector(mpm->mean_da, &mpm->mean_g));
-    PetscCall(VecZeroEntries(mpm->mean_l));
-  }
+  PetscCall(MPMNodalMeanSetUp(mpm));
   if (!one) PetscCall(VecZeroEntries(mpm->mean_l));
   PetscCall(VecGetArray(mpm->mean_l, &W));
   for (PetscInt p = 0; p < pts->n; p++) { /* sum N w and sum N w q to the nodes */

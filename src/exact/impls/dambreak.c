@@ -21,10 +21,10 @@ static const PetscReal MMHeightTau[] = {0.56, 0.77, 0.93, 1.08, 1.28, 1.46, 1.66
 static const PetscReal MMHeightH[]   = {0.94, 0.89, 0.83, 0.78, 0.72, 0.67, 0.61, 0.56, 0.50, 0.44, 0.39, 0.33, 0.28, 0.22, 0.17, 0.11, 0.06};
 
 typedef struct {
-  PetscReal a, g;     /* column base [cm], |g| [cm/s^2]                */
-  PetscReal lo[2];    /* the back wall x and the floor y [cm]          */
-  PetscReal layer;    /* the floor and wall layers [cells]             */
-  PetscReal h[2];     /* cell sizes along x and y [cm]                 */
+  PetscReal a, g;  /* column base [cm], |g| [cm/s^2]                */
+  PetscReal lo[2]; /* the back wall x and the floor y [cm]          */
+  PetscReal layer; /* the floor and wall layers [cells]             */
+  PetscReal h[2];  /* cell sizes along x and y [cm]                 */
 } Exact_DamBreak;
 
 /* The table's value at s, linear between the measurements; NaN outside them (an output time that lands on the
@@ -47,8 +47,7 @@ static PetscErrorCode MPMExactSetUp_DamBreak(MPMExact exact, const MPMScene *sc)
   PetscFunctionBegin;
   PetscCheck(sc->nreg > 0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type dambreak: the scene has no region for the water column");
   PetscCheck(sc->grid->dim >= 2 && !sc->grid->axisym, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type dambreak: needs a plane 2D or a 3D grid (-mpm_dim 2 or 3, not axisymmetric)");
-  for (PetscInt k = 0; k < sc->grid->dim; k++)
-    PetscCheck(k == 1 ? sc->gravity[k] < 0.0 : sc->gravity[k] == 0.0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type dambreak: -mpm_gravity must point along -y (0,-g or 0,-g,0 with g > 0)");
+  for (PetscInt k = 0; k < sc->grid->dim; k++) PetscCheck(k == 1 ? sc->gravity[k] < 0.0 : sc->gravity[k] == 0.0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type dambreak: -mpm_gravity must point along -y (0,-g or 0,-g,0 with g > 0)");
   PetscCheck(sc->bc_lo[0] == MPM_BC_WALL && sc->bc_lo[1] == MPM_BC_WALL, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type dambreak: the back wall x = lo_x and the floor y = lo_y must be walls (-mpm_bc_lo wall,wall)");
   PetscCheck(ed->layer > 0.0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_dambreak_layer %g: valid is > 0 cells", (double)ed->layer);
   col = &sc->reg[0];
@@ -59,7 +58,8 @@ static PetscErrorCode MPMExactSetUp_DamBreak(MPMExact exact, const MPMScene *sc)
   ed->a = PetscMin(col->hi[0], sc->grid->hi[0]) - ed->lo[0];
   H     = PetscMin(col->hi[1], sc->grid->hi[1]) - ed->lo[1];
   PetscCheck(col->lo[0] <= ed->lo[0] && col->lo[1] <= ed->lo[1], sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type dambreak: the column (-region_%s_lo) must stand on the floor against the back wall, at the domain's lower corner", col->name);
-  PetscCheck(PetscAbsReal(H - 2.0 * ed->a) <= 1e-6 * ed->a, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type dambreak: Martin & Moyce's tables are for a column of height 2a; region %s is %g cm wide and %g cm high", col->name, (double)ed->a, (double)H);
+  PetscCheck(PetscAbsReal(H - 2.0 * ed->a) <= 1e-6 * ed->a, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type dambreak: Martin & Moyce's tables are for a column of height 2a; region %s is %g cm wide and %g cm high", col->name, (double)ed->a,
+             (double)H);
   ed->g = -sc->gravity[1];
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -14,18 +14,18 @@
 
 typedef struct {
   MPMHydrostatic hs;
-  PetscInt       k;        /* the axis along -g                   */
-  PetscReal      lo, H;    /* the region's bottom and height [cm] */
-  PetscReal      layer;    /* surface layer left out [cells]      */
-  PetscReal      pmin;     /* the pressure at its depth           */
-  PetscReal      vscale;   /* sqrt(|g| H) [cm/s]                  */
-  PetscReal      top0;     /* the column's height at t = 0 [cm]   */
+  PetscInt       k;      /* the axis along -g                   */
+  PetscReal      lo, H;  /* the region's bottom and height [cm] */
+  PetscReal      layer;  /* surface layer left out [cells]      */
+  PetscReal      pmin;   /* the pressure at its depth           */
+  PetscReal      vscale; /* sqrt(|g| H) [cm/s]                  */
+  PetscReal      top0;   /* the column's height at t = 0 [cm]   */
 } Exact_Hydrostatic;
 
 static PetscErrorCode MPMExactSetUp_Hydrostatic(MPMExact exact, const MPMScene *sc)
 {
-  Exact_Hydrostatic *eh = (Exact_Hydrostatic *)exact->data;
-  const PetscInt     d  = sc->grid->dim;
+  Exact_Hydrostatic *eh             = (Exact_Hydrostatic *)exact->data;
+  const PetscInt     d              = sc->grid->dim;
   PetscReal          x[MPM_MAX_DIM] = {0, 0, 0}, rho;
 
   PetscFunctionBegin;
