@@ -69,13 +69,14 @@ def get(report, path, h=None):
         return report["particles"] / math.prod(report["cells"])
     if path == "ns_per_point_step":  # derived: the cost of a point-step [ns] on one rank
         return 1e9 * report["ranks"] / report["particle_steps_per_second"] if report["particle_steps_per_second"] > 0 else float("nan")
-    if parts[0] == "checks":
-        c = next((c for c in report["checks"] if c["name"] == parts[1]), None)
+    if parts[0] == "checks":  # checks.NAME.FIELD, where NAME may hold dots (front_T2.98)
+        name, field = ".".join(parts[1:-1]), parts[-1]
+        c = next((c for c in report["checks"] if c["name"] == name), None)
         if c is None:
-            raise KeyError(f"the report has no check {parts[1]} (has: {', '.join(x['name'] for x in report['checks'])})")
-        if parts[2] == "error_cells":
+            raise KeyError(f"the report has no check {name} (has: {', '.join(x['name'] for x in report['checks'])})")
+        if field == "error_cells":
             return abs(c["value"] - c["reference"]) / h if c["value"] is not None else None
-        return c[parts[2]]
+        return c[field]
     v = report
     for p in parts:
         v = v[p]
