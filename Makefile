@@ -43,6 +43,7 @@ verification: build
 	$(PY) scripts/study --summary $(addprefix docs/studies/,$(STUDIES)) --markdown docs/verification.md
 	$(PY) scripts/hardcases.py --exe $(BUILD)/petmpm --out docs/hard-cases.md
 	$(PY) scripts/taylor.py --exe $(BUILD)/petmpm
+	$(PY) scripts/dambreak.py --exe $(BUILD)/petmpm
 
 format:
 	clang-format -i $$(git ls-files '*.c' '*.h')
