@@ -44,7 +44,23 @@ PetscErrorCode MPMOptionsCheckRange(const char option[], PetscReal value, PetscR
   if (PetscIsInfOrNanReal(value)) bad = PETSC_TRUE;
   if (strictlo ? !(value > lo) : !(value >= lo)) bad = PETSC_TRUE;
   if (stricthi ? !(value < hi) : !(value <= hi)) bad = PETSC_TRUE;
-  PetscCheck(!bad, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %g is out of range: valid is %s%g, %g%s", option, (double)value, strictlo ? "(" : "[", (double)lo, (double)hi, stricthi ? ")" : "]");
+  if (!bad) PetscFunctionReturn(PETSC_SUCCESS);
+  if (hi >= PETSC_MAX_REAL && lo <= -PETSC_MAX_REAL) SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %g: valid is a finite number", option, (double)value);
+  if (hi >= PETSC_MAX_REAL) SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %g is out of range: valid is %s %g", option, (double)value, strictlo ? ">" : ">=", (double)lo);
+  SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %g is out of range: valid is %s%g, %g%s", option, (double)value, strictlo ? "(" : "[", (double)lo, (double)hi, stricthi ? ")" : "]");
+}
+
+/* An integer option in [lo, hi] (PetscOptionsInt, then a range check whose message names the option with the
+   block's prefix; hi PETSC_MAX_INT: no upper bound). */
+PetscErrorCode MPMOptionsRangeInt(PetscOptionItems *PetscOptionsObject, const char opt[], const char text[], PetscInt *value, PetscInt lo, PetscInt hi)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscOptionsInt(opt, text, "", *value, value, NULL));
+  if (hi == PETSC_MAX_INT)
+    PetscCheck(*value >= lo, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "-%s%s %" PetscInt_FMT " is out of range: valid is >= %" PetscInt_FMT, PetscOptionsObject->prefix ? PetscOptionsObject->prefix : "", opt + 1, *value, lo);
+  else
+    PetscCheck(*value >= lo && *value <= hi, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "-%s%s %" PetscInt_FMT " is out of range: valid is %" PetscInt_FMT " to %" PetscInt_FMT, PetscOptionsObject->prefix ? PetscOptionsObject->prefix : "", opt + 1,
+               *value, lo, hi);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -102,6 +102,7 @@ PETSC_INTERN PetscErrorCode MPMObjectDestroy(void *);
   }
 
 PETSC_INTERN PetscErrorCode MPMOptionsCheckRange(const char[], PetscReal, PetscReal, PetscReal, PetscBool, PetscBool);
+PETSC_INTERN PetscErrorCode MPMOptionsRangeInt(PetscOptionItems *, const char[], const char[], PetscInt *, PetscInt, PetscInt);
 PETSC_INTERN PetscErrorCode MPMOptionsDimReals(PetscOptionItems *, const char[], const char[], PetscInt, PetscReal[]);
 PETSC_INTERN PetscErrorCode MPMOptionsDimEnums(PetscOptionItems *, const char[], const char[], const char *const[], PetscInt, PetscEnum[]);
 PETSC_INTERN PetscErrorCode MPMClassSetType(PetscFunctionList, const char[], const char[], const char[], PetscErrorCode (**)(void *));

@@ -5,15 +5,74 @@ static const char help[] = "petmpm: explicit Material Point Method for shocks an
 
 #include <petmpm.h>
 
-int main(int argc, char **argv)
+/* An error prints only itself: "petmpm: error: MESSAGE" once (by the first rank of a collective error's
+   communicator, by every rank for a local one), with no traceback and no option table. A message of PETSc's
+   option parser that quotes a bad value ("Input string abc has no integer value", "Unknown logical value: maybe")
+   is given the option that holds it. */
+typedef struct {
+  PetscBool   printed;
+  PetscBool   options; /* reading the options: every rank reads the same database and fails alike */
+  PetscMPIInt size;    /* of the communicator of the error: the world's when every rank raised it */
+} MPMErrorContext;
+
+/* The option whose value contains word, in opt (empty if none). */
+static void MPMOptionWithValue(const char word[], char opt[], size_t len)
+{
+  char *all = NULL, *tok, *save = NULL, *last = NULL;
+
+  opt[0] = 0;
+  if (PetscOptionsGetAll(NULL, &all) || !all) return;
+  for (tok = strtok_r(all, " ", &save); tok; tok = strtok_r(NULL, " ", &save)) {
+    if (tok[0] == '-' && !(tok[1] >= '0' && tok[1] <= '9') && tok[1] != '.')
+      last = tok;
+    else if (last && strstr(tok, word)) {
+      snprintf(opt, len, "%s %s", last, tok);
+      break;
+    }
+  }
+  PetscFree(all);
+}
+
+static PetscErrorCode MPMErrorHandler(MPI_Comm comm, int line, const char *fun, const char *file, PetscErrorCode n, PetscErrorType p, const char *mess, void *ctx)
+{
+  MPMErrorContext *ec   = (MPMErrorContext *)ctx;
+  PetscMPIInt      rank = 0, wrank = 0;
+  char             where[PETSC_MAX_PATH_LEN] = "";
+
+  if (p != PETSC_ERROR_INITIAL || ec->printed) return n;
+  ec->printed = PETSC_TRUE;
+  MPI_Comm_size(ec->options ? PETSC_COMM_WORLD : comm, &ec->size);
+  MPI_Comm_rank(ec->options ? PETSC_COMM_WORLD : comm, &rank);
+  MPI_Comm_rank(PETSC_COMM_WORLD, &wrank);
+  if (mess) { /* PETSc's parser quotes the value, not the option */
+    const char *const pat[] = {"Input string ", "Unknown logical value: "};
+    for (size_t i = 0; i < sizeof(pat) / sizeof(pat[0]) && !where[0]; i++) {
+      const char *s = strstr(mess, pat[i]);
+      char        word[256];
+      if (s && sscanf(s + strlen(pat[i]), "%255s", word) == 1) MPMOptionWithValue(word, where, sizeof(where));
+    }
+  }
+  if (ec->size > 1 && rank) return n;
+  {
+    PetscMPIInt wsize = 1;
+    MPI_Comm_size(PETSC_COMM_WORLD, &wsize);
+    if (ec->size == 1 && wsize > 1) fprintf(stderr, "[%d] ", wrank); /* a local error on a parallel run: which rank */
+  }
+  fprintf(stderr, "petmpm: error: %s%s%s%s\n", mess ? mess : "(no message)", where[0] ? " (option " : "", where, where[0] ? ")" : "");
+  fflush(stderr);
+  return n;
+}
+
+static PetscErrorCode MPMRun(MPMErrorContext *ec)
 {
   MPM       mpm;
   PetscBool help_only;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscInitialize(&argc, &argv, NULL, help));
   PetscCall(MPMCreate(PETSC_COMM_WORLD, &mpm));
+  ec->options = PETSC_TRUE;
   PetscCall(MPMSetFromOptions(mpm));
+  ec->options = PETSC_FALSE;
   PetscCall(PetscOptionsHasHelp(NULL, &help_only));
   if (!help_only) {
     PetscCall(MPMSetUp(mpm));
@@ -21,6 +80,25 @@ int main(int argc, char **argv)
     PetscCall(MPMWriteReport(mpm));
   }
   PetscCall(MPMDestroy(&mpm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+int main(int argc, char **argv)
+{
+  MPMErrorContext ec = {PETSC_FALSE, PETSC_FALSE, 1};
+  PetscErrorCode  ierr;
+  PetscMPIInt     size;
+
+  PetscCall(PetscInitialize(&argc, &argv, NULL, help));
+  PetscCall(PetscPushErrorHandler(MPMErrorHandler, &ec));
+  ierr = MPMRun(&ec);
+  if (ierr) {
+    PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
+    if (ec.size < size) MPI_Abort(PETSC_COMM_WORLD, (int)ierr); /* a local error: the other ranks may be waiting in a collective call */
+    PetscCall(PetscOptionsClear(NULL));                         /* no list of options left unused by the run that stopped */
+    PetscCall(PetscFinalize());
+    return (int)ierr;
+  }
   PetscCall(PetscFinalize());
   return 0;
 }

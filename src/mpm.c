@@ -80,7 +80,7 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscFunctionBegin;
   PetscOptionsBegin(mpm->comm, NULL, "Material Point Method (petmpm)", "MPM");
   PetscCall(PetscOptionsString("-mpm_scene_name", "Scene name for the report", "", mpm->scene, mpm->scene, sizeof(mpm->scene), NULL));
-  PetscCall(PetscOptionsRangeInt("-mpm_dim", "Space dimension d of the grid [-], 1 to 3", "", g->dim, &g->dim, NULL, 1, 3));
+  PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-mpm_dim", "Space dimension d of the grid [-], 1 to 3", &g->dim, 1, 3));
   {
     PetscInt cells[MPM_MAX_DIM] = {g->cells[0], g->cells[1], g->cells[2]};
     n                           = MPM_MAX_DIM;
@@ -95,11 +95,16 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   }
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-mpm_lo", "Lower corner of the domain [cm]", g->dim, g->lo));
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-mpm_hi", "Upper corner of the domain [cm]", g->dim, g->hi));
-  for (PetscInt k = 0; k < g->dim; k++) PetscCheck(g->hi[k] > g->lo[k], mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_hi must exceed -mpm_lo in direction %" PetscInt_FMT ": %g <= %g", k, (double)g->hi[k], (double)g->lo[k]);
-  PetscCall(PetscOptionsRangeInt("-mpm_ppc", "Material points per cell per direction [-], 1 to 8", "", mpm->ppc, &mpm->ppc, NULL, 1, 8));
+  for (PetscInt k = 0; k < g->dim; k++) {
+    PetscCall(MPMOptionsCheckRange("-mpm_lo", g->lo[k], -PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+    PetscCall(MPMOptionsCheckRange("-mpm_hi", g->hi[k], -PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+    PetscCheck(g->hi[k] > g->lo[k], mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_hi must exceed -mpm_lo in direction %" PetscInt_FMT ": %g <= %g", k, (double)g->hi[k], (double)g->lo[k]);
+  }
+  PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-mpm_ppc", "Material points per cell per direction [-], 1 to 8", &mpm->ppc, 1, 8));
   PetscCall(PetscOptionsReal("-mpm_cfl", "Courant number C in dt = C h / (c + |v|) [-], in (0, 1]", "", mpm->cfl, &mpm->cfl, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_cfl", mpm->cfl, 0.0, 1.0, PETSC_TRUE, PETSC_FALSE));
-  PetscCall(PetscOptionsReal("-mpm_dt_min", "Smallest time step [s]; a smaller CFL step stops the run", "", mpm->dtmin, &mpm->dtmin, NULL));
+  PetscCall(PetscOptionsReal("-mpm_dt_min", "Smallest time step [s], >= 0; a smaller CFL step stops the run", "", mpm->dtmin, &mpm->dtmin, NULL));
+  PetscCall(MPMOptionsCheckRange("-mpm_dt_min", mpm->dtmin, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
   PetscCall(PetscOptionsReal("-mpm_dt_volume", "Largest relative volume change of a point in one step, |tr L| dt (time step limit) [-], > 0", "", mpm->dvol_max, &mpm->dvol_max, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_dt_volume", mpm->dvol_max, 0.0, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
   PetscCall(PetscOptionsReal("-mpm_dt_acceleration", "Courant number C_a of the grid acceleration limit dt (dt + dt_prev)/2 |a| <= C_a h [-], > 0", "", mpm->accel_cfl, &mpm->accel_cfl, NULL));
@@ -120,8 +125,8 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
                                &mpm->pressure_relax_mach, NULL));
     PetscCall(MPMOptionsCheckRange("-mpm_pressure_relax_mach", mpm->pressure_relax_mach, 0.0, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
   }
-  PetscCall(PetscOptionsRangeInt("-mpm_popping_interval", "Steps between checks for popped points (a point with no other point in the cells around its own, or faster than -mpm_popping_speed) [-], >= 0 (0: off)", "", mpm->popping_interval,
-                                 &mpm->popping_interval, NULL, 0, PETSC_MAX_INT));
+  PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-mpm_popping_interval", "Steps between checks for popped points (a point with no other point in the cells around its own, or faster than -mpm_popping_speed) [-], >= 0 (0: off)",
+                               &mpm->popping_interval, 0, PETSC_MAX_INT));
   if (mpm->popping_interval > 0) {
     PetscCall(PetscOptionsReal("-mpm_popping_speed", "A point faster than this has popped [cm/s], >= 0 (0: no speed criterion)", "", mpm->popping_speed, &mpm->popping_speed, NULL));
     PetscCall(MPMOptionsCheckRange("-mpm_popping_speed", mpm->popping_speed, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
@@ -135,7 +140,7 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
     mpm->split_length = PetscMax(1.0, 1.5 / mpm->ppc);
     PetscCall(PetscOptionsReal("-mpm_split_length", "Length of a point's domain along an axis above which it splits [cells], default max(1, 1.5 / ppc), >= 1 / ppc (the lattice spacing)", "", mpm->split_length, &mpm->split_length, NULL));
     PetscCall(MPMOptionsCheckRange("-mpm_split_length", mpm->split_length, 1.0 / mpm->ppc, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
-    PetscCall(PetscOptionsRangeInt("-mpm_split_max_level", "Most times a point's domain may be halved along one axis [-], 1 to 40", "", level, &level, NULL, 1, 40));
+    PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-mpm_split_max_level", "Most times a point's domain may be halved along one axis [-], 1 to 40", &level, 1, 40));
     mpm->split_min_scale = PetscPowReal(0.5, (PetscReal)level - 1) * (1.0 - 1e-12);
   }
   PetscCall(PetscOptionsEnum("-mpm_scheme", "Stress update order", "", MPMSchemes, (PetscEnum)mpm->scheme, (PetscEnum *)&mpm->scheme, NULL));
@@ -159,7 +164,10 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscCall(MPMOptionsDimEnums(PetscOptionsObject, "-mpm_bc_lo", "Boundary at the lower face of each direction", MPMBoundaryTypes, g->dim, (PetscEnum *)mpm->bc_lo));
   PetscCall(MPMOptionsDimEnums(PetscOptionsObject, "-mpm_bc_hi", "Boundary at the upper face of each direction", MPMBoundaryTypes, g->dim, (PetscEnum *)mpm->bc_hi));
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-mpm_gravity", "Body acceleration g [cm/s^2]; enables the gravity module", g->dim, mpm->gravity));
-  for (PetscInt k = 0; k < g->dim; k++) mpm->has_gravity = (PetscBool)(mpm->has_gravity || mpm->gravity[k] != 0.0);
+  for (PetscInt k = 0; k < g->dim; k++) {
+    PetscCall(MPMOptionsCheckRange("-mpm_gravity", mpm->gravity[k], -PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+    mpm->has_gravity = (PetscBool)(mpm->has_gravity || mpm->gravity[k] != 0.0);
+  }
   PetscCall(PetscOptionsBool("-mpm_axisymmetric", "Axisymmetric 2D: x is the radius r >= 0 (the axis x = 0 a wall), y the axial coordinate; volumes, masses and energies per radian", "", g->axisym, &g->axisym, NULL));
   if (g->axisym) {
     PetscCheck(g->dim == 2, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_axisymmetric needs -mpm_dim 2 (x = r, y = z), got %" PetscInt_FMT, g->dim);
@@ -167,13 +175,18 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
     PetscCheck(mpm->stress_integration == MPM_STRESS_POINT, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_axisymmetric needs -mpm_stress_integration point (the cell rule has no hoop term)");
   }
   PetscCall(PetscOptionsString("-mpm_output", "Output directory DIR (DIR/petmpm.h5, DIR/petmpm.xmf)", "", mpm->outdir, mpm->outdir, sizeof(mpm->outdir), NULL));
-  PetscCall(PetscOptionsBoundedInt("-mpm_sort_interval", "Steps between sorts of the points by cell (transfers then find their nodes in cache); 0: never", "", mpm->sort_interval, &mpm->sort_interval, NULL, 0));
-  PetscCall(PetscOptionsBoundedInt("-mpm_output_interval", "Steps between outputs; 0: first and last state only", "", mpm->output_interval, &mpm->output_interval, NULL, 0));
+  PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-mpm_sort_interval", "Steps between sorts of the points by cell (transfers then find their nodes in cache) [-], >= 0 (0: never)", &mpm->sort_interval, 0, PETSC_MAX_INT));
+  PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-mpm_output_interval", "Steps between outputs [-], >= 0 (0: first and last state only)", &mpm->output_interval, 0, PETSC_MAX_INT));
   mpm->ntout = MPM_MAX_OUTPUT_TIMES;
   PetscCall(PetscOptionsRealArray("-mpm_output_times", "Times t1,t2,... [s] the steps land on, with an output and the exact solution's checks at each", "", mpm->tout, &mpm->ntout, &set));
   if (!set) mpm->ntout = 0;
   for (PetscInt i = 0; i < mpm->ntout; i++) PetscCheck(mpm->tout[i] > 0.0 && (i == 0 || mpm->tout[i] > mpm->tout[i - 1]), mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_output_times: %g; valid are increasing times > 0 s", (double)mpm->tout[i]);
   PetscCall(PetscOptionsString("-mpm_report", "JSON report FILE (errors, conservation, cost)", "", mpm->report, mpm->report, sizeof(mpm->report), NULL));
+  if (mpm->report[0]) {
+    PetscBool dir;
+    PetscCall(PetscTestDirectory(mpm->report, 'r', &dir));
+    PetscCheck(!dir, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_report %s is a directory; valid is a file name (DIR/report.json)", mpm->report);
+  }
   PetscCall(PetscOptionsBool("-mpm_view", "Print the configuration of the run", "", mpm->view, &mpm->view, NULL));
   PetscCall(PetscOptionsReal("-mpm_stop_at_rest", "Stop the run once the kinetic energy has fallen below this fraction of its initial value (an impact that has come to rest) [-], in [0, 1) (0: run to -ts_max_time)", "", mpm->rest_fraction,
                              &mpm->rest_fraction, NULL));
@@ -187,10 +200,16 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Fails on options nobody read, so that a misspelled option never silently does nothing. */
+/* PETSc's own options, which PETSc reads later (at TSSolve's end, at PetscFinalize) or at start-up: not petmpm's to refuse. */
+static const char *const MPMPetscOptionPrefixes[] = {"options_",          "log",     "malloc",          "memory_",      "info",       "on_error",         "fp_trap",      "checkstack",
+                                                     "no_signal_handler", "history", "get_total_flops", "ts_view",      "ts_monitor", "ts_adapt_monitor", "objects_dump", "check_pointer_intensity",
+                                                     "viewfromoptions",   "help",    "version",         "skip_petscrc", "mpi_",       "error_output_",    "debugger",     "start_in_debugger",
+                                                     "stop_for_debugger"};
+
+/* Fails on options nobody read, so that a misspelled option never silently does nothing (PETSc's own options pass). */
 static PetscErrorCode MPMCheckUnusedOptions(MPM mpm)
 {
-  PetscInt n;
+  PetscInt n, nbad = 0;
   char   **names, **values;
 
   PetscFunctionBegin;
@@ -198,11 +217,16 @@ static PetscErrorCode MPMCheckUnusedOptions(MPM mpm)
   if (n) {
     char list[2048] = "";
     for (PetscInt i = 0; i < n; i++) {
+      PetscBool petsc = PETSC_FALSE;
+      for (size_t j = 0; j < PETSC_STATIC_ARRAY_LENGTH(MPMPetscOptionPrefixes) && !petsc; j++) PetscCall(PetscStrbeginswith(names[i], MPMPetscOptionPrefixes[j], &petsc));
+      if (petsc) continue;
       PetscCall(PetscStrlcat(list, " -", sizeof(list)));
       PetscCall(PetscStrlcat(list, names[i], sizeof(list)));
+      nbad++;
     }
     PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
-    SETERRQ(mpm->comm, PETSC_ERR_USER_INPUT, "Unknown or unused option(s):%s (see -help for the valid options)", list);
+    PetscCheck(!nbad, mpm->comm, PETSC_ERR_USER_INPUT, "Unknown or unused option(s):%s (see -help for the valid options)", list);
+    PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -82,6 +82,25 @@ static PetscErrorCode MPMRegionSetFromOptions(MPM mpm, MPMRegion *r)
   PetscCall(MPMOptionsCheckRange(opt, r->T, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
   PetscCheck(r->rmin >= 0.0 && r->rmax > r->rmin, mpm->comm, PETSC_ERR_USER_INPUT, "-%srmin %g and -%srmax %g: valid is 0 <= rmin < rmax", prefix, (double)r->rmin, prefix, (double)r->rmax);
   for (PetscInt k = 0; k < d; k++) PetscCheck(r->hi[k] > r->lo[k], mpm->comm, PETSC_ERR_USER_INPUT, "-%shi must exceed -%slo in direction %" PetscInt_FMT, prefix, prefix, k);
+  for (PetscInt k = 0; k < d; k++) {
+    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%svelocity", prefix));
+    PetscCall(MPMOptionsCheckRange(opt, r->v[k], -PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+    PetscCheck(r->lo[k] < mpm->grid.hi[k] && r->hi[k] > mpm->grid.lo[k], mpm->comm, PETSC_ERR_USER_INPUT, "Region %s (-%slo, -%shi) lies outside the domain in direction %" PetscInt_FMT ": [%g, %g] against -mpm_lo %g, -mpm_hi %g", r->name, prefix,
+               prefix, k, (double)r->lo[k], (double)r->hi[k], (double)mpm->grid.lo[k], (double)mpm->grid.hi[k]);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A name given twice in a list option (two materials or regions of one name would share their options). */
+static PetscErrorCode MPMSceneCheckDuplicates(const char opt[], PetscInt n, char names[][MPM_MAX_NAME])
+{
+  PetscFunctionBegin;
+  for (PetscInt i = 0; i < n; i++)
+    for (PetscInt j = 0; j < i; j++) {
+      PetscBool same;
+      PetscCall(PetscStrcmp(names[i], names[j], &same));
+      PetscCheck(!same, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s names '%s' twice; valid are distinct names", opt, names[i]);
+    }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -94,6 +113,7 @@ PetscErrorCode MPMSceneSetFromOptions(MPM mpm, PetscOptionItems *PetscOptionsObj
   PetscCall(PetscOptionsHasHelp(NULL, &help));
   PetscCall(MPMSceneNames(PetscOptionsObject, "-mpm_materials", "Names of the scene's materials", MPM_MAX_MATERIALS, names, &mpm->nmat));
   if (!help) PetscCheck(mpm->nmat > 0, mpm->comm, PETSC_ERR_USER_INPUT, "The scene names no material: give -mpm_materials name[,name...] (e.g. -options_file inputs/sod_weak.opts)");
+  PetscCall(MPMSceneCheckDuplicates("-mpm_materials", mpm->nmat, names));
   for (PetscInt i = 0; i < mpm->nmat; i++) {
     char prefix[MPM_MAX_NAME + 16];
     PetscCall(PetscStrncpy(mpm->mat[i].name, names[i], MPM_MAX_NAME));
@@ -109,6 +129,16 @@ PetscErrorCode MPMSceneSetFromOptions(MPM mpm, PetscOptionItems *PetscOptionsObj
       PetscCall(MPMStrengthIsActive(mpm->mat[i].strength, &active));
       PetscCall(MPMEOSHasPressure(mpm->mat[i].eos, &pressure));
       PetscCheck(active || pressure || help, mpm->comm, PETSC_ERR_USER_INPUT, "Material %s has neither an equation of state (-%seos_type is none) nor a strength model (-%sstrength_type): it could carry no stress", names[i], prefix, prefix);
+      if (active && !help) { /* a gas has no shear strength: only a viscosity */
+        MPMEOSType      et;
+        MPMStrengthType st;
+        PetscBool       gas, viscous;
+        PetscCall(MPMEOSGetType(mpm->mat[i].eos, &et));
+        PetscCall(MPMStrengthGetType(mpm->mat[i].strength, &st));
+        PetscCall(PetscStrcmp(et, MPMEOSIDEALGAS, &gas));
+        PetscCall(PetscStrcmp(st, MPMSTRENGTHNEWTONIAN, &viscous));
+        PetscCheck(!gas || viscous, mpm->comm, PETSC_ERR_USER_INPUT, "-%sstrength_type %s on an ideal gas (-%seos_type idealgas): a gas has no shear strength; valid are none and newtonian (a viscosity)", prefix, st, prefix);
+      }
       if (active) {
         mpm->has_stress = PETSC_TRUE;
         if (mpm->mat[i].strength->needs_F) mpm->track_F = PETSC_TRUE;
@@ -118,6 +148,7 @@ PetscErrorCode MPMSceneSetFromOptions(MPM mpm, PetscOptionItems *PetscOptionsObj
   }
   PetscCall(MPMSceneNames(PetscOptionsObject, "-mpm_regions", "Names of the regions that place the materials, in seeding priority", MPM_MAX_REGIONS, names, &mpm->nreg));
   if (!help) PetscCheck(mpm->nreg > 0, mpm->comm, PETSC_ERR_USER_INPUT, "The scene places no material: give -mpm_regions name[,name...] and -region_<name>_material");
+  PetscCall(MPMSceneCheckDuplicates("-mpm_regions", mpm->nreg, names));
   for (PetscInt i = 0; i < mpm->nreg; i++) {
     PetscCall(PetscStrncpy(mpm->reg[i].name, names[i], MPM_MAX_NAME));
     PetscCall(MPMRegionSetFromOptions(mpm, &mpm->reg[i]));

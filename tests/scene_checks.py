@@ -21,6 +21,7 @@ CTH = os.path.join(SRC, "inputs", "methods", "cth.opts")
 SCENE_CTH = ["-options_file", SCENE, "-options_file", CTH]  # weak Sod in the CTH study's configuration, where these checks were measured
 FLYER = os.path.join(SRC, "inputs", "flyer_plate.opts")
 RZ = os.path.join(SRC, "inputs", "taylor_anvil_rz.opts")
+HYDRO = os.path.join(SRC, "inputs", "hydrostatic_2d.opts")
 sys.path.insert(0, os.path.join(SRC, "scripts"))
 import petmpmlib as lib  # noqa: E402
 
@@ -118,12 +119,44 @@ def test_bad_input():
             (["-options_file", RZ, "-mpm_stop_at_rest", "1.5", "-mpm_output", d], "-mpm_stop_at_rest"),
             (["-options_file", RZ, "-mpm_exact_anvil_length", "0", "-mpm_output", d], "-mpm_exact_anvil_length"),
             ([*SCENE_CTH, "-mpm_pressure_relax", "-1", "-mpm_output", d], "-mpm_pressure_relax"),
+            ([*SCENE_CTH, "-mpm_gravity", "nan", "-mpm_output", d], "-mpm_gravity"),
+            ([*SCENE_CTH, "-mpm_gravity", "inf", "-mpm_output", d], "-mpm_gravity"),
+            ([*SCENE_CTH, "-ts_max_time", "nan", "-mpm_output", d], "-ts_max_time"),
+            ([*SCENE_CTH, "-ts_max_time", "inf", "-mpm_output", d], "-ts_max_time"),
+            ([*SCENE_CTH, "-ts_max_time", "-1", "-mpm_output", d], "-ts_max_time"),
+            ([*SCENE_CTH, "-ts_max_steps", "-1", "-mpm_output", d], "-ts_max_steps"),
+            ([*SCENE_CTH, "-mpm_output", d, "-mpm_report", d], "-mpm_report"),
+            ([*SCENE_CTH, "-region_left_lo", "50", "-region_left_hi", "60", "-mpm_output", d], "-region_left_lo"),
+            ([*SCENE_CTH, "-mpm_materials", "gas,gas", "-mpm_output", d], "-mpm_materials"),
+            ([*SCENE_CTH, "-mpm_regions", "left,left", "-mpm_output", d], "-mpm_regions"),
+            ([*SCENE_CTH, "-mpm_output_times", "1", "-mpm_output", d], "-mpm_output_times"),
+            ([*SCENE_CTH, "-ts_dt", "1e-9", "-mpm_output", d], "-ts_dt"),
+            ([*SCENE_CTH, "-mat_gas_strength_type", "vonmises", "-mpm_output", d], "-mat_gas_strength_type"),
+            ([*SCENE_CTH, "-ts_type", "rk", "-mpm_output", d], "-ts_type"),
+            ([*SCENE_CTH, "-mpm_dim", "4", "-mpm_output", d], "-mpm_dim"),
+            ([*SCENE_CTH, "-mpm_ppc", "0", "-mpm_output", d], "-mpm_ppc"),
+            ([*SCENE_CTH, "-mpm_cells", "abc", "-mpm_output", d], "-mpm_cells"),
+            ([*SCENE_CTH, "-mpm_cfl", "abc", "-mpm_output", d], "-mpm_cfl"),
+            ([*SCENE_CTH, "-mpm_ke_fix", "maybe", "-mpm_output", d], "-mpm_ke_fix"),
+            ([*SCENE_CTH, "-region_left_velocity", "nan", "-mpm_output", d], "-region_left_velocity"),
+            ([*SCENE_CTH, "-mpm_lo", "nan", "-mpm_output", d], "-mpm_lo"),
+            ([*SCENE_CTH, "-mpm_dt_min", "-1", "-mpm_output", d], "-mpm_dt_min"),
+            ([*SCENE_CTH, "-mpm_output_interval", "-3", "-mpm_output", d], "-mpm_output_interval"),
+            ([*SCENE_CTH, "-mpm_bc_lo", "wal", "-mpm_output", d], "-mpm_bc_lo"),
+            ([*SCENE_CTH, "-mpm_exact_type", "foo", "-mpm_output", d], "-mpm_exact_type"),
+            ([*SCENE_CTH, "-mpm_popping_interval", "-1", "-mpm_output", d], "-mpm_popping_interval"),
+            (["-options_file", HYDRO, "-mpm_gravity", "0,0", "-mpm_output", d], "-region_col_hydrostatic"),
         ]
         for args, needle in cases:
             p = run(args, expect_ok=False)
             text = p.stdout + p.stderr
             check(p.returncode != 0 and needle in text, f"{' '.join(args[-4:])}: exit {p.returncode}, message names '{needle}'")
+            check(len(text.strip().splitlines()) <= 2, f"{' '.join(args[-4:])}: the error prints only itself ({len(text.strip().splitlines())} lines)")
+        check(len(cases) >= 40, f"{len(cases)} bad inputs")
         check(open(h5, "rb").read() == before, "earlier output left untouched by the failed runs")
+        for opt in ["-options_left", "-options_view", "-ts_view", "-get_total_flops"]:  # PETSc's own options work
+            p = run([*SCENE_CTH, "-mpm_output", os.path.join(d, "std"), opt], expect_ok=False)
+            check(p.returncode == 0, f"{opt}: a standard PETSc option is accepted (exit {p.returncode})")
 
 
 def test_log_view():

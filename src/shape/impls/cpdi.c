@@ -128,7 +128,7 @@ static PetscErrorCode MPMShapeSetFromOptions_CPDI(MPMShape shape, PetscOptionIte
 
   PetscFunctionBegin;
   PetscOptionsHeadBegin(PetscOptionsObject, "CPDI shape functions");
-  PetscCall(PetscOptionsRangeInt("-shape_cpdi_reach", "How far a point domain's corners may reach beyond its cell [cells], 1 to 4 (ghost width = reach + 1)", "", cp->reach, &cp->reach, NULL, 1, 4));
+  PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-shape_cpdi_reach", "How far a point domain's corners may reach beyond its cell [cells], 1 to 4 (ghost width = reach + 1)", &cp->reach, 1, 4));
   PetscOptionsHeadEnd();
   PetscFunctionReturn(PETSC_SUCCESS);
 }
