@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 static const char help[] = "petmpm: explicit Material Point Method for shocks and large deformation (PETSc DMDA + DMSwarm + TS).\n"
                            "Run a scene: petmpm -options_file inputs/sod_weak.opts [-mpm_cells 256 -mpm_update_type pic ...]\n"
-                           "Options given after -options_file override the scene. Units: CGS, temperature in eV.\n\n";
+                           "Options given after -options_file override the scene. Units: CGS, temperature in eV.\n"
+                           "-help lists petmpm's options, TS's and PETSc's general ones; -help -mpm_help_all adds the solver options an explicit MPM never reads.\n\n";
 
 #include <petmpm.h>
 
@@ -63,6 +64,37 @@ static PetscErrorCode MPMErrorHandler(MPI_Comm comm, int line, const char *fun, 
   return n;
 }
 
+/* -help shows petmpm's options, TS's and PETSc's general ones, without the solver sections (SNES, KSP, PC, viewers
+   and devices) that an explicit MPM never reads (-help -mpm_help_all: everything), without the empty "()" of the manual page
+   petmpm's options have none of, and with an unbounded default as inf. */
+static PetscBool MPMHelpAll = PETSC_FALSE, MPMHelpSkip = PETSC_FALSE;
+
+static PetscErrorCode MPMHelpPrintf(MPI_Comm comm, const char format[], ...)
+{
+  char    line[8192], *s;
+  va_list ap;
+
+  va_start(ap, format);
+  vsnprintf(line, sizeof(line), format, ap);
+  va_end(ap);
+  if (!MPMHelpAll) {
+    if (!strncmp(line, "------", 6)) { /* a section's header: "----\nTitle:\n" */
+      const char *const skip[] = {"Viewer (", "Nonlinear solver", "Eisenstat", "Linesearch", "Preconditioner", "Krylov", "PetscDevice", "Root PetscDeviceContext", "Matrix", "Vector", "DM ", "Index set"};
+      const char       *title  = strchr(line, '\n');
+      MPMHelpSkip              = PETSC_FALSE;
+      for (size_t i = 0; title && i < sizeof(skip) / sizeof(skip[0]); i++)
+        if (!strncmp(title + 1, skip[i], strlen(skip[i]))) MPMHelpSkip = PETSC_TRUE;
+    }
+    if (MPMHelpSkip) return PETSC_SUCCESS;
+    if ((s = strstr(line, " ()\n"))) memmove(s, s + 3, strlen(s + 3) + 1);
+    while ((s = strstr(line, "1.79769e+308"))) {
+      memcpy(s, "inf", 3);
+      memmove(s + 3, s + 12, strlen(s + 12) + 1);
+    }
+  }
+  return PetscPrintf(comm, "%s", line);
+}
+
 static PetscErrorCode MPMRun(MPMErrorContext *ec)
 {
   MPM       mpm;
@@ -90,6 +122,8 @@ int main(int argc, char **argv)
   PetscMPIInt     size;
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
+  PetscCall(PetscOptionsGetBool(NULL, NULL, "-mpm_help_all", &MPMHelpAll, NULL));
+  PetscHelpPrintf = MPMHelpPrintf;
   PetscCall(PetscPushErrorHandler(MPMErrorHandler, &ec));
   ierr = MPMRun(&ec);
   if (ierr) {

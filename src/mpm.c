@@ -35,6 +35,7 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   m->vacuum_density         = 1e-3;
   m->diag.first_vacuum_step = -1;
   m->diag.first_popped_time = -1.0;
+  m->progress               = 10.0;
   m->diag.first_empty_step  = -1;
   m->diag.empty_cells0      = -1;
   m->output_interval        = 0;
@@ -188,6 +189,8 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
     PetscCheck(!dir, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_report %s is a directory; valid is a file name (DIR/report.json)", mpm->report);
   }
   PetscCall(PetscOptionsBool("-mpm_view", "Print the configuration of the run", "", mpm->view, &mpm->view, NULL));
+  PetscCall(PetscOptionsReal("-mpm_progress", "Seconds of wall time between progress lines (time, step, dt, points, time to go) [s], >= 0 (0: none)", "", mpm->progress, &mpm->progress, NULL));
+  PetscCall(MPMOptionsCheckRange("-mpm_progress", mpm->progress, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
   PetscCall(PetscOptionsReal("-mpm_stop_at_rest", "Stop the run once the kinetic energy has fallen below this fraction of its initial value (an impact that has come to rest) [-], in [0, 1) (0: run to -ts_max_time)", "", mpm->rest_fraction,
                              &mpm->rest_fraction, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_stop_at_rest", mpm->rest_fraction, 0.0, 1.0, PETSC_FALSE, PETSC_TRUE));

@@ -201,6 +201,8 @@ struct _p_MPM {
   PetscReal      rest_fraction;         /* -mpm_stop_at_rest: stop once the kinetic energy is below this fraction of kinetic0, 0: never */
   PetscReal      rest_time;             /* when it did [s], -1 before */
   PetscReal      wall_loop, wall_setup, wall_output;
+  PetscReal      progress;                      /* -mpm_progress: seconds of wall time between progress lines, 0: none */
+  PetscReal      progress_start, progress_last; /* MPI_Wtime at the loop's start and at the last line                  */
   PetscInt       steps;
   PetscReal      point_steps; /* sum over the steps of the global number of points (the cost measure) */
   PetscReal      time;

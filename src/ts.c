@@ -79,6 +79,12 @@ static PetscErrorCode MPMTSPostStep(TS ts)
     }
   } else if (mpm->output_interval > 0 && step % mpm->output_interval == 0)
     PetscCall(MPMOutputWrite(mpm, step, t));
+  if (mpm->progress > 0.0 && MPI_Wtime() - mpm->progress_last >= mpm->progress) { /* rank 0's clock: a line, no collective call */
+    const PetscReal el = MPI_Wtime() - mpm->progress_start, frac = t / tmax;
+    mpm->progress_last = MPI_Wtime();
+    PetscCall(PetscPrintf(mpm->comm, "petmpm %s: t = %.4g s (%.1f%%), step %" PetscInt_FMT ", dt %.3g s, %" PetscInt_FMT " points, %.0f s elapsed, about %.0f s to go\n", mpm->scene, (double)t, (double)(100.0 * frac), step, (double)dt, mpm->npoints,
+                          (double)el, (double)(frac > 0.0 ? el * (1.0 - frac) / frac : 0.0)));
+  }
   if (mpm->rest_fraction > 0.0) { /* an impact that has come to rest: the loop stops, MPMSolve writes the final state */
     PetscReal mass, energy, mom[MPM_MAX_DIM], kinetic;
     PetscCall(MPMGlobalSums(mpm, &mass, &energy, mom, &kinetic));
@@ -136,8 +142,9 @@ PetscErrorCode MPMSolve(MPM mpm)
   if (mpm->exact && mpm->exact->check_start) PetscCall(MPMComputeChecks(mpm));
   PetscCall(PetscLogStagePop());
   PetscCall(PetscLogStagePush(mpm->log.loop));
-  t0   = MPI_Wtime();
-  out0 = mpm->wall_output;
+  t0                  = MPI_Wtime();
+  out0                = mpm->wall_output;
+  mpm->progress_start = mpm->progress_last = t0;
   PetscCall(TSSolve(mpm->ts, mpm->tsu));
   mpm->wall_loop = MPI_Wtime() - t0 - (mpm->wall_output - out0); /* the time loop without its outputs */
   PetscCall(PetscLogStagePop());
