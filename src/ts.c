@@ -5,6 +5,17 @@
    MPM cycle runs as its post-step: pre-step sets dt from the CFL condition, trimmed so that the last step
    lands exactly on the final time. */
 #include "petmpmimpl.h"
+#include <signal.h>
+
+/* SIGTERM and SIGINT during the time loop: the step under way finishes, then the run stops as a failed run does
+   (MPMSolve writes the last state as a complete output and closes the file) and exits non-zero with a message
+   that names the signal, the step and the output. The ranks agree on it after each step. */
+static volatile sig_atomic_t MPMSignalCaught = 0;
+
+static void MPMSignalHandler(int sig)
+{
+  MPMSignalCaught = sig;
+}
 
 static PetscErrorCode MPMTSRHSFunction(TS ts, PetscReal t, Vec U, Vec F, void *ctx)
 {
@@ -85,6 +96,15 @@ static PetscErrorCode MPMTSPostStep(TS ts)
     PetscCall(PetscPrintf(mpm->comm, "petmpm %s: t = %.4g s (%.1f%%), step %" PetscInt_FMT ", dt %.3g s, %" PetscInt_FMT " points, %.0f s elapsed, about %.0f s to go\n", mpm->scene, (double)t, (double)(100.0 * frac), step, (double)dt, mpm->npoints,
                           (double)el, (double)(frac > 0.0 ? el * (1.0 - frac) / frac : 0.0)));
   }
+  {
+    PetscMPIInt sig = (PetscMPIInt)MPMSignalCaught;
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &sig, 1, MPI_INT, MPI_MAX, mpm->comm));
+    if (sig) {
+      PetscCall(MPMSetFailure(mpm, "Interrupted by %s after step %" PetscInt_FMT " (t = %g s)", sig == SIGTERM ? "SIGTERM" : (sig == SIGINT ? "SIGINT" : "a signal"), step, (double)t));
+      PetscCall(TSSetConvergedReason(ts, TS_DIVERGED_STEP_REJECTED));
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
+  }
   if (mpm->rest_fraction > 0.0) { /* an impact that has come to rest: the loop stops, MPMSolve writes the final state */
     PetscReal mass, energy, mom[MPM_MAX_DIM], kinetic;
     PetscCall(MPMGlobalSums(mpm, &mass, &energy, mom, &kinetic));
@@ -145,7 +165,17 @@ PetscErrorCode MPMSolve(MPM mpm)
   t0                  = MPI_Wtime();
   out0                = mpm->wall_output;
   mpm->progress_start = mpm->progress_last = t0;
-  PetscCall(TSSolve(mpm->ts, mpm->tsu));
+  {
+    struct sigaction sa, old[2];
+    memset(&sa, 0, sizeof(sa));
+    sa.sa_handler = MPMSignalHandler;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGTERM, &sa, &old[0]);
+    sigaction(SIGINT, &sa, &old[1]);
+    PetscCall(TSSolve(mpm->ts, mpm->tsu));
+    sigaction(SIGTERM, &old[0], NULL);
+    sigaction(SIGINT, &old[1], NULL);
+  }
   mpm->wall_loop = MPI_Wtime() - t0 - (mpm->wall_output - out0); /* the time loop without its outputs */
   PetscCall(PetscLogStagePop());
   if (mpm->failed) { /* the one place that writes the last state of a run that cannot go on */

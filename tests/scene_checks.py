@@ -268,6 +268,33 @@ def test_failure():
 
 
 
+def test_interrupt():
+    """SIGTERM during the time loop (on one rank and on two): the step finishes, the last state is written as a complete
+    output (every dataset as long as /time, the XDMF naming each output) and the run exits non-zero with a message
+    naming the signal, the step and the output folder."""
+    import h5py
+    import signal
+    for ranks in (1, 2):
+        with tempfile.TemporaryDirectory() as d:
+            cmd = ([EXE] if ranks == 1 else ["mpiexec", "-n", "2", EXE]) + ["-options_file", os.path.join(SRC, "inputs", "dam_break_2d.opts"), "-mpm_cells", "240,100", "-mpm_progress", "0.2", "-mpm_output", d]
+            p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=ENV)
+            lines = []
+            for line in p.stdout:  # the first progress line: the time loop is running
+                lines.append(line)
+                if " t = " in line and "to go" in line:
+                    break
+            p.send_signal(signal.SIGTERM)
+            out, _ = p.communicate(timeout=120)
+            text = "".join(lines) + out
+            check(p.returncode != 0 and "Interrupted by SIGTERM after step" in text and d in text, f"{ranks} rank(s): SIGTERM: exit {p.returncode}, message names the signal, the step and the output")
+            with h5py.File(os.path.join(d, "petmpm.h5"), "r") as f:
+                nt = f["time"].shape[0]
+                lens = {k: f["particle_fields/" + k].shape[0] for k in f["particle_fields"]}
+                counts = f["particle_count"][:]
+            times = [float(e.get("Value")) for e in ET.parse(os.path.join(d, "petmpm.xmf")).iter("Time")]
+            check(nt >= 2 and all(n == nt for n in lens.values()) and len(counts) == nt and len(times) == nt, f"{ranks} rank(s): a complete last output: {nt} times, datasets {sorted(set(lens.values()))}, XDMF {len(times)}")
+
+
 def flyer_fields(out):
     """Final point fields of a flyer-plate run with the exact solution at the points, sorted by position."""
     import h5py
