@@ -6,6 +6,12 @@
 #include "../petmpmimpl.h"
 #include "transfer.h"
 
+#if defined(__GNUC__)
+#  define MPM_TINLINE static inline __attribute__((always_inline))
+#else
+#  define MPM_TINLINE static inline
+#endif
+
 /* Global (i, j, k) of the c-th cell of the local cell range (the numbering of MPMLocalCell). */
 static inline void MPMLocalCellIndex(const MPMGrid *g, PetscInt c, PetscInt ijk[])
 {
@@ -20,6 +26,45 @@ static inline void MPMCellRuleAdd(MPM mpm, const PetscReal x[], PetscReal V, Pet
   const PetscInt c = MPMLocalCell(&mpm->grid, x);
   mpm->cellV[c] += V;
   mpm->cellS[c] += V * P;
+}
+
+/* The generic scatter's point loop (the reference the specialised kernels reproduce), with the dimension d a constant
+   where MPMScatter calls it, so that its loops over d unroll; the same operations in the same order for every d. */
+MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node, PetscReal tn, PetscBool force, PetscBool cellrule, PetscBool stress, PetscBool body, const PetscInt d)
+{
+  const MPMGrid   *g = &mpm->grid;
+  const PetscReal *x = pts->f[MPM_FIELD_POSITION], *v = pts->f[MPM_FIELD_VELOCITY], *m = pts->f[MPM_FIELD_MASS];
+  const PetscReal *V = pts->f[MPM_FIELD_VOLUME], *pr = pts->f[MPM_FIELD_PRESSURE], *q = pts->f[MPM_FIELD_VISCOSITY];
+  const PetscReal *F = mpm->track_F ? pts->f[MPM_FIELD_DEFGRAD] : NULL, *S = pts->f[MPM_FIELD_STRESS], *X = pts->f[MPM_FIELD_REFPOSITION];
+  const PetscReal *ds = mpm->shape->needs_F ? pts->f[MPM_FIELD_DOMAINSCALE] : NULL; /* split points' domains */
+  MPMStencil       st;
+
+  for (PetscInt p = 0; p < pts->n; p++) {
+    const PetscReal P              = pr[p] + q[p];
+    PetscReal       b[MPM_MAX_DIM] = {0, 0, 0}, Fs[MPM_MAX_DIM * MPM_MAX_DIM], hoop = 0.0;
+    if (force && g->axisym) hoop = V[p] * (P + (stress ? S[p * d * d] + S[p * d * d + d + 1] : 0.0)) / x[p * d]; /* -sigma_tt V / r, sigma_tt = -P - (s_rr + s_zz) */
+    if (body) mpm->exact->ops.bodyforce(mpm->exact->data, tn, &X[p * d], F ? &F[p * d * d] : NULL, b);
+    MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, F, ds, p, Fs), &st);
+    for (PetscInt a = 0; a < st.n; a++) {
+      MPMNode        *nd = &node[st.node[a]];
+      const PetscReal wm = st.w[a] * m[p];
+      nd->m += wm;
+      nd->w2 += st.w[a] * st.w[a];
+      for (PetscInt k = 0; k < d; k++) nd->p[k] += st.s[a][k] * wm * v[p * d + k];
+      if (force && !cellrule)
+        for (PetscInt k = 0; k < d; k++) nd->f[k] += st.s[a][k] * V[p] * P * st.dw[a][k];
+      if (stress)
+        for (PetscInt k = 0; k < d; k++) {
+          PetscReal sg = 0.0;
+          for (PetscInt j = 0; j < d; j++) sg += S[p * d * d + k * d + j] * st.dw[a][j];
+          nd->f[k] -= st.s[a][k] * V[p] * sg;
+        }
+      if (body)
+        for (PetscInt k = 0; k < d; k++) nd->f[k] += st.s[a][k] * wm * b[k];
+      if (hoop != 0.0) nd->f[0] += st.s[a][0] * hoop * st.w[a];
+    }
+    if (cellrule) MPMCellRuleAdd(mpm, &x[p * d], V[p], P);
+  }
 }
 
 /* m_I = sum_p N_I m_p, (mv)_I = sum_p N_I m_p v_p and, with the force, f_I = -int sigma . grad N_I dV.
@@ -51,41 +96,19 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
   {
     const PetscReal *x = pts.f[MPM_FIELD_POSITION], *v = pts.f[MPM_FIELD_VELOCITY], *m = pts.f[MPM_FIELD_MASS];
     const PetscReal *V = pts.f[MPM_FIELD_VOLUME], *pr = pts.f[MPM_FIELD_PRESSURE], *q = pts.f[MPM_FIELD_VISCOSITY];
-    const PetscReal *F = mpm->track_F ? pts.f[MPM_FIELD_DEFGRAD] : NULL, *S = pts.f[MPM_FIELD_STRESS], *X = pts.f[MPM_FIELD_REFPOSITION];
-    const PetscReal *ds = mpm->shape->needs_F ? pts.f[MPM_FIELD_DOMAINSCALE] : NULL; /* split points' domains */
+    const PetscReal *S = pts.f[MPM_FIELD_STRESS];
 
     if (mpm->kern && !body) { /* the specialised kernel, then the cell sums of the cell rule */
       const MPMTransferArgs A = {.n = pts.n, .x = (PetscReal *)x, .v = (PetscReal *)v, .m = m, .V = V, .pr = pr, .q = q, .S = S};
       mpm->kern->p2g[(force && !cellrule ? MPM_P2G_PRESSURE : 0) | (stress ? MPM_P2G_STRESS : 0)](g, mpm->shape->data, &A, node);
       if (cellrule)
         for (PetscInt p = 0; p < pts.n; p++) MPMCellRuleAdd(mpm, &x[p * d], V[p], pr[p] + q[p]);
-    } else
-      for (PetscInt p = 0; p < pts.n; p++) {
-        const PetscReal P              = pr[p] + q[p];
-        PetscReal       b[MPM_MAX_DIM] = {0, 0, 0}, Fs[MPM_MAX_DIM * MPM_MAX_DIM], hoop = 0.0;
-        if (force && g->axisym) hoop = V[p] * (P + (stress ? S[p * d * d] + S[p * d * d + d + 1] : 0.0)) / x[p * d]; /* -sigma_tt V / r, sigma_tt = -P - (s_rr + s_zz) */
-        if (body) mpm->exact->ops.bodyforce(mpm->exact->data, tn, &X[p * d], F ? &F[p * d * d] : NULL, b);
-        MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, F, ds, p, Fs), &st);
-        for (PetscInt a = 0; a < st.n; a++) {
-          MPMNode        *nd = &node[st.node[a]];
-          const PetscReal wm = st.w[a] * m[p];
-          nd->m += wm;
-          nd->w2 += st.w[a] * st.w[a];
-          for (PetscInt k = 0; k < d; k++) nd->p[k] += st.s[a][k] * wm * v[p * d + k];
-          if (force && !cellrule)
-            for (PetscInt k = 0; k < d; k++) nd->f[k] += st.s[a][k] * V[p] * P * st.dw[a][k];
-          if (stress)
-            for (PetscInt k = 0; k < d; k++) {
-              PetscReal sg = 0.0;
-              for (PetscInt j = 0; j < d; j++) sg += S[p * d * d + k * d + j] * st.dw[a][j];
-              nd->f[k] -= st.s[a][k] * V[p] * sg;
-            }
-          if (body)
-            for (PetscInt k = 0; k < d; k++) nd->f[k] += st.s[a][k] * wm * b[k];
-          if (hoop != 0.0) nd->f[0] += st.s[a][0] * hoop * st.w[a];
-        }
-        if (cellrule) MPMCellRuleAdd(mpm, &x[p * d], V[p], P);
-      }
+    } else if (d == 3)
+      MPMScatterGeneric(mpm, &pts, node, tn, force, cellrule, stress, body, 3);
+    else if (d == 2)
+      MPMScatterGeneric(mpm, &pts, node, tn, force, cellrule, stress, body, 2);
+    else
+      MPMScatterGeneric(mpm, &pts, node, tn, force, cellrule, stress, body, 1);
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   if (cellrule) {
@@ -128,6 +151,67 @@ static PetscReal MPMExpansionWork(void *ctx, PetscInt p, PetscReal e, PetscReal 
   MPMExpansion *ex = (MPMExpansion *)ctx;
 
   return MPMIsentropeWork(ex->mpm, ex->mpm->mat[(PetscInt)ex->mat[p]].eos, ex->m[p], ex->rho[p], e, ex->rho[p] / (1.0 + eps), delin);
+}
+
+/* The generic gather's point loop (the reference the specialised kernels reproduce), with the dimension d a constant
+   where MPMGather calls it, so that its loops over d unroll; the same operations in the same order for every d. */
+MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPoints *pts, const MPMNode *node, const PetscReal *F, const PetscReal *ds, PetscBool velocity, PetscBool kinematics, PetscBool work, PetscBool cellwork, const PetscInt d)
+{
+  const MPMGrid   *g     = &mpm->grid;
+  const PetscReal  alpha = A->alpha, dt = A->dt;
+  const PetscBool  kefix = A->kefix, stress = A->stress;
+  PetscReal       *x = A->x, *v = A->v, *L = A->L, *e = A->e;
+  const PetscReal *S = A->S;
+  MPMStencil       st;
+
+  for (PetscInt p = 0; p < pts->n; p++) {
+    PetscReal vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Lb[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, dv2 = 0.0, R = 0.0, Fs[MPM_MAX_DIM * MPM_MAX_DIM];
+    PetscReal Lbtt = 0.0; /* axisymmetric: the hoop rate of vbar, sum N (2 v_I - dv_I)_r / r_p */
+    MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, F, ds, p, Fs), &st);
+    for (PetscInt a = 0; a < st.n; a++) {
+      const MPMNode *nd = &node[st.node[a]];
+      for (PetscInt i = 0; i < d; i++) {
+        const PetscReal vI = st.s[a][i] * nd->p[i], dvI = st.s[a][i] * (nd->p[i] - nd->v0[i]); /* mirrored: reflected */
+        vpic[i] += st.w[a] * vI;
+        dv[i] += st.w[a] * dvI;
+        dv2 += st.w[a] * dvI * dvI;
+        R += st.w[a] * (vI - dvI - v[p * d + i]) * vI; /* (v_I^n - v_p) . v_I */
+        for (PetscInt j = 0; j < d; j++) Lp[i * d + j] += vI * st.dw[a][j];
+        if (work)
+          for (PetscInt j = 0; j < d; j++) Lb[i * d + j] += (2.0 * vI - dvI) * st.dw[a][j];
+        if (work && g->axisym && i == 0) Lbtt += st.w[a] * (2.0 * vI - dvI) / x[p * d];
+      }
+    }
+    if (velocity) {
+      PetscReal share = 0.5 * dv2, gain = 0.0; /* grid kinetic energy gain of the point's share, the point's own [erg/g] */
+      for (PetscInt i = 0; i < d; i++) {
+        const PetscReal vn = alpha * (v[p * d + i] + dv[i]) + (1.0 - alpha) * vpic[i];
+        share += v[p * d + i] * dv[i];
+        gain += 0.5 * (vn * vn - v[p * d + i] * v[p * d + i]);
+        v[p * d + i] = vn;
+      }
+      if (kefix) e[p] += share - gain + (1.0 - alpha) * R;
+      if (work) { /* the work the grid's forces did over the kick, sum_p V_p sigma_p : Lbar_p dt_kick = sum_I f_I . vbar_I dt_kick */
+        PetscReal sL = 0.0, div = 0.0;
+        if (cellwork)
+          div = mpm->cellS[MPMLocalCell(g, &x[p * d])];
+        else
+          for (PetscInt i = 0; i < d; i++) div += Lb[i * d + i];
+        if (stress)
+          for (PetscInt i = 0; i < d * d; i++) sL += S[p * d * d + i] * Lb[i];
+        if (g->axisym) { /* the hoop work: -P Lbar_tt + s_tt Lbar_tt, s_tt = -(s_rr + s_zz) */
+          div += Lbtt;
+          if (stress) sL -= (S[p * d * d] + S[p * d * d + d + 1]) * Lbtt;
+        }
+        e[p] += MPMWorkIncrement(A, p, e[p], sL, div);
+      }
+    }
+    if (kinematics) {
+      if (g->axisym) pts->f[MPM_FIELD_HOOPRATE][p] = vpic[0] / x[p * d]; /* L_tt = v_r / r at x^n, as L_p */
+      for (PetscInt i = 0; i < d; i++) x[p * d + i] += dt * vpic[i];
+      for (PetscInt i = 0; i < d * d; i++) L[p * d * d + i] = Lp[i];
+    }
+  }
 }
 
 /* Gathers the grid velocity (stored in MPMNode::p after the advance) to the points:
@@ -201,55 +285,12 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
                                 .threshold = mpm->isentrope_threshold};
     if (mpm->kern) {
       mpm->kern->g2p[(velocity ? MPM_G2P_VELOCITY : 0) | (kinematics ? MPM_G2P_KINEMATICS : 0) | (work ? MPM_G2P_WORK : 0)](g, mpm->shape->data, &A, node);
-    } else
-      for (PetscInt p = 0; p < pts.n; p++) {
-        PetscReal vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Lb[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, dv2 = 0.0, R = 0.0, Fs[MPM_MAX_DIM * MPM_MAX_DIM];
-        PetscReal Lbtt = 0.0; /* axisymmetric: the hoop rate of vbar, sum N (2 v_I - dv_I)_r / r_p */
-        MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, F, ds, p, Fs), &st);
-        for (PetscInt a = 0; a < st.n; a++) {
-          const MPMNode *nd = &node[st.node[a]];
-          for (PetscInt i = 0; i < d; i++) {
-            const PetscReal vI = st.s[a][i] * nd->p[i], dvI = st.s[a][i] * (nd->p[i] - nd->v0[i]); /* mirrored: reflected */
-            vpic[i] += st.w[a] * vI;
-            dv[i] += st.w[a] * dvI;
-            dv2 += st.w[a] * dvI * dvI;
-            R += st.w[a] * (vI - dvI - v[p * d + i]) * vI; /* (v_I^n - v_p) . v_I */
-            for (PetscInt j = 0; j < d; j++) Lp[i * d + j] += vI * st.dw[a][j];
-            if (work)
-              for (PetscInt j = 0; j < d; j++) Lb[i * d + j] += (2.0 * vI - dvI) * st.dw[a][j];
-            if (work && g->axisym && i == 0) Lbtt += st.w[a] * (2.0 * vI - dvI) / x[p * d];
-          }
-        }
-        if (velocity) {
-          PetscReal share = 0.5 * dv2, gain = 0.0; /* grid kinetic energy gain of the point's share, the point's own [erg/g] */
-          for (PetscInt i = 0; i < d; i++) {
-            const PetscReal vn = alpha * (v[p * d + i] + dv[i]) + (1.0 - alpha) * vpic[i];
-            share += v[p * d + i] * dv[i];
-            gain += 0.5 * (vn * vn - v[p * d + i] * v[p * d + i]);
-            v[p * d + i] = vn;
-          }
-          if (kefix) e[p] += share - gain + (1.0 - alpha) * R;
-          if (work) { /* the work the grid's forces did over the kick, sum_p V_p sigma_p : Lbar_p dt_kick = sum_I f_I . vbar_I dt_kick */
-            PetscReal sL = 0.0, div = 0.0;
-            if (cellwork)
-              div = mpm->cellS[MPMLocalCell(g, &x[p * d])];
-            else
-              for (PetscInt i = 0; i < d; i++) div += Lb[i * d + i];
-            if (stress)
-              for (PetscInt i = 0; i < d * d; i++) sL += S[p * d * d + i] * Lb[i];
-            if (g->axisym) { /* the hoop work: -P Lbar_tt + s_tt Lbar_tt, s_tt = -(s_rr + s_zz) */
-              div += Lbtt;
-              if (stress) sL -= (S[p * d * d] + S[p * d * d + d + 1]) * Lbtt;
-            }
-            e[p] += MPMWorkIncrement(&A, p, e[p], sL, div);
-          }
-        }
-        if (kinematics) {
-          if (g->axisym) pts.f[MPM_FIELD_HOOPRATE][p] = vpic[0] / x[p * d]; /* L_tt = v_r / r at x^n, as L_p */
-          for (PetscInt i = 0; i < d; i++) x[p * d + i] += dt * vpic[i];
-          for (PetscInt i = 0; i < d * d; i++) L[p * d * d + i] = Lp[i];
-        }
-      }
+    } else if (d == 3)
+      MPMGatherGeneric(mpm, &A, &pts, node, F, ds, velocity, kinematics, work, cellwork, 3);
+    else if (d == 2)
+      MPMGatherGeneric(mpm, &A, &pts, node, F, ds, velocity, kinematics, work, cellwork, 2);
+    else
+      MPMGatherGeneric(mpm, &A, &pts, node, F, ds, velocity, kinematics, work, cellwork, 1);
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   PetscCall(VecRestoreArrayRead(mpm->lnodes, (const PetscScalar **)&node));

@@ -25,8 +25,14 @@ static void MPMShapeBasis1d_CPDI(void *ctx, PetscReal xi, PetscInt *first, Petsc
   MPMShapeLinear1d(xi, first, n, w, dw);
 }
 
+#if defined(__GNUC__)
+#  define MPM_CPDI_INLINE static inline __attribute__((always_inline))
+#else
+#  define MPM_CPDI_INLINE static inline
+#endif
+
 /* R = F diag(l0) (F NULL: the identity) and R^-1. */
-static void CPDIDomain(const Shape_CPDI *cp, PetscInt d, const PetscReal F[], PetscReal R[], PetscReal Ri[])
+MPM_CPDI_INLINE void CPDIDomain(const Shape_CPDI *cp, PetscInt d, const PetscReal F[], PetscReal R[], PetscReal Ri[])
 {
   PetscReal det;
 
@@ -53,12 +59,13 @@ static void CPDIDomain(const Shape_CPDI *cp, PetscInt d, const PetscReal F[], Pe
   }
 }
 
-static void MPMShapeEvaluate_CPDI(void *ctx, const MPMGrid *g, const PetscReal x[], const PetscReal F[], MPMStencil *st)
+/* The stencil of one point, with the dimension d a constant where MPMShapeEvaluate_CPDI calls it, so that every
+   loop over d unrolls (the same operations in the same order for every d: the results do not change). */
+MPM_CPDI_INLINE void CPDIEvaluate(const Shape_CPDI *cp, const MPMGrid *g, const PetscReal x[], const PetscReal F[], MPMStencil *st, const PetscInt d)
 {
-  const Shape_CPDI *cp = (const Shape_CPDI *)ctx;
-  const PetscInt    d = g->dim, nc = 1 << d;
-  const PetscReal   scale = 1.0 / nc;
-  PetscReal         R[MPM_MAX_DIM * MPM_MAX_DIM], Ri[MPM_MAX_DIM * MPM_MAX_DIM];
+  const PetscInt  nc    = 1 << d;
+  const PetscReal scale = 1.0 / nc;
+  PetscReal       R[MPM_MAX_DIM * MPM_MAX_DIM], Ri[MPM_MAX_DIM * MPM_MAX_DIM];
 
   CPDIDomain(cp, d, F, R, Ri);
   st->n = 0;
@@ -94,6 +101,18 @@ static void MPMShapeEvaluate_CPDI(void *ctx, const MPMGrid *g, const PetscReal x
       st->n++;
     }
   }
+}
+
+static void MPMShapeEvaluate_CPDI(void *ctx, const MPMGrid *g, const PetscReal x[], const PetscReal F[], MPMStencil *st)
+{
+  const Shape_CPDI *cp = (const Shape_CPDI *)ctx;
+
+  if (g->dim == 3)
+    CPDIEvaluate(cp, g, x, F, st, 3);
+  else if (g->dim == 2)
+    CPDIEvaluate(cp, g, x, F, st, 2);
+  else
+    CPDIEvaluate(cp, g, x, F, st, 1);
 }
 
 /* The domain's corners stay within reach cells of its centre, and it is not inverted. */
