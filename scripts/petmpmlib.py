@@ -39,15 +39,17 @@ def run(exe, args, ranks=1, out=None, timeout=900):
 
 
 def final_fields(h5file):
-    """Every point field at the last output, ordered by persistent id: {name: array}. A row holds particle_count
-    points (point splitting adds points during a run), then zeros."""
+    """Every point field at the last complete output (the last row of /time: a run killed during an output leaves
+    the other datasets a row longer), ordered by persistent id: {name: array}. A row holds particle_count points
+    (point splitting adds points during a run), then zeros."""
     import h5py
     import numpy as np
     with h5py.File(h5file, "r") as f:
-        n = int(f["particle_count"][-1]) if "particle_count" in f else None
-        ids = np.asarray(f["particle_fields/id"][-1][:n]).ravel()
+        k = len(f["time"]) - 1 if "time" in f else -1
+        n = int(f["particle_count"][k]) if "particle_count" in f else None
+        ids = np.asarray(f["particle_fields/id"][k][:n]).ravel()
         order = np.argsort(ids)
-        return {k: np.asarray(f["particle_fields/" + k][-1][:n])[order] for k in f["particle_fields"] if k != "xyz"}
+        return {name: np.asarray(f["particle_fields/" + name][k][:n])[order] for name in f["particle_fields"] if name != "xyz"}
 
 
 def fit_rate(h, err):

@@ -18,9 +18,10 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 def final_points(h5name):
     with h5py.File(h5name, "r") as f:
-        n = int(f["particle_count"][-1])
-        x = np.asarray(f["particle_fields/xyz"][-1])[:n]
-        t = float(f["time"][-1])
+        k = len(f["time"]) - 1  # the last complete output
+        n = int(f["particle_count"][k])
+        x = np.asarray(f["particle_fields/xyz"][k])[:n]
+        t = float(f["time"][k])
     return np.hypot(x[:, 0], x[:, 1]), x[:, -1], t
 
 

@@ -4,7 +4,9 @@
      /particle_fields/xyz      (outputs, points, 3)             positions padded to 3D for XDMF,
      /particle_count           (outputs)                        points in each output: rows hold that many, then zeros,
      /grid/nodes               (outputs, vertices..., 1 + d)    nodal mass and velocity projected from the points,
-     /time                     (outputs)                        written with the XDMF file,
+     /time                     (outputs)                        the time of each output, written last: an output is complete
+                                                                when /time holds its row (a kill during an output leaves the
+                                                                other datasets a row longer; readers go by /time),
      /exact/<field>            (points)                         exact solution at the final points, if the scene has one.
    The point datasets are written here with HDF5 (chunked, unlimited in outputs and points) rather than by VecView,
    whose datasets have a fixed number of points: point splitting (src/modules/split.c) adds points during the run,
@@ -179,6 +181,52 @@ static PetscErrorCode MPMWritePointRow(MPM mpm, const char name[], PetscInt bs, 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Row k of the 1D dataset /<name> (outputs): /time and /particle_count, written by rank 0 after every other dataset
+   of output k, so that an output is complete when /time holds its row (a run killed during an output leaves the
+   others one row longer, and readers go by /time). */
+static PetscErrorCode MPMWriteOutputRow(MPM mpm, const char name[], PetscReal value)
+{
+  hid_t       file, dset, fspace, mspace;
+  hsize_t     dims[1] = {(hsize_t)mpm->noutputs + 1}, start[1] = {(hsize_t)mpm->noutputs}, count[1] = {1};
+  PetscMPIInt rank;
+
+  PetscFunctionBegin;
+  PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
+  PetscCall(PetscViewerHDF5GetFileId(mpm->h5, &file));
+  if (H5Lexists(file, name, H5P_DEFAULT) > 0) {
+    dset = H5Dopen2(file, name, H5P_DEFAULT);
+    PetscCheck(dset >= 0 && H5Dset_extent(dset, dims) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot extend /%s in %s/petmpm.h5", name, mpm->outdir);
+  } else {
+    const hsize_t maxdims[1] = {H5S_UNLIMITED}, chunk[1] = {64};
+    hid_t         dcpl = H5Pcreate(H5P_DATASET_CREATE);
+    PetscCheck(H5Pset_chunk(dcpl, 1, chunk) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: dataset properties of /%s", name);
+    fspace = H5Screate_simple(1, dims, maxdims);
+    dset   = H5Dcreate2(file, name, H5T_NATIVE_DOUBLE, fspace, H5P_DEFAULT, dcpl, H5P_DEFAULT);
+    H5Sclose(fspace);
+    H5Pclose(dcpl);
+    PetscCheck(dset >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot create /%s in %s/petmpm.h5", name, mpm->outdir);
+  }
+  fspace = H5Dget_space(dset);
+  mspace = H5Screate_simple(1, count, NULL);
+  if (rank) {
+    H5Sselect_none(fspace);
+    H5Sselect_none(mspace);
+  } else
+    H5Sselect_hyperslab(fspace, H5S_SELECT_SET, start, NULL, count, NULL);
+  {
+    hid_t  dxpl = H5Pcreate(H5P_DATASET_XFER);
+    herr_t err;
+    H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE);
+    err = H5Dwrite(dset, H5T_NATIVE_DOUBLE, mspace, fspace, dxpl, &value);
+    H5Pclose(dxpl);
+    PetscCheck(err >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot write /%s in %s/petmpm.h5", name, mpm->outdir);
+  }
+  H5Sclose(mspace);
+  H5Sclose(fspace);
+  H5Dclose(dset);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Every point field marked output, and the positions padded to three components for the XDMF geometry. */
 static PetscErrorCode MPMWritePoints(MPM mpm)
 {
@@ -257,6 +305,8 @@ PetscErrorCode MPMOutputWrite(MPM mpm, PetscInt step, PetscReal t)
   }
   PetscCall(MPMWritePoints(mpm));
   PetscCall(MPMWriteGrid(mpm));
+  PetscCall(MPMWriteOutputRow(mpm, "particle_count", (PetscReal)mpm->output_count[mpm->noutputs]));
+  PetscCall(MPMWriteOutputRow(mpm, "time", t)); /* last: the output is complete */
   mpm->output_times[mpm->noutputs++] = t;
   mpm->last_output_step              = step;
   PetscCall(PetscViewerFlush(mpm->h5));
@@ -309,32 +359,6 @@ PetscErrorCode MPMOutputWriteExact(MPM mpm)
 PetscErrorCode MPMOutputClose(MPM mpm)
 {
   PetscFunctionBegin;
-  if (mpm->h5 && mpm->noutputs) {
-    Vec         t;
-    PetscMPIInt rank;
-    PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
-    PetscCall(PetscViewerHDF5PopTimestepping(mpm->h5));
-    PetscCall(VecCreateMPI(mpm->comm, rank ? 0 : mpm->noutputs, PETSC_DETERMINE, &t));
-    PetscCall(PetscObjectSetName((PetscObject)t, "time"));
-    if (!rank) {
-      PetscScalar *a;
-      PetscCall(VecGetArray(t, &a));
-      for (PetscInt s = 0; s < mpm->noutputs; s++) a[s] = mpm->output_times[s];
-      PetscCall(VecRestoreArray(t, &a));
-    }
-    PetscCall(PetscViewerHDF5PushGroup(mpm->h5, "/"));
-    PetscCall(VecView(t, mpm->h5));
-    if (!rank) {
-      PetscScalar *a;
-      PetscCall(VecGetArray(t, &a));
-      for (PetscInt s = 0; s < mpm->noutputs; s++) a[s] = mpm->output_count[s];
-      PetscCall(VecRestoreArray(t, &a));
-    }
-    PetscCall(PetscObjectSetName((PetscObject)t, "particle_count"));
-    PetscCall(VecView(t, mpm->h5));
-    PetscCall(PetscViewerHDF5PopGroup(mpm->h5));
-    PetscCall(VecDestroy(&t));
-  }
   PetscCall(PetscViewerDestroy(&mpm->h5));
   PetscCall(DMDestroy(&mpm->daout));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -181,7 +181,7 @@ PetscErrorCode MPMSolve(MPM mpm)
   if (mpm->failed) { /* the one place that writes the last state of a run that cannot go on */
     PetscCall(PetscLogStagePush(mpm->log.io));
     PetscCall(MPMOutputWrite(mpm, mpm->steps, mpm->time));
-    PetscCall(MPMOutputClose(mpm)); /* /time and /particle_count, so the last state reads like a finished run's */
+    PetscCall(MPMOutputClose(mpm)); /* the last state is a complete output, as a finished run's */
     PetscCall(PetscLogStagePop());
     SETERRQ(mpm->comm, PETSC_ERR_NOT_CONVERGED, "%s; last state written to %s", mpm->failure, mpm->outdir);
   }

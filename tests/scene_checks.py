@@ -271,7 +271,8 @@ def test_failure():
 def test_interrupt():
     """SIGTERM during the time loop (on one rank and on two): the step finishes, the last state is written as a complete
     output (every dataset as long as /time, the XDMF naming each output) and the run exits non-zero with a message
-    naming the signal, the step and the output folder."""
+    naming the signal, the step and the output folder. SIGKILL (no chance to react): every output before it is
+    complete, /time says which (it is written last in each output) and the XDMF names only complete ones."""
     import h5py
     import signal
     for ranks in (1, 2):
@@ -293,6 +294,21 @@ def test_interrupt():
                 counts = f["particle_count"][:]
             times = [float(e.get("Value")) for e in ET.parse(os.path.join(d, "petmpm.xmf")).iter("Time")]
             check(nt >= 2 and all(n == nt for n in lens.values()) and len(counts) == nt and len(times) == nt, f"{ranks} rank(s): a complete last output: {nt} times, datasets {sorted(set(lens.values()))}, XDMF {len(times)}")
+    with tempfile.TemporaryDirectory() as d:  # SIGKILL: the outputs before it stay complete and readable
+        cmd = [EXE, "-options_file", os.path.join(SRC, "inputs", "dam_break_2d.opts"), "-mpm_cells", "240,100", "-mpm_progress", "0.2", "-mpm_output_interval", "3", "-mpm_output", d]
+        p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=ENV)
+        for line in p.stdout:
+            if " t = " in line and "to go" in line:
+                break
+        p.send_signal(signal.SIGKILL)
+        p.communicate(timeout=60)
+        with h5py.File(os.path.join(d, "petmpm.h5"), "r") as f:
+            t = f["time"][:]
+            lens = {k: f["particle_fields/" + k].shape[0] for k in f["particle_fields"]}
+            counts = f["particle_count"][:]
+        times = [float(e.get("Value")) for e in ET.parse(os.path.join(d, "petmpm.xmf")).iter("Time")]
+        ok = len(t) >= 2 and all(len(t) <= n <= len(t) + 1 for n in lens.values()) and len(counts) >= len(t) and len(times) <= len(t) and times == [float(x) for x in t[:len(times)]]
+        check(ok, f"SIGKILL: the file opens, {len(t)} complete outputs by /time, datasets {sorted(set(lens.values()))} rows, XDMF {len(times)} outputs, all complete")
 
 
 def flyer_fields(out):
