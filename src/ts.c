@@ -144,9 +144,9 @@ PetscErrorCode MPMCreateTS(MPM mpm)
     PetscCall(PetscOptionsHasName(NULL, NULL, "-ts_dt", &dt));
     PetscCheck(!dt, mpm->comm, PETSC_ERR_USER_INPUT, "-ts_dt: petmpm sets every step from the CFL number and its limits (-mpm_cfl, -mpm_dt_volume, -mpm_dt_acceleration); remove -ts_dt");
     PetscCall(TSGetMaxTime(mpm->ts, &tmax));
-    PetscCall(MPMOptionsCheckRange("-ts_max_time", tmax, 0.0, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
+    PetscCall(MPMOptionsCheckRange("-ts_max_time", tmax, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE)); /* 0: set-up and the initial state only */
     PetscCall(TSGetMaxSteps(mpm->ts, &nmax));
-    PetscCheck(nmax >= 1, mpm->comm, PETSC_ERR_USER_INPUT, "-ts_max_steps %" PetscInt_FMT " is out of range: valid is >= 1", nmax);
+    PetscCheck(nmax >= 0, mpm->comm, PETSC_ERR_USER_INPUT, "-ts_max_steps %" PetscInt_FMT " is out of range: valid is >= 0 (0: set-up and the initial state only)", nmax);
     PetscCheck(!mpm->ntout || mpm->tout[mpm->ntout - 1] <= tmax * (1.0 + 1e-12), mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_output_times: %g s is after the end of the run, -ts_max_time %g s", (double)mpm->tout[mpm->ntout - 1], (double)tmax);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
