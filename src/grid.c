@@ -70,7 +70,7 @@ PetscErrorCode MPMCreateGrid(MPM mpm)
     } else
       PetscCall(DMCreateLocalVector(mpm->da, &mpm->lnodes));
   }
-  PetscCall(PetscMalloc2(g->ncells, &mpm->cellV, g->ncells, &mpm->cellS));
+  PetscCall(PetscCalloc2(g->ncells, &mpm->cellV, g->ncells, &mpm->cellS)); /* zero: the relaxation module expects it between its calls */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -189,6 +189,15 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
     PetscCheck(!dir, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_report %s is a directory; valid is a file name (DIR/report.json)", mpm->report);
   }
   PetscCall(PetscOptionsBool("-mpm_view", "Print the configuration of the run", "", mpm->view, &mpm->view, NULL));
+  PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-mpm_checkpoint_interval", "Steps between checkpoints DIR/checkpoint-STEP.h5 (the last two kept) [-], >= 0 (0: none)", &mpm->ckpt_interval, 0, PETSC_MAX_INT));
+  PetscCall(PetscOptionsReal("-mpm_checkpoint_wall", "Seconds of wall time between checkpoints [s], >= 0 (0: none)", "", mpm->ckpt_wall, &mpm->ckpt_wall, NULL));
+  PetscCall(MPMOptionsCheckRange("-mpm_checkpoint_wall", mpm->ckpt_wall, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+  PetscCall(PetscOptionsString("-mpm_restart", "Continue the run from this checkpoint (DIR/checkpoint-STEP.h5) with the scene's options", "", mpm->restart, mpm->restart, sizeof(mpm->restart), NULL));
+  if (mpm->restart[0]) {
+    PetscBool exists;
+    PetscCall(PetscTestFile(mpm->restart, 'r', &exists));
+    PetscCheck(exists, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_restart %s: no such checkpoint file", mpm->restart);
+  }
   PetscCall(PetscOptionsReal("-mpm_progress", "Seconds of wall time between progress lines (time, step, dt, points, time to go) [s], >= 0 (0: none)", "", mpm->progress, &mpm->progress, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_progress", mpm->progress, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
   PetscCall(PetscOptionsReal("-mpm_stop_at_rest", "Stop the run once the kinetic energy has fallen below this fraction of its initial value (an impact that has come to rest) [-], in [0, 1) (0: run to -ts_max_time)", "", mpm->rest_fraction,
@@ -282,6 +291,7 @@ PetscErrorCode MPMSetUp(MPM mpm)
   PetscCall(MPMOutputOpen(mpm));
   PetscCall(MPMGlobalSums(mpm, &mpm->mass0, &mpm->energy0, mpm->momentum0, &mpm->kinetic0));
   mpm->potential0 = mpm->potential;
+  if (mpm->restart[0]) PetscCall(MPMRestartRead(mpm)); /* the checkpoint's points and state replace the seeded ones */
   if (mpm->view) PetscCall(MPMView(mpm, PETSC_VIEWER_STDOUT_(mpm->comm)));
   PetscCall(PetscLogStagePop());
   mpm->wall_setup = MPI_Wtime() - t0;

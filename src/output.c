@@ -71,7 +71,11 @@ PetscErrorCode MPMOutputOpen(MPM mpm)
     PetscCall(MPMEnsureWritableDir(mpm->comm, slash == dir ? "/" : dir, "-mpm_report"));
   }
   PetscCall(PetscSNPrintf(file, sizeof(file), "%s/petmpm.h5", mpm->outdir));
-  PetscCall(PetscViewerHDF5Open(mpm->comm, file, FILE_MODE_WRITE, &mpm->h5));
+  {
+    PetscBool append = PETSC_FALSE; /* a restart continues the run's file */
+    if (mpm->restart[0]) PetscCall(PetscTestFile(file, 'r', &append));
+    PetscCall(PetscViewerHDF5Open(mpm->comm, file, append ? FILE_MODE_APPEND : FILE_MODE_WRITE, &mpm->h5));
+  }
   PetscCall(PetscViewerHDF5PushTimestepping(mpm->h5));
   PetscCall(DMDACreateCompatibleDMDA(mpm->da, 1 + mpm->grid.dim, &mpm->daout));
   PetscCall(DMDASetFieldName(mpm->daout, 0, "mass"));

@@ -201,8 +201,13 @@ struct _p_MPM {
   PetscReal      rest_fraction;         /* -mpm_stop_at_rest: stop once the kinetic energy is below this fraction of kinetic0, 0: never */
   PetscReal      rest_time;             /* when it did [s], -1 before */
   PetscReal      wall_loop, wall_setup, wall_output;
-  PetscReal      progress;                      /* -mpm_progress: seconds of wall time between progress lines, 0: none */
-  PetscReal      progress_start, progress_last; /* MPI_Wtime at the loop's start and at the last line                  */
+  PetscReal      progress;                              /* -mpm_progress: seconds of wall time between progress lines, 0: none */
+  PetscReal      progress_start, progress_last;         /* MPI_Wtime at the loop's start and at the last line                  */
+  PetscInt       ckpt_interval;                         /* -mpm_checkpoint_interval: steps between checkpoints, 0: none */
+  PetscReal      ckpt_wall;                             /* -mpm_checkpoint_wall: seconds of wall time between checkpoints, 0: none */
+  PetscReal      ckpt_last;                             /* MPI_Wtime of the last checkpoint (or of the loop's start) */
+  char           ckpt_file[2][PETSC_MAX_PATH_LEN + 64]; /* the last two checkpoints, oldest first (rank 0)     */
+  char           restart[PETSC_MAX_PATH_LEN];           /* -mpm_restart: the checkpoint the run continues from  */
   PetscInt       steps;
   PetscReal      point_steps; /* sum over the steps of the global number of points (the cost measure) */
   PetscReal      time;
@@ -311,6 +316,8 @@ PETSC_INTERN PetscErrorCode MPMCreateTS(MPM);
 PETSC_INTERN PetscErrorCode MPMOutputOpen(MPM);
 PETSC_INTERN PetscErrorCode MPMOutputWrite(MPM, PetscInt, PetscReal);
 PETSC_INTERN PetscErrorCode MPMOutputClose(MPM);
+PETSC_INTERN PetscErrorCode MPMCheckpointWrite(MPM);
+PETSC_INTERN PetscErrorCode MPMRestartRead(MPM);
 PETSC_INTERN PetscErrorCode MPMGlobalSums(MPM, PetscReal *, PetscReal *, PetscReal[], PetscReal *);
 PETSC_INTERN PetscErrorCode MPMSceneSetFromOptions(MPM, PetscOptionItems *);
 PETSC_INTERN PetscErrorCode MPMSceneView(MPM, PetscViewer);

@@ -97,10 +97,13 @@ static PetscErrorCode MPMTSPostStep(TS ts)
                           (double)el, (double)(frac > 0.0 ? el * (1.0 - frac) / frac : 0.0)));
   }
   {
-    PetscMPIInt sig = (PetscMPIInt)MPMSignalCaught;
-    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &sig, 1, MPI_INT, MPI_MAX, mpm->comm));
-    if (sig) {
-      PetscCall(MPMSetFailure(mpm, "Interrupted by %s after step %" PetscInt_FMT " (t = %g s)", sig == SIGTERM ? "SIGTERM" : (sig == SIGINT ? "SIGINT" : "a signal"), step, (double)t));
+    PetscMPIInt sig[2] = {(PetscMPIInt)MPMSignalCaught, mpm->ckpt_wall > 0.0 && MPI_Wtime() - mpm->ckpt_last >= mpm->ckpt_wall}; /* rank 0's clock decides */
+    PetscCallMPI(MPI_Bcast(&sig[1], 1, MPI_INT, 0, mpm->comm));
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, sig, 1, MPI_INT, MPI_MAX, mpm->comm));
+    if (sig[0] || sig[1] || (mpm->ckpt_interval > 0 && step % mpm->ckpt_interval == 0)) PetscCall(MPMCheckpointWrite(mpm));
+    if (sig[0]) {
+      PetscCall(MPMSetFailure(mpm, "Interrupted by %s after step %" PetscInt_FMT " (t = %g s); checkpoint %s/checkpoint-%" PetscInt_FMT ".h5 (continue with -mpm_restart)", sig[0] == SIGTERM ? "SIGTERM" : (sig[0] == SIGINT ? "SIGINT" : "a signal"),
+                              step, (double)t, mpm->outdir, step));
       PetscCall(TSSetConvergedReason(ts, TS_DIVERGED_STEP_REJECTED));
       PetscFunctionReturn(PETSC_SUCCESS);
     }
@@ -158,13 +161,15 @@ PetscErrorCode MPMSolve(MPM mpm)
 
   PetscFunctionBegin;
   PetscCall(PetscLogStagePush(mpm->log.io));
-  PetscCall(MPMOutputWrite(mpm, 0, 0.0));
-  if (mpm->exact && mpm->exact->check_start) PetscCall(MPMComputeChecks(mpm));
+  if (!mpm->restart[0]) { /* a restart continues after the checkpoint's outputs */
+    PetscCall(MPMOutputWrite(mpm, 0, 0.0));
+    if (mpm->exact && mpm->exact->check_start) PetscCall(MPMComputeChecks(mpm));
+  }
   PetscCall(PetscLogStagePop());
   PetscCall(PetscLogStagePush(mpm->log.loop));
   t0                  = MPI_Wtime();
   out0                = mpm->wall_output;
-  mpm->progress_start = mpm->progress_last = t0;
+  mpm->progress_start = mpm->progress_last = mpm->ckpt_last = t0;
   {
     struct sigaction sa, old[2];
     memset(&sa, 0, sizeof(sa));

@@ -1,0 +1,329 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* Checkpoints and restart.
+     -mpm_checkpoint_interval N   every N steps, and
+     -mpm_checkpoint_wall S       every S seconds of wall time (rank 0's clock, agreed after each step),
+   write DIR/checkpoint-STEP.h5 (the last two are kept; SIGTERM and SIGINT write one too); -mpm_restart FILE continues
+   the run from one, with the scene's options (the scene must be the one that wrote it: the same grid and fields).
+   A checkpoint holds the whole state the next step reads: every point field the scene carries, in each rank's
+   order; the time, the step, the last step size (the leapfrog kick and the acceleration limit read it), the next
+   point id, the run's initial sums, the outputs so far, the checks, and each rank's diagnostics. The grid is not in
+   it: every step rebuilds it from the points.
+     /points/<field>  (N bs)   the points of rank r at the offset of ranks < r
+     /counts          (ranks)  points per rank
+     /state           (MPM_CKPT_NSTATE)
+     /diagnostics     (ranks x MPM_CKPT_NDIAG)
+     /outputs         (outputs x 2: time, points);  /checks (checks x 2: value, reference), /check_names (checks x MPM_MAX_NAME)
+   On the rank count that wrote it, each rank takes back its own points in their order, so the run continues bit for
+   bit as if never interrupted; on another rank count the points are dealt out evenly and migrated to the ranks that
+   own their cells (the same answer to round-off: sums run in another order). The output file DIR/petmpm.h5 is
+   reopened and continues at the checkpoint's output count (rows a later output wrote before the interruption are
+   overwritten), so output and report read as one run. */
+#include "petmpmimpl.h"
+#include <petscviewerhdf5.h>
+#include <unistd.h>
+
+#define MPM_CKPT_NSTATE 24
+#define MPM_CKPT_NDIAG 26
+
+/* A 1D dataset of N doubles of which this rank writes n at offset. */
+static PetscErrorCode MPMCkptWrite(hid_t file, const char name[], hsize_t N, hsize_t offset, hsize_t n, const PetscReal *a)
+{
+  hid_t  space = H5Screate_simple(1, &N, NULL), mspace = H5Screate_simple(1, &n, NULL), dset, dxpl = H5Pcreate(H5P_DATASET_XFER);
+  herr_t err;
+
+  PetscFunctionBegin;
+  dset = H5Dcreate2(file, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  PetscCheck(dset >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot create %s in the checkpoint", name);
+  if (!N) { /* an empty dataset has no storage to write to */
+    H5Pclose(dxpl);
+    H5Dclose(dset);
+    H5Sclose(mspace);
+    H5Sclose(space);
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  if (n)
+    H5Sselect_hyperslab(space, H5S_SELECT_SET, &offset, NULL, &n, NULL);
+  else {
+    H5Sselect_none(space);
+    H5Sselect_none(mspace);
+  }
+  H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE);
+  err = H5Dwrite(dset, H5T_NATIVE_DOUBLE, mspace, space, dxpl, a);
+  H5Pclose(dxpl);
+  H5Dclose(dset);
+  H5Sclose(mspace);
+  H5Sclose(space);
+  PetscCheck(err >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot write %s in the checkpoint", name);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Reads n doubles at offset of the 1D dataset name; *N (if not NULL) gets its length. */
+static PetscErrorCode MPMCkptRead(hid_t file, const char name[], hsize_t offset, hsize_t n, PetscReal *a, hsize_t *N)
+{
+  hid_t   dset = H5Dopen2(file, name, H5P_DEFAULT), space, mspace, dxpl;
+  hsize_t len;
+  herr_t  err;
+
+  PetscFunctionBegin;
+  PetscCheck(dset >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "-mpm_restart: the checkpoint has no %s: it is not a petmpm checkpoint of this scene", name);
+  space = H5Dget_space(dset);
+  H5Sget_simple_extent_dims(space, &len, NULL);
+  if (N) *N = len;
+  PetscCheck(offset + n <= len, PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "-mpm_restart: %s of the checkpoint holds %llu values, not %llu", name, (unsigned long long)len, (unsigned long long)(offset + n));
+  if (!len) {
+    H5Sclose(space);
+    H5Dclose(dset);
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  mspace = H5Screate_simple(1, &n, NULL);
+  if (n)
+    H5Sselect_hyperslab(space, H5S_SELECT_SET, &offset, NULL, &n, NULL);
+  else {
+    H5Sselect_none(space);
+    H5Sselect_none(mspace);
+  }
+  dxpl = H5Pcreate(H5P_DATASET_XFER);
+  H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE);
+  err = H5Dread(dset, H5T_NATIVE_DOUBLE, mspace, space, dxpl, a);
+  H5Pclose(dxpl);
+  H5Sclose(mspace);
+  H5Sclose(space);
+  H5Dclose(dset);
+  PetscCheck(err >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "-mpm_restart: cannot read %s of the checkpoint", name);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static hid_t MPMCkptOpen(MPI_Comm comm, const char file[], PetscBool create)
+{
+  hid_t fapl = H5Pcreate(H5P_FILE_ACCESS), f;
+
+  H5Pset_fapl_mpio(fapl, comm, MPI_INFO_NULL);
+  f = create ? H5Fcreate(file, H5F_ACC_TRUNC, H5P_DEFAULT, fapl) : H5Fopen(file, H5F_ACC_RDONLY, fapl);
+  H5Pclose(fapl);
+  return f;
+}
+
+/* The diagnostics as doubles (the sums of this rank and the global counters alike). */
+static void MPMCkptDiag(MPMDiagnostics *dg, PetscReal a[], PetscBool store)
+{
+  PetscReal     *v[MPM_CKPT_NDIAG] = {&dg->isentrope_energy, &dg->plastic_work, &dg->popped_sum, &dg->first_popped_time, &dg->first_popped_x[0], &dg->first_popped_x[1], &dg->first_popped_x[2]};
+  PetscInt      *w[]               = {&dg->isentrope_points,  &dg->dt_limit[0],      &dg->dt_limit[1],  &dg->dt_limit[2],   &dg->dt_limit[3],      &dg->vacuum_points_max, &dg->empty_cells_max, &dg->empty_cells0,
+                                      &dg->first_vacuum_step, &dg->first_empty_step, &dg->points_split, &dg->split_refused, &dg->wall_reflections, &dg->domain_resets,     &dg->popping_checks,  &dg->popped_max};
+  const PetscInt nv = 7, nw = (PetscInt)(sizeof(w) / sizeof(w[0]));
+
+  for (PetscInt i = 0; i < nv; i++) {
+    if (store)
+      a[i] = *v[i];
+    else
+      *v[i] = a[i];
+  }
+  for (PetscInt i = 0; i < nw; i++) {
+    if (store)
+      a[nv + i] = (PetscReal)*w[i];
+    else
+      *w[i] = (PetscInt)a[nv + i];
+  }
+}
+
+/* The counters that are this rank's sums (the report adds them over ranks): their indices in MPMCkptDiag's order. */
+static const PetscInt MPMCkptDiagSums[] = {0, 1, 7, 17, 18, 19, 20};
+
+PetscErrorCode MPMCheckpointWrite(MPM mpm)
+{
+  const PetscInt d = mpm->grid.dim;
+  char           file[PETSC_MAX_PATH_LEN + 64];
+  PetscMPIInt    rank, size;
+  PetscInt       n, offset = 0, N;
+  hid_t          f;
+  MPMPoints      pts;
+  PetscReal      t0 = MPI_Wtime();
+
+  PetscFunctionBegin;
+  PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
+  PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
+  PetscCall(PetscSNPrintf(file, sizeof(file), "%s/checkpoint-%" PetscInt_FMT ".h5", mpm->outdir, mpm->steps));
+  f = MPMCkptOpen(mpm->comm, file, PETSC_TRUE);
+  PetscCheck(f >= 0, mpm->comm, PETSC_ERR_FILE_OPEN, "Cannot write the checkpoint %s", file);
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  n = pts.n;
+  PetscCallMPI(MPI_Exscan(&n, &offset, 1, MPIU_INT, MPI_SUM, mpm->comm));
+  PetscCall(MPIU_Allreduce(&n, &N, 1, MPIU_INT, MPI_SUM, mpm->comm));
+  H5Gclose(H5Gcreate2(f, "points", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  for (PetscInt k = 0; k < mpm->nfields; k++) {
+    const PetscInt bs = MPMFieldBlockSize(mpm->field[k].bs, d);
+    char           name[MPM_MAX_NAME + 16];
+    if (!mpm->field_on[k]) continue;
+    PetscCall(PetscSNPrintf(name, sizeof(name), "points/%s", mpm->field[k].name));
+    PetscCall(MPMCkptWrite(f, name, (hsize_t)(N * bs), (hsize_t)(offset * bs), (hsize_t)(n * bs), pts.f[k]));
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  {
+    const PetscReal cnt                 = (PetscReal)n;
+    PetscReal       st[MPM_CKPT_NSTATE] = {mpm->time,
+                                           (PetscReal)mpm->steps,
+                                           mpm->dt,
+                                           mpm->next_id,
+                                           mpm->point_steps,
+                                           mpm->mass0,
+                                           mpm->energy0,
+                                           mpm->momentum0[0],
+                                           mpm->momentum0[1],
+                                           mpm->momentum0[2],
+                                           mpm->kinetic0,
+                                           mpm->potential0,
+                                           (PetscReal)mpm->npoints0,
+                                           (PetscReal)mpm->npoints,
+                                           mpm->rest_time,
+                                           (PetscReal)mpm->noutputs,
+                                           (PetscReal)mpm->itout,
+                                           (PetscReal)mpm->last_output_step,
+                                           (PetscReal)mpm->nchecks,
+                                           (PetscReal)size,
+                                           (PetscReal)d,
+                                           (PetscReal)mpm->grid.cells[0],
+                                           (PetscReal)mpm->grid.cells[1],
+                                           (PetscReal)mpm->grid.cells[2]};
+    PetscReal       dg[MPM_CKPT_NDIAG]  = {0}, *out, *chk;
+    PetscCall(MPMCkptWrite(f, "counts", (hsize_t)size, (hsize_t)rank, 1, &cnt));
+    PetscCall(MPMCkptWrite(f, "state", MPM_CKPT_NSTATE, 0, rank ? 0 : MPM_CKPT_NSTATE, st));
+    MPMCkptDiag(&mpm->diag, dg, PETSC_TRUE);
+    PetscCall(MPMCkptWrite(f, "diagnostics", (hsize_t)size * MPM_CKPT_NDIAG, (hsize_t)rank * MPM_CKPT_NDIAG, MPM_CKPT_NDIAG, dg));
+    PetscCall(PetscMalloc2(2 * mpm->noutputs + 1, &out, 2 * mpm->nchecks + 1, &chk));
+    for (PetscInt s = 0; s < mpm->noutputs; s++) {
+      out[2 * s]     = mpm->output_times[s];
+      out[2 * s + 1] = (PetscReal)mpm->output_count[s];
+    }
+    for (PetscInt c = 0; c < mpm->nchecks; c++) {
+      chk[2 * c]     = mpm->checks[c].value;
+      chk[2 * c + 1] = mpm->checks[c].reference;
+    }
+    PetscCall(MPMCkptWrite(f, "outputs", (hsize_t)(2 * mpm->noutputs), 0, rank ? 0 : (hsize_t)(2 * mpm->noutputs), out));
+    PetscCall(MPMCkptWrite(f, "checks", (hsize_t)(2 * mpm->nchecks), 0, rank ? 0 : (hsize_t)(2 * mpm->nchecks), chk));
+    { /* the check names as doubles of their characters: one dataset type for all */
+      PetscReal *cn;
+      PetscCall(PetscMalloc1(mpm->nchecks * MPM_MAX_NAME + 1, &cn));
+      for (PetscInt c = 0; c < mpm->nchecks; c++)
+        for (PetscInt i = 0; i < MPM_MAX_NAME; i++) cn[c * MPM_MAX_NAME + i] = (PetscReal)(unsigned char)mpm->checks[c].name[i];
+      PetscCall(MPMCkptWrite(f, "check_names", (hsize_t)(mpm->nchecks * MPM_MAX_NAME), 0, rank ? 0 : (hsize_t)(mpm->nchecks * MPM_MAX_NAME), cn));
+      PetscCall(PetscFree(cn));
+    }
+    PetscCall(PetscFree2(out, chk));
+  }
+  PetscCheck(H5Fclose(f) >= 0, mpm->comm, PETSC_ERR_FILE_WRITE, "Cannot close the checkpoint %s", file);
+  if (!rank) { /* keep the last two */
+    if (mpm->ckpt_file[0][0]) (void)unlink(mpm->ckpt_file[0]);
+    PetscCall(PetscStrncpy(mpm->ckpt_file[0], mpm->ckpt_file[1], sizeof(mpm->ckpt_file[0])));
+    PetscCall(PetscStrncpy(mpm->ckpt_file[1], file, sizeof(mpm->ckpt_file[1])));
+  }
+  mpm->ckpt_last = MPI_Wtime();
+  mpm->wall_output += mpm->ckpt_last - t0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* After the scene's set-up (points seeded, output open for appending): the checkpoint's points and state replace it. */
+PetscErrorCode MPMRestartRead(MPM mpm)
+{
+  const PetscInt d = mpm->grid.dim;
+  PetscMPIInt    rank, size;
+  PetscReal      st[MPM_CKPT_NSTATE], *cnt;
+  PetscInt       n, offset = 0, N, wsize;
+  hid_t          f;
+  MPMPoints      pts;
+
+  PetscFunctionBegin;
+  PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
+  PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
+  f = MPMCkptOpen(mpm->comm, mpm->restart, PETSC_FALSE);
+  PetscCheck(f >= 0, mpm->comm, PETSC_ERR_FILE_OPEN, "-mpm_restart %s: cannot open the checkpoint", mpm->restart);
+  PetscCall(MPMCkptRead(f, "state", 0, MPM_CKPT_NSTATE, st, NULL));
+  wsize = (PetscInt)st[19];
+  PetscCheck((PetscInt)st[20] == d && (PetscInt)st[21] == mpm->grid.cells[0] && (PetscInt)st[22] == mpm->grid.cells[1] && (PetscInt)st[23] == mpm->grid.cells[2], mpm->comm, PETSC_ERR_USER_INPUT,
+             "-mpm_restart %s: the checkpoint is of a %dD grid of %d x %d x %d cells, the scene's is %" PetscInt_FMT "D, %" PetscInt_FMT " x %" PetscInt_FMT " x %" PetscInt_FMT, mpm->restart, (int)st[20], (int)st[21], (int)st[22], (int)st[23], d,
+             mpm->grid.cells[0], mpm->grid.cells[1], mpm->grid.cells[2]);
+  PetscCall(PetscMalloc1(wsize, &cnt));
+  PetscCall(MPMCkptRead(f, "counts", 0, (hsize_t)wsize, cnt, NULL));
+  N = 0;
+  for (PetscInt r = 0; r < wsize; r++) N += (PetscInt)cnt[r];
+  if (wsize == size) { /* each rank its own points, in their order */
+    n = (PetscInt)cnt[rank];
+    for (PetscInt r = 0; r < rank; r++) offset += (PetscInt)cnt[r];
+  } else { /* dealt out evenly, then migrated */
+    n      = N / size + (rank < N % size ? 1 : 0);
+    offset = rank * (N / size) + PetscMin(rank, N % size);
+  }
+  PetscCall(PetscFree(cnt));
+  PetscCall(DMSwarmSetLocalSizes(mpm->swarm, n, PetscMax(16, n / 100)));
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt k = 0; k < mpm->nfields; k++) {
+    const PetscInt bs = MPMFieldBlockSize(mpm->field[k].bs, d);
+    char           name[MPM_MAX_NAME + 16];
+    hsize_t        len;
+    if (!mpm->field_on[k]) continue;
+    PetscCall(PetscSNPrintf(name, sizeof(name), "points/%s", mpm->field[k].name));
+    PetscCall(MPMCkptRead(f, name, (hsize_t)(offset * bs), (hsize_t)(n * bs), pts.f[k], &len));
+    PetscCheck(len == (hsize_t)(N * bs), mpm->comm, PETSC_ERR_FILE_READ, "-mpm_restart %s: field %s holds %llu values for %" PetscInt_FMT " points", mpm->restart, mpm->field[k].name, (unsigned long long)len, N);
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  { /* diagnostics: each rank its own; on another rank count rank 0 takes the sums, every rank the global counters */
+    PetscReal *dg;
+    PetscCall(PetscMalloc1(wsize * MPM_CKPT_NDIAG, &dg));
+    PetscCall(MPMCkptRead(f, "diagnostics", 0, (hsize_t)(wsize * MPM_CKPT_NDIAG), dg, NULL));
+    if (wsize == size)
+      MPMCkptDiag(&mpm->diag, &dg[rank * MPM_CKPT_NDIAG], PETSC_FALSE);
+    else {
+      for (size_t i = 0; i < PETSC_STATIC_ARRAY_LENGTH(MPMCkptDiagSums); i++) {
+        const PetscInt j = MPMCkptDiagSums[i];
+        for (PetscInt r = 1; r < wsize; r++) dg[j] += dg[r * MPM_CKPT_NDIAG + j];
+        if (rank) dg[j] = 0.0;
+      }
+      MPMCkptDiag(&mpm->diag, dg, PETSC_FALSE);
+    }
+    PetscCall(PetscFree(dg));
+  }
+  mpm->time             = st[0];
+  mpm->steps            = (PetscInt)st[1];
+  mpm->dt               = st[2];
+  mpm->next_id          = st[3];
+  mpm->point_steps      = st[4];
+  mpm->mass0            = st[5];
+  mpm->energy0          = st[6];
+  mpm->momentum0[0]     = st[7];
+  mpm->momentum0[1]     = st[8];
+  mpm->momentum0[2]     = st[9];
+  mpm->kinetic0         = st[10];
+  mpm->potential0       = st[11];
+  mpm->npoints0         = (PetscInt)st[12];
+  mpm->npoints          = (PetscInt)st[13];
+  mpm->rest_time        = st[14];
+  mpm->noutputs         = (PetscInt)st[15];
+  mpm->itout            = (PetscInt)st[16];
+  mpm->last_output_step = (PetscInt)st[17];
+  mpm->nchecks          = (PetscInt)st[18];
+  PetscCheck(mpm->nchecks <= MPM_MAX_CHECKS, mpm->comm, PETSC_ERR_FILE_READ, "-mpm_restart %s: %" PetscInt_FMT " checks", mpm->restart, mpm->nchecks);
+  {
+    PetscReal *out, *chk, *cn;
+    PetscCall(PetscMalloc3(2 * mpm->noutputs + 1, &out, 2 * mpm->nchecks + 1, &chk, mpm->nchecks * MPM_MAX_NAME + 1, &cn));
+    PetscCall(MPMCkptRead(f, "outputs", 0, (hsize_t)(2 * mpm->noutputs), out, NULL));
+    PetscCall(MPMCkptRead(f, "checks", 0, (hsize_t)(2 * mpm->nchecks), chk, NULL));
+    PetscCall(MPMCkptRead(f, "check_names", 0, (hsize_t)(mpm->nchecks * MPM_MAX_NAME), cn, NULL));
+    PetscCall(PetscFree2(mpm->output_times, mpm->output_count));
+    mpm->output_times_cap = PetscMax(16, 2 * mpm->noutputs);
+    PetscCall(PetscMalloc2(mpm->output_times_cap, &mpm->output_times, mpm->output_times_cap, &mpm->output_count));
+    for (PetscInt s = 0; s < mpm->noutputs; s++) {
+      mpm->output_times[s] = out[2 * s];
+      mpm->output_count[s] = (PetscInt)out[2 * s + 1];
+    }
+    for (PetscInt c = 0; c < mpm->nchecks; c++) {
+      mpm->checks[c].value     = chk[2 * c];
+      mpm->checks[c].reference = chk[2 * c + 1];
+      for (PetscInt i = 0; i < MPM_MAX_NAME; i++) mpm->checks[c].name[i] = (char)(unsigned char)cn[c * MPM_MAX_NAME + i];
+      mpm->checks[c].name[MPM_MAX_NAME - 1] = 0;
+    }
+    PetscCall(PetscFree3(out, chk, cn));
+  }
+  PetscCheck(H5Fclose(f) >= 0, mpm->comm, PETSC_ERR_FILE_READ, "-mpm_restart %s: cannot close the checkpoint", mpm->restart);
+  if (wsize != size) PetscCall(MPMMigrate(mpm));
+  PetscCall(TSSetTime(mpm->ts, mpm->time));
+  PetscCall(TSSetStepNumber(mpm->ts, mpm->steps));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
