@@ -19,10 +19,11 @@
    reopened and continues at the checkpoint's output count (rows a later output wrote before the interruption are
    overwritten), so output and report read as one run. */
 #include "petmpmimpl.h"
+#include "exact/exactimpl.h"
 #include <petscviewerhdf5.h>
 #include <unistd.h>
 
-#define MPM_CKPT_NSTATE 24
+#define MPM_CKPT_NSTATE 28
 #define MPM_CKPT_NDIAG 26
 
 /* A 1D dataset of N doubles of which this rank writes n at offset. */
@@ -182,8 +183,14 @@ PetscErrorCode MPMCheckpointWrite(MPM mpm)
                                            (PetscReal)d,
                                            (PetscReal)mpm->grid.cells[0],
                                            (PetscReal)mpm->grid.cells[1],
-                                           (PetscReal)mpm->grid.cells[2]};
-    PetscReal       dg[MPM_CKPT_NDIAG]  = {0}, *out, *chk;
+                                           (PetscReal)mpm->grid.cells[2],
+                                           0,
+                                           0,
+                                           0,
+                                           0};
+    if (mpm->exact)
+      for (PetscInt i = 0; i < 4; i++) st[24 + i] = mpm->exact->state[i];
+    PetscReal dg[MPM_CKPT_NDIAG] = {0}, *out, *chk;
     PetscCall(MPMCkptWrite(f, "counts", (hsize_t)size, (hsize_t)rank, 1, &cnt));
     PetscCall(MPMCkptWrite(f, "state", MPM_CKPT_NSTATE, 0, rank ? 0 : MPM_CKPT_NSTATE, st));
     MPMCkptDiag(&mpm->diag, dg, PETSC_TRUE);
@@ -299,6 +306,8 @@ PetscErrorCode MPMRestartRead(MPM mpm)
   mpm->itout            = (PetscInt)st[16];
   mpm->last_output_step = (PetscInt)st[17];
   mpm->nchecks          = (PetscInt)st[18];
+  if (mpm->exact)
+    for (PetscInt i = 0; i < 4; i++) mpm->exact->state[i] = st[24 + i];
   PetscCheck(mpm->nchecks <= MPM_MAX_CHECKS, mpm->comm, PETSC_ERR_FILE_READ, "-mpm_restart %s: %" PetscInt_FMT " checks", mpm->restart, mpm->nchecks);
   {
     PetscReal *out, *chk, *cn;

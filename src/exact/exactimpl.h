@@ -44,6 +44,7 @@ struct _p_MPMExact {
   MPM_CLASS_HEADER(MPMExactOps);
   PetscReal window[2];   /* error norms only for lo < x < hi [cm]: where no wave from the domain ends has arrived */
   PetscBool check_start; /* the checks are also measured on the initial state (a check against it)              */
+  PetscReal state[4];    /* what a type measured during the run and reads later (a checkpoint keeps it)          */
 };
 
 PETSC_INTERN PetscErrorCode MPMExactSetUp(MPMExact, const MPMScene *);

@@ -68,9 +68,9 @@ static PetscErrorCode MPMExactChecks_Hydrostatic(MPMExact exact, MPMProbe probe)
   if (found) {
     PetscReal t;
     PetscCall(MPMProbeGetTime(probe, &t));
-    if (t == 0.0) eh->top0 = value - eh->lo;
+    if (t == 0.0) exact->state[0] = value - eh->lo; /* the column's height at t = 0 [cm] */
     PetscCall(MPMProbeAddCheck(probe, "column_height", value - eh->lo, eh->H));
-    PetscCall(MPMProbeAddCheck(probe, "surface_drift", (value - eh->lo - eh->top0) / eh->H, 0.0));
+    PetscCall(MPMProbeAddCheck(probe, "surface_drift", (value - eh->lo - exact->state[0]) / eh->H, 0.0));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
