@@ -77,12 +77,6 @@ PetscErrorCode MPMOutputOpen(MPM mpm)
     PetscCall(PetscViewerHDF5Open(mpm->comm, file, append ? FILE_MODE_APPEND : FILE_MODE_WRITE, &mpm->h5));
   }
   PetscCall(PetscViewerHDF5PushTimestepping(mpm->h5));
-  PetscCall(DMDACreateCompatibleDMDA(mpm->da, 1 + mpm->grid.dim, &mpm->daout));
-  PetscCall(DMDASetFieldName(mpm->daout, 0, "mass"));
-  for (PetscInt k = 0; k < mpm->grid.dim; k++) {
-    const char *names[] = {"velocity_x", "velocity_y", "velocity_z"};
-    PetscCall(DMDASetFieldName(mpm->daout, 1 + k, names[k]));
-  }
   mpm->last_output_step = -1;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -256,33 +250,78 @@ static PetscErrorCode MPMWritePoints(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Nodal mass and velocity projected from the points. */
+/* Nodal mass and velocity projected from the points: row k of /grid/nodes (outputs, [nz,] [ny,] nx, 1 + d) in the
+   DMDA's natural order, written here with HDF5 (each rank its owned block, chunks no larger than the grid) rather
+   than by VecView, whose chunks in PETSc 3.18 can exceed a 1D grid's length on several ranks and fail. */
 static PetscErrorCode MPMWriteGrid(MPM mpm)
 {
-  const PetscInt d = mpm->grid.dim;
-  Vec            g;
-  PetscScalar   *a;
+  const MPMGrid *g = &mpm->grid;
+  const PetscInt d = g->dim, dof = 1 + d, rank = 2 + d;
+  hsize_t        dims[5], start[5], count[5], maxdims[5], chunk[5], csize = 1;
+  hid_t          file, grp, dset, fspace, mspace, dxpl;
+  PetscReal     *a;
   const MPMNode *node;
-  PetscInt       nown;
+  PetscInt       nown = MPMNumOwnedNodes(g);
 
   PetscFunctionBegin;
   PetscCall(MPMProjectToGrid(mpm));
-  PetscCall(DMGetGlobalVector(mpm->daout, &g));
-  PetscCall(PetscObjectSetName((PetscObject)g, "nodes"));
-  PetscCall(VecGetLocalSize(g, &nown));
-  nown /= 1 + d;
-  PetscCall(VecGetArray(g, &a));
+  PetscCall(PetscMalloc1(nown * dof + 1, &a));
   PetscCall(VecGetArrayRead(mpm->nodes, (const PetscScalar **)&node));
   for (PetscInt c = 0; c < nown; c++) {
-    a[c * (1 + d)] = node[c].m;
-    for (PetscInt k = 0; k < d; k++) a[c * (1 + d) + 1 + k] = node[c].p[k];
+    a[c * dof] = node[c].m;
+    for (PetscInt k = 0; k < d; k++) a[c * dof + 1 + k] = node[c].p[k];
   }
   PetscCall(VecRestoreArrayRead(mpm->nodes, (const PetscScalar **)&node));
-  PetscCall(VecRestoreArray(g, &a));
-  PetscCall(PetscViewerHDF5PushGroup(mpm->h5, "/grid"));
-  PetscCall(VecView(g, mpm->h5));
-  PetscCall(PetscViewerHDF5PopGroup(mpm->h5));
-  PetscCall(DMRestoreGlobalVector(mpm->daout, &g));
+  dims[0]    = (hsize_t)mpm->noutputs + 1;
+  start[0]   = (hsize_t)mpm->noutputs;
+  count[0]   = 1;
+  maxdims[0] = H5S_UNLIMITED;
+  chunk[0]   = 1;
+  for (PetscInt i = 0; i < d; i++) { /* the slowest direction first */
+    const PetscInt k = d - 1 - i;
+    dims[1 + i]      = (hsize_t)g->cells[k] + 1;
+    start[1 + i]     = (hsize_t)g->xs[k];
+    count[1 + i]     = (hsize_t)g->xm[k];
+    maxdims[1 + i]   = dims[1 + i];
+  }
+  dims[1 + d] = maxdims[1 + d] = chunk[1 + d] = count[1 + d] = (hsize_t)dof;
+  start[1 + d]                                               = 0;
+  for (PetscInt i = d; i >= 1; i--) { /* chunks of at most 2^18 values, within the grid */
+    chunk[i] = PetscMin(dims[i], (hsize_t)PetscMax(1, (1 << 18) / (PetscInt)(csize * dof)));
+    csize *= chunk[i];
+  }
+  PetscCall(PetscViewerHDF5GetFileId(mpm->h5, &file));
+  grp = H5Lexists(file, "grid", H5P_DEFAULT) > 0 ? H5Gopen2(file, "grid", H5P_DEFAULT) : H5Gcreate2(file, "grid", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  PetscCheck(grp >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot open /grid in %s/petmpm.h5", mpm->outdir);
+  if (H5Lexists(grp, "nodes", H5P_DEFAULT) > 0) {
+    dset = H5Dopen2(grp, "nodes", H5P_DEFAULT);
+    PetscCheck(dset >= 0 && H5Dset_extent(dset, dims) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot extend /grid/nodes in %s/petmpm.h5", mpm->outdir);
+  } else {
+    hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
+    PetscCheck(H5Pset_chunk(dcpl, (int)rank, chunk) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: dataset properties of /grid/nodes");
+    fspace = H5Screate_simple((int)rank, dims, maxdims);
+    dset   = H5Dcreate2(grp, "nodes", H5T_NATIVE_DOUBLE, fspace, H5P_DEFAULT, dcpl, H5P_DEFAULT);
+    H5Sclose(fspace);
+    H5Pclose(dcpl);
+    PetscCheck(dset >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot create /grid/nodes in %s/petmpm.h5", mpm->outdir);
+  }
+  fspace = H5Dget_space(dset);
+  mspace = H5Screate_simple((int)rank, count, NULL);
+  if (nown)
+    H5Sselect_hyperslab(fspace, H5S_SELECT_SET, start, NULL, count, NULL);
+  else {
+    H5Sselect_none(fspace);
+    H5Sselect_none(mspace);
+  }
+  dxpl = H5Pcreate(H5P_DATASET_XFER);
+  H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE);
+  PetscCheck(H5Dwrite(dset, H5T_NATIVE_DOUBLE, mspace, fspace, dxpl, a) >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot write /grid/nodes in %s/petmpm.h5", mpm->outdir);
+  H5Pclose(dxpl);
+  H5Sclose(mspace);
+  H5Sclose(fspace);
+  H5Dclose(dset);
+  H5Gclose(grp);
+  PetscCall(PetscFree(a));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -364,6 +403,5 @@ PetscErrorCode MPMOutputClose(MPM mpm)
 {
   PetscFunctionBegin;
   PetscCall(PetscViewerDestroy(&mpm->h5));
-  PetscCall(DMDestroy(&mpm->daout));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -191,7 +191,6 @@ struct _p_MPM {
   Vec          tsu; /* the TS state: empty; the MPM state lives in the grid and swarm */
   /* output */
   PetscViewer h5;    /* HDF5 file DIR/petmpm.h5, open for the run                 */
-  DM          daout; /* grid output layout: nodal mass and velocity (dof 1 + d)   */
   PetscInt    last_output_step;
   /* run bookkeeping */
   PetscInt       npoints0; /* global number of points at start                    */
