@@ -4,26 +4,30 @@
    so every point of a cell lives on one rank and cell averages need no communication. */
 #include "petmpmimpl.h"
 
-PetscErrorCode MPMCreateGrid(MPM mpm)
+/* The DMDA, its vectors and the per-cell arrays; own[k] (NULL: PETSc decides) gives the vertices each rank column
+   owns along k, with the ranks per direction of the present grid. */
+static PetscErrorCode MPMCreateGridOwned(MPM mpm, PetscInt *own[])
 {
   MPMGrid        *g = &mpm->grid;
-  PetscInt        sw, M[MPM_MAX_DIM] = {1, 1, 1};
+  PetscInt        sw, M[MPM_MAX_DIM] = {1, 1, 1}, P[MPM_MAX_DIM] = {PETSC_DECIDE, PETSC_DECIDE, PETSC_DECIDE};
   const PetscInt *l[MPM_MAX_DIM] = {NULL, NULL, NULL};
 
   PetscFunctionBegin;
+  if (own)
+    for (PetscInt k = 0; k < g->dim; k++) P[k] = g->nranks[k];
   PetscCall(MPMShapeGetGhostWidth(mpm->shape, &sw));
   if (mpm->viscosity) sw += mpm->viscosity->ghost; /* a limiter reads the neighbouring cells */
   g->sw = sw;
   for (PetscInt k = 0; k < g->dim; k++) M[k] = g->cells[k] + 1;
   switch (g->dim) {
   case 1:
-    PetscCall(DMDACreate1d(mpm->comm, DM_BOUNDARY_NONE, M[0], MPM_NODE_DOF, sw, NULL, &mpm->da));
+    PetscCall(DMDACreate1d(mpm->comm, DM_BOUNDARY_NONE, M[0], MPM_NODE_DOF, sw, own ? own[0] : NULL, &mpm->da));
     break;
   case 2:
-    PetscCall(DMDACreate2d(mpm->comm, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DMDA_STENCIL_BOX, M[0], M[1], PETSC_DECIDE, PETSC_DECIDE, MPM_NODE_DOF, sw, NULL, NULL, &mpm->da));
+    PetscCall(DMDACreate2d(mpm->comm, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DMDA_STENCIL_BOX, M[0], M[1], P[0], P[1], MPM_NODE_DOF, sw, own ? own[0] : NULL, own ? own[1] : NULL, &mpm->da));
     break;
   default:
-    PetscCall(DMDACreate3d(mpm->comm, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DMDA_STENCIL_BOX, M[0], M[1], M[2], PETSC_DECIDE, PETSC_DECIDE, PETSC_DECIDE, MPM_NODE_DOF, sw, NULL, NULL, NULL, &mpm->da));
+    PetscCall(DMDACreate3d(mpm->comm, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DMDA_STENCIL_BOX, M[0], M[1], M[2], P[0], P[1], P[2], MPM_NODE_DOF, sw, own ? own[0] : NULL, own ? own[1] : NULL, own ? own[2] : NULL, &mpm->da));
   }
   PetscCall(DMSetUp(mpm->da));
   PetscCall(DMDASetUniformCoordinates(mpm->da, g->lo[0], g->hi[0], g->lo[1], g->hi[1], g->lo[2], g->hi[2]));
@@ -71,6 +75,88 @@ PetscErrorCode MPMCreateGrid(MPM mpm)
       PetscCall(DMCreateLocalVector(mpm->da, &mpm->lnodes));
   }
   PetscCall(PetscCalloc2(g->ncells, &mpm->cellV, g->ncells, &mpm->cellS)); /* zero: the relaxation module expects it between its calls */
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMCreateGrid(MPM mpm)
+{
+  PetscFunctionBegin;
+  PetscCall(MPMCreateGridOwned(mpm, NULL));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Points per rank: max over mean (1 when balanced) and the extremes, on every rank. */
+PetscErrorCode MPMPointBalance(MPM mpm, PetscReal *imbalance, PetscInt *nmin, PetscInt *nmax)
+{
+  PetscInt    n, mx[2];
+  PetscMPIInt size;
+
+  PetscFunctionBegin;
+  PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
+  PetscCall(DMSwarmGetLocalSize(mpm->swarm, &n));
+  mx[0] = n;
+  mx[1] = -n;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, mx, 2, MPIU_INT, MPI_MAX, mpm->comm));
+  PetscCall(DMSwarmGetSize(mpm->swarm, &n));
+  *imbalance = n > 0 ? (PetscReal)mx[0] * size / n : 1.0;
+  if (nmin) *nmin = -mx[1];
+  if (nmax) *nmax = mx[0];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Rebalance (-mpm_balance): the DMDA's ownership ranges from the points. Along each direction k the points' cells
+   give a histogram over the cells; each of the grid's rank columns along k gets a run of cells holding an equal
+   share of the points (at least the ghost width plus one cell). The grid is rebuilt with those ranges and the points
+   migrate to the ranks that own their cells. A tensor-product partition balances the marginals exactly; a body in
+   one corner of a 2D or 3D box is balanced along each axis, not in every rank. */
+PetscErrorCode MPMRebalance(MPM mpm)
+{
+  MPMGrid  *g                = &mpm->grid;
+  PetscInt *own[MPM_MAX_DIM] = {NULL, NULL, NULL}, nranks[MPM_MAX_DIM];
+  MPMPoints pts;
+
+  PetscFunctionBegin;
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt k = 0; k < g->dim; k++) {
+    const PetscInt nc = g->cells[k], np = g->nranks[k], minc = PetscMin(g->sw + 1, nc / np);
+    PetscReal     *hist, total = 0.0, acc = 0.0;
+    PetscInt       r = 0, start = 0;
+    nranks[k] = np;
+    PetscCall(PetscCalloc1(nc, &hist));
+    for (PetscInt p = 0; p < pts.n; p++) hist[MPMCellIndex(g, k, pts.f[MPM_FIELD_POSITION][p * g->dim + k])] += 1.0;
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, hist, nc, MPIU_REAL, MPIU_SUM, mpm->comm));
+    for (PetscInt c = 0; c < nc; c++) total += hist[c];
+    PetscCall(PetscMalloc1(np, &own[k]));
+    for (PetscInt c = 0; c < nc && r < np - 1; c++) { /* close rank column r after cell c once it holds its share */
+      acc += hist[c];
+      if ((acc >= total * (r + 1) / np && c + 1 - start >= minc) || nc - (c + 1) == (np - 1 - r) * minc) {
+        own[k][r++] = c + 1 - start;
+        start       = c + 1;
+      }
+    }
+    for (; r < np - 1; r++) { /* too few cells left to close them by share */
+      own[k][r] = minc;
+      start += minc;
+    }
+    own[k][np - 1] = nc - start + 1; /* the last column also owns the last vertex */
+    PetscCall(PetscFree(hist));
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(VecDestroy(&mpm->nodes));
+  PetscCall(VecDestroy(&mpm->lnodes));
+  PetscCall(VecDestroy(&mpm->mean_l));
+  PetscCall(VecDestroy(&mpm->mean_g));
+  PetscCall(DMDestroy(&mpm->mean_da));
+  PetscCall(DMDestroy(&mpm->da));
+  PetscCall(PetscFree2(mpm->cellV, mpm->cellS));
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) PetscCall(PetscFree(g->rank_start[k]));
+  for (PetscInt k = 0; k < g->dim; k++) g->nranks[k] = nranks[k];
+  PetscCall(MPMCreateGridOwned(mpm, own));
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) PetscCall(PetscFree(own[k]));
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) mpm->box_lo[k] = mpm->box_hi[k] = 0;
+  PetscCall(MPMShapeSetUp(mpm->shape, g, mpm->ppc)); /* its cell tables cover the rank's ghosted cells */
+  PetscCall(MPMMigrate(mpm));
+  mpm->diag.rebalances++;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

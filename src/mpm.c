@@ -36,6 +36,8 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   m->diag.first_vacuum_step = -1;
   m->diag.first_popped_time = -1.0;
   m->progress               = 10.0;
+  m->balance_threshold      = 1.2;
+  m->balance_interval       = 50;
   m->diag.first_empty_step  = -1;
   m->diag.empty_cells0      = -1;
   m->output_interval        = 0;
@@ -189,6 +191,13 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
     PetscCheck(!dir, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_report %s is a directory; valid is a file name (DIR/report.json)", mpm->report);
   }
   PetscCall(PetscOptionsBool("-mpm_view", "Print the configuration of the run", "", mpm->view, &mpm->view, NULL));
+  PetscCall(
+    PetscOptionsBool("-mpm_balance", "Set the grid's ownership ranges from the points (each rank column along each axis an equal share), at set-up and whenever the imbalance exceeds -mpm_balance_threshold", "", mpm->balance, &mpm->balance, NULL));
+  if (mpm->balance) {
+    PetscCall(PetscOptionsReal("-mpm_balance_threshold", "Rebalance when the most points on a rank exceed this multiple of the mean [-], >= 1", "", mpm->balance_threshold, &mpm->balance_threshold, NULL));
+    PetscCall(MPMOptionsCheckRange("-mpm_balance_threshold", mpm->balance_threshold, 1.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+    PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-mpm_balance_interval", "Steps between checks of the balance [-], >= 1", &mpm->balance_interval, 1, PETSC_MAX_INT));
+  }
   PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-mpm_checkpoint_interval", "Steps between checkpoints DIR/checkpoint-STEP.h5 (the last two kept) [-], >= 0 (0: none)", &mpm->ckpt_interval, 0, PETSC_MAX_INT));
   PetscCall(PetscOptionsReal("-mpm_checkpoint_wall", "Seconds of wall time between checkpoints [s], >= 0 (0: none)", "", mpm->ckpt_wall, &mpm->ckpt_wall, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_checkpoint_wall", mpm->ckpt_wall, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
@@ -286,6 +295,11 @@ PetscErrorCode MPMSetUp(MPM mpm)
   }
   mpm->has_bodyforce = (PetscBool)(mpm->exact && mpm->exact->ops.bodyforce);
   PetscCall(MPMConstitutiveInitialize(mpm));
+  if (mpm->balance) { /* the seeded points set the ownership ranges */
+    PetscMPIInt size;
+    PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
+    if (size > 1) PetscCall(MPMRebalance(mpm));
+  }
   PetscCall(MPMDiagnoseVacuum(mpm, NULL, NULL)); /* the baseline: gaps between bodies in the initial state */
   PetscCall(MPMCheckUnusedOptions(mpm));
   PetscCall(MPMOutputOpen(mpm));

@@ -114,6 +114,7 @@ typedef struct {
   PetscInt  wall_reflections;                               /* points this rank put back across a wall (MPMMigrate)              */
   PetscInt  domain_resets;                                  /* point-steps whose skewed CPDI domain this rank reset to a cube (MPMDomainApply) */
   PetscReal plastic_work;                                   /* sum over the steps of m_p sigma_eq d eps_p / rho_p on this rank [erg] */
+  PetscInt  rebalances;                                     /* times -mpm_balance rebuilt the grid's ownership ranges (global) */
   PetscInt  popping_checks;                                 /* checks of the popping module (global)                                 */
   PetscInt  popped_max;                                     /* most points popped at one check (global)                              */
   PetscReal popped_sum;                                     /* popped points summed over the checks (global)                         */
@@ -190,7 +191,7 @@ struct _p_MPM {
   TS           ts;
   Vec          tsu; /* the TS state: empty; the MPM state lives in the grid and swarm */
   /* output */
-  PetscViewer h5;    /* HDF5 file DIR/petmpm.h5, open for the run                 */
+  PetscViewer h5; /* HDF5 file DIR/petmpm.h5, open for the run                 */
   PetscInt    last_output_step;
   /* run bookkeeping */
   PetscInt       npoints0; /* global number of points at start                    */
@@ -202,6 +203,9 @@ struct _p_MPM {
   PetscReal      wall_loop, wall_setup, wall_output;
   PetscReal      progress;                              /* -mpm_progress: seconds of wall time between progress lines, 0: none */
   PetscReal      progress_start, progress_last;         /* MPI_Wtime at the loop's start and at the last line                  */
+  PetscBool      balance;                               /* -mpm_balance: ownership ranges from the points, at set-up and in the run */
+  PetscReal      balance_threshold;                     /* -mpm_balance_threshold: rebalance when max/mean points per rank exceeds it */
+  PetscInt       balance_interval;                      /* -mpm_balance_interval: steps between checks of the balance */
   PetscInt       ckpt_interval;                         /* -mpm_checkpoint_interval: steps between checkpoints, 0: none */
   PetscReal      ckpt_wall;                             /* -mpm_checkpoint_wall: seconds of wall time between checkpoints, 0: none */
   PetscReal      ckpt_last;                             /* MPI_Wtime of the last checkpoint (or of the loop's start) */
@@ -274,6 +278,8 @@ PETSC_INTERN PetscErrorCode MPMLogRegister(MPM);
 PETSC_INTERN PetscInt       MPMFieldBlockSize(PetscInt, PetscInt);
 PETSC_INTERN PetscErrorCode MPMCreateGrid(MPM);
 PETSC_INTERN PetscErrorCode MPMGridLocalToGlobal(MPM);
+PETSC_INTERN PetscErrorCode MPMRebalance(MPM);
+PETSC_INTERN PetscErrorCode MPMPointBalance(MPM, PetscReal *, PetscInt *, PetscInt *);
 PETSC_INTERN PetscErrorCode MPMGridGlobalToLocal(MPM);
 PETSC_INTERN PetscErrorCode MPMGridZeroForScatter(MPM, PetscInt, const PetscReal[], MPMNode *);
 PETSC_INTERN PetscErrorCode MPMCreatePoints(MPM);

@@ -373,7 +373,8 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   const MPMGrid *g = &mpm->grid;
   PetscReal      err[MPM_NERR][3], rhomin = 0, dmass, denergy, mass, energy, mom[MPM_MAX_DIM], kinetic, wplastic = 0, eshear = 0, eb[5] = {0, 0, 0, 0, 0}, gb[4] = {0, 0, 0, 0}, shock_cells = -1.0, pss;
   PetscBool      budget;
-  PetscInt       nonfinite = 0, npoints, nvac, nempty;
+  PetscInt       nonfinite = 0, npoints, nvac, nempty, nmin, nmax;
+  PetscReal      imbalance;
   PetscReal      eisen, nisen, nsplit, nrefuse, nreflect, nreset;
   PetscMPIInt    size, rank;
 
@@ -385,6 +386,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   PetscCall(MPMGlobalSums(mpm, &mass, &energy, mom, &kinetic));
   PetscCall(MPMComputeChecks(mpm));
   PetscCall(MPMDiagnoseVacuum(mpm, &nvac, &nempty));
+  PetscCall(MPMPointBalance(mpm, &imbalance, &nmin, &nmax));
   {
     PetscReal s[8] = {
       mpm->diag.isentrope_energy, (PetscReal)mpm->diag.isentrope_points, (PetscReal)mpm->diag.points_split, (PetscReal)mpm->diag.split_refused, (PetscReal)mpm->diag.wall_reflections, (PetscReal)mpm->diag.domain_resets, mpm->diag.plastic_work, 0.0};
@@ -431,6 +433,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
                         mpm->diag.dt_limit[MPM_DT_SOUND], mpm->diag.dt_limit[MPM_DT_ACCELERATION], mpm->diag.dt_limit[MPM_DT_VOLUME], mpm->diag.dt_limit[MPM_DT_LANDING], (double)(mpm->energy0 != 0 ? eisen / PetscAbsReal(mpm->energy0) : eisen),
                         (double)nisen));
   if (mpm->split) PetscCall(PetscPrintf(mpm->comm, "  point splitting: %.0f points split (%" PetscInt_FMT " points at start); %.0f splits refused at -mpm_split_max_level\n", (double)nsplit, mpm->npoints0, (double)nrefuse));
+  if (size > 1) PetscCall(PetscPrintf(mpm->comm, "  balance: %" PetscInt_FMT " to %" PetscInt_FMT " points per rank, max/mean %.3f; %" PetscInt_FMT " rebalance(s) (-mpm_balance)\n", nmin, nmax, (double)imbalance, mpm->diag.rebalances));
   if (mpm->popping_interval > 0) {
     const PetscReal *x = mpm->diag.first_popped_x;
     if (mpm->diag.first_popped_time >= 0.0)
@@ -497,6 +500,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     fprintf(fp, "  \"conservation\": {\"mass\": %.6e, \"total_energy\": %.6e, \"momentum\": [", (double)dmass, (double)denergy);
     for (PetscInt k = 0; k < g->dim; k++) fprintf(fp, "%s%.6e", k ? ", " : "", (double)(mom[k] - mpm->momentum0[k]));
     fprintf(fp, "]},\n  \"kinetic_energy_fraction\": %s,\n  \"rest_time\": %.10g,\n", MPMJSONReal(mpm->kinetic0 > 0 ? kinetic / mpm->kinetic0 : 0.0, "%.6e", num[0]), (double)mpm->rest_time);
+    fprintf(fp, "  \"balance\": {\"points_min\": %" PetscInt_FMT ", \"points_max\": %" PetscInt_FMT ", \"imbalance\": %.6f, \"rebalances\": %" PetscInt_FMT "},\n", nmin, nmax, (double)imbalance, mpm->diag.rebalances);
     if (mpm->has_gravity) fprintf(fp, "  \"gravity_budget\": {\"released\": %.6e, \"kinetic\": %.6e, \"internal_change\": %.6e, \"error\": %.6e},\n", (double)gb[0], (double)gb[1], (double)gb[2], (double)gb[3]);
     if (mpm->popping_interval > 0) {
       const PetscReal *x = mpm->diag.first_popped_x;

@@ -96,6 +96,13 @@ static PetscErrorCode MPMTSPostStep(TS ts)
     PetscCall(PetscPrintf(mpm->comm, "petmpm %s: t = %.4g s (%.1f%%), step %" PetscInt_FMT ", dt %.3g s, %" PetscInt_FMT " points, %.0f s elapsed, about %.0f s to go\n", mpm->scene, (double)t, (double)(100.0 * frac), step, (double)dt, mpm->npoints,
                           (double)el, (double)(frac > 0.0 ? el * (1.0 - frac) / frac : 0.0)));
   }
+  if (mpm->balance && step % mpm->balance_interval == 0) { /* the points moved: rebalance past the threshold */
+    PetscReal   imb;
+    PetscMPIInt size;
+    PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
+    PetscCall(MPMPointBalance(mpm, &imb, NULL, NULL));
+    if (size > 1 && imb > mpm->balance_threshold) PetscCall(MPMRebalance(mpm));
+  }
   {
     PetscMPIInt sig[2] = {(PetscMPIInt)MPMSignalCaught, mpm->ckpt_wall > 0.0 && MPI_Wtime() - mpm->ckpt_last >= mpm->ckpt_wall}; /* rank 0's clock decides */
     PetscCallMPI(MPI_Bcast(&sig[1], 1, MPI_INT, 0, mpm->comm));

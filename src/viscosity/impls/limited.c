@@ -84,13 +84,18 @@ static PetscErrorCode MPMViscosityApply_Limited(MPMViscosity visc, const MPMVisc
   const PetscInt d   = g->dim;
 
   PetscFunctionBegin;
-  if (!lim->du) {
-    lim->nc = 1;
-    for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
-      lim->np[k] = k < d ? g->cm[k] + 2 * LIMITED_PAD : 1;
-      lim->nc *= lim->np[k];
+  {
+    PetscBool same = (PetscBool)(lim->du != NULL); /* the rank's cells: -mpm_balance may have moved them */
+    for (PetscInt k = 0; k < MPM_MAX_DIM && same; k++) same = (PetscBool)(lim->np[k] == (k < d ? g->cm[k] + 2 * LIMITED_PAD : 1));
+    if (!same) {
+      PetscCall(PetscFree2(lim->du, lim->ok));
+      lim->nc = 1;
+      for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
+        lim->np[k] = k < d ? g->cm[k] + 2 * LIMITED_PAD : 1;
+        lim->nc *= lim->np[k];
+      }
+      PetscCall(PetscMalloc2(lim->nc * d, &lim->du, lim->nc, &lim->ok));
     }
-    PetscCall(PetscMalloc2(lim->nc * d, &lim->du, lim->nc, &lim->ok));
   }
   LimitedCellJumps(lim, ctx->shape, g, ctx->node);
   {
