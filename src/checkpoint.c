@@ -15,7 +15,8 @@
      /outputs         (outputs x 2: time, points);  /checks (checks x 2: value, reference), /check_names (checks x MPM_MAX_NAME)
    On the rank count that wrote it, each rank takes back its own points in their order, so the run continues bit for
    bit as if never interrupted; on another rank count the points are dealt out evenly and migrated to the ranks that
-   own their cells (the same answer to round-off: sums run in another order). The output file DIR/petmpm.h5 is
+   own their cells (the same answer to round-off: sums run in another order); so they are with -mpm_balance, whose
+   ownership ranges follow the points. The output file DIR/petmpm.h5 is
    reopened and continues at the checkpoint's output count (rows a later output wrote before the interruption are
    overwritten), so output and report read as one run. */
 #include "petmpmimpl.h"
@@ -331,7 +332,8 @@ PetscErrorCode MPMRestartRead(MPM mpm)
     PetscCall(PetscFree3(out, chk, cn));
   }
   PetscCheck(H5Fclose(f) >= 0, mpm->comm, PETSC_ERR_FILE_READ, "-mpm_restart %s: cannot close the checkpoint", mpm->restart);
-  if (wsize != size) PetscCall(MPMMigrate(mpm));
+  if (wsize != size || mpm->balance) PetscCall(MPMMigrate(mpm)); /* to the ranks that own their cells now */
+  if (mpm->balance && size > 1) PetscCall(MPMRebalance(mpm));
   PetscCall(TSSetTime(mpm->ts, mpm->time));
   PetscCall(TSSetStepNumber(mpm->ts, mpm->steps));
   PetscFunctionReturn(PETSC_SUCCESS);
