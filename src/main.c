@@ -59,6 +59,7 @@ static PetscErrorCode MPMErrorHandler(MPI_Comm comm, int line, const char *fun, 
     MPI_Comm_size(PETSC_COMM_WORLD, &wsize);
     if (ec->size == 1 && wsize > 1) fprintf(stderr, "[%d] ", wrank); /* a local error on a parallel run: which rank */
   }
+  if (!mess || !mess[0]) (void)PetscErrorMessage(n, &mess, NULL); /* PETSc's text for the error code */
   fprintf(stderr, "petmpm: error: %s%s%s%s\n", mess ? mess : "(no message)", where[0] ? " (option " : "", where, where[0] ? ")" : "");
   fflush(stderr);
   return n;
