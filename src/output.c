@@ -81,6 +81,12 @@ PetscErrorCode MPMOutputOpen(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The point fields stored as 64-bit integers (the points carry them as exact integers in doubles). */
+static PetscBool MPMPointFieldIsInteger(const char name[])
+{
+  return (PetscBool)(!strcmp(name, "id"));
+}
+
 /* Rewrites DIR/petmpm.xmf for the outputs so far (rank 0), via a temporary file and rename. */
 static PetscErrorCode MPMWriteXDMF(MPM mpm)
 {
@@ -106,15 +112,17 @@ static PetscErrorCode MPMWriteXDMF(MPM mpm)
     fprintf(fp, "      <DataItem Dimensions=\"3 3\" Format=\"XML\">%" PetscInt_FMT " 0 0 1 1 1 1 %" PetscInt_FMT " 3</DataItem>\n", s, N);
     fprintf(fp, "      <DataItem Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">petmpm.h5:/particle_fields/xyz</DataItem>\n     </DataItem>\n    </Geometry>\n", S, Nmax);
     for (PetscInt f = 0; f < mpm->nfields; f++) {
-      const PetscInt bs = MPMFieldBlockSize(mpm->field[f].bs, mpm->grid.dim);
-      if (!mpm->field_on[f] || !mpm->field[f].output || bs > MPM_MAX_DIM) continue; /* tensors have no XDMF attribute here */
+      const PetscInt bs  = MPMFieldBlockSize(mpm->field[f].bs, mpm->grid.dim);
+      const char    *num = MPMPointFieldIsInteger(mpm->field[f].name) ? "Int" : "Float";
+      if (!mpm->field_on[f] || !mpm->field[f].output) continue;
       if (bs == 1) {
         fprintf(fp, "    <Attribute Name=\"%s\" AttributeType=\"Scalar\" Center=\"Node\">\n     <DataItem ItemType=\"HyperSlab\" Dimensions=\"%" PetscInt_FMT "\" Type=\"HyperSlab\">\n", mpm->field[f].name, N);
         fprintf(fp, "      <DataItem Dimensions=\"3 2\" Format=\"XML\">%" PetscInt_FMT " 0 1 1 1 %" PetscInt_FMT "</DataItem>\n", s, N);
-        fprintf(fp, "      <DataItem Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">petmpm.h5:/particle_fields/%s</DataItem>\n", S, Nmax, mpm->field[f].name);
+        fprintf(fp, "      <DataItem Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT "\" NumberType=\"%s\" Precision=\"8\" Format=\"HDF\">petmpm.h5:/particle_fields/%s</DataItem>\n", S, Nmax, num, mpm->field[f].name);
       } else {
-        fprintf(fp, "    <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"Node\">\n     <DataItem ItemType=\"HyperSlab\" Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT "\" Type=\"HyperSlab\">\n", mpm->field[f].name, bs == 3 ? "Vector" : "Matrix",
-                N, bs);
+        /* vectors (d values, 2 in 2D) as Vector, 3 x 3 tensors as Tensor, 2 x 2 ones as Matrix */
+        fprintf(fp, "    <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"Node\">\n     <DataItem ItemType=\"HyperSlab\" Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT "\" Type=\"HyperSlab\">\n", mpm->field[f].name,
+                bs <= MPM_MAX_DIM ? "Vector" : (bs == 9 ? "Tensor" : "Matrix"), N, bs);
         fprintf(fp, "      <DataItem Dimensions=\"3 3\" Format=\"XML\">%" PetscInt_FMT " 0 0 1 1 1 1 %" PetscInt_FMT " %" PetscInt_FMT "</DataItem>\n", s, N, bs);
         fprintf(fp, "      <DataItem Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT " %" PetscInt_FMT "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">petmpm.h5:/particle_fields/%s</DataItem>\n", S, Nmax, bs, mpm->field[f].name);
       }
@@ -155,7 +163,7 @@ static PetscErrorCode MPMWritePointRow(MPM mpm, const char name[], PetscInt bs, 
     hid_t         dcpl = H5Pcreate(H5P_DATASET_CREATE);
     PetscCheck(H5Pset_chunk(dcpl, rank, chunk) >= 0 && H5Pset_fill_value(dcpl, H5T_NATIVE_DOUBLE, &zero) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: dataset properties of /particle_fields/%s", name);
     fspace = H5Screate_simple(rank, dims, maxdims);
-    dset   = H5Dcreate2(grp, name, H5T_NATIVE_DOUBLE, fspace, H5P_DEFAULT, dcpl, H5P_DEFAULT);
+    dset   = H5Dcreate2(grp, name, MPMPointFieldIsInteger(name) ? H5T_STD_I64LE : H5T_NATIVE_DOUBLE, fspace, H5P_DEFAULT, dcpl, H5P_DEFAULT); /* ids as integers; HDF5 converts */
     H5Sclose(fspace);
     H5Pclose(dcpl);
     PetscCheck(dset >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot create /particle_fields/%s", name);

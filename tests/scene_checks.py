@@ -92,6 +92,16 @@ def test_output():
             check(len(refs) > 0 and all(x.lstrip("/") in f for x in refs), f"XDMF references {len(refs)} existing datasets")
             grids = [g for g in tree.iter("Grid") if g.get("GridType") == "Uniform"]
             check(len(grids) == nout, f"XDMF has one grid per output: {len(grids)}")
+    for scene, dim in (("taylor_anvil_3d", 3), ("hydrostatic_2d", 2)):  # the XDMF types of vectors and tensors, integer ids
+        with tempfile.TemporaryDirectory() as d:
+            run(["-options_file", os.path.join(SRC, "inputs", scene + ".opts"), "-ts_max_steps", "2", "-mpm_output", d])
+            types = {a.get("Name"): a.get("AttributeType") for a in ET.parse(os.path.join(d, "petmpm.xmf")).iter("Attribute")}
+            with h5py.File(os.path.join(d, "petmpm.h5"), "r") as f:
+                kind = f["particle_fields/id"].dtype.kind
+            want = {"velocity": "Vector", "position": "Vector", "density": "Scalar", "id": "Scalar"}
+            if "stress" in types:
+                want["stress"] = "Tensor" if dim == 3 else "Matrix"
+            check(all(types.get(k) == v for k, v in want.items()) and kind == "i", f"{dim}D XDMF attribute types {[(k, types.get(k)) for k in want]}, ids stored as integers ({kind})")
     for ranks in (2, 3):  # output at a size PETSc's own grid writer could not chunk on several ranks (issue 18)
         with tempfile.TemporaryDirectory() as d:
             run([*SCENE_CTH, "-mpm_cells", "70000", "-ts_max_steps", "2", "-mpm_output", d], ranks)
