@@ -19,9 +19,8 @@
    ownership ranges follow the points. The output file DIR/petmpm.h5 is
    reopened and continues at the checkpoint's output count (rows a later output wrote before the interruption are
    overwritten), so output and report read as one run. */
-#include "petmpmimpl.h"
+#include "h5impl.h"
 #include "exact/exactimpl.h"
-#include <petscviewerhdf5.h>
 #include <unistd.h>
 
 #define MPM_CKPT_NSTATE 28
@@ -30,68 +29,32 @@
 /* A 1D dataset of N doubles of which this rank writes n at offset. */
 static PetscErrorCode MPMCkptWrite(hid_t file, const char name[], hsize_t N, hsize_t offset, hsize_t n, const PetscReal *a)
 {
-  hid_t  space = H5Screate_simple(1, &N, NULL), mspace = H5Screate_simple(1, &n, NULL), dset, dxpl = H5Pcreate(H5P_DATASET_XFER);
-  herr_t err;
+  hid_t space = H5Screate_simple(1, &N, NULL), dset;
 
   PetscFunctionBegin;
   dset = H5Dcreate2(file, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  PetscCheck(dset >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot create %s in the checkpoint", name);
-  if (!N) { /* an empty dataset has no storage to write to */
-    H5Pclose(dxpl);
-    H5Dclose(dset);
-    H5Sclose(mspace);
-    H5Sclose(space);
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
-  if (n)
-    H5Sselect_hyperslab(space, H5S_SELECT_SET, &offset, NULL, &n, NULL);
-  else {
-    H5Sselect_none(space);
-    H5Sselect_none(mspace);
-  }
-  H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE);
-  err = H5Dwrite(dset, H5T_NATIVE_DOUBLE, mspace, space, dxpl, a);
-  H5Pclose(dxpl);
-  H5Dclose(dset);
-  H5Sclose(mspace);
   H5Sclose(space);
-  PetscCheck(err >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot write %s in the checkpoint", name);
+  PetscCheck(dset >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot create %s in the checkpoint", name);
+  if (N) PetscCall(MPMH5Block(dset, PETSC_TRUE, &offset, &n, (void *)a, name)); /* an empty dataset has no storage to write to */
+  H5Dclose(dset);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* Reads n doubles at offset of the 1D dataset name; *N (if not NULL) gets its length. */
 static PetscErrorCode MPMCkptRead(hid_t file, const char name[], hsize_t offset, hsize_t n, PetscReal *a, hsize_t *N)
 {
-  hid_t   dset = H5Dopen2(file, name, H5P_DEFAULT), space, mspace, dxpl;
+  hid_t   dset = H5Dopen2(file, name, H5P_DEFAULT), space;
   hsize_t len;
-  herr_t  err;
 
   PetscFunctionBegin;
   PetscCheck(dset >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "-mpm_restart: the checkpoint has no %s: it is not a petmpm checkpoint of this scene", name);
   space = H5Dget_space(dset);
   H5Sget_simple_extent_dims(space, &len, NULL);
+  H5Sclose(space);
   if (N) *N = len;
   PetscCheck(offset + n <= len, PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "-mpm_restart: %s of the checkpoint holds %llu values, not %llu", name, (unsigned long long)len, (unsigned long long)(offset + n));
-  if (!len) {
-    H5Sclose(space);
-    H5Dclose(dset);
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
-  mspace = H5Screate_simple(1, &n, NULL);
-  if (n)
-    H5Sselect_hyperslab(space, H5S_SELECT_SET, &offset, NULL, &n, NULL);
-  else {
-    H5Sselect_none(space);
-    H5Sselect_none(mspace);
-  }
-  dxpl = H5Pcreate(H5P_DATASET_XFER);
-  H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE);
-  err = H5Dread(dset, H5T_NATIVE_DOUBLE, mspace, space, dxpl, a);
-  H5Pclose(dxpl);
-  H5Sclose(mspace);
-  H5Sclose(space);
+  if (len) PetscCall(MPMH5Block(dset, PETSC_FALSE, &offset, &n, a, name));
   H5Dclose(dset);
-  PetscCheck(err >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "-mpm_restart: cannot read %s of the checkpoint", name);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -78,6 +78,21 @@ static PetscErrorCode MPMCreateGridOwned(MPM mpm, PetscInt *own[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* What MPMCreateGridOwned made, and the point-exchange modules' nodal sums on it. */
+PetscErrorCode MPMDestroyGrid(MPM mpm)
+{
+  PetscFunctionBegin;
+  PetscCall(VecDestroy(&mpm->nodes));
+  PetscCall(VecDestroy(&mpm->lnodes));
+  PetscCall(VecDestroy(&mpm->mean_l));
+  PetscCall(VecDestroy(&mpm->mean_g));
+  PetscCall(DMDestroy(&mpm->mean_da));
+  PetscCall(DMDestroy(&mpm->da));
+  PetscCall(PetscFree2(mpm->cellV, mpm->cellS));
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) PetscCall(PetscFree(mpm->grid.rank_start[k]));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode MPMCreateGrid(MPM mpm)
 {
   PetscFunctionBegin;
@@ -142,14 +157,7 @@ PetscErrorCode MPMRebalance(MPM mpm)
     PetscCall(PetscFree(hist));
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-  PetscCall(VecDestroy(&mpm->nodes));
-  PetscCall(VecDestroy(&mpm->lnodes));
-  PetscCall(VecDestroy(&mpm->mean_l));
-  PetscCall(VecDestroy(&mpm->mean_g));
-  PetscCall(DMDestroy(&mpm->mean_da));
-  PetscCall(DMDestroy(&mpm->da));
-  PetscCall(PetscFree2(mpm->cellV, mpm->cellS));
-  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) PetscCall(PetscFree(g->rank_start[k]));
+  PetscCall(MPMDestroyGrid(mpm));
   for (PetscInt k = 0; k < g->dim; k++) g->nranks[k] = nranks[k];
   PetscCall(MPMCreateGridOwned(mpm, own));
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) PetscCall(PetscFree(own[k]));

@@ -350,16 +350,9 @@ PetscErrorCode MPMDestroy(MPM *mpm)
   PetscCall(MPMOutputClose(m));
   PetscCall(TSDestroy(&m->ts));
   PetscCall(VecDestroy(&m->tsu));
-  PetscCall(VecDestroy(&m->nodes));
-  PetscCall(VecDestroy(&m->lnodes));
-  PetscCall(PetscFree2(m->cellV, m->cellS));
+  PetscCall(MPMDestroyGrid(m));
   PetscCall(PetscFree3(m->widx, m->work, m->wL));
   PetscCall(DMDestroy(&m->swarm));
-  PetscCall(VecDestroy(&m->mean_l));
-  PetscCall(VecDestroy(&m->mean_g));
-  PetscCall(DMDestroy(&m->mean_da));
-  PetscCall(DMDestroy(&m->da));
-  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) PetscCall(PetscFree(m->grid.rank_start[k]));
   for (PetscInt i = 0; i < m->nmat; i++) {
     PetscCall(MPMEOSDestroy(&m->mat[i].eos));
     PetscCall(MPMStrengthDestroy(&m->mat[i].strength));

@@ -13,8 +13,7 @@
    and a row holds the points of its output followed by zeros. Rank r writes its points at the offset of ranks < r.
    DIR/petmpm.xmf (XDMF 2) describes the points over time, so ParaView and VisIt open them; it is rewritten
    through a temporary file after each output so that it is never left half-written. */
-#include "petmpmimpl.h"
-#include <petscviewerhdf5.h>
+#include "h5impl.h"
 #include <errno.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -136,52 +135,77 @@ static PetscErrorCode MPMWriteXDMF(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* This rank's block of the dataset, moved collectively (every rank calls; a rank whose count holds no value selects
+   none): start and count over the dataset's dimensions; write: from buf to the file, else from the file into buf. */
+PetscErrorCode MPMH5Block(hid_t dset, PetscBool write, const hsize_t start[], const hsize_t count[], void *buf, const char what[])
+{
+  hid_t   fspace = H5Dget_space(dset), mspace, dxpl = H5Pcreate(H5P_DATASET_XFER);
+  int     rank = H5Sget_simple_extent_ndims(fspace);
+  hsize_t n    = 1;
+  herr_t  err;
+
+  PetscFunctionBegin;
+  for (int k = 0; k < rank; k++) n *= count[k];
+  mspace = H5Screate_simple(rank, count, NULL);
+  if (n)
+    H5Sselect_hyperslab(fspace, H5S_SELECT_SET, start, NULL, count, NULL);
+  else {
+    H5Sselect_none(fspace);
+    H5Sselect_none(mspace);
+  }
+  H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE);
+  err = write ? H5Dwrite(dset, H5T_NATIVE_DOUBLE, mspace, fspace, dxpl, buf) : H5Dread(dset, H5T_NATIVE_DOUBLE, mspace, fspace, dxpl, buf);
+  H5Pclose(dxpl);
+  H5Sclose(mspace);
+  H5Sclose(fspace);
+  PetscCheck(err >= 0, PETSC_COMM_SELF, write ? PETSC_ERR_FILE_WRITE : PETSC_ERR_FILE_READ, "HDF5: cannot %s %s", write ? "write" : "read", what);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The dataset name in loc, created chunked and zero-filled, of file type ftype, with maxdims if missing, else opened
+   and resized to dims (longer: dims[1] becomes the larger of it and the present length, so that a row with fewer
+   points than an earlier one ends in zeros). */
+PetscErrorCode MPMH5Extendable(hid_t loc, const char name[], int rank, hsize_t dims[], const hsize_t maxdims[], const hsize_t chunk[], hid_t ftype, PetscBool longer, hid_t *dset)
+{
+  PetscFunctionBegin;
+  if (H5Lexists(loc, name, H5P_DEFAULT) > 0) {
+    hid_t   fspace;
+    hsize_t cur[5];
+    *dset  = H5Dopen2(loc, name, H5P_DEFAULT);
+    fspace = *dset >= 0 ? H5Dget_space(*dset) : -1;
+    PetscCheck(fspace >= 0 && H5Sget_simple_extent_dims(fspace, cur, NULL) == rank, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot open %s", name);
+    H5Sclose(fspace);
+    if (longer) dims[1] = PetscMax(dims[1], cur[1]);
+    PetscCheck(H5Dset_extent(*dset, dims) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot resize %s", name);
+  } else {
+    const double zero = 0.0;
+    hid_t        dcpl = H5Pcreate(H5P_DATASET_CREATE), fspace;
+    PetscCheck(H5Pset_chunk(dcpl, rank, chunk) >= 0 && H5Pset_fill_value(dcpl, H5T_NATIVE_DOUBLE, &zero) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: dataset properties of %s", name);
+    fspace = H5Screate_simple(rank, dims, maxdims);
+    *dset  = H5Dcreate2(loc, name, ftype, fspace, H5P_DEFAULT, dcpl, H5P_DEFAULT);
+    H5Sclose(fspace);
+    H5Pclose(dcpl);
+    PetscCheck(*dset >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot create %s", name);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Row k of the point dataset /particle_fields/<name>: this rank's n points x bs values at the offset of the ranks
    before it, N points in all. The dataset is (outputs, points) for bs = 1, else (outputs, points, bs), chunked and
    unlimited in its first two dimensions, zero-filled: a row with fewer points than an earlier one ends in zeros. */
 static PetscErrorCode MPMWritePointRow(MPM mpm, const char name[], PetscInt bs, PetscInt n, PetscInt offset, PetscInt N, const PetscReal *a)
 {
-  const int rank = bs == 1 ? 2 : 3;
-  hid_t     file, grp, dset, fspace, mspace, dxpl;
-  hsize_t   dims[3] = {(hsize_t)mpm->noutputs + 1, (hsize_t)N, (hsize_t)bs}, start[3] = {(hsize_t)mpm->noutputs, (hsize_t)offset, 0}, count[3] = {1, (hsize_t)n, (hsize_t)bs};
+  const int     rank    = bs == 1 ? 2 : 3;
+  hsize_t       dims[3] = {(hsize_t)mpm->noutputs + 1, (hsize_t)N, (hsize_t)bs}, start[3] = {(hsize_t)mpm->noutputs, (hsize_t)offset, 0}, count[3] = {1, (hsize_t)n, (hsize_t)bs};
+  const hsize_t maxdims[3] = {H5S_UNLIMITED, H5S_UNLIMITED, (hsize_t)bs}, chunk[3] = {1, (hsize_t)PetscMax(1, PetscMin(N, 65536 / bs)), (hsize_t)bs};
+  hid_t         file, grp, dset;
 
   PetscFunctionBegin;
   PetscCall(PetscViewerHDF5GetFileId(mpm->h5, &file));
   grp = H5Lexists(file, "particle_fields", H5P_DEFAULT) > 0 ? H5Gopen2(file, "particle_fields", H5P_DEFAULT) : H5Gcreate2(file, "particle_fields", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   PetscCheck(grp >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot open /particle_fields in %s/petmpm.h5", mpm->outdir);
-  if (H5Lexists(grp, name, H5P_DEFAULT) > 0) {
-    hsize_t cur[3];
-    dset   = H5Dopen2(grp, name, H5P_DEFAULT);
-    fspace = H5Dget_space(dset);
-    PetscCheck(dset >= 0 && fspace >= 0 && H5Sget_simple_extent_dims(fspace, cur, NULL) == rank, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot open /particle_fields/%s", name);
-    H5Sclose(fspace);
-    dims[1] = PetscMax(dims[1], cur[1]);
-    PetscCheck(H5Dset_extent(dset, dims) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot extend /particle_fields/%s", name);
-  } else {
-    const hsize_t maxdims[3] = {H5S_UNLIMITED, H5S_UNLIMITED, (hsize_t)bs}, chunk[3] = {1, (hsize_t)PetscMax(1, PetscMin(N, 65536 / bs)), (hsize_t)bs};
-    const double  zero = 0.0;
-    hid_t         dcpl = H5Pcreate(H5P_DATASET_CREATE);
-    PetscCheck(H5Pset_chunk(dcpl, rank, chunk) >= 0 && H5Pset_fill_value(dcpl, H5T_NATIVE_DOUBLE, &zero) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: dataset properties of /particle_fields/%s", name);
-    fspace = H5Screate_simple(rank, dims, maxdims);
-    dset   = H5Dcreate2(grp, name, MPMPointFieldIsInteger(name) ? H5T_STD_I64LE : H5T_NATIVE_DOUBLE, fspace, H5P_DEFAULT, dcpl, H5P_DEFAULT); /* ids as integers; HDF5 converts */
-    H5Sclose(fspace);
-    H5Pclose(dcpl);
-    PetscCheck(dset >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot create /particle_fields/%s", name);
-  }
-  fspace = H5Dget_space(dset);
-  mspace = H5Screate_simple(rank, count, NULL);
-  if (n) {
-    PetscCheck(H5Sselect_hyperslab(fspace, H5S_SELECT_SET, start, NULL, count, NULL) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: selection in /particle_fields/%s", name);
-  } else {
-    H5Sselect_none(fspace);
-    H5Sselect_none(mspace);
-  }
-  dxpl = H5Pcreate(H5P_DATASET_XFER);
-  H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE);
-  PetscCheck(H5Dwrite(dset, H5T_NATIVE_DOUBLE, mspace, fspace, dxpl, a) >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot write /particle_fields/%s in %s/petmpm.h5", name, mpm->outdir);
-  H5Pclose(dxpl);
-  H5Sclose(mspace);
-  H5Sclose(fspace);
+  PetscCall(MPMH5Extendable(grp, name, rank, dims, maxdims, chunk, MPMPointFieldIsInteger(name) ? H5T_STD_I64LE : H5T_NATIVE_DOUBLE, PETSC_TRUE, &dset)); /* ids as integers; HDF5 converts */
+  PetscCall(MPMH5Block(dset, PETSC_TRUE, start, count, (void *)a, name));
   H5Dclose(dset);
   H5Gclose(grp);
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -192,43 +216,17 @@ static PetscErrorCode MPMWritePointRow(MPM mpm, const char name[], PetscInt bs, 
    others one row longer, and readers go by /time). */
 static PetscErrorCode MPMWriteOutputRow(MPM mpm, const char name[], PetscReal value)
 {
-  hid_t       file, dset, fspace, mspace;
-  hsize_t     dims[1] = {(hsize_t)mpm->noutputs + 1}, start[1] = {(hsize_t)mpm->noutputs}, count[1] = {1};
-  PetscMPIInt rank;
+  hsize_t       dims[1] = {(hsize_t)mpm->noutputs + 1}, start[1] = {(hsize_t)mpm->noutputs}, count[1] = {1};
+  const hsize_t maxdims[1] = {H5S_UNLIMITED}, chunk[1] = {64};
+  hid_t         file, dset;
+  PetscMPIInt   rank;
 
   PetscFunctionBegin;
   PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
+  count[0] = rank ? 0 : 1;
   PetscCall(PetscViewerHDF5GetFileId(mpm->h5, &file));
-  if (H5Lexists(file, name, H5P_DEFAULT) > 0) {
-    dset = H5Dopen2(file, name, H5P_DEFAULT);
-    PetscCheck(dset >= 0 && H5Dset_extent(dset, dims) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot extend /%s in %s/petmpm.h5", name, mpm->outdir);
-  } else {
-    const hsize_t maxdims[1] = {H5S_UNLIMITED}, chunk[1] = {64};
-    hid_t         dcpl = H5Pcreate(H5P_DATASET_CREATE);
-    PetscCheck(H5Pset_chunk(dcpl, 1, chunk) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: dataset properties of /%s", name);
-    fspace = H5Screate_simple(1, dims, maxdims);
-    dset   = H5Dcreate2(file, name, H5T_NATIVE_DOUBLE, fspace, H5P_DEFAULT, dcpl, H5P_DEFAULT);
-    H5Sclose(fspace);
-    H5Pclose(dcpl);
-    PetscCheck(dset >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot create /%s in %s/petmpm.h5", name, mpm->outdir);
-  }
-  fspace = H5Dget_space(dset);
-  mspace = H5Screate_simple(1, count, NULL);
-  if (rank) {
-    H5Sselect_none(fspace);
-    H5Sselect_none(mspace);
-  } else
-    H5Sselect_hyperslab(fspace, H5S_SELECT_SET, start, NULL, count, NULL);
-  {
-    hid_t  dxpl = H5Pcreate(H5P_DATASET_XFER);
-    herr_t err;
-    H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE);
-    err = H5Dwrite(dset, H5T_NATIVE_DOUBLE, mspace, fspace, dxpl, &value);
-    H5Pclose(dxpl);
-    PetscCheck(err >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot write /%s in %s/petmpm.h5", name, mpm->outdir);
-  }
-  H5Sclose(mspace);
-  H5Sclose(fspace);
+  PetscCall(MPMH5Extendable(file, name, 1, dims, maxdims, chunk, H5T_NATIVE_DOUBLE, PETSC_FALSE, &dset));
+  PetscCall(MPMH5Block(dset, PETSC_TRUE, start, count, &value, name));
   H5Dclose(dset);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -266,7 +264,7 @@ static PetscErrorCode MPMWriteGrid(MPM mpm)
   const MPMGrid *g = &mpm->grid;
   const PetscInt d = g->dim, dof = 1 + d, rank = 2 + d;
   hsize_t        dims[5], start[5], count[5], maxdims[5], chunk[5], csize = 1;
-  hid_t          file, grp, dset, fspace, mspace, dxpl;
+  hid_t          file, grp, dset;
   PetscReal     *a;
   const MPMNode *node;
   PetscInt       nown = MPMNumOwnedNodes(g);
@@ -301,32 +299,8 @@ static PetscErrorCode MPMWriteGrid(MPM mpm)
   PetscCall(PetscViewerHDF5GetFileId(mpm->h5, &file));
   grp = H5Lexists(file, "grid", H5P_DEFAULT) > 0 ? H5Gopen2(file, "grid", H5P_DEFAULT) : H5Gcreate2(file, "grid", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   PetscCheck(grp >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot open /grid in %s/petmpm.h5", mpm->outdir);
-  if (H5Lexists(grp, "nodes", H5P_DEFAULT) > 0) {
-    dset = H5Dopen2(grp, "nodes", H5P_DEFAULT);
-    PetscCheck(dset >= 0 && H5Dset_extent(dset, dims) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot extend /grid/nodes in %s/petmpm.h5", mpm->outdir);
-  } else {
-    hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
-    PetscCheck(H5Pset_chunk(dcpl, (int)rank, chunk) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: dataset properties of /grid/nodes");
-    fspace = H5Screate_simple((int)rank, dims, maxdims);
-    dset   = H5Dcreate2(grp, "nodes", H5T_NATIVE_DOUBLE, fspace, H5P_DEFAULT, dcpl, H5P_DEFAULT);
-    H5Sclose(fspace);
-    H5Pclose(dcpl);
-    PetscCheck(dset >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot create /grid/nodes in %s/petmpm.h5", mpm->outdir);
-  }
-  fspace = H5Dget_space(dset);
-  mspace = H5Screate_simple((int)rank, count, NULL);
-  if (nown)
-    H5Sselect_hyperslab(fspace, H5S_SELECT_SET, start, NULL, count, NULL);
-  else {
-    H5Sselect_none(fspace);
-    H5Sselect_none(mspace);
-  }
-  dxpl = H5Pcreate(H5P_DATASET_XFER);
-  H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE);
-  PetscCheck(H5Dwrite(dset, H5T_NATIVE_DOUBLE, mspace, fspace, dxpl, a) >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot write /grid/nodes in %s/petmpm.h5", mpm->outdir);
-  H5Pclose(dxpl);
-  H5Sclose(mspace);
-  H5Sclose(fspace);
+  PetscCall(MPMH5Extendable(grp, "nodes", (int)rank, dims, maxdims, chunk, H5T_NATIVE_DOUBLE, PETSC_FALSE, &dset));
+  PetscCall(MPMH5Block(dset, PETSC_TRUE, start, count, a, "/grid/nodes"));
   H5Dclose(dset);
   H5Gclose(grp);
   PetscCall(PetscFree(a));

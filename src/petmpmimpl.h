@@ -279,6 +279,7 @@ PETSC_INTERN PetscInt       MPMFieldBlockSize(PetscInt, PetscInt);
 PETSC_INTERN PetscErrorCode MPMCreateGrid(MPM);
 PETSC_INTERN PetscErrorCode MPMGridLocalToGlobal(MPM);
 PETSC_INTERN PetscErrorCode MPMRebalance(MPM);
+PETSC_INTERN PetscErrorCode MPMDestroyGrid(MPM);
 PETSC_INTERN PetscErrorCode MPMPointBalance(MPM, PetscReal *, PetscInt *, PetscInt *);
 PETSC_INTERN PetscErrorCode MPMGridGlobalToLocal(MPM);
 PETSC_INTERN PetscErrorCode MPMGridZeroForScatter(MPM, PetscInt, const PetscReal[], MPMNode *);
@@ -304,6 +305,7 @@ PETSC_INTERN PetscErrorCode MPMDomainApply(MPMModule, MPM, const MPMStepContext 
 PETSC_INTERN PetscErrorCode MPMConductionApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMRelaxApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMNodalMeanSetUp(MPM);
+PETSC_INTERN PetscErrorCode MPMNodalMeanSum(MPM, PetscReal **);
 PETSC_INTERN PetscErrorCode MPMPoppingApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMPointsNodalMean(MPM, const MPMPoints *, const PetscReal[], const PetscReal[], PetscReal[], PetscReal[]);
 PETSC_INTERN void           MPMPointEOSUpdate(MPM, MPMPoints *, PetscInt, PetscReal, PetscReal);

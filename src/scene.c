@@ -129,15 +129,12 @@ PetscErrorCode MPMSceneSetFromOptions(MPM mpm, PetscOptionItems *PetscOptionsObj
       PetscCall(MPMStrengthIsActive(mpm->mat[i].strength, &active));
       PetscCall(MPMEOSHasPressure(mpm->mat[i].eos, &pressure));
       PetscCheck(active || pressure || help, mpm->comm, PETSC_ERR_USER_INPUT, "Material %s has neither an equation of state (-%seos_type is none) nor a strength model (-%sstrength_type): it could carry no stress", names[i], prefix, prefix);
-      if (active && !help) { /* a gas has no shear strength: only a viscosity */
+      if (active && !help && mpm->mat[i].eos->fluid && MPMStrengthIsSolid(mpm->mat[i].strength)) { /* a gas or liquid has no elastic shear: only a viscosity */
         MPMEOSType      et;
         MPMStrengthType st;
-        PetscBool       gas, viscous;
         PetscCall(MPMEOSGetType(mpm->mat[i].eos, &et));
         PetscCall(MPMStrengthGetType(mpm->mat[i].strength, &st));
-        PetscCall(PetscStrcmp(et, MPMEOSIDEALGAS, &gas));
-        PetscCall(PetscStrcmp(st, MPMSTRENGTHNEWTONIAN, &viscous));
-        PetscCheck(!gas || viscous, mpm->comm, PETSC_ERR_USER_INPUT, "-%sstrength_type %s on an ideal gas (-%seos_type idealgas): a gas has no shear strength; valid are none and newtonian (a viscosity)", prefix, st, prefix);
+        SETERRQ(mpm->comm, PETSC_ERR_USER_INPUT, "-%sstrength_type %s on a fluid (-%seos_type %s): a gas or a liquid has no elastic shear; valid are none and a viscosity (newtonian)", prefix, st, prefix, et);
       }
       if (active) {
         mpm->has_stress = PETSC_TRUE;

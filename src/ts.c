@@ -105,7 +105,7 @@ static PetscErrorCode MPMTSPostStep(TS ts)
   }
   {
     PetscMPIInt sig[2] = {(PetscMPIInt)MPMSignalCaught, mpm->ckpt_wall > 0.0 && MPI_Wtime() - mpm->ckpt_last >= mpm->ckpt_wall}; /* rank 0's clock decides */
-    PetscCallMPI(MPI_Bcast(&sig[1], 1, MPI_INT, 0, mpm->comm));
+    if (mpm->ckpt_wall > 0.0) PetscCallMPI(MPI_Bcast(&sig[1], 1, MPI_INT, 0, mpm->comm));
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, sig, 1, MPI_INT, MPI_MAX, mpm->comm));
     if (sig[0] || sig[1] || (mpm->ckpt_interval > 0 && step % mpm->ckpt_interval == 0)) PetscCall(MPMCheckpointWrite(mpm));
     if (sig[0]) {

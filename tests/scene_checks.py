@@ -292,6 +292,20 @@ def test_failure():
 
 
 
+def signal_in_loop(cmd, sig):
+    """Runs cmd (with -mpm_progress set), sends sig once its first progress line says the time loop is running;
+    returns the exit code and everything it printed."""
+    p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=ENV)
+    lines = []
+    for line in p.stdout:
+        lines.append(line)
+        if " t = " in line and "to go" in line:
+            break
+    p.send_signal(sig)
+    out, _ = p.communicate(timeout=120)
+    return p.returncode, "".join(lines) + out
+
+
 def test_interrupt():
     """SIGTERM during the time loop (on one rank and on two): the step finishes, the last state is written as a complete
     output (every dataset as long as /time, the XDMF naming each output) and the run exits non-zero with a message
@@ -302,16 +316,8 @@ def test_interrupt():
     for ranks in (1, 2):
         with tempfile.TemporaryDirectory() as d:
             cmd = ([EXE] if ranks == 1 else ["mpiexec", "-n", "2", EXE]) + ["-options_file", os.path.join(SRC, "inputs", "dam_break_2d.opts"), "-mpm_cells", "240,100", "-mpm_progress", "0.2", "-mpm_output", d]
-            p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=ENV)
-            lines = []
-            for line in p.stdout:  # the first progress line: the time loop is running
-                lines.append(line)
-                if " t = " in line and "to go" in line:
-                    break
-            p.send_signal(signal.SIGTERM)
-            out, _ = p.communicate(timeout=120)
-            text = "".join(lines) + out
-            check(p.returncode != 0 and "Interrupted by SIGTERM after step" in text and d in text, f"{ranks} rank(s): SIGTERM: exit {p.returncode}, message names the signal, the step and the output")
+            rc, text = signal_in_loop(cmd, signal.SIGTERM)
+            check(rc != 0 and "Interrupted by SIGTERM after step" in text and d in text, f"{ranks} rank(s): SIGTERM: exit {rc}, message names the signal, the step and the output")
             with h5py.File(os.path.join(d, "petmpm.h5"), "r") as f:
                 nt = f["time"].shape[0]
                 lens = {k: f["particle_fields/" + k].shape[0] for k in f["particle_fields"]}
@@ -320,12 +326,7 @@ def test_interrupt():
             check(nt >= 2 and all(n == nt for n in lens.values()) and len(counts) == nt and len(times) == nt, f"{ranks} rank(s): a complete last output: {nt} times, datasets {sorted(set(lens.values()))}, XDMF {len(times)}")
     with tempfile.TemporaryDirectory() as d:  # SIGKILL: the outputs before it stay complete and readable
         cmd = [EXE, "-options_file", os.path.join(SRC, "inputs", "dam_break_2d.opts"), "-mpm_cells", "240,100", "-mpm_progress", "0.2", "-mpm_output_interval", "3", "-mpm_output", d]
-        p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=ENV)
-        for line in p.stdout:
-            if " t = " in line and "to go" in line:
-                break
-        p.send_signal(signal.SIGKILL)
-        p.communicate(timeout=60)
+        signal_in_loop(cmd, signal.SIGKILL)
         with h5py.File(os.path.join(d, "petmpm.h5"), "r") as f:
             t = f["time"][:]
             lens = {k: f["particle_fields/" + k].shape[0] for k in f["particle_fields"]}
@@ -377,14 +378,9 @@ def test_restart():
         e = os.path.join(d, "e")  # SIGTERM: a checkpoint, continued
         big = ["-options_file", os.path.join(SRC, "inputs", "dam_break_2d.opts"), "-mpm_cells", "120,50"]
         run([*big, "-mpm_output", os.path.join(d, "f"), "-mpm_report", os.path.join(d, "f", "report.json")])
-        p = subprocess.Popen([EXE, *big, "-mpm_output", e, "-mpm_progress", "0.2"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=ENV)
-        for line in p.stdout:
-            if " t = " in line and "to go" in line:
-                break
-        p.send_signal(signal.SIGTERM)
-        out, _ = p.communicate(timeout=120)
+        rc, out = signal_in_loop([EXE, *big, "-mpm_output", e, "-mpm_progress", "0.2"], signal.SIGTERM)
         ck = [f for f in os.listdir(e) if f.startswith("checkpoint-")]
-        check(p.returncode != 0 and len(ck) == 1 and ck[0] in out, f"SIGTERM: a checkpoint written and named ({ck})")
+        check(rc != 0 and len(ck) == 1 and ck[0] in out, f"SIGTERM: a checkpoint written and named ({ck})")
         if ck:
             run([*big, "-mpm_output", e, "-mpm_restart", os.path.join(e, ck[0]), "-mpm_report", os.path.join(e, "report.json")])
             diff = same_files(os.path.join(d, "f"), e)

@@ -9,6 +9,7 @@ static PetscErrorCode MPMEOSReset(void *obj)
 {
   PetscFunctionBegin;
   ((MPMEOS)obj)->pressureless = PETSC_FALSE;
+  ((MPMEOS)obj)->fluid        = PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -26,6 +26,7 @@ typedef struct {
 struct _p_MPMEOS {
   MPM_CLASS_HEADER(MPMEOSOps);
   PetscBool pressureless; /* the type gives no pressure (none): the material needs a strength model */
+  PetscBool fluid;        /* the type is a gas's or a liquid's: the material carries no elastic shear */
 };
 
 PETSC_INTERN PetscErrorCode MPMEOSPressureBatch(MPMEOS, PetscInt, const PetscReal[], const PetscReal[], PetscReal[], PetscReal[]);

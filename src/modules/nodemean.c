@@ -29,6 +29,20 @@ PetscErrorCode MPMNodalMeanSetUp(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The local nodal sums W (the array of mean_l, gotten) added over the ranks that share each node, back in W: nothing to
+   do on one rank, where the local array is the global one. */
+PetscErrorCode MPMNodalMeanSum(MPM mpm, PetscReal **W)
+{
+  PetscFunctionBegin;
+  if (!mpm->mean_g) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(VecRestoreArray(mpm->mean_l, W));
+  PetscCall(VecZeroEntries(mpm->mean_g));
+  PetscCall(DMLocalToGlobal(mpm->mean_da, mpm->mean_l, ADD_VALUES, mpm->mean_g));
+  PetscCall(DMGlobalToLocal(mpm->mean_da, mpm->mean_g, INSERT_VALUES, mpm->mean_l));
+  PetscCall(VecGetArray(mpm->mean_l, W));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode MPMPointsNodalMean(MPM mpm, const MPMPoints *pts, const PetscReal w[], const PetscReal q[], PetscReal qbar[], PetscReal q2bar[])
 {
   const PetscBool one = (PetscBool)(mpm->lnodes == mpm->nodes); /* one rank, no ghosts: the local array is the global one */
@@ -50,13 +64,7 @@ PetscErrorCode MPMPointsNodalMean(MPM mpm, const MPMPoints *pts, const PetscReal
       hi = PetscMax(hi, st.node[a]);
     }
   }
-  if (!one) {
-    PetscCall(VecRestoreArray(mpm->mean_l, &W));
-    PetscCall(VecZeroEntries(mpm->mean_g));
-    PetscCall(DMLocalToGlobal(mpm->mean_da, mpm->mean_l, ADD_VALUES, mpm->mean_g));
-    PetscCall(DMGlobalToLocal(mpm->mean_da, mpm->mean_g, INSERT_VALUES, mpm->mean_l));
-    PetscCall(VecGetArray(mpm->mean_l, &W));
-  }
+  PetscCall(MPMNodalMeanSum(mpm, &W));
   for (PetscInt p = 0; p < pts->n; p++) { /* the interpolants of q_I and q_I^2 at the point */
     PetscReal s1 = 0.0, s2 = 0.0;
     if (w[p] == 0.0) continue;

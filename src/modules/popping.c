@@ -47,13 +47,7 @@ PetscErrorCode MPMPoppingApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx
       const PetscReal w = MPMCornerWeight(g, &pts.f[MPM_FIELD_POSITION][p * d], c, &node);
       W[2 * node] += w;
     }
-  if (mpm->mean_g) {
-    PetscCall(VecRestoreArray(mpm->mean_l, &W));
-    PetscCall(VecZeroEntries(mpm->mean_g));
-    PetscCall(DMLocalToGlobal(mpm->mean_da, mpm->mean_l, ADD_VALUES, mpm->mean_g));
-    PetscCall(DMGlobalToLocal(mpm->mean_da, mpm->mean_g, INSERT_VALUES, mpm->mean_l));
-    PetscCall(VecGetArray(mpm->mean_l, &W));
-  }
+  PetscCall(MPMNodalMeanSum(mpm, &W));
   for (PetscInt p = 0; p < pts.n; p++) {
     PetscReal other = 0.0, v2 = 0.0;
     for (PetscInt c = 0; c < nc; c++) {

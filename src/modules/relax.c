@@ -55,7 +55,7 @@ PetscErrorCode MPMRelaxApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
     PetscReal          pr, c2;
     w[p] = q[p] = 0.0;
     cell[p]     = MPMLocalCell(&mpm->grid, &pts.f[MPM_FIELD_POSITION][p * d]);
-    if ((mat->strength && (mat->strength->G > 0.0 || mat->strength->needs_F)) || cell[p] < 0) continue; /* solids keep their pressure pattern: a viscous liquid relaxes */
+    if (MPMStrengthIsSolid(mat->strength) || cell[p] < 0) continue; /* solids keep their pressure pattern: a viscous liquid relaxes */
     MPMEOSPressureKernel(mat->eos, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_ENERGY][p], &pr, &c2);
     if (!(c2 > 0.0)) continue;
     if (PetscAbsReal(MPMPointDivergence(&pts, d, p)) * mpm->grid.hmin > mpm->pressure_relax_mach * PetscSqrtReal(c2)) continue; /* in a shock or a fast expansion */

@@ -27,4 +27,10 @@ struct _p_MPMStrength {
   PetscReal mu;      /* dynamic viscosity of the viscous types [g/(cm s)]: the time step's diffusion limit */
 };
 
+/* A solid's model: elastic shear (a shear modulus or the deformation gradient), not a viscosity alone. */
+static inline PetscBool MPMStrengthIsSolid(MPMStrength str)
+{
+  return (PetscBool)(str && (str->G > 0.0 || str->needs_F));
+}
+
 PETSC_INTERN PetscErrorCode MPMStrengthStressBatch(MPMStrength, PetscInt, PetscReal, PetscInt, const PetscInt[], const PetscReal[], const PetscReal[], const PetscReal[], const PetscReal[], PetscReal[], PetscReal[], PetscReal[]);

@@ -92,6 +92,7 @@ PetscErrorCode MPMEOSCreate_IdealGas(MPMEOS eos)
   ig->gamma               = 1.4;
   ig->cv                  = 8.33e10; /* air */
   eos->data               = ig;
+  eos->fluid              = PETSC_TRUE;
   eos->ops.pressure       = MPMEOSPressure_IdealGas;
   eos->ops.temperature    = MPMEOSTemperature_IdealGas;
   eos->ops.pressure_n     = MPMEOSPressure_IdealGas_n;

@@ -115,6 +115,7 @@ PetscErrorCode MPMEOSCreate_Tait(MPMEOS eos)
   t->cv                   = 4.18e7 * MPM_KELVIN_PER_EV;
   t->B                    = t->rho0 * t->c0 * t->c0 / t->gamma;
   eos->data               = t;
+  eos->fluid              = PETSC_TRUE;
   eos->ops.pressure       = MPMEOSPressure_Tait;
   eos->ops.temperature    = MPMEOSTemperature_Tait;
   eos->ops.pressure_n     = MPMEOSPressure_Tait_n;

@@ -1,0 +1,8 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* HDF5 helpers of the output and the checkpoints (src/output.c). */
+#pragma once
+#include "petmpmimpl.h"
+#include <petscviewerhdf5.h>
+
+PETSC_INTERN PetscErrorCode MPMH5Block(hid_t, PetscBool, const hsize_t[], const hsize_t[], void *, const char[]);
+PETSC_INTERN PetscErrorCode MPMH5Extendable(hid_t, const char[], int, hsize_t[], const hsize_t[], const hsize_t[], hid_t, PetscBool, hid_t *);
