@@ -6,7 +6,9 @@
    axis into two children at x_p -+ F_p e_k s_k l0_k / 2 (the centres of the two halves of its domain) with half its
    mass and volume and all of its other state (velocity, specific energy, stress, F, plastic strain): mass, momentum,
    kinetic and internal energy, volume and the first moment sum_p m_p x_p are conserved exactly, and the children's
-   domains tile the parent's. So a stretching region keeps points at most -mpm_split_length cells apart (a near-vacuum
+   domains tile the parent's. On an axisymmetric grid (x = r) a volume is per radian, r dA, so the half at r_c takes
+   the share r_c / (2 r_p) of the mass and volume instead of 1/2 (the density stays the parent's; the axial first
+   moment is conserved, the radial one gains m a_r^2 / r_p); a point whose child would reach r <= 0 does not split. So a stretching region keeps points at most -mpm_split_length cells apart (a near-vacuum
    rarefaction keeps at least one point per cell), and a CPDI domain is split before its corners leave the reach of
    the ghost layer. One child keeps the parent's id; the other takes the next unused id, given in the order of the
    parents' (id, material) over all ranks, so that the ids do not depend on the number of ranks. Cf.
@@ -15,7 +17,7 @@
 #include "../petmpmimpl.h"
 
 /* The axis along which point p should split (-1: none) and whether a split was refused at the level limit. */
-static inline PetscInt MPMSplitAxis(const MPM mpm, const PetscReal *F, const PetscReal *s, PetscBool *refused)
+static inline PetscInt MPMSplitAxis(const MPM mpm, const PetscReal *x, const PetscReal *F, const PetscReal *s, PetscBool *refused)
 {
   const MPMGrid *g    = &mpm->grid;
   const PetscInt d    = g->dim;
@@ -35,6 +37,7 @@ static inline PetscInt MPMSplitAxis(const MPM mpm, const PetscReal *F, const Pet
     *refused = PETSC_TRUE;
     axis     = -1;
   }
+  if (axis >= 0 && g->axisym && x[0] <= PetscAbsReal(F[axis]) * 0.5 * s[axis] * MPMLatticeHalfWidth(mpm, axis)) axis = -1; /* a child would sit on or beyond the axis r = 0 */
   return axis;
 }
 
@@ -58,7 +61,7 @@ PetscErrorCode MPMSplitApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
   PetscCall(PetscMalloc2(n + 1, &axis, n + 1, &place));
   for (PetscInt p = 0; p < n; p++) {
     PetscBool refused = PETSC_FALSE;
-    axis[p]           = MPMSplitAxis(mpm, &pts.f[MPM_FIELD_DEFGRAD][p * d * d], &pts.f[MPM_FIELD_DOMAINSCALE][p * d], &refused);
+    axis[p]           = MPMSplitAxis(mpm, &pts.f[MPM_FIELD_POSITION][p * d], &pts.f[MPM_FIELD_DEFGRAD][p * d * d], &pts.f[MPM_FIELD_DOMAINSCALE][p * d], &refused);
     nsplit += axis[p] >= 0;
     nrefused += refused;
   }
@@ -116,8 +119,13 @@ PetscErrorCode MPMSplitApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
       pts.f[MPM_FIELD_REFPOSITION][p * d + k] -= a;
       pts.f[MPM_FIELD_REFPOSITION][c * d + k] += a;
     }
-    pts.f[MPM_FIELD_MASS][p] = pts.f[MPM_FIELD_MASS][c] = 0.5 * pts.f[MPM_FIELD_MASS][p];
-    pts.f[MPM_FIELD_VOLUME][p] = pts.f[MPM_FIELD_VOLUME][c] = 0.5 * pts.f[MPM_FIELD_VOLUME][p];
+    { /* the halves' shares: 1/2 each, or on an axisymmetric grid r_child / (2 r_p), the per-radian volume r dA of each half */
+      const PetscReal wp = g->axisym ? 0.5 * pts.f[MPM_FIELD_POSITION][p * d] / (pts.f[MPM_FIELD_POSITION][p * d] + F[k] * a) : 0.5, wc = 1.0 - wp;
+      pts.f[MPM_FIELD_MASS][c]   = wc * pts.f[MPM_FIELD_MASS][p];
+      pts.f[MPM_FIELD_MASS][p]   = wp * pts.f[MPM_FIELD_MASS][p];
+      pts.f[MPM_FIELD_VOLUME][c] = wc * pts.f[MPM_FIELD_VOLUME][p];
+      pts.f[MPM_FIELD_VOLUME][p] = wp * pts.f[MPM_FIELD_VOLUME][p];
+    }
     pts.f[MPM_FIELD_DOMAINSCALE][p * d + k] = pts.f[MPM_FIELD_DOMAINSCALE][c * d + k] = 0.5 * sk;
     pts.f[MPM_FIELD_ID][c]                                                            = mpm->next_id + place[p];
     c++;
