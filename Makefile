@@ -41,6 +41,8 @@ verification: build
 	$(if $(FRESH),rm -rf $(addprefix docs/studies/,$(STUDIES)))
 	for s in $(STUDIES); do $(PY) scripts/study --study scripts/studies/$$s.json --out docs/studies/$$s || exit 1; done
 	$(PY) scripts/study --summary $(addprefix docs/studies/,$(STUDIES)) --markdown docs/verification.md
+	$(BUILD)/petmpm -options_file inputs/flyer_plate.opts -mpm_output output/flyer_plate >/dev/null
+	$(PY) scripts/plot_profiles.py output/flyer_plate/petmpm.h5 docs/verification_flyer_profiles.png
 	$(PY) scripts/hardcases.py --exe $(BUILD)/petmpm --out docs/hard-cases.md
 	$(PY) scripts/taylor.py --exe $(BUILD)/petmpm
 	$(PY) scripts/dambreak.py --exe $(BUILD)/petmpm

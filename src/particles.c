@@ -442,9 +442,10 @@ PetscErrorCode MPMMigrate(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Sums m_p and V_p of the points into nb bins (bin(ctx, x_p) < 0 or >= nb: none) over all ranks, and gives the
-   volume-weighted density of each bin (0 for an empty one) and, if vol is not NULL, its points' volume. */
-static PetscErrorCode MPMBinnedDensity(MPM mpm, PetscInt nb, PetscInt (*bin)(const void *, const PetscReal[]), const void *ctx, PetscReal rho[], PetscReal vol[])
+/* Sums V_p q_p (q NULL: m_p) and V_p of the points into nb bins (bin(ctx, x_p) < 0 or >= nb: none) over all ranks,
+   and gives the volume-weighted mean of each bin (with q NULL its density; 0 for an empty bin) and, if vol is not
+   NULL, its points' volume. */
+static PetscErrorCode MPMBinnedMean(MPM mpm, PetscInt nb, PetscInt (*bin)(const void *, const PetscReal[]), const void *ctx, const PetscReal q[], PetscReal mean[], PetscReal vol[])
 {
   PetscReal *sum;
   MPMPoints  pts;
@@ -455,13 +456,13 @@ static PetscErrorCode MPMBinnedDensity(MPM mpm, PetscInt nb, PetscInt (*bin)(con
   for (PetscInt p = 0; p < pts.n; p++) {
     const PetscInt b = bin(ctx, &pts.f[MPM_FIELD_POSITION][p * mpm->grid.dim]);
     if (b < 0 || b >= nb) continue;
-    sum[2 * b] += pts.f[MPM_FIELD_MASS][p];
+    sum[2 * b] += q ? pts.f[MPM_FIELD_VOLUME][p] * q[p] : pts.f[MPM_FIELD_MASS][p];
     sum[2 * b + 1] += pts.f[MPM_FIELD_VOLUME][p];
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, sum, 2 * nb, MPIU_REAL, MPIU_SUM, mpm->comm));
   for (PetscInt b = 0; b < nb; b++) {
-    rho[b] = sum[2 * b + 1] > 0 ? sum[2 * b] / sum[2 * b + 1] : 0.0;
+    mean[b] = sum[2 * b + 1] > 0 ? sum[2 * b] / sum[2 * b + 1] : 0.0;
     if (vol) vol[b] = sum[2 * b + 1];
   }
   PetscCall(PetscFree(sum));
@@ -471,24 +472,37 @@ static PetscErrorCode MPMBinnedDensity(MPM mpm, PetscInt nb, PetscInt (*bin)(con
 typedef struct {
   const MPMGrid *g;
   PetscInt       nb;
+  PetscReal      lo, hi; /* the points with lo < x < hi count */
 } MPMXBins;
 
 static PetscInt MPMXBin(const void *ctx, const PetscReal x[])
 {
   const MPMXBins *xb = (const MPMXBins *)ctx;
   const PetscInt  b  = (PetscInt)PetscFloorReal((x[0] - xb->g->lo[0]) / (xb->g->hi[0] - xb->g->lo[0]) * xb->nb);
-  return PetscMax(0, PetscMin(xb->nb - 1, b)); /* clamped: every point counts */
+  if (!(x[0] > xb->lo && x[0] < xb->hi)) return -1;
+  return PetscMax(0, PetscMin(xb->nb - 1, b)); /* clamped: every point in the window counts */
 }
 
 /* Volume-weighted density profile along x, binned by grid column (bin centres xc), on every rank. */
 PetscErrorCode MPMXProfile(MPM mpm, PetscInt nb, PetscReal xc[], PetscReal rho[])
 {
   const MPMGrid *g  = &mpm->grid;
-  const MPMXBins xb = {g, nb};
+  const MPMXBins xb = {g, nb, PETSC_MIN_REAL, PETSC_MAX_REAL};
 
   PetscFunctionBegin;
-  PetscCall(MPMBinnedDensity(mpm, nb, MPMXBin, &xb, rho, NULL));
+  PetscCall(MPMBinnedMean(mpm, nb, MPMXBin, &xb, NULL, rho, NULL));
   for (PetscInt b = 0; b < nb; b++) xc[b] = g->lo[0] + (b + 0.5) * (g->hi[0] - g->lo[0]) / nb;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The volume-weighted mean of the point values q[] (the local points' order) in each grid column along x, over the
+   points with lo < x < hi, and the points' volume there (0: empty, where the mean reads 0); on every rank. */
+PetscErrorCode MPMXProfileOf(MPM mpm, const PetscReal q[], PetscReal lo, PetscReal hi, PetscReal mean[], PetscReal vol[])
+{
+  const MPMXBins xb = {&mpm->grid, mpm->grid.cells[0], lo, hi};
+
+  PetscFunctionBegin;
+  PetscCall(MPMBinnedMean(mpm, xb.nb, MPMXBin, &xb, q, mean, vol));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -514,7 +528,7 @@ PetscErrorCode MPMRadialProfile(MPM mpm, const PetscReal c[], PetscInt nd, Petsc
   const MPMShells sh = {c, nd, w};
 
   PetscFunctionBegin;
-  PetscCall(MPMBinnedDensity(mpm, nb, MPMShellBin, &sh, rho, vol));
+  PetscCall(MPMBinnedMean(mpm, nb, MPMShellBin, &sh, NULL, rho, vol));
   for (PetscInt b = 0; b < nb; b++) rc[b] = (b + 0.5) * w;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -333,4 +333,5 @@ PETSC_INTERN PetscErrorCode MPMExactInitialize(MPMExact, MPM);
 PETSC_INTERN PetscErrorCode MPMComputeChecks(MPM);
 PETSC_INTERN PetscErrorCode MPMAddCheck(MPM, const char[], PetscReal, PetscReal);
 PETSC_INTERN PetscErrorCode MPMXProfile(MPM, PetscInt, PetscReal[], PetscReal[]);
+PETSC_INTERN PetscErrorCode MPMXProfileOf(MPM, const PetscReal[], PetscReal, PetscReal, PetscReal[], PetscReal[]);
 PETSC_INTERN PetscErrorCode MPMRadialProfile(MPM, const PetscReal[], PetscInt, PetscInt, PetscReal, PetscReal[], PetscReal[], PetscReal[]);

@@ -72,6 +72,8 @@ static inline PetscReal MPMProbeValue(const MPMPoints *pts, PetscInt d, MPMProbe
     return pts->f[MPM_FIELD_VELOCITY][p * d];
   case MPM_PROBE_TEMPERATURE:
     return pts->f[MPM_FIELD_TEMPERATURE][p];
+  case MPM_PROBE_POSITION:
+    return pts->f[MPM_FIELD_POSITION][p * d];
   case MPM_PROBE_SPEED: {
     PetscReal v2 = 0.0;
     for (PetscInt k = 0; k < d; k++) v2 += PetscSqr(pts->f[MPM_FIELD_VELOCITY][p * d + k]);
@@ -99,6 +101,60 @@ PetscErrorCode MPMProbeMax(MPMProbe probe, MPMProbeQuantity quantity, PetscReal 
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &m, 1, MPIU_REAL, MPIU_MAX, mpm->comm));
   *found = (PetscBool)(m > PETSC_MIN_REAL);
   *max   = m;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The volume-weighted mean of a point quantity in each grid column along x (the cells in x, prof[] and vol[] of that
+   length, the caller's), over the points with lo < x < hi; vol[b] is the points' volume in column b (0: empty, where
+   prof[b] reads 0). On every rank. */
+PetscErrorCode MPMProbeProfile(MPMProbe probe, MPMProbeQuantity quantity, PetscReal lo, PetscReal hi, PetscReal prof[], PetscReal vol[])
+{
+  MPM            mpm = probe->mpm;
+  const PetscInt d   = mpm->grid.dim;
+  PetscReal     *q;
+  MPMPoints      pts;
+
+  PetscFunctionBegin;
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  PetscCall(PetscMalloc1(pts.n + 1, &q));
+  for (PetscInt p = 0; p < pts.n; p++) q[p] = MPMProbeValue(&pts, d, quantity, p);
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(MPMXProfileOf(mpm, q, lo, hi, prof, vol));
+  PetscCall(PetscFree(q));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The spread of a point quantity over the points with lo < x < hi, point by point (unweighted): its standard
+   deviation about the points' mean; found is false where fewer than two points lie there. */
+PetscErrorCode MPMProbeSpread(MPMProbe probe, MPMProbeQuantity quantity, PetscReal lo, PetscReal hi, PetscReal *std, PetscBool *found)
+{
+  MPM            mpm    = probe->mpm;
+  const PetscInt d      = mpm->grid.dim;
+  PetscReal      sum[3] = {0, 0, 0}, mean = 0.0;
+  MPMPoints      pts;
+
+  PetscFunctionBegin;
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt pass = 0; pass < 2; pass++) { /* the mean, then the squares about it */
+    for (PetscInt p = 0; p < pts.n; p++) {
+      const PetscReal x = pts.f[MPM_FIELD_POSITION][p * d];
+      if (!(x > lo && x < hi)) continue;
+      if (pass)
+        sum[2] += PetscSqr(MPMProbeValue(&pts, d, quantity, p) - mean);
+      else {
+        sum[0] += MPMProbeValue(&pts, d, quantity, p);
+        sum[1] += 1.0;
+      }
+    }
+    if (!pass) {
+      PetscCall(MPIU_Allreduce(MPI_IN_PLACE, sum, 2, MPIU_REAL, MPIU_SUM, mpm->comm));
+      mean = sum[1] > 0.0 ? sum[0] / sum[1] : 0.0;
+    }
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &sum[2], 1, MPIU_REAL, MPIU_SUM, mpm->comm));
+  *found = (PetscBool)(sum[1] > 1.0);
+  *std   = *found ? PetscSqrtReal(sum[2] / sum[1]) : 0.0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -409,7 +409,10 @@ def test_flyer():
     (|mean P_xx| < 1% of the shock stress) and no point in tension beyond 10% of it (a symmetry wall gives none
     before the release returns to it). Measured (elastic): shock speed 0.04%, stress 0.03%, density 0.003%,
     free surface 0.07%, energy 5e-14, outer centimetre density 0.02%, min P_xx -8% of the shock stress (the
-    post-shock ringing of the plateau, docs/verification_flyer.md)."""
+    post-shock ringing of the plateau). The report's profile diagnostics: shock width 5 and 4 cells (<= 6), plateau
+    ringing 0.7% and 0.5% of the shock stress (< 2%), void interface density 0.07% (< 0.5%) and energy 5% and 6% of
+    the shock energy (< 10%; the CTH study's set-up, linear shapes with the cell rule: 3.2% and 215%; the study
+    flyer_setups in docs/verification.md)."""
     import numpy as np
     for name in ["flyer_plate", "flyer_plate_hydro"]:
         with tempfile.TemporaryDirectory() as d:
@@ -420,6 +423,11 @@ def test_flyer():
             check(c["stress_plateau"]["rel_error"] < 0.02, f"{name}: stress plateau {c['stress_plateau']['value']:.5g} dyn/cm^2, rel. error {c['stress_plateau']['rel_error']:.2e} < 2e-2")
             check(c["density_plateau"]["rel_error"] < 0.005, f"{name}: density plateau rel. error {c['density_plateau']['rel_error']:.2e} < 5e-3")
             check(c["free_surface_velocity"]["rel_error"] < 0.01, f"{name}: free-surface velocity {c['free_surface_velocity']['value']:.6g} cm/s, rel. error {c['free_surface_velocity']['rel_error']:.2e} < 1e-2")
+            # the report's profile diagnostics (src/exact/impls/flyer.c): a sharp shock, a quiet plateau, a clean void interface
+            check(c["shock_width"]["value"] <= 6, f"{name}: shock width {c['shock_width']['value']:.0f} cells <= 6")
+            check(c["plateau_ringing"]["value"] < 0.02, f"{name}: plateau ringing {c['plateau_ringing']['value']:.2e} of the shock stress < 2e-2")
+            check(c["interface_density"]["value"] < 0.005, f"{name}: density at the void interface within {c['interface_density']['value']:.2e} of the release density < 5e-3")
+            check(c["interface_energy"]["value"] < 0.1, f"{name}: energy at the void interface within {c['interface_energy']['value']:.2e} of the shock energy < 0.1")
             f = flyer_fields(d)
             P1 = c["stress_plateau"]["reference"]
             pxx = f["pressure"] + f["viscosity"] - f["stress"]

@@ -13,7 +13,8 @@ typedef enum {
   MPM_PROBE_PXX,         /* longitudinal stress P_xx = p + q - s_xx          */
   MPM_PROBE_VELOCITY,    /* v_p along x                                      */
   MPM_PROBE_TEMPERATURE, /* T_p                                            */
-  MPM_PROBE_SPEED        /* |v_p|                                          */
+  MPM_PROBE_SPEED,       /* |v_p|                                          */
+  MPM_PROBE_POSITION     /* x_p along x                                    */
 } MPMProbeQuantity;
 typedef enum {
   MPM_PROBE_VOLUME, /* volume-weighted mean sum V q / sum V                          */
@@ -23,6 +24,8 @@ PETSC_INTERN PetscErrorCode MPMProbeGetTime(MPMProbe, PetscReal *);
 PETSC_INTERN PetscErrorCode MPMProbeDensityCrossing(MPMProbe, PetscReal, PetscReal, PetscReal *);
 PETSC_INTERN PetscErrorCode MPMProbeMean(MPMProbe, MPMProbeQuantity, MPMProbeWeight, PetscBool, PetscReal, PetscReal, PetscReal, PetscReal, PetscReal *, PetscBool *);
 PETSC_INTERN PetscErrorCode MPMProbeDensityProfile(MPMProbe, PetscInt *, const PetscReal **, const PetscReal **);
+PETSC_INTERN PetscErrorCode MPMProbeProfile(MPMProbe, MPMProbeQuantity, PetscReal, PetscReal, PetscReal[], PetscReal[]);
+PETSC_INTERN PetscErrorCode MPMProbeSpread(MPMProbe, MPMProbeQuantity, PetscReal, PetscReal, PetscReal *, PetscBool *);
 PETSC_INTERN PetscErrorCode MPMProbeMax(MPMProbe, MPMProbeQuantity, PetscReal, PetscReal, PetscReal *, PetscBool *);
 PETSC_INTERN PetscErrorCode MPMProbeRadialProfile(MPMProbe, const PetscReal[], PetscInt, PetscInt, PetscReal, PetscReal[], PetscReal[], PetscReal[]);
 PETSC_INTERN PetscErrorCode MPMProbeAddCheck(MPMProbe, const char[], PetscReal, PetscReal);

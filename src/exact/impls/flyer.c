@@ -20,7 +20,9 @@
                            [0.25, 0.75] (x_s - lo), against P_xx1 [dyn/cm^2],
      density_plateau       the same for the density, against rho1 [g/cm^3],
      free_surface_velocity (t1 < t < t2) mass-weighted mean velocity of the points in the outer half of the
-                           released tail, h < z_f (t - t1) / 2, against the tail velocity [cm/s]. */
+                           released tail, h < z_f (t - t1) / 2, against the tail velocity [cm/s];
+   and, with them, profile diagnostics (FlyerShockProfile, FlyerSurfaceProfile below): shock_width, plateau_ringing
+   and plateau_scatter with the shock checks, interface_density and interface_energy with the free surface. */
 #include "../exactimpl.h"
 
 #define FLYER_TABLE 4001
@@ -201,6 +203,84 @@ static PetscErrorCode MPMExactSetUp_Flyer(MPMExact exact, const MPMScene *sc)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Profile diagnostics of the shock at x_s (measured values; the reference is the ideal, 0, or none):
+     shock_width      the grid columns within 20 cells of x_s whose binned density lies between 10% and 90% of the
+                      jump rho0 -> rho1 [cells] (no reference),
+     plateau_ringing  the standard deviation of the column-binned, volume-weighted P_xx + q over the middle half of
+                      the shocked length, relative to P_xx1 (the plateau's ringing about its own mean),
+     plateau_scatter  the same of the points' own P_xx + q, point by point (their noise, which binning averages). */
+static PetscErrorCode FlyerShockProfile(const Exact_Flyer *ef, MPMProbe probe, PetscReal xs)
+{
+  const PetscReal *xc, *rho;
+  PetscReal       *prof, *vol, h, lo = ef->lo + 0.25 * (xs - ef->lo), hi = ef->lo + 0.75 * (xs - ef->lo), sum[3] = {0, 0, 0}, std;
+  PetscInt         n, width = 0;
+  PetscBool        found;
+
+  PetscFunctionBegin;
+  PetscCall(MPMProbeDensityProfile(probe, &n, &xc, &rho));
+  h = n > 1 ? xc[1] - xc[0] : 1.0;
+  for (PetscInt b = 0; b < n; b++) {
+    const PetscReal frac = (rho[b] - ef->rho0) / (ef->rho1 - ef->rho0);
+    if (PetscAbsReal(xc[b] - xs) < 20.0 * h && frac > 0.1 && frac < 0.9) width++;
+  }
+  PetscCall(MPMProbeAddCheck(probe, "shock_width", (PetscReal)width, PETSC_NAN));
+  PetscCall(PetscMalloc2(n, &prof, n, &vol));
+  PetscCall(MPMProbeProfile(probe, MPM_PROBE_PXX, PETSC_MIN_REAL, PETSC_MAX_REAL, prof, vol));
+  for (PetscInt pass = 0; pass < 2; pass++)
+    for (PetscInt b = 0; b < n; b++)
+      if (xc[b] > lo && xc[b] < hi && vol[b] > 0.0) {
+        if (pass)
+          sum[2] += PetscSqr(prof[b] - sum[0] / sum[1]);
+        else {
+          sum[0] += prof[b];
+          sum[1] += 1.0;
+        }
+      }
+  if (sum[1] > 1.0) PetscCall(MPMProbeAddCheck(probe, "plateau_ringing", PetscSqrtReal(sum[2] / sum[1]) / ef->P1, 0.0));
+  PetscCall(PetscFree2(prof, vol));
+  PetscCall(MPMProbeSpread(probe, MPM_PROBE_PXX, lo, hi, &std, &found));
+  if (found) PetscCall(MPMProbeAddCheck(probe, "plateau_scatter", std / ef->P1, 0.0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Profile diagnostics at the free surface after the release (the void interface), over the outer half of the
+   released tail (mass coordinate from the surface below hmax, so the length hmax / rho_f from the outermost point):
+     interface_density  the largest |rho_b / rho_f - 1| over the 8 grid columns nearest the surface, rho_b the
+                        column's volume-weighted density and rho_f the exact released (tail) density,
+     interface_energy   the largest |e(rho_b, T_b) - e_f| / (up^2 / 2) there, T_b the column's volume-weighted
+                        temperature and e_f the tail's specific energy (the overheating or cooling at the interface,
+                        relative to the specific energy the shock put in). */
+static PetscErrorCode FlyerSurfaceProfile(const Exact_Flyer *ef, MPMProbe probe, PetscReal hmax)
+{
+  const PetscReal *xc, *unused;
+  const PetscReal  rf = ef->rho[ef->n - 1], ef_e = ef->e[ef->n - 1];
+  PetscReal       *rho, *T, *vol, xmax, drho = -1.0, de = -1.0;
+  PetscInt         n, seen = 0;
+  PetscBool        found;
+
+  PetscFunctionBegin;
+  PetscCall(MPMProbeDensityProfile(probe, &n, &xc, &unused));
+  PetscCall(MPMProbeMax(probe, MPM_PROBE_POSITION, PETSC_MIN_REAL, PETSC_MAX_REAL, &xmax, &found));
+  if (!found) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscMalloc3(n, &rho, n, &T, n, &vol));
+  PetscCall(MPMProbeProfile(probe, MPM_PROBE_DENSITY, xmax - hmax / rf, PETSC_MAX_REAL, rho, vol));
+  PetscCall(MPMProbeProfile(probe, MPM_PROBE_TEMPERATURE, xmax - hmax / rf, PETSC_MAX_REAL, T, vol));
+  for (PetscInt b = n - 1; b >= 0 && seen < 8; b--) { /* from the surface inward, over the columns holding points */
+    PetscReal e;
+    if (!(vol[b] > 0.0)) continue;
+    PetscCall(MPMEOSEnergyFromTemperature(ef->eos, rho[b], T[b], &e));
+    drho = PetscMax(drho, PetscAbsReal(rho[b] / rf - 1.0));
+    de   = PetscMax(de, PetscAbsReal(e - ef_e) / (0.5 * ef->up * ef->up));
+    seen++;
+  }
+  if (seen) {
+    PetscCall(MPMProbeAddCheck(probe, "interface_density", drho, 0.0));
+    PetscCall(MPMProbeAddCheck(probe, "interface_energy", de, 0.0));
+  }
+  PetscCall(PetscFree3(rho, T, vol));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* While the shock runs in the rod: its speed from the crossing of (rho0 + rho1)/2 on the binned density profile, and
    the plateaus of P_xx + q and of the density over the middle half of the shocked length, volume-weighted. After it
    has reached the free end, before the release returns to the wall: the mass-weighted velocity of the points in the
@@ -221,10 +301,12 @@ static PetscErrorCode MPMExactChecks_Flyer(MPMExact exact, MPMProbe probe)
     PetscCall(MPMProbeAddCheck(probe, "stress_plateau", mean, ef->P1));
     PetscCall(MPMProbeMean(probe, MPM_PROBE_DENSITY, MPM_PROBE_VOLUME, PETSC_FALSE, ef->lo, 1.0, 0.25 * (xs - ef->lo), 0.75 * (xs - ef->lo), &mean, &found));
     PetscCall(MPMProbeAddCheck(probe, "density_plateau", mean, ef->rho1));
+    PetscCall(FlyerShockProfile(ef, probe, xs));
   } else if (t > ef->t1 && t < ef->t2) { /* rho0 (lo + L0 - X) < hmax: the outer half of the released tail */
     const PetscReal hmax = 0.5 * ef->z[ef->n - 1] * (t - ef->t1);
     PetscCall(MPMProbeMean(probe, MPM_PROBE_VELOCITY, MPM_PROBE_MASS, PETSC_TRUE, ef->lo + ef->L0, -ef->rho0, PETSC_MIN_REAL, hmax, &mean, &found));
     if (found) PetscCall(MPMProbeAddCheck(probe, "free_surface_velocity", mean, ef->u[ef->n - 1]));
+    PetscCall(FlyerSurfaceProfile(ef, probe, hmax));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
