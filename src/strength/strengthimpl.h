@@ -11,13 +11,23 @@ typedef struct {
   PetscReal (*flow)(void *, PetscReal, PetscReal, PetscReal); /* (eps_p, deps_p/dt [1/s], T [eV]) -> yield stress [dyn/cm^2]; NULL: never yields */
 } MPMStrengthOps;
 
-/* The batched stress operation of a type from its pointwise one (see MPMStrengthOps::stress_n). */
+/* The batched stress operation of a type from its pointwise one (see MPMStrengthOps::stress_n), with the dimension
+   a compile-time constant in each branch so that the inlined pointwise operation's loops over d unroll (the same
+   operations in the same order: the same numbers). */
+#define MPM_STRENGTH_BATCHED_D(Stress, D)                                                                       \
+  for (PetscInt i = 0; i < n; i++) {                                                                            \
+    const PetscInt p = idx[i];                                                                                  \
+    Stress(ctx, D, dt, &L[p * D * D], F ? &F[p * D * D] : NULL, rho[i], T[p], &s[p * D * D], &epsp[p], &c2[i]); \
+  }
 #define MPM_STRENGTH_BATCHED(Stress)                                                                                                                                                                                                   \
   static void Stress##_n(void *ctx, PetscInt d, PetscReal dt, PetscInt n, const PetscInt idx[], const PetscReal L[], const PetscReal F[], const PetscReal rho[], const PetscReal T[], PetscReal s[], PetscReal epsp[], PetscReal c2[]) \
   {                                                                                                                                                                                                                                    \
-    for (PetscInt i = 0; i < n; i++) {                                                                                                                                                                                                 \
-      const PetscInt p = idx[i];                                                                                                                                                                                                       \
-      Stress(ctx, d, dt, &L[p * d * d], F ? &F[p * d * d] : NULL, rho[i], T[p], &s[p * d * d], &epsp[p], &c2[i]);                                                                                                                      \
+    if (d == 3) {                                                                                                                                                                                                                      \
+      MPM_STRENGTH_BATCHED_D(Stress, 3)                                                                                                                                                                                                \
+    } else if (d == 2) {                                                                                                                                                                                                               \
+      MPM_STRENGTH_BATCHED_D(Stress, 2)                                                                                                                                                                                                \
+    } else {                                                                                                                                                                                                                           \
+      MPM_STRENGTH_BATCHED_D(Stress, 1)                                                                                                                                                                                                \
     }                                                                                                                                                                                                                                  \
   }
 struct _p_MPMStrength {

@@ -15,10 +15,16 @@ typedef struct {
   PetscReal G, A, B, n, C, m, Tm, Tr, epsdot0;
 } Strength_JC;
 
+/* The homologous temperature T* in [0, 1]. */
+static inline PetscReal MPMStrengthHomologous_JC(const Strength_JC *jc, PetscReal T)
+{
+  return PetscMin(1.0, PetscMax(0.0, (T - jc->Tr) / (jc->Tm - jc->Tr)));
+}
+
 /* The thermal softening factor 1 - T*^m, fixed over a step's return (T is the start-of-step temperature). */
 static inline PetscReal MPMStrengthThermal_JC(const Strength_JC *jc, PetscReal T)
 {
-  const PetscReal Tstar = PetscMin(1.0, PetscMax(0.0, (T - jc->Tr) / (jc->Tm - jc->Tr)));
+  const PetscReal Tstar = MPMStrengthHomologous_JC(jc, T);
 
   return 1.0 - (Tstar > 0.0 ? PetscPowReal(Tstar, jc->m) : 0.0);
 }
@@ -42,7 +48,11 @@ static void MPMStrengthStress_JC(void *ctx, PetscInt d, PetscReal dt, const Pets
   const Strength_JC *jc = (const Strength_JC *)ctx;
 
   MPMHypoelasticTrial(d, dt, jc->G, L, s);
-  (void)MPMRadialReturn(d, dt, jc->G, MPMStrengthFlowTheta_JC, ctx, MPMStrengthThermal_JC(jc, T), s, epsp); /* the return passes its T argument through to the flow */
+  /* An elastic trial below A (1 - T*) needs no return and no pow: for m >= 1, T*^m <= T* and eps_p^n >= 0, so the flow
+     stress at the rate 0 of the yield check is at least A (1 - T*), in floating point too (pow is faithfully rounded
+     and the operations are monotonic): the return would find no yield and leave s and eps_p as they are. */
+  if (!(jc->m >= 1.0 && MPMVonMisesStress(d, s) <= jc->A * (1.0 - MPMStrengthHomologous_JC(jc, T))))
+    (void)MPMRadialReturn(d, dt, jc->G, MPMStrengthFlowTheta_JC, ctx, MPMStrengthThermal_JC(jc, T), s, epsp); /* the return passes its T argument through to the flow */
   *c2 = MPMHypoelasticWaveSpeed2(jc->G, rho);
 }
 
