@@ -11,7 +11,8 @@
    The point datasets are written here with HDF5 (chunked, unlimited in outputs and points) rather than by VecView,
    whose datasets have a fixed number of points: point splitting (src/modules/split.c) adds points during the run,
    and a row holds the points of its output followed by zeros. Rank r writes its points at the offset of ranks < r.
-   DIR/petmpm.xmf (XDMF 2) describes the points over time, so ParaView and VisIt open them; it is rewritten
+   DIR/petmpm.xmf (XDMF 2) describes the points and the grid fields over time (two temporal collections, "points" and
+   "grid"), so ParaView and VisIt open them; it is rewritten
    through a temporary file after each output so that it is never left half-written. */
 #include "h5impl.h"
 #include <errno.h>
@@ -86,6 +87,107 @@ static PetscBool MPMPointFieldIsInteger(const char name[])
   return (PetscBool)(!strcmp(name, "id"));
 }
 
+/* One XDMF attribute read as a hyperslab (stride 1) of the HDF5 dataset path of R dimensions full[]: start[] and
+   count[] select it, dims (a string) is its shape. ParaView's XDMF reader takes 3 values per point for a Vector and 9
+   for a Tensor whatever the data's shape, so only those are typed so; MPMXDMFField splits anything else. */
+static void MPMXDMFSlab(FILE *fp, const char name[], const char type[], const char dims[], const char num[], const char path[], PetscInt R, const PetscInt full[], const PetscInt start[], const PetscInt count[])
+{
+  fprintf(fp, "    <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"Node\">\n     <DataItem ItemType=\"HyperSlab\" Dimensions=\"%s\" Type=\"HyperSlab\">\n      <DataItem Dimensions=\"3 %" PetscInt_FMT "\" Format=\"XML\">", name, type, dims, R);
+  for (PetscInt k = 0; k < R; k++) fprintf(fp, "%s%" PetscInt_FMT, k ? " " : "", start[k]);
+  for (PetscInt k = 0; k < R; k++) fprintf(fp, " 1");
+  for (PetscInt k = 0; k < R; k++) fprintf(fp, " %" PetscInt_FMT, count[k]);
+  fprintf(fp, "</DataItem>\n      <DataItem Dimensions=\"");
+  for (PetscInt k = 0; k < R; k++) fprintf(fp, "%s%" PetscInt_FMT, k ? " " : "", full[k]);
+  fprintf(fp, "\" NumberType=\"%s\" Precision=\"8\" Format=\"HDF\">petmpm.h5:%s</DataItem>\n     </DataItem>\n    </Attribute>\n", num, path);
+}
+
+/* A field of bs values per entry, the last dimension of the dataset (bs = 1: none): a Scalar, a 3-vector as Vector, a
+   3 x 3 tensor as Tensor, and any other block (a 2D vector or 2 x 2 tensor) as one Scalar per component, named
+   NAME_x, NAME_y or NAME_xx, NAME_xy, NAME_yx, NAME_yy (NAME_0, NAME_1, ... for other sizes). shape: the selection's
+   shape without the component; start[] and count[] select the entries of one output, their last entry is set here. */
+static void MPMXDMFField(FILE *fp, const char name[], const char num[], const char path[], PetscInt bs, const char shape[], PetscInt R, const PetscInt full[], PetscInt start[], PetscInt count[])
+{
+  static const char *const comp2[] = {"x", "y"}, *const comp4[] = {"xx", "xy", "yx", "yy"};
+  char dims[96], cname[96];
+
+  if (bs == 1 || bs == 3 || bs == 9) {
+    if (bs > 1) {
+      start[R - 1] = 0;
+      count[R - 1] = bs;
+    }
+    (void)PetscSNPrintf(dims, sizeof(dims), bs > 1 ? "%s %" PetscInt_FMT : "%s", shape, bs);
+    MPMXDMFSlab(fp, name, bs == 1 ? "Scalar" : bs == 3 ? "Vector" : "Tensor", dims, num, path, R, full, start, count);
+    return;
+  }
+  for (PetscInt c = 0; c < bs; c++) {
+    start[R - 1] = c;
+    count[R - 1] = 1;
+    if (bs == 2)
+      (void)PetscSNPrintf(cname, sizeof(cname), "%s_%s", name, comp2[c]);
+    else if (bs == 4)
+      (void)PetscSNPrintf(cname, sizeof(cname), "%s_%s", name, comp4[c]);
+    else
+      (void)PetscSNPrintf(cname, sizeof(cname), "%s_%" PetscInt_FMT, name, c);
+    MPMXDMFSlab(fp, cname, "Scalar", shape, num, path, R, full, start, count);
+  }
+}
+
+/* The grid fields over time (/grid/nodes: outputs x nodes (slowest direction first) x (m, v)) as a second temporal
+   collection: a co-rectilinear mesh of the nodes (3D always; a 1D or 2D grid has one node along the others), with
+   the nodal mass and velocity (MPMXDMFField) hyperslabs of the dataset. */
+static PetscErrorCode MPMWriteXDMFGrid(MPM mpm, FILE *fp)
+{
+  const MPMGrid *g = &mpm->grid;
+  const PetscInt d = g->dim, R = 2 + d;
+  PetscInt       n[3] = {1, 1, 1}, full[5], start[5], count[5]; /* n: nodes along z, y, x */
+  PetscReal      o[3] = {0, 0, 0}, h[3] = {1, 1, 1};
+  char           mesh[64];
+
+  PetscFunctionBegin;
+  for (PetscInt k = 0; k < d; k++) {
+    n[2 - k] = g->cells[k] + 1;
+    o[2 - k] = g->lo[k];
+    h[2 - k] = g->h[k];
+  }
+  PetscCall(PetscSNPrintf(mesh, sizeof(mesh), "%" PetscInt_FMT " %" PetscInt_FMT " %" PetscInt_FMT, n[0], n[1], n[2]));
+  full[0] = mpm->noutputs;
+  for (PetscInt i = 0; i < d; i++) full[1 + i] = g->cells[d - 1 - i] + 1;
+  full[R - 1] = 1 + d;
+  fprintf(fp, "  <Grid Name=\"grid\" GridType=\"Collection\" CollectionType=\"Temporal\">\n");
+  for (PetscInt s = 0; s < mpm->noutputs; s++) {
+    fprintf(fp, "   <Grid Name=\"grid_%" PetscInt_FMT "\" GridType=\"Uniform\">\n    <Time Value=\"%.17g\"/>\n", s, (double)mpm->output_times[s]);
+    fprintf(fp, "    <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"%s\"/>\n    <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n", mesh);
+    fprintf(fp, "     <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">%.17g %.17g %.17g</DataItem>\n", (double)o[0], (double)o[1], (double)o[2]);
+    fprintf(fp, "     <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">%.17g %.17g %.17g</DataItem>\n    </Geometry>\n", (double)h[0], (double)h[1], (double)h[2]);
+    for (PetscInt a = 0; a < 2; a++) { /* the mass: component 0; the velocity: components 1 .. d */
+      start[0] = s;
+      count[0] = 1;
+      for (PetscInt i = 1; i < R - 1; i++) {
+        start[i] = 0;
+        count[i] = full[i];
+      }
+      start[R - 1] = a;
+      count[R - 1] = 1;
+      if (a && d == 3) { /* a Vector of the three velocity components: the slab's last dimension starts at 1 */
+        char dims[96];
+        count[R - 1] = 3;
+        PetscCall(PetscSNPrintf(dims, sizeof(dims), "%s 3", mesh));
+        MPMXDMFSlab(fp, "velocity", "Vector", dims, "Float", "/grid/nodes", R, full, start, count);
+      } else if (a && d == 2) {
+        static const char *const vn[] = {"velocity_x", "velocity_y"};
+        for (PetscInt c = 0; c < 2; c++) {
+          start[R - 1] = 1 + c;
+          MPMXDMFSlab(fp, vn[c], "Scalar", mesh, "Float", "/grid/nodes", R, full, start, count);
+        }
+      } else
+        MPMXDMFSlab(fp, a ? "velocity" : "mass", "Scalar", mesh, "Float", "/grid/nodes", R, full, start, count);
+    }
+    fprintf(fp, "   </Grid>\n");
+  }
+  fprintf(fp, "  </Grid>\n");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Rewrites DIR/petmpm.xmf for the outputs so far (rank 0), via a temporary file and rename. */
 static PetscErrorCode MPMWriteXDMF(MPM mpm)
 {
@@ -105,31 +207,25 @@ static PetscErrorCode MPMWriteXDMF(MPM mpm)
   fprintf(fp, "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"2.0\">\n <Domain>\n  <Grid Name=\"points\" GridType=\"Collection\" CollectionType=\"Temporal\">\n");
   for (PetscInt s = 0; s < S; s++) {
     const PetscInt N = mpm->output_count[s];
+    char           shape[32], path[PETSC_MAX_PATH_LEN];
     fprintf(fp, "   <Grid Name=\"points_%" PetscInt_FMT "\" GridType=\"Uniform\">\n    <Time Value=\"%.17g\"/>\n", s, (double)mpm->output_times[s]);
     fprintf(fp, "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"%" PetscInt_FMT "\" NodesPerElement=\"1\"/>\n", N);
     fprintf(fp, "    <Geometry GeometryType=\"XYZ\">\n     <DataItem ItemType=\"HyperSlab\" Dimensions=\"%" PetscInt_FMT " 3\" Type=\"HyperSlab\">\n", N);
     fprintf(fp, "      <DataItem Dimensions=\"3 3\" Format=\"XML\">%" PetscInt_FMT " 0 0 1 1 1 1 %" PetscInt_FMT " 3</DataItem>\n", s, N);
     fprintf(fp, "      <DataItem Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">petmpm.h5:/particle_fields/xyz</DataItem>\n     </DataItem>\n    </Geometry>\n", S, Nmax);
+    PetscCall(PetscSNPrintf(shape, sizeof(shape), "%" PetscInt_FMT, N));
     for (PetscInt f = 0; f < mpm->nfields; f++) {
-      const PetscInt bs  = MPMFieldBlockSize(mpm->field[f].bs, mpm->grid.dim);
-      const char    *num = MPMPointFieldIsInteger(mpm->field[f].name) ? "Int" : "Float";
+      const PetscInt bs = MPMFieldBlockSize(mpm->field[f].bs, mpm->grid.dim), R = bs > 1 ? 3 : 2;
+      PetscInt       full[3] = {S, Nmax, bs}, start[3] = {s, 0, 0}, count[3] = {1, N, 1};
       if (!mpm->field_on[f] || !mpm->field[f].output) continue;
-      if (bs == 1) {
-        fprintf(fp, "    <Attribute Name=\"%s\" AttributeType=\"Scalar\" Center=\"Node\">\n     <DataItem ItemType=\"HyperSlab\" Dimensions=\"%" PetscInt_FMT "\" Type=\"HyperSlab\">\n", mpm->field[f].name, N);
-        fprintf(fp, "      <DataItem Dimensions=\"3 2\" Format=\"XML\">%" PetscInt_FMT " 0 1 1 1 %" PetscInt_FMT "</DataItem>\n", s, N);
-        fprintf(fp, "      <DataItem Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT "\" NumberType=\"%s\" Precision=\"8\" Format=\"HDF\">petmpm.h5:/particle_fields/%s</DataItem>\n", S, Nmax, num, mpm->field[f].name);
-      } else {
-        /* vectors (d values, 2 in 2D) as Vector, 3 x 3 tensors as Tensor, 2 x 2 ones as Matrix */
-        fprintf(fp, "    <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"Node\">\n     <DataItem ItemType=\"HyperSlab\" Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT "\" Type=\"HyperSlab\">\n", mpm->field[f].name,
-                bs <= MPM_MAX_DIM ? "Vector" : (bs == 9 ? "Tensor" : "Matrix"), N, bs);
-        fprintf(fp, "      <DataItem Dimensions=\"3 3\" Format=\"XML\">%" PetscInt_FMT " 0 0 1 1 1 1 %" PetscInt_FMT " %" PetscInt_FMT "</DataItem>\n", s, N, bs);
-        fprintf(fp, "      <DataItem Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT " %" PetscInt_FMT "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">petmpm.h5:/particle_fields/%s</DataItem>\n", S, Nmax, bs, mpm->field[f].name);
-      }
-      fprintf(fp, "     </DataItem>\n    </Attribute>\n");
+      PetscCall(PetscSNPrintf(path, sizeof(path), "/particle_fields/%s", mpm->field[f].name));
+      MPMXDMFField(fp, mpm->field[f].name, MPMPointFieldIsInteger(mpm->field[f].name) ? "Int" : "Float", path, bs, shape, R, full, start, count);
     }
     fprintf(fp, "   </Grid>\n");
   }
-  fprintf(fp, "  </Grid>\n </Domain>\n</Xdmf>\n");
+  fprintf(fp, "  </Grid>\n");
+  PetscCall(MPMWriteXDMFGrid(mpm, fp));
+  fprintf(fp, " </Domain>\n</Xdmf>\n");
   PetscCheck(!fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write %s: %s", tmp, strerror(errno));
   PetscCheck(!rename(tmp, file), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot rename %s to %s: %s", tmp, file, strerror(errno));
   PetscFunctionReturn(PETSC_SUCCESS);
