@@ -1,0 +1,86 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: BSD-2-Clause
+"""Strong and weak scaling of a 3D impact (issue 18 item 5): the copper bar of inputs/bar_impact_3d.opts (Mie-Gruneisen,
+Johnson-Cook, linear shapes, MUSL) on 1, 2 and 4 ranks, with and without -mpm_balance, median of --repeat runs.
+
+  strong: the same bar (--cells, 36 x 36 x 156 cells: 82,944 points) on every rank count;
+  weak:   the bar and its box stretched along z with the rank count (24 x 24 x 104 cells and a 2.4 cm bar per rank),
+          so that every rank holds about the same number of points when the ranks are balanced.
+
+Efficiency is the point-steps per second per rank against one rank's: rate(P) / (P rate(1)). The imbalance is the
+report's max/mean points per rank at the end. The DMDA splits the box into equal slabs; the bar fills the lower
+0.4 x 0.4 of a 0.6 x 0.6 cross-section and its length along z, so without balancing the ranks' shares differ.
+
+usage: scripts/scaling.py [--exe build/petmpm] [--ranks 1,2,4] [--repeat 3] [--steps 40] [--markdown docs/scaling.md]
+A machine with fewer cores than ranks runs them oversubscribed (the figures then say so): the 2-core machine of this
+project gives no speed-up past 2 ranks.
+"""
+import argparse
+import os
+import statistics
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from petmpmlib import get, run, scene_path  # noqa: E402
+
+
+def case(exe, ranks, balance, weak, steps, cells):
+    """One run: (report, point-steps per second, imbalance or None)."""
+    args = ["-options_file", scene_path("bar_impact_3d"), "-ts_max_steps", str(steps), "-mpm_progress", "0"]
+    if weak:
+        k = ranks
+        args += ["-mpm_cells", f"24,24,{104 * k}", "-mpm_hi", f"0.6,0.6,{2.6 * k:g}", "-region_bar_hi", f"0.4,0.4,{2.4 * k:g}"]
+    else:
+        args += ["-mpm_cells", cells]
+    if balance:
+        args += ["-mpm_balance"]
+    with tempfile.TemporaryDirectory() as d:
+        rep, p = run(exe, args, ranks, d)
+    if rep is None:
+        raise SystemExit(f"scaling: the run failed ({' '.join(args)} on {ranks} ranks):\n{(p.stdout + p.stderr)[-2000:]}")
+    imb = get(rep, "balance.imbalance") if "balance" in rep else None
+    return rep, rep["particle_steps_per_second"], imb
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0], formatter_class=argparse.RawDescriptionHelpFormatter, epilog=__doc__)
+    ap.add_argument("--exe", default=os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "build", "petmpm"))
+    ap.add_argument("--ranks", default="1,2,4")
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--steps", type=int, default=40)
+    ap.add_argument("--cells", default="36,36,156")
+    ap.add_argument("--markdown", default="")
+    a = ap.parse_args()
+    ranks = [int(r) for r in a.ranks.split(",")]
+    cores = os.cpu_count()
+    lines = []
+
+    def say(s=""):
+        print(s, flush=True)
+        lines.append(s)
+
+    say(f"Median of {a.repeat} runs, {a.steps} steps, on a machine with {cores} cores" + (f" (more ranks than {cores} run oversubscribed)" if max(ranks) > cores else "") + ".")
+    say()
+    say("| scaling | ranks | balance | points | point-steps/s | per rank | efficiency | imbalance (max/mean) | rebalances |")
+    say("|---|---|---|---|---|---|---|---|---|")
+    for weak in (False, True):
+        base = None
+        for r in ranks:
+            for balance in ((False,) if r == 1 else (False, True)):
+                runs = [case(a.exe, r, balance, weak, a.steps, a.cells) for _ in range(a.repeat)]
+                rate = statistics.median(x[1] for x in runs)
+                rep, imb = runs[0][0], runs[0][2]
+                if r == 1:
+                    base = rate
+                eff = rate / (r * base)
+                say(f"| {'weak' if weak else 'strong'} | {r} | {'on' if balance else 'off'} | {rep['particles']} | {rate:.3g} | {rate / r:.3g} | {eff:.2f} | "
+                    + (f"{imb:.2f} | {get(rep, 'balance.rebalances')} |" if imb is not None else "- | - |"))
+    if a.markdown:
+        with open(a.markdown, "w") as f:
+            f.write("\n".join(lines) + "\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
