@@ -132,11 +132,28 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
     }
   if (bad >= 0) {
     const PetscReal *rho = pts.f[MPM_FIELD_DENSITY], *e = pts.f[MPM_FIELD_ENERGY], *pr = pts.f[MPM_FIELD_PRESSURE], *c = pts.f[MPM_FIELD_SOUNDSPEED], *L = pts.f[MPM_FIELD_GRADV], *F = pts.f[MPM_FIELD_DEFGRAD];
+    const PetscReal  J    = MPMDetIPlusDtL(d, dt, &L[bad * d * d]);
+    const char      *hint = "";
     PetscMPIInt      rank;
     PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
+    if (shape->ops.admissible)
+      hint = "; a CPDI domain must stay inside -mpm_shape_cpdi_reach cells of its point";
+    else if (shape->edge_gradient) { /* a stencil node that this point barely reaches and that holds little else: the kick of shapeimpl.h */
+      const MPMNode *node;
+      MPMStencil     st;
+      PetscReal      Fs[MPM_MAX_DIM * MPM_MAX_DIM];
+      PetscCall(VecGetArrayRead(mpm->lnodes, (const PetscScalar **)&node));
+      MPMShapeEvaluate(shape, &mpm->grid, &pts.f[MPM_FIELD_POSITION][bad * d], MPMPointDomain(d, trackF ? F : NULL, pts.f[MPM_FIELD_DOMAINSCALE], bad, Fs), &st);
+      for (PetscInt a = 0; a < st.n; a++)
+        if (st.w[a] > 0.0 && st.w[a] < 0.25 && st.w[a] * pts.f[MPM_FIELD_MASS][bad] > 0.5 * node[st.node[a]].m)
+          hint = "; a node of its stencil holds little mass but this point's, at a small weight: with -mpm_shape_type linear such a node (at a free surface, or beside much lighter material) gets the point's force over a mass N m_p and kicks it "
+                 "(docs/validation-dambreak.md); gimp, "
+                 "cpdi and the B-splines do not have this";
+      PetscCall(VecRestoreArrayRead(mpm->lnodes, (const PetscScalar **)&node));
+    }
     PetscCall(PetscPrintf(PETSC_COMM_SELF, "[%d] step %" PetscInt_FMT ", t = %g s: point %.0f at x = %g cm has rho = %g g/cm^3, e = %g erg/g, p = %g dyn/cm^2, c^2 = %g (det(I + dt L) = %g, det F = %g%s)\n", rank, mpm->steps, (double)mpm->time,
-                          (double)pts.f[MPM_FIELD_ID][bad], (double)pts.f[MPM_FIELD_POSITION][bad * d], (double)rho[bad], (double)e[bad], (double)pr[bad], (double)(c[bad] * c[bad]), (double)MPMDetIPlusDtL(d, dt, &L[bad * d * d]),
-                          (double)(trackF ? MPMDeterminant(d, &F[bad * d * d]) : 1.0), shape->ops.admissible ? "; a CPDI domain must stay inside -mpm_shape_cpdi_reach cells of its point" : ""));
+                          (double)pts.f[MPM_FIELD_ID][bad], (double)pts.f[MPM_FIELD_POSITION][bad * d], (double)rho[bad], (double)e[bad], (double)pr[bad], (double)(c[bad] * c[bad]), (double)J,
+                          (double)(trackF ? MPMDeterminant(d, &F[bad * d * d]) : 1.0), hint));
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   PetscCall(PetscLogFlops(30.0 * pts.n));

@@ -71,6 +71,12 @@ def f_mass(d):
         return float(f["particle_fields/mass"][0].sum())
 
 
+def xdmf_times(d):
+    """The output times petmpm.xmf names: its points collection's, which the grid collection must repeat (else [])."""
+    colls = {c.get("Name"): [float(t.get("Value")) for t in c.iter("Time")] for c in ET.parse(os.path.join(d, "petmpm.xmf")).getroot().iter("Grid") if c.get("GridType") == "Collection"}
+    return colls.get("points", []) if colls.get("points") == colls.get("grid") else []
+
+
 def xdmf_read(d):
     """The attributes petmpm.xmf describes, read as ParaView's XDMF reader reads them (3 values per entry for a Vector, 9
     for a Tensor, 1 otherwise, whatever the selection's shape): {collection: [{name: array (entries, components)}]},
@@ -339,7 +345,8 @@ def test_failure():
     """A run that cannot go on stops with a diagnosis naming the step, the point, its position and the state,
     writes a last HDF5 output, and exits non-zero: the LeBlanc tube with the time step's volume and acceleration
     limits and the isentropic expansion update switched off (a point grows 7-fold in step 2 and goes negative in
-    energy; with them the run finishes, scene_stability) and a time-step floor."""
+    energy; with them the run finishes, scene_stability; the diagnosis names the mechanism, a node of the heavy
+    point's linear stencil that holds little else, src/shape/shapeimpl.h) and a time-step floor."""
     import h5py
     with tempfile.TemporaryDirectory() as d:
         off = ["-mpm_dt_volume", "1e30", "-mpm_dt_acceleration", "1e30", "-mpm_isentrope_threshold", "1e30"]
@@ -347,9 +354,10 @@ def test_failure():
         text = p.stdout + p.stderr
         ok = p.returncode != 0 and "non-physical state" in text and all(w in text for w in ("step 2,", "point", "at x =", "rho =", "det(I + dt L)"))
         check(ok, f"LeBlanc without the expansion limits: exit {p.returncode}, diagnosis names step 2, point, x, rho")
+        check("holds little mass but this point's" in text and "-mpm_shape_type" in text, "the diagnosis names the mechanism: a stencil node of the heavy point that holds little but its mass (linear shapes)")
         with h5py.File(os.path.join(d, "petmpm.h5"), "r") as f:
             n = f["particle_fields/density"].shape[0]
-        times = [float(e.get("Value")) for e in ET.parse(os.path.join(d, "petmpm.xmf")).iter("Time")]
+        times = xdmf_times(d)
         check(n == 2 and len(times) == 2 and times[-1] > 0, f"last state written for diagnosis: {n} outputs, XDMF times {times}")
         p = run([*SCENE_CTH, "-mpm_cells", "64", "-mpm_dt_min", "1e-6", "-mpm_output", d], expect_ok=False)
         text = p.stdout + p.stderr
@@ -388,7 +396,7 @@ def test_interrupt():
                 nt = f["time"].shape[0]
                 lens = {k: f["particle_fields/" + k].shape[0] for k in f["particle_fields"]}
                 counts = f["particle_count"][:]
-            times = [float(e.get("Value")) for e in ET.parse(os.path.join(d, "petmpm.xmf")).iter("Time")]
+            times = xdmf_times(d)
             check(nt >= 2 and all(n == nt for n in lens.values()) and len(counts) == nt and len(times) == nt, f"{ranks} rank(s): a complete last output: {nt} times, datasets {sorted(set(lens.values()))}, XDMF {len(times)}")
     with tempfile.TemporaryDirectory() as d:  # SIGKILL: the outputs before it stay complete and readable
         cmd = [EXE, "-options_file", os.path.join(SRC, "inputs", "dam_break_2d.opts"), "-mpm_cells", "240,100", "-mpm_progress", "0.2", "-mpm_output_interval", "3", "-mpm_output", d]
@@ -397,7 +405,7 @@ def test_interrupt():
             t = f["time"][:]
             lens = {k: f["particle_fields/" + k].shape[0] for k in f["particle_fields"]}
             counts = f["particle_count"][:]
-        times = [float(e.get("Value")) for e in ET.parse(os.path.join(d, "petmpm.xmf")).iter("Time")]
+        times = xdmf_times(d)
         ok = len(t) >= 2 and all(len(t) <= n <= len(t) + 1 for n in lens.values()) and len(counts) >= len(t) and len(times) <= len(t) and times == [float(x) for x in t[:len(times)]]
         check(ok, f"SIGKILL: the file opens, {len(t)} complete outputs by /time, datasets {sorted(set(lens.values()))} rows, XDMF {len(times)} outputs, all complete")
 

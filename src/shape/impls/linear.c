@@ -23,8 +23,9 @@ static void MPMShapeBasis1d_Linear(void *ctx, PetscReal xi, PetscInt *first, Pet
 PetscErrorCode MPMShapeCreate_Linear(MPMShape shape)
 {
   PetscFunctionBegin;
-  shape->ops.support = MPMShapeSupport_Linear;
-  shape->ops.basis1d = MPMShapeBasis1d_Linear;
-  shape->kernels     = MPMTransferKernels_Linear;
+  shape->ops.support   = MPMShapeSupport_Linear;
+  shape->ops.basis1d   = MPMShapeBasis1d_Linear;
+  shape->kernels       = MPMTransferKernels_Linear;
+  shape->edge_gradient = PETSC_TRUE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
