@@ -26,7 +26,7 @@ import sys
 SRC = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 REF = os.path.join(os.path.dirname(SRC), "shared", "bench")
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from petmpmlib import ENV  # noqa: E402
+from petmpmlib import ENV, Transcript  # noqa: E402
 REFFLAGS = {"mpm1d": ["-DBLOCK"], "mpm3d": ["-DBLOCK"], "mpm3d_quad": ["-DQUAD"]}
 
 
@@ -102,8 +102,7 @@ def main():
         ("bar1", "3D bar, linear, 1 ppc, MUSL, MG + JC", "bar_impact_3d.opts", ["-mpm_cells", "36,36,156", "-ts_max_steps", "20"], "mpm3d", ["cell", "10"]),
         ("bar2d", "2D bar, linear, 1 ppc, MUSL, MG + JC", "bar_impact_2d.opts", ["-mpm_cells", "600,2600", "-ts_max_steps", "20"], None, None),
     ]
-    lines = []
-    say = lambda s="": (print(s, flush=True), lines.append(s))
+    say = Transcript()
     say(f"Point-steps per second, median of {a.repeat} interleaved runs; ratio = petmpm / reference kernel (../shared/bench)"
         + (f"; speed-up = petmpm / before ({a.before})" if a.before else "") + ".")
     say()
@@ -139,9 +138,7 @@ def main():
     say()
     say(f"Memory in 3D (8 ppc, -memory_view maximum): {m1['memory'] / 1e6:.0f} MB with {m1['points']} points, {m2['memory'] / 1e6:.0f} MB with "
         f"{m2['points']} points: {(m2['memory'] - m1['memory']) / (m2['points'] - m1['points']):.0f} bytes per additional point (grid included).")
-    if a.markdown:
-        with open(a.markdown, "w") as f:
-            f.write("\n".join(lines) + "\n")
+    say.write(a.markdown)
     return 0
 
 

@@ -91,3 +91,19 @@ OPS = {"<": lambda v, t: v < t, "<=": lambda v, t: v <= t, ">": lambda v, t: v >
 
 def holds(value, op, target):
     return value is not None and not (isinstance(value, float) and math.isnan(value)) and OPS[op](value, target)
+
+
+class Transcript:
+    """Lines printed as they come and kept, for a Markdown file written at the end (say(line); write(path))."""
+
+    def __init__(self):
+        self.lines = []
+
+    def __call__(self, s=""):
+        print(s, flush=True)
+        self.lines.append(s)
+
+    def write(self, path):
+        if path:
+            with open(path, "w") as f:
+                f.write("\n".join(self.lines) + "\n")

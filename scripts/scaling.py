@@ -22,7 +22,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from petmpmlib import get, run, scene_path  # noqa: E402
+from petmpmlib import Transcript, get, run, scene_path  # noqa: E402
 
 
 def case(exe, ranks, balance, weak, steps, cells):
@@ -54,12 +54,7 @@ def main():
     a = ap.parse_args()
     ranks = [int(r) for r in a.ranks.split(",")]
     cores = os.cpu_count()
-    lines = []
-
-    def say(s=""):
-        print(s, flush=True)
-        lines.append(s)
-
+    say = Transcript()
     say(f"Median of {a.repeat} runs, {a.steps} steps, on a machine with {cores} cores" + (f" (more ranks than {cores} run oversubscribed)" if max(ranks) > cores else "") + ".")
     say()
     say("| scaling | ranks | balance | points | point-steps/s | per rank | efficiency | imbalance (max/mean) | rebalances |")
@@ -76,9 +71,7 @@ def main():
                 eff = rate / (r * base)
                 say(f"| {'weak' if weak else 'strong'} | {r} | {'on' if balance else 'off'} | {rep['particles']} | {rate:.3g} | {rate / r:.3g} | {eff:.2f} | "
                     + (f"{imb:.2f} | {get(rep, 'balance.rebalances')} |" if imb is not None else "- | - |"))
-    if a.markdown:
-        with open(a.markdown, "w") as f:
-            f.write("\n".join(lines) + "\n")
+    say.write(a.markdown)
     return 0
 
 
