@@ -21,7 +21,8 @@ import petmpmlib as lib  # noqa: E402
 A = 5.715  # the column's base [cm]
 RUNS = [("2D, 10 cells per a", "dam_break_2d", ["-mpm_cells", "60,25"]), ("2D, 20 cells per a", "dam_break_2d", []),
         ("2D, 40 cells per a", "dam_break_2d", ["-mpm_cells", "240,100"]), ("3D slab, 10 cells per a", "dam_break_3d", ["-mpm_cells", "60,25,2"]),
-        ("3D slab, 20 cells per a", "dam_break_3d", []), ("2D, 20 cells per a, bspline2", "dam_break_2d", ["-options_file", os.path.join(SRC, "inputs", "methods", "bspline2.opts")])]
+        ("3D slab, 20 cells per a", "dam_break_3d", []), ("2D, 20 cells per a, bspline2", "dam_break_2d", ["-options_file", os.path.join(SRC, "inputs", "methods", "bspline2.opts")]),
+        ("2D, 20 cells per a, PIC", "dam_break_2d", ["-mpm_update_type", "pic"]), ("2D, 20 cells per a, FLIP", "dam_break_2d", ["-mpm_update_type", "flip"])]
 CUT = ["-region_col_hi", "4,9.9"]  # the water column's surface between grid lines (a cut lattice site)
 HYDRO = [("16 x 48 cells, surface on a grid line", []), ("32 x 96", ["-mpm_cells", "32,96"]), ("16 x 48, surface at 9.9 cm (a cut site)", CUT),
          ("32 x 96, surface at 9.9 cm", CUT + ["-mpm_cells", "32,96"]), ("16 x 48, surface at 9.9 cm, linear shapes and the cell rule (cth.opts)", CUT + ["-options_file", os.path.join(SRC, "inputs", "methods", "cth.opts")]),
