@@ -36,7 +36,10 @@ PETSC_EXTERN const char *const MPMTransferKernelTypes[];
 typedef enum { MPM_UPDATE_PIC, MPM_UPDATE_FLIP, MPM_UPDATE_BLEND } MPMUpdateType;
 PETSC_EXTERN const char *const MPMUpdateTypes[];
 
-typedef enum { MPM_BC_WALL, MPM_BC_FREE } MPMBoundaryType;
+/* Boundary faces: wall (a frictionless symmetry wall, by mirror images), free (traction-free; a point that leaves
+   through it stops the run) and outflow (traction-free; a point that leaves through it is removed, and the mass,
+   momentum and energy it carries are tallied so that the conservation figures still close). */
+typedef enum { MPM_BC_WALL, MPM_BC_FREE, MPM_BC_OUTFLOW } MPMBoundaryType;
 PETSC_EXTERN const char *const MPMBoundaryTypes[];
 
 /* Type names */

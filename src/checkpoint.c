@@ -24,7 +24,7 @@
 #include <unistd.h>
 
 #define MPM_CKPT_NSTATE 28
-#define MPM_CKPT_NDIAG 26
+#define MPM_CKPT_NDIAG (26 + MPM_OUTFLOW_N)
 
 /* A 1D dataset of N doubles of which this rank writes n at offset. */
 static PetscErrorCode MPMCkptWrite(hid_t file, const char name[], hsize_t N, hsize_t offset, hsize_t n, const PetscReal *a)
@@ -75,6 +75,7 @@ static void MPMCkptDiag(MPMDiagnostics *dg, PetscReal a[], PetscBool store)
   PetscInt      *w[]               = {&dg->isentrope_points,  &dg->dt_limit[0],      &dg->dt_limit[1],  &dg->dt_limit[2],   &dg->dt_limit[3],      &dg->vacuum_points_max, &dg->empty_cells_max, &dg->empty_cells0,
                                       &dg->first_vacuum_step, &dg->first_empty_step, &dg->points_split, &dg->split_refused, &dg->wall_reflections, &dg->domain_resets,     &dg->popping_checks,  &dg->popped_max};
   const PetscInt nv = 7, nw = (PetscInt)(sizeof(w) / sizeof(w[0]));
+  PetscReal     *t = &a[nv + nw]; /* then the outflow tallies */
 
   for (PetscInt i = 0; i < nv; i++) {
     if (store)
@@ -88,10 +89,16 @@ static void MPMCkptDiag(MPMDiagnostics *dg, PetscReal a[], PetscBool store)
     else
       *w[i] = (PetscInt)a[nv + i];
   }
+  for (PetscInt i = 0; i < MPM_OUTFLOW_N; i++) {
+    if (store)
+      t[i] = dg->outflow[i];
+    else
+      dg->outflow[i] = t[i];
+  }
 }
 
 /* The counters that are this rank's sums (the report adds them over ranks): their indices in MPMCkptDiag's order. */
-static const PetscInt MPMCkptDiagSums[] = {0, 1, 7, 17, 18, 19, 20};
+static const PetscInt MPMCkptDiagSums[] = {0, 1, 7, 17, 18, 19, 20, 23, 24, 25, 26, 27, 28, 29, 30}; /* 23 ..: the outflow tallies */
 
 PetscErrorCode MPMCheckpointWrite(MPM mpm)
 {

@@ -10,7 +10,7 @@ const char *const MPMDtLimitNames[]        = {"sound", "acceleration", "volume",
 const char *const MPMEnergyUpdates[]       = {"compatible", "midpoint", "conservative", "MPMEnergyUpdate", "MPM_ENERGY_", NULL};
 const char *const MPMTransferKernelTypes[] = {"specialised", "generic", "MPMTransferKernel", "MPM_TRANSFER_", NULL};
 const char *const MPMUpdateTypes[]         = {"pic", "flip", "blend", "MPMUpdateType", "MPM_UPDATE_", NULL};
-const char *const MPMBoundaryTypes[]       = {"wall", "free", "MPMBoundaryType", "MPM_BC_", NULL};
+const char *const MPMBoundaryTypes[]       = {"wall", "free", "outflow", "MPMBoundaryType", "MPM_BC_", NULL};
 
 /* The defaults are the default method, what a problem file that names no method gets: the most accurate
    configuration that passes the whole suite (docs/shock-capturing.md, "The default method"): CPDI shape functions

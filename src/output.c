@@ -467,6 +467,13 @@ PetscErrorCode MPMOutputWriteExact(MPM mpm)
         a[p] = f == 0 ? rho : (f == 2 ? pr : T);
     }
     PetscCall(VecRestoreArray(v, &a));
+    { /* a run continued into its own folder (-mpm_restart) replaces the stopped run's exact fields, whose point count may differ (splitting, outflow) */
+      hid_t file;
+      char  path[64];
+      PetscCall(PetscViewerHDF5GetFileId(mpm->h5, &file));
+      PetscCall(PetscSNPrintf(path, sizeof(path), "/exact/%s", names[f]));
+      if (H5Lexists(file, "/exact", H5P_DEFAULT) > 0 && H5Lexists(file, path, H5P_DEFAULT) > 0) PetscCheck(H5Ldelete(file, path, H5P_DEFAULT) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot replace %s in %s/petmpm.h5", path, mpm->outdir);
+    }
     PetscCall(PetscViewerHDF5PushGroup(mpm->h5, "/exact"));
     PetscCall(VecView(v, mpm->h5));
     PetscCall(PetscViewerHDF5PopGroup(mpm->h5));

@@ -395,15 +395,64 @@ static PetscErrorCode MPMReflectAtWalls(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Sends every point to the rank that owns its cell. A point outside the domain, or a change in the global
-   count, stops the run with a message: points are never lost silently. */
+/* Whether x lies beyond the domain only across outflow faces (a point there leaves the run). */
+static PetscBool MPMThroughOutflow(const MPM mpm, const PetscReal x[])
+{
+  const MPMGrid *g   = &mpm->grid;
+  PetscBool      any = PETSC_FALSE;
+
+  for (PetscInt k = 0; k < g->dim; k++) {
+    if (x[k] < g->lo[k]) {
+      if (mpm->bc_lo[k] != MPM_BC_OUTFLOW) return PETSC_FALSE;
+      any = PETSC_TRUE;
+    } else if (x[k] > g->hi[k]) {
+      if (mpm->bc_hi[k] != MPM_BC_OUTFLOW) return PETSC_FALSE;
+      any = PETSC_TRUE;
+    }
+  }
+  return any;
+}
+
+/* Removes the points beyond outflow faces (flagged in gone[]) and adds what they carry to this rank's tallies. */
+static PetscErrorCode MPMRemoveOutflow(MPM mpm, PetscInt n, const PetscBool gone[])
+{
+  const PetscInt d = mpm->grid.dim;
+  PetscReal     *t = mpm->diag.outflow;
+  MPMPoints      pts;
+
+  PetscFunctionBegin;
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt p = 0; p < n; p++) {
+    const PetscReal m = pts.f[MPM_FIELD_MASS][p], *v = &pts.f[MPM_FIELD_VELOCITY][p * d];
+    PetscReal       v2 = 0.0;
+    if (!gone[p]) continue;
+    for (PetscInt k = 0; k < d; k++) {
+      v2 += v[k] * v[k];
+      t[MPM_OUTFLOW_MOMENTUM + k] += m * v[k];
+      if (mpm->has_gravity) t[MPM_OUTFLOW_POTENTIAL] -= m * mpm->gravity[k] * pts.f[MPM_FIELD_POSITION][p * d + k];
+    }
+    t[MPM_OUTFLOW_MASS] += m;
+    t[MPM_OUTFLOW_ENERGY] += m * (pts.f[MPM_FIELD_ENERGY][p] + 0.5 * v2);
+    t[MPM_OUTFLOW_KINETIC] += 0.5 * m * v2;
+    t[MPM_OUTFLOW_POINTS] += 1.0;
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  for (PetscInt p = n - 1; p >= 0; p--) /* from the end: the swarm moves its last point into the freed place */
+    if (gone[p]) PetscCall(DMSwarmRemovePointAtIndex(mpm->swarm, p));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Sends every point to the rank that owns its cell. A point beyond an outflow face is removed and tallied
+   (MPMRemoveOutflow); a point outside the domain otherwise, or a change in the global count, stops the run with a
+   message: points are never lost silently. */
 PetscErrorCode MPMMigrate(MPM mpm)
 {
   const MPMGrid *g = &mpm->grid;
   PetscMPIInt    rank, size;
-  PetscInt       n, nmove = 0, nout = 0, ntotal;
+  PetscInt       n, nmove = 0, nout = 0, ngone = 0, ntotal;
   PetscReal     *x, *id;
   PetscInt      *owner;
+  PetscBool     *gone = NULL;
 
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(mpm->log.migrate, 0, 0, 0, 0));
@@ -418,6 +467,12 @@ PetscErrorCode MPMMigrate(MPM mpm)
     const PetscReal *xp = &x[p * g->dim];
     PetscBool        in = PETSC_TRUE;
     for (PetscInt k = 0; k < g->dim; k++) in = (PetscBool)(in && xp[k] >= g->lo[k] && xp[k] <= g->hi[k]);
+    if (!in && MPMThroughOutflow(mpm, xp)) {
+      if (!gone) PetscCall(PetscCalloc1(n, &gone));
+      gone[p] = PETSC_TRUE;
+      ngone++;
+      continue;
+    }
     if (!in && !nout++)
       PetscCall(PetscPrintf(PETSC_COMM_SELF, "[%d] step %" PetscInt_FMT ": point %.0f left the domain at x = (%g, %g, %g)\n", rank, mpm->steps, (double)id[p], (double)xp[0], (double)(g->dim > 1 ? xp[1] : 0), (double)(g->dim > 2 ? xp[2] : 0)));
     if (size > 1) {
@@ -429,9 +484,13 @@ PetscErrorCode MPMMigrate(MPM mpm)
   PetscCall(DMSwarmRestoreField(mpm->swarm, MPMFieldTable[MPM_FIELD_ID].name, NULL, NULL, (void **)&id));
   PetscCall(DMSwarmRestoreField(mpm->swarm, MPMFieldTable[MPM_FIELD_POSITION].name, NULL, NULL, (void **)&x));
   {
-    PetscInt counts[2] = {nmove, nout};
-    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, counts, 2, MPIU_INT, MPI_SUM, mpm->comm));
-    PetscCheck(!counts[1], mpm->comm, PETSC_ERR_NOT_CONVERGED, "Step %" PetscInt_FMT ": %" PetscInt_FMT " point(s) left the domain through a free face; enlarge the domain (-mpm_lo, -mpm_hi)", mpm->steps, counts[1]);
+    PetscInt counts[3] = {nmove, nout, ngone};
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, counts, 3, MPIU_INT, MPI_SUM, mpm->comm));
+    PetscCheck(!counts[1], mpm->comm, PETSC_ERR_NOT_CONVERGED,
+               "Step %" PetscInt_FMT ": %" PetscInt_FMT " point(s) left the domain through a free face; enlarge the domain (-mpm_lo, -mpm_hi) or make the face an outflow (-mpm_bc_lo, -mpm_bc_hi outflow)", mpm->steps, counts[1]);
+    if (ngone) PetscCall(MPMRemoveOutflow(mpm, n, gone));
+    PetscCall(PetscFree(gone));
+    mpm->npoints -= counts[2];
     if (counts[0]) {
       PetscCall(DMSwarmMigrate(mpm->swarm, PETSC_TRUE));
       PetscCall(DMSwarmGetSize(mpm->swarm, &ntotal));

@@ -100,6 +100,10 @@ struct _p_MPMModule {
   MPMModule next;
 };
 
+/* The tallies of the points removed at outflow faces: mass [g], sum m (e + v^2/2) [erg], with gravity the potential
+   energy -sum m g.x at the exit [erg], kinetic energy [erg], the points, and momentum [g cm/s] from MPM_OUTFLOW_MOMENTUM. */
+enum { MPM_OUTFLOW_MASS, MPM_OUTFLOW_ENERGY, MPM_OUTFLOW_POTENTIAL, MPM_OUTFLOW_KINETIC, MPM_OUTFLOW_POINTS, MPM_OUTFLOW_MOMENTUM, MPM_OUTFLOW_N = MPM_OUTFLOW_MOMENTUM + MPM_MAX_DIM };
+
 /* What the robustness measures did over the run (this rank's sums; the report reduces them). */
 typedef struct {
   PetscReal isentrope_energy;            /* energy the isentropic expansion update kept above the linear work, sum m_p de [erg] */
@@ -119,6 +123,7 @@ typedef struct {
   PetscInt  popped_max;                                     /* most points popped at one check (global)                              */
   PetscReal popped_sum;                                     /* popped points summed over the checks (global)                         */
   PetscReal first_popped_time, first_popped_x[MPM_MAX_DIM]; /* when (-1: never) and where the first appeared [s, cm] */
+  PetscReal outflow[MPM_OUTFLOW_N];                         /* what left through outflow faces on this rank (MPMMigrate; MPM_OUTFLOW_*) */
 } MPMDiagnostics;
 
 struct _p_MPM {

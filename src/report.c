@@ -431,7 +431,8 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   PetscBool      budget;
   PetscInt       nonfinite = 0, npoints, nvac, nempty, nmin, nmax;
   PetscReal      imbalance;
-  PetscReal      eisen, nisen, nsplit, nrefuse, nreflect, nreset;
+  PetscReal      eisen, nisen, nsplit, nrefuse, nreflect, nreset, out[3] = {0, 0, 0};
+  PetscBool      outflow = PETSC_FALSE;
   PetscMPIInt    size, rank;
 
   PetscFunctionBegin;
@@ -465,6 +466,15 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     nreflect = s[4];
     nreset   = s[5];
   }
+  for (PetscInt k = 0; k < g->dim; k++) outflow = (PetscBool)(outflow || mpm->bc_lo[k] == MPM_BC_OUTFLOW || mpm->bc_hi[k] == MPM_BC_OUTFLOW);
+  if (outflow) { /* what left through outflow faces: points, and mass and total energy relative to the initial sums */
+    out[0] = mpm->diag.outflow[MPM_OUTFLOW_POINTS];
+    out[1] = mpm->diag.outflow[MPM_OUTFLOW_MASS];
+    out[2] = mpm->diag.outflow[MPM_OUTFLOW_ENERGY] + mpm->diag.outflow[MPM_OUTFLOW_POTENTIAL];
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, out, 3, MPIU_REAL, MPIU_SUM, mpm->comm));
+    out[1] /= mpm->mass0;
+    out[2] = mpm->energy0 != 0 ? out[2] / PetscAbsReal(mpm->energy0) : out[2];
+  }
   for (PetscInt c = 0; c < mpm->nchecks; c++) {
     PetscBool is;
     PetscCall(PetscStrcmp(mpm->checks[c].name, "shock_position", &is));
@@ -488,6 +498,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   PetscCall(PetscPrintf(mpm->comm, "  time step set by: sound %" PetscInt_FMT ", acceleration %" PetscInt_FMT ", volume %" PetscInt_FMT ", landing %" PetscInt_FMT " steps; isentropic expansion %.3e of the energy (%.0f point-steps)\n",
                         mpm->diag.dt_limit[MPM_DT_SOUND], mpm->diag.dt_limit[MPM_DT_ACCELERATION], mpm->diag.dt_limit[MPM_DT_VOLUME], mpm->diag.dt_limit[MPM_DT_LANDING], (double)(mpm->energy0 != 0 ? eisen / PetscAbsReal(mpm->energy0) : eisen),
                         (double)nisen));
+  if (outflow) PetscCall(PetscPrintf(mpm->comm, "  outflow: %.0f points left through outflow faces, carrying %.3e of the mass and %.3e of the total energy (the conservation figures count them)\n", (double)out[0], (double)out[1], (double)out[2]));
   if (mpm->split) PetscCall(PetscPrintf(mpm->comm, "  point splitting: %.0f points split (%" PetscInt_FMT " points at start); %.0f splits refused at -mpm_split_max_level\n", (double)nsplit, mpm->npoints0, (double)nrefuse));
   if (size > 1) PetscCall(PetscPrintf(mpm->comm, "  balance: %" PetscInt_FMT " to %" PetscInt_FMT " points per rank, max/mean %.3f; %" PetscInt_FMT " rebalance(s) (-mpm_balance)\n", nmin, nmax, (double)imbalance, mpm->diag.rebalances));
   if (mpm->popping_interval > 0) {
@@ -571,6 +582,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
             "}, \"vacuum_points\": %" PetscInt_FMT ", \"vacuum_points_max\": %" PetscInt_FMT ", \"first_vacuum_step\": %" PetscInt_FMT ", \"empty_cells\": %" PetscInt_FMT ", \"empty_cells_max\": %" PetscInt_FMT
             ", \"first_empty_step\": %" PetscInt_FMT ", \"points_split\": %.0f, \"split_refused\": %.0f, \"wall_reflections\": %.0f, \"domain_resets\": %.0f}",
             nvac, mpm->diag.vacuum_points_max, mpm->diag.first_vacuum_step, nempty, mpm->diag.empty_cells_max, mpm->diag.first_empty_step, (double)nsplit, (double)nrefuse, (double)nreflect, (double)nreset);
+    if (outflow) fprintf(fp, ",\n  \"outflow\": {\"points\": %.0f, \"mass\": %.6e, \"energy\": %.6e}", (double)out[0], (double)out[1], (double)out[2]);
     fprintf(fp, ",\n  \"min_density\": %.10g,\n  \"nonfinite\": %" PetscInt_FMT ",\n  \"checks\": [", (double)rhomin, nonfinite);
     for (PetscInt c = 0; c < mpm->nchecks; c++)
       fprintf(fp, "%s\n    {\"name\": \"%s\", \"value\": %s, \"reference\": %s, \"rel_error\": %s}", c ? "," : "", mpm->checks[c].name, MPMJSONReal(mpm->checks[c].value, "%.10g", num[0]), MPMJSONReal(mpm->checks[c].reference, "%.10g", num[2]),
@@ -583,7 +595,8 @@ PetscErrorCode MPMWriteReport(MPM mpm)
 }
 
 /* Total mass sum m_p, total energy sum m_p (e_p + |v_p|^2 / 2), with gravity plus the potential energy -sum m_p g.x_p
-   (also kept in mpm->potential), and momentum sum m_p v_p over all ranks. */
+   (also kept in mpm->potential), and momentum sum m_p v_p over all ranks, each with what left through outflow faces
+   (so that they stay the run's conserved sums). */
 PetscErrorCode MPMGlobalSums(MPM mpm, PetscReal *mass, PetscReal *energy, PetscReal momentum[], PetscReal *kinetic)
 {
   const PetscInt d                  = mpm->grid.dim;
@@ -607,6 +620,14 @@ PetscErrorCode MPMGlobalSums(MPM mpm, PetscReal *mass, PetscReal *energy, PetscR
     s[2 + MPM_MAX_DIM] += 0.5 * m * v2;
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  if (mpm->diag.outflow[MPM_OUTFLOW_POINTS] > 0.0) { /* this rank's tallies of the points removed at outflow faces */
+    const PetscReal *t = mpm->diag.outflow;
+    s[0] += t[MPM_OUTFLOW_MASS];
+    s[1] += t[MPM_OUTFLOW_ENERGY];
+    for (PetscInt k = 0; k < d; k++) s[2 + k] += t[MPM_OUTFLOW_MOMENTUM + k];
+    s[2 + MPM_MAX_DIM] += t[MPM_OUTFLOW_KINETIC];
+    s[3 + MPM_MAX_DIM] += t[MPM_OUTFLOW_POTENTIAL];
+  }
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 4 + MPM_MAX_DIM, MPIU_REAL, MPIU_SUM, mpm->comm));
   *mass          = s[0];
   *energy        = s[1] + s[3 + MPM_MAX_DIM]; /* with gravity the potential energy -sum m g.x */

@@ -459,6 +459,15 @@ def test_restart():
             run([*big, "-mpm_output", e, "-mpm_restart", os.path.join(e, ck[0]), "-mpm_report", os.path.join(e, "report.json")])
             diff = same_files(os.path.join(d, "f"), e)
             check(not diff and report(os.path.join(d, "f")) == report(e), f"the interrupted run continued from its checkpoint equals the uninterrupted one bit for bit (differing: {diff})")
+        o, p = os.path.join(d, "o"), os.path.join(d, "p")  # outflow: the tallies of points already gone travel in the checkpoint
+        flow = ["-options_file", SCENE, "-mpm_bc_hi", "outflow", "-region_right_velocity", "1e5"]
+        run([*flow, "-mpm_output", o, "-mpm_report", os.path.join(o, "report.json")])
+        run([*flow, "-mpm_output", p, "-mpm_checkpoint_interval", "800", "-ts_max_steps", "800"])
+        run([*flow, "-mpm_output", p, "-mpm_restart", os.path.join(p, "checkpoint-800.h5"), "-mpm_report", os.path.join(p, "report.json")])
+        with open(os.path.join(o, "report.json")) as f1, open(os.path.join(p, "report.json")) as f2:
+            r1, r2 = json.load(f1), json.load(f2)
+        check(r2["outflow"] == r1["outflow"] and r2["outflow"]["points"] > 0 and r2["conservation"] == r1["conservation"] and not same_files(o, p),
+              f"outflow: a restart after {r2['outflow']['points']} points left gives the uninterrupted tallies and conservation, bit for bit")
 
 
 def flyer_fields(out):
