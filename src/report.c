@@ -289,6 +289,7 @@ PetscErrorCode MPMProbeMaxDeviation(MPMProbe probe, MPMProbeQuantity quantity, P
 
   PetscFunctionBegin;
   PetscCheck(mpm->exact && mpm->exact->ops.evaluate, mpm->comm, PETSC_ERR_PLIB, "MPMProbeMaxDeviation needs an exact solution with fields");
+  PetscCheck(quantity != MPM_PROBE_POSITION, mpm->comm, PETSC_ERR_PLIB, "MPMProbeMaxDeviation: the exact solution gives no position");
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   for (PetscInt p = 0; p < pts.n; p++) {
     PetscReal ex[4], v[MPM_MAX_DIM], q;
