@@ -96,6 +96,24 @@ PetscErrorCode MPMOptionsDimEnums(PetscOptionItems *PetscOptionsObject, const ch
   PetscBool set;
 
   PetscFunctionBegin;
+  { /* an unknown value is an error that lists the valid ones (PETSc's own names neither) */
+    char     *str[MPM_MAX_DIM] = {NULL, NULL, NULL}, list[256] = "";
+    PetscInt  ns = MPM_MAX_DIM, nn = 0;
+    PetscBool given;
+    while (names[nn]) nn++;
+    nn -= 2; /* the list ends with the enum's name and its prefix */
+    PetscCall(PetscOptionsGetStringArray(PetscOptionsObject->options, PetscOptionsObject->prefix, opt, str, &ns, &given));
+    for (PetscInt i = 0; i < nn; i++) {
+      PetscCall(PetscStrlcat(list, i ? ", " : "", sizeof(list)));
+      PetscCall(PetscStrlcat(list, names[i], sizeof(list)));
+    }
+    for (PetscInt k = 0; given && k < ns; k++) {
+      PetscBool ok = PETSC_FALSE;
+      for (PetscInt i = 0; i < nn && !ok; i++) PetscCall(PetscStrcasecmp(str[k], names[i], &ok));
+      PetscCheck(ok, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "%s: '%s' is not one of %s", opt, str[k], list);
+    }
+    for (PetscInt k = 0; k < ns; k++) PetscCall(PetscFree(str[k]));
+  }
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) vals[k] = v[k];
   PetscCall(PetscOptionsEnumArray(opt, text, "", names, vals, &n, &set));
   if (!set) PetscFunctionReturn(PETSC_SUCCESS);

@@ -238,7 +238,7 @@ def test_bad_input():
             ([*SCENE_CTH, "-mpm_lo", "nan", "-mpm_output", d], "-mpm_lo"),
             ([*SCENE_CTH, "-mpm_dt_min", "-1", "-mpm_output", d], "-mpm_dt_min"),
             ([*SCENE_CTH, "-mpm_output_interval", "-3", "-mpm_output", d], "-mpm_output_interval"),
-            ([*SCENE_CTH, "-mpm_bc_lo", "wal", "-mpm_output", d], "-mpm_bc_lo"),
+            ([*SCENE_CTH, "-mpm_bc_lo", "wal", "-mpm_output", d], "-mpm_bc_lo: 'wal' is not one of wall, free, outflow"),
             ([*SCENE_CTH, "-mpm_exact_type", "foo", "-mpm_output", d], "-mpm_exact_type"),
             ([*SCENE_CTH, "-mpm_popping_interval", "-1", "-mpm_output", d], "-mpm_popping_interval"),
             (["-options_file", HYDRO, "-mpm_gravity", "0,0", "-mpm_output", d], "-region_col_hydrostatic"),
