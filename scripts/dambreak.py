@@ -9,7 +9,6 @@ the measurements (docs/dambreak_front.png) and snapshots of the points of the 2D
 
 usage: scripts/dambreak.py [--exe build/petmpm] [--out docs/validation-dambreak-runs.md] [--quick]
 """
-import argparse
 import os
 import sys
 import tempfile
@@ -60,11 +59,7 @@ def snapshots(h5, png):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--exe", default=os.path.join(SRC, "build", "petmpm"))
-    ap.add_argument("--out", default=os.path.join(SRC, "docs", "validation-dambreak-runs.md"))
-    ap.add_argument("--quick", action="store_true", help="the 10 cells per a runs only")
-    a = ap.parse_args()
+    a = lib.validation_args(__doc__, "validation-dambreak-runs.md", "the 10 cells per a runs only")
     runs = [r for r in RUNS if "10 cells" in r[0]] if a.quick else RUNS
     reps, lines = {}, []
     with tempfile.TemporaryDirectory() as tmp:

@@ -107,3 +107,14 @@ class Transcript:
         if path:
             with open(path, "w") as f:
                 f.write("\n".join(self.lines) + "\n")
+
+
+def validation_args(doc, out, quick_help):
+    """The command line of a validation script (scripts/taylor.py, scripts/dambreak.py): --exe, --out (its generated
+    Markdown file, default docs/OUT) and --quick (quick_help says what it leaves out)."""
+    import argparse
+    ap = argparse.ArgumentParser(description=doc.split("\n")[0])
+    ap.add_argument("--exe", default=os.path.join(SRC, "build", "petmpm"))
+    ap.add_argument("--out", default=os.path.join(SRC, "docs", out))
+    ap.add_argument("--quick", action="store_true", help=quick_help)
+    return ap.parse_args()

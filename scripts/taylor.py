@@ -8,7 +8,6 @@ final-profile plot of the three 3D runs (docs/taylor_profile.png, scripts/taylor
 
 usage: scripts/taylor.py [--exe build/petmpm] [--out docs/validation-taylor-runs.md] [--quick]
 """
-import argparse
 import os
 import subprocess
 import sys
@@ -36,11 +35,7 @@ def check(rep, name, what="value"):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--exe", default=os.path.join(SRC, "build", "petmpm"))
-    ap.add_argument("--out", default=os.path.join(SRC, "docs", "validation-taylor-runs.md"))
-    ap.add_argument("--quick", action="store_true", help="R0/6 and R0/9 only, no 3D R0/12")
-    a = ap.parse_args()
+    a = lib.validation_args(__doc__, "validation-taylor-runs.md", "R0/6 and R0/9 only, no 3D R0/12")
     md = ["# Taylor anvil runs", "", "Made by `scripts/taylor.py` (one rank); discussed in [validation-taylor.md](validation-taylor.md). Lengths in mm;",
           "`error`: against the shot; energy: the report's `energy_budget` (of the impact's kinetic energy); wall: the time loop [s].", ""]
     with tempfile.TemporaryDirectory() as tmp:

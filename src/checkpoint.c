@@ -24,7 +24,8 @@
 #include <unistd.h>
 
 #define MPM_CKPT_NSTATE 28
-#define MPM_CKPT_NDIAG (26 + MPM_OUTFLOW_N)
+#define MPM_CKPT_OUTFLOW 26 /* the outflow tallies' place in the diagnostics, after the counters of MPMCkptDiag */
+#define MPM_CKPT_NDIAG (MPM_CKPT_OUTFLOW + MPM_OUTFLOW_N)
 
 /* A 1D dataset of N doubles of which this rank writes n at offset. */
 static PetscErrorCode MPMCkptWrite(hid_t file, const char name[], hsize_t N, hsize_t offset, hsize_t n, const PetscReal *a)
@@ -75,8 +76,9 @@ static void MPMCkptDiag(MPMDiagnostics *dg, PetscReal a[], PetscBool store)
   PetscInt      *w[]               = {&dg->isentrope_points,  &dg->dt_limit[0],      &dg->dt_limit[1],  &dg->dt_limit[2],   &dg->dt_limit[3],      &dg->vacuum_points_max, &dg->empty_cells_max, &dg->empty_cells0,
                                       &dg->first_vacuum_step, &dg->first_empty_step, &dg->points_split, &dg->split_refused, &dg->wall_reflections, &dg->domain_resets,     &dg->popping_checks,  &dg->popped_max};
   const PetscInt nv = 7, nw = (PetscInt)(sizeof(w) / sizeof(w[0]));
-  PetscReal     *t = &a[nv + nw]; /* then the outflow tallies */
+  PetscReal     *t = &a[MPM_CKPT_OUTFLOW];
 
+  _Static_assert(7 + sizeof(w) / sizeof(w[0]) <= MPM_CKPT_OUTFLOW, "MPMCkptDiag: the counters run into the outflow tallies");
   for (PetscInt i = 0; i < nv; i++) {
     if (store)
       a[i] = *v[i];
@@ -98,7 +100,7 @@ static void MPMCkptDiag(MPMDiagnostics *dg, PetscReal a[], PetscBool store)
 }
 
 /* The counters that are this rank's sums (the report adds them over ranks): their indices in MPMCkptDiag's order. */
-static const PetscInt MPMCkptDiagSums[] = {0, 1, 7, 17, 18, 19, 20, 23, 24, 25, 26, 27, 28, 29, 30}; /* 23 ..: the outflow tallies */
+static const PetscInt MPMCkptDiagSums[] = {0, 1, 7, 17, 18, 19, 20}; /* and the outflow tallies from MPM_CKPT_OUTFLOW */
 
 PetscErrorCode MPMCheckpointWrite(MPM mpm)
 {
@@ -249,8 +251,8 @@ PetscErrorCode MPMRestartRead(MPM mpm)
     if (wsize == size)
       MPMCkptDiag(&mpm->diag, &dg[rank * MPM_CKPT_NDIAG], PETSC_FALSE);
     else {
-      for (size_t i = 0; i < PETSC_STATIC_ARRAY_LENGTH(MPMCkptDiagSums); i++) {
-        const PetscInt j = MPMCkptDiagSums[i];
+      for (size_t i = 0; i < PETSC_STATIC_ARRAY_LENGTH(MPMCkptDiagSums) + MPM_OUTFLOW_N; i++) {
+        const PetscInt j = i < PETSC_STATIC_ARRAY_LENGTH(MPMCkptDiagSums) ? MPMCkptDiagSums[i] : MPM_CKPT_OUTFLOW + (PetscInt)(i - PETSC_STATIC_ARRAY_LENGTH(MPMCkptDiagSums));
         for (PetscInt r = 1; r < wsize; r++) dg[j] += dg[r * MPM_CKPT_NDIAG + j];
         if (rank) dg[j] = 0.0;
       }

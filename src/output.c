@@ -101,18 +101,19 @@ static void MPMXDMFSlab(FILE *fp, const char name[], const char type[], const ch
   fprintf(fp, "\" NumberType=\"%s\" Precision=\"8\" Format=\"HDF\">petmpm.h5:%s</DataItem>\n     </DataItem>\n    </Attribute>\n", num, path);
 }
 
-/* A field of bs values per entry, the last dimension of the dataset (bs = 1: none): a Scalar, a 3-vector as Vector, a
-   3 x 3 tensor as Tensor, and any other block (a 2D vector or 2 x 2 tensor) as one Scalar per component, named
-   NAME_x, NAME_y or NAME_xx, NAME_xy, NAME_yx, NAME_yy (NAME_0, NAME_1, ... for other sizes). shape: the selection's
-   shape without the component; start[] and count[] select the entries of one output, their last entry is set here. */
-static void MPMXDMFField(FILE *fp, const char name[], const char num[], const char path[], PetscInt bs, const char shape[], PetscInt R, const PetscInt full[], PetscInt start[], PetscInt count[])
+/* A field of bs values per entry, components c0 .. c0 + bs - 1 of the dataset's last dimension (c0 < 0: the dataset
+   has no component dimension, bs = 1): a Scalar, a 3-vector as Vector, a 3 x 3 tensor as Tensor, and any other block
+   (a 2D vector or 2 x 2 tensor) as one Scalar per component, named NAME_x, NAME_y or NAME_xx, NAME_xy, NAME_yx,
+   NAME_yy (NAME_0, NAME_1, ... for other sizes). shape: the selection's shape without the component; start[] and
+   count[] select the entries of one output, their last entry is set here. */
+static void MPMXDMFField(FILE *fp, const char name[], const char num[], const char path[], PetscInt bs, PetscInt c0, const char shape[], PetscInt R, const PetscInt full[], PetscInt start[], PetscInt count[])
 {
   static const char *const comp2[] = {"x", "y"}, *const comp4[] = {"xx", "xy", "yx", "yy"};
   char dims[96], cname[96];
 
   if (bs == 1 || bs == 3 || bs == 9) {
-    if (bs > 1) {
-      start[R - 1] = 0;
+    if (c0 >= 0) {
+      start[R - 1] = c0;
       count[R - 1] = bs;
     }
     (void)PetscSNPrintf(dims, sizeof(dims), bs > 1 ? "%s %" PetscInt_FMT : "%s", shape, bs);
@@ -120,7 +121,7 @@ static void MPMXDMFField(FILE *fp, const char name[], const char num[], const ch
     return;
   }
   for (PetscInt c = 0; c < bs; c++) {
-    start[R - 1] = c;
+    start[R - 1] = c0 + c;
     count[R - 1] = 1;
     if (bs == 2)
       (void)PetscSNPrintf(cname, sizeof(cname), "%s_%s", name, comp2[c]);
@@ -159,29 +160,14 @@ static PetscErrorCode MPMWriteXDMFGrid(MPM mpm, FILE *fp)
     fprintf(fp, "    <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"%s\"/>\n    <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n", mesh);
     fprintf(fp, "     <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">%.17g %.17g %.17g</DataItem>\n", (double)o[0], (double)o[1], (double)o[2]);
     fprintf(fp, "     <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">%.17g %.17g %.17g</DataItem>\n    </Geometry>\n", (double)h[0], (double)h[1], (double)h[2]);
-    for (PetscInt a = 0; a < 2; a++) { /* the mass: component 0; the velocity: components 1 .. d */
-      start[0] = s;
-      count[0] = 1;
-      for (PetscInt i = 1; i < R - 1; i++) {
-        start[i] = 0;
-        count[i] = full[i];
-      }
-      start[R - 1] = a;
-      count[R - 1] = 1;
-      if (a && d == 3) { /* a Vector of the three velocity components: the slab's last dimension starts at 1 */
-        char dims[96];
-        count[R - 1] = 3;
-        PetscCall(PetscSNPrintf(dims, sizeof(dims), "%s 3", mesh));
-        MPMXDMFSlab(fp, "velocity", "Vector", dims, "Float", "/grid/nodes", R, full, start, count);
-      } else if (a && d == 2) {
-        static const char *const vn[] = {"velocity_x", "velocity_y"};
-        for (PetscInt c = 0; c < 2; c++) {
-          start[R - 1] = 1 + c;
-          MPMXDMFSlab(fp, vn[c], "Scalar", mesh, "Float", "/grid/nodes", R, full, start, count);
-        }
-      } else
-        MPMXDMFSlab(fp, a ? "velocity" : "mass", "Scalar", mesh, "Float", "/grid/nodes", R, full, start, count);
+    start[0] = s;
+    count[0] = 1;
+    for (PetscInt i = 1; i < R - 1; i++) {
+      start[i] = 0;
+      count[i] = full[i];
     }
+    MPMXDMFField(fp, "mass", "Float", "/grid/nodes", 1, 0, mesh, R, full, start, count);     /* component 0 */
+    MPMXDMFField(fp, "velocity", "Float", "/grid/nodes", d, 1, mesh, R, full, start, count); /* components 1 .. d */
     fprintf(fp, "   </Grid>\n");
   }
   fprintf(fp, "  </Grid>\n");
@@ -219,7 +205,7 @@ static PetscErrorCode MPMWriteXDMF(MPM mpm)
       PetscInt       full[3] = {S, Nmax, bs}, start[3] = {s, 0, 0}, count[3] = {1, N, 1};
       if (!mpm->field_on[f] || !mpm->field[f].output) continue;
       PetscCall(PetscSNPrintf(path, sizeof(path), "/particle_fields/%s", mpm->field[f].name));
-      MPMXDMFField(fp, mpm->field[f].name, MPMPointFieldIsInteger(mpm->field[f].name) ? "Int" : "Float", path, bs, shape, R, full, start, count);
+      MPMXDMFField(fp, mpm->field[f].name, MPMPointFieldIsInteger(mpm->field[f].name) ? "Int" : "Float", path, bs, bs > 1 ? 0 : -1, shape, R, full, start, count);
     }
     fprintf(fp, "   </Grid>\n");
   }
