@@ -134,7 +134,7 @@ def main():
         for ax, (prefix, var, label) in zip(axs, (("front_T", "T", "Z = z/a"), ("height_tau", "tau", "H = eta/(2a)"))):
             base = series(reps[names[0]], prefix)
             ax.plot([b[0] for b in base], [b[2] for b in base], "ko", label="Martin & Moyce (1952)")
-            for w in names[:3] + names[-1:]:
+            for w in [n for n in names if n.startswith("2D")]:  # the 2D resolutions and methods (the 3D slabs repeat them)
                 ser = series(reps[w], prefix)
                 ax.plot([x[0] for x in ser], [x[1] for x in ser], "-", label=w)
             ax.set_xlabel(var)
