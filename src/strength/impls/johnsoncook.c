@@ -2,7 +2,8 @@
 /* Johnson-Cook plasticity (Johnson & Cook, 7th Int. Symp. Ballistics, 1983) on the hypoelastic Jaumann-rate trial
    deviator (src/strength/hypoelastic.h), with the radial return solved for the hardening flow stress
      Y = (A + B eps_p^n) (1 + C ln(max(epsdot_p / epsdot0, 1))) (1 - T*^m),  T* = (T - Tr)/(Tm - Tr) in [0, 1],
-   at the end-of-increment plastic strain and the plastic strain rate of the step (an implicit return). T is the
+   at the end-of-increment plastic strain and the plastic strain rate of the step (an implicit return, solved by a
+   safeguarded Newton iteration, MPMStrengthReturn_JC). T is the
    point's temperature from its EOS at the start of the step. Plastic work heating: the stress work s : L dt / rho,
    elastic and plastic, enters the internal energy e, so the dissipated plastic work raises T through the EOS and
    softens the flow stress (a Taylor-Quinney factor of 1).
@@ -43,6 +44,42 @@ static PetscReal MPMStrengthFlow_JC(void *ctx, PetscReal epsp, PetscReal rate, P
   return MPMStrengthFlowTheta_JC(ctx, epsp, rate, MPMStrengthThermal_JC((const Strength_JC *)ctx, T));
 }
 
+/* The radial return of Johnson-Cook (the same equation as MPMRadialReturn: sigma_eq^trial - 3 G dg = Y(eps_p + dg,
+   dg/dt), Y = H(eps_p + dg) R(dg/dt) theta) by Newton's method with the model's derivative
+     dY/ddg = theta (B n eps^(n-1) R + H C / dg  [the rate term only where dg/dt > epsdot0]),
+   started from dg = (sigma_eq^trial - Y(eps_p, 0)) / (3 G), which lies at or right of the root (Y grows with dg), and
+   safeguarded by the bracket of the root that the iterates narrow: a step that leaves it bisects it. It stops at the
+   general return's tolerance |residual| <= 1e-12 sigma_eq^trial. Newton needs about 4.5 evaluations of the flow stress
+   (one pow and one log each; measured on the 3D bar) where the general return's regula falsi needs 7 to 9, so the
+   answers differ from it within that tolerance. Returns dg. */
+static inline PetscReal MPMStrengthReturn_JC(const Strength_JC *jc, PetscInt d, PetscReal dt, PetscReal theta, PetscReal s[], PetscReal *epsp)
+{
+  const PetscReal seq = MPMVonMisesStress(d, s), G3 = 3.0 * jc->G, rinv = dt > 0.0 ? 1.0 / (dt * jc->epsdot0) : 0.0;
+  const PetscReal Y0 = MPMStrengthFlowTheta_JC((void *)jc, *epsp, 0.0, theta);
+  PetscReal       a  = 0.0, b, dg;
+
+  if (seq - Y0 <= 0.0) return 0.0;
+  dg = b = (seq - Y0) / G3;
+  for (PetscInt it = 0; it < 100; it++) {
+    const PetscReal eps = *epsp + dg, en = eps > 0.0 ? PetscPowReal(eps, jc->n) : 0.0, H = jc->A + jc->B * en, r = dg * rinv;
+    const PetscReal R = r > 1.0 ? 1.0 + jc->C * PetscLogReal(r) : 1.0, res = seq - G3 * dg - H * R * theta;
+    PetscReal       slope, next;
+
+    if (PetscAbsReal(res) <= 1e-12 * seq) break;
+    if (res > 0.0)
+      a = dg;
+    else
+      b = dg;
+    if (b - a <= 1e-14 * b) break;
+    slope = G3 + theta * ((eps > 0.0 ? jc->B * jc->n * en / eps : 0.0) * R + (r > 1.0 ? H * jc->C / dg : 0.0));
+    next  = dg + res / slope;
+    dg    = next > a && next < b ? next : 0.5 * (a + b);
+  }
+  for (PetscInt i = 0; i < d * d; i++) s[i] *= (seq - G3 * dg) / seq;
+  *epsp += dg;
+  return dg;
+}
+
 static void MPMStrengthStress_JC(void *ctx, PetscInt d, PetscReal dt, const PetscReal L[], const PetscReal F[], PetscReal rho, PetscReal T, PetscReal s[], PetscReal *epsp, PetscReal *c2)
 {
   const Strength_JC *jc = (const Strength_JC *)ctx;
@@ -51,8 +88,7 @@ static void MPMStrengthStress_JC(void *ctx, PetscInt d, PetscReal dt, const Pets
   /* An elastic trial below A (1 - T*) needs no return and no pow: for m >= 1, T*^m <= T* and eps_p^n >= 0, so the flow
      stress at the rate 0 of the yield check is at least A (1 - T*), in floating point too (pow is faithfully rounded
      and the operations are monotonic): the return would find no yield and leave s and eps_p as they are. */
-  if (!(jc->m >= 1.0 && MPMVonMisesStress(d, s) <= jc->A * (1.0 - MPMStrengthHomologous_JC(jc, T))))
-    (void)MPMRadialReturn(d, dt, jc->G, MPMStrengthFlowTheta_JC, ctx, MPMStrengthThermal_JC(jc, T), s, epsp); /* the return passes its T argument through to the flow */
+  if (!(jc->m >= 1.0 && MPMVonMisesStress(d, s) <= jc->A * (1.0 - MPMStrengthHomologous_JC(jc, T)))) (void)MPMStrengthReturn_JC(jc, d, dt, MPMStrengthThermal_JC(jc, T), s, epsp);
   *c2 = MPMHypoelasticWaveSpeed2(jc->G, rho);
 }
 
