@@ -246,11 +246,21 @@ PetscErrorCode MPMGridZeroForScatter(MPM mpm, PetscInt n, const PetscReal x[], M
     lo[k] = PetscMax(0, lo[k] - g->sw - g->xs[k]);
     hi[k] = PetscMin(g->xm[k], hi[k] + 2 + g->sw - g->xs[k]);
   }
-  for (PetscInt pass = 0; pass < 2; pass++) { /* the previous box (it may hold values), then the new one */
-    const PetscInt *a = pass ? lo : mpm->box_lo, *b = pass ? hi : mpm->box_hi;
-    if (a[0] >= b[0]) continue;
+  /* the new box, then what of the previous box (it may hold values) lies outside it: each node is zeroed once */
+  if (lo[0] < hi[0])
+    for (PetscInt k2 = lo[2]; k2 < hi[2]; k2++)
+      for (PetscInt k1 = lo[1]; k1 < hi[1]; k1++) PetscCall(PetscArrayzero(&node[(k2 * g->xm[1] + k1) * g->xm[0] + lo[0]], hi[0] - lo[0]));
+  if (mpm->box_lo[0] < mpm->box_hi[0]) {
+    const PetscInt *a = mpm->box_lo, *b = mpm->box_hi;
     for (PetscInt k2 = a[2]; k2 < b[2]; k2++)
-      for (PetscInt k1 = a[1]; k1 < b[1]; k1++) PetscCall(PetscArrayzero(&node[(k2 * g->xm[1] + k1) * g->xm[0] + a[0]], b[0] - a[0]));
+      for (PetscInt k1 = a[1]; k1 < b[1]; k1++) {
+        MPMNode *row = &node[(k2 * g->xm[1] + k1) * g->xm[0]];
+        if (lo[0] < hi[0] && k2 >= lo[2] && k2 < hi[2] && k1 >= lo[1] && k1 < hi[1]) { /* the row's part inside the new box is done */
+          if (a[0] < lo[0]) PetscCall(PetscArrayzero(&row[a[0]], PetscMin(b[0], lo[0]) - a[0]));
+          if (b[0] > hi[0]) PetscCall(PetscArrayzero(&row[PetscMax(a[0], hi[0])], b[0] - PetscMax(a[0], hi[0])));
+        } else
+          PetscCall(PetscArrayzero(&row[a[0]], b[0] - a[0]));
+      }
   }
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
     mpm->box_lo[k] = lo[k];

@@ -128,6 +128,16 @@ static inline void MPMShapeFold1d(const MPMGrid *g, PetscInt k, PetscInt n, Pets
   }
 }
 
+/* The deformation of point p's domain that the shape functions read: F_p diag(s_p), with s_p the domain scale that
+   point splitting halves (s NULL: 1), or NULL where the points carry no F. */
+static inline const PetscReal *MPMPointDomain(PetscInt d, const PetscReal *F, const PetscReal *s, PetscInt p, PetscReal Fs[])
+{
+  if (!F || !s) return F ? &F[p * d * d] : NULL;
+  for (PetscInt a = 0; a < d; a++)
+    for (PetscInt b = 0; b < d; b++) Fs[a * d + b] = F[p * d * d + a * d + b] * s[p * d + b];
+  return Fs;
+}
+
 /* Tensor product of per-direction node lists (ghosted-local index, weight, derivative, sign). */
 static inline void MPMShapeTensor(const MPMGrid *g, const PetscInt nn[], PetscInt idx[][MPM_MAX_1D], PetscReal w[][MPM_MAX_1D], PetscReal dw[][MPM_MAX_1D], PetscReal sg[][MPM_MAX_1D], MPMStencil *st)
 {

@@ -251,16 +251,6 @@ static inline PetscReal MPMLatticeHalfWidth(const MPM mpm, PetscInt k)
   return 0.5 * mpm->grid.h[k] / mpm->ppc;
 }
 
-/* The deformation of point p's domain that the shape functions read: F_p diag(s_p), with s_p the domain scale that
-   point splitting halves (s NULL: 1), or NULL where the points carry no F. */
-static inline const PetscReal *MPMPointDomain(PetscInt d, const PetscReal *F, const PetscReal *s, PetscInt p, PetscReal Fs[])
-{
-  if (!F || !s) return F ? &F[p * d * d] : NULL;
-  for (PetscInt a = 0; a < d; a++)
-    for (PetscInt b = 0; b < d; b++) Fs[a * d + b] = F[p * d * d + a * d + b] * s[p * d + b];
-  return Fs;
-}
-
 /* div v_p = tr L_p, plus the hoop rate v_r / r on an axisymmetric grid. */
 static inline PetscReal MPMPointDivergence(const MPMPoints *pts, PetscInt d, PetscInt p)
 {

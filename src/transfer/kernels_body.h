@@ -3,13 +3,21 @@
    expressions of the generic reference (src/transfer/transfer.c MPMScatter, MPMGather) in the same order, with the dimension,
    the stencil width and the mode known to the compiler: no function pointer, no run-time dimension loop and no
    mode branch inside the loop over points. */
-#if MPM_KD == 1
+#if defined(MPM_KSTENCIL)
+#  define MPM_KS MPM_KSIZE(MPM_KD)
+#elif MPM_KD == 1
 #  define MPM_KS (MPM_KNB)
 #elif MPM_KD == 2
 #  define MPM_KS (MPM_KNB * MPM_KNB)
 #else
 #  define MPM_KS (MPM_KNB * MPM_KNB * MPM_KNB)
 #endif
+
+#if defined(MPM_KSTENCIL)
+/* The family's own stencil of point p (kernels.h): MPM_KS entries, the mirror signs SG filled only when one is -1. */
+#  define MPM_KEVAL(g, ctx, A, p, node, W, DW, SG) MPM_KSTENCIL(ctx, g, A, p, node, W, &(DW)[0][0], &(SG)[0][0], MPM_KD)
+#else
+#  define MPM_KEVAL(g, ctx, A, p, node, W, DW, SG) MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(g, &(A)->x[(p)*MPM_KD], node, W, DW, SG)
 
 /* N_I(x_p), grad N_I(x_p) and, for a point whose stencil reaches across a wall, the mirror signs of one point:
    MPMShapeEvaluate for this family and dimension. Returns whether a sign is -1 (SG filled); otherwise every sign is
@@ -31,13 +39,13 @@ MPM_KINLINE PetscBool MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(const MPMGrid 
     MPMShapeFold1d(g, k, MPM_KNB, idx[k], sg[k]);
     for (PetscInt a = 0; a < MPM_KNB; a++) mirror = (PetscBool)(mirror || sg[k][a] < 0.0);
   }
-#if MPM_KD == 1
+#  if MPM_KD == 1
   for (PetscInt a = 0; a < MPM_KNB; a++) {
     node[a]  = idx[0][a];
     W[a]     = w[0][a];
     DW[a][0] = dw[0][a];
   }
-#elif MPM_KD == 2
+#  elif MPM_KD == 2
   for (PetscInt b = 0, s = 0; b < MPM_KNB; b++)
     for (PetscInt a = 0; a < MPM_KNB; a++, s++) {
       node[s]  = idx[1][b] * g->gm[0] + idx[0][a];
@@ -45,7 +53,7 @@ MPM_KINLINE PetscBool MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(const MPMGrid 
       DW[s][0] = dw[0][a] * w[1][b];
       DW[s][1] = w[0][a] * dw[1][b];
     }
-#else
+#  else
   for (PetscInt c = 0, s = 0; c < MPM_KNB; c++)
     for (PetscInt b = 0; b < MPM_KNB; b++)
       for (PetscInt a = 0; a < MPM_KNB; a++, s++) {
@@ -55,17 +63,17 @@ MPM_KINLINE PetscBool MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(const MPMGrid 
         DW[s][1] = w[0][a] * dw[1][b] * w[2][c];
         DW[s][2] = w[0][a] * w[1][b] * dw[2][c];
       }
-#endif
+#  endif
   if (mirror) {
-#if MPM_KD == 1
+#  if MPM_KD == 1
     for (PetscInt a = 0; a < MPM_KNB; a++) SG[a][0] = sg[0][a];
-#elif MPM_KD == 2
+#  elif MPM_KD == 2
     for (PetscInt b = 0, s = 0; b < MPM_KNB; b++)
       for (PetscInt a = 0; a < MPM_KNB; a++, s++) {
         SG[s][0] = sg[0][a];
         SG[s][1] = sg[1][b];
       }
-#else
+#  else
     for (PetscInt c = 0, s = 0; c < MPM_KNB; c++)
       for (PetscInt b = 0; b < MPM_KNB; b++)
         for (PetscInt a = 0; a < MPM_KNB; a++, s++) {
@@ -73,10 +81,11 @@ MPM_KINLINE PetscBool MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(const MPMGrid 
           SG[s][1] = sg[1][b];
           SG[s][2] = sg[2][c];
         }
-#endif
+#  endif
   }
   return mirror;
 }
+#endif
 
 /* One point's m_I += N_I m_p, (mv)_I += N_I m_p v_p and, by mode, its point pressure force and stress force; SG (the
    mirror signs) is read only when mirror is set. */
@@ -106,12 +115,12 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
 }
 
 /* m_I += N_I m_p, (mv)_I += N_I m_p v_p and, by mode, the point pressure force and the stress force. */
-MPM_KINLINE void MPM_KCAT(MPMKP2G, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const MPMTransferArgs *A, MPMNode *nodes, const int mode)
+MPM_KINLINE void MPM_KCAT(MPMKP2G, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const void *ctx, const MPMTransferArgs *A, MPMNode *nodes, const int mode)
 {
   for (PetscInt p = 0; p < A->n; p++) {
     PetscInt  node[MPM_KS];
     PetscReal W[MPM_KS], DW[MPM_KS][MPM_KD], SG[MPM_KS][MPM_KD];
-    if (MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(g, &A->x[p * MPM_KD], node, W, DW, SG))
+    if (MPM_KEVAL(g, ctx, A, p, node, W, DW, SG))
       MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, node, W, DW, SG, mode, 1);
     else
       MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, node, W, DW, SG, mode, 0);
@@ -176,12 +185,12 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, 
 }
 
 /* The grid velocity back to the points, by mode. */
-MPM_KINLINE void MPM_KCAT(MPMKG2P, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const MPMTransferArgs *A, const MPMNode *nodes, const int mode)
+MPM_KINLINE void MPM_KCAT(MPMKG2P, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const void *ctx, const MPMTransferArgs *A, const MPMNode *nodes, const int mode)
 {
   for (PetscInt p = 0; p < A->n; p++) {
     PetscInt  node[MPM_KS];
     PetscReal W[MPM_KS], DW[MPM_KS][MPM_KD], SG[MPM_KS][MPM_KD];
-    if (MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(g, &A->x[p * MPM_KD], node, W, DW, SG))
+    if (MPM_KEVAL(g, ctx, A, p, node, W, DW, SG))
       MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(g, A, nodes, p, node, W, DW, SG, mode, 1);
     else
       MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(g, A, nodes, p, node, W, DW, SG, mode, 0);
@@ -191,12 +200,12 @@ MPM_KINLINE void MPM_KCAT(MPMKG2P, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const
 #define MPM_KP2G(M)                                                                                                                  \
   static void MPM_KCAT(MPMP2G, MPM_KNAME, MPM_KD, _##M)(const MPMGrid *g, const void *ctx, const MPMTransferArgs *A, MPMNode *nodes) \
   {                                                                                                                                  \
-    MPM_KCAT(MPMKP2G, MPM_KNAME, MPM_KD, d)(g, A, nodes, M);                                                                         \
+    MPM_KCAT(MPMKP2G, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, M);                                                                    \
   }
 #define MPM_KG2P(M)                                                                                                                        \
   static void MPM_KCAT(MPMG2P, MPM_KNAME, MPM_KD, _##M)(const MPMGrid *g, const void *ctx, const MPMTransferArgs *A, const MPMNode *nodes) \
   {                                                                                                                                        \
-    MPM_KCAT(MPMKG2P, MPM_KNAME, MPM_KD, d)(g, A, nodes, M);                                                                               \
+    MPM_KCAT(MPMKG2P, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, M);                                                                          \
   }
 MPM_KP2G(0)
 MPM_KP2G(1)
@@ -213,3 +222,4 @@ MPM_KG2P(7)
 #undef MPM_KP2G
 #undef MPM_KG2P
 #undef MPM_KS
+#undef MPM_KEVAL

@@ -29,6 +29,7 @@ typedef struct {
   PetscReal       *x, *v, *L, *e;                                         /* position, velocity, velocity gradient, internal energy       */
   const PetscReal *m, *V, *pr, *q;                                        /* mass, volume, pressure, artificial viscosity                 */
   const PetscReal *S, *rho;                                               /* deviatoric stress (d x d), density                           */
+  const PetscReal *F, *ds;                                                /* deformation gradient and domain scale (CPDI's point domains), or NULL */
   const PetscReal *cellwork;                                              /* conservative update with the cell rule: work per unit P V of each local cell, else NULL */
   PetscReal        alpha;                                                 /* FLIP fraction                                               */
   PetscBool        kefix, stress;                                         /* kinetic-energy fix; the stress enters the work               */

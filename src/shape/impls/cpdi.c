@@ -8,6 +8,7 @@
    The corners must stay within -mpm_shape_cpdi_reach cells of the point's cell (ghost width reach + 1):
    a point whose domain stretches further stops the run with its diagnosis. */
 #include "../shapeimpl.h"
+#include "../../transfer/transfer.h"
 
 typedef struct {
   PetscReal l0[MPM_MAX_DIM]; /* undeformed half-width of the domain [cm] */
@@ -103,6 +104,62 @@ MPM_CPDI_INLINE void CPDIEvaluate(const Shape_CPDI *cp, const MPMGrid *g, const 
   }
 }
 
+/* The specialised transfer kernels' stencil (src/transfer/kernels.h): point p's 4^d entries in CPDIEvaluate's order and
+   with its arithmetic, so the kernels reproduce the generic transfers bit for bit; the mirror signs are written only
+   when one of them is -1 (the kernels' sign-free path otherwise). */
+MPM_CPDI_INLINE PetscBool CPDIKernelStencil(const void *ctx, const MPMGrid *g, const MPMTransferArgs *A, PetscInt p, PetscInt node[], PetscReal W[], PetscReal DW[], PetscReal SG[], const PetscInt d)
+{
+  const Shape_CPDI *cp    = (const Shape_CPDI *)ctx;
+  const PetscInt    nc    = 1 << d;
+  const PetscReal   scale = 1.0 / nc, *x = &A->x[p * d];
+  PetscReal         R[MPM_MAX_DIM * MPM_MAX_DIM], Ri[MPM_MAX_DIM * MPM_MAX_DIM], Fs[MPM_MAX_DIM * MPM_MAX_DIM], sgc[8][MPM_MAX_DIM][2];
+  PetscBool         mirror = PETSC_FALSE;
+  PetscInt          n      = 0;
+
+  CPDIDomain(cp, d, MPMPointDomain(d, A->F, A->ds, p, Fs), R, Ri);
+  for (PetscInt c = 0; c < nc; c++) {
+    PetscReal s[MPM_MAX_DIM], gs[MPM_MAX_DIM] = {0, 0, 0}, xc[MPM_MAX_DIM];
+    PetscInt  idx[MPM_MAX_DIM][2];
+    PetscReal w[MPM_MAX_DIM][2];
+    for (PetscInt k = 0; k < d; k++) s[k] = (c >> k) & 1 ? 1.0 : -1.0;
+    for (PetscInt j = 0; j < d; j++)
+      for (PetscInt k = 0; k < d; k++) gs[j] += Ri[k * d + j] * s[k];
+    for (PetscInt i = 0; i < d; i++) {
+      PetscInt  first, nb;
+      PetscReal dw[2];
+      xc[i] = x[i];
+      for (PetscInt k = 0; k < d; k++) xc[i] += R[i * d + k] * s[k];
+      MPMShapeLinear1d((xc[i] - g->lo[i]) / g->h[i], &first, &nb, w[i], dw);
+      idx[i][0] = first;
+      idx[i][1] = first + 1;
+      MPMShapeFold1d(g, i, 2, idx[i], sgc[c][i]);
+      mirror = (PetscBool)(mirror || sgc[c][i][0] < 0.0 || sgc[c][i][1] < 0.0);
+    }
+    for (PetscInt a = 0; a < (1 << d); a++, n++) {
+      PetscReal N  = scale;
+      PetscInt  nd = 0;
+      for (PetscInt i = d - 1; i >= 0; i--) {
+        const PetscInt b = (a >> i) & 1;
+        N *= w[i][b];
+        nd = nd * g->gm[i] + idx[i][b];
+      }
+      node[n] = nd;
+      W[n]    = N;
+      for (PetscInt j = 0; j < d; j++) DW[n * d + j] = N * gs[j];
+    }
+  }
+  if (mirror)
+    for (PetscInt c = 0, e = 0; c < nc; c++)
+      for (PetscInt a = 0; a < (1 << d); a++, e++)
+        for (PetscInt i = 0; i < d; i++) SG[e * d + i] = sgc[c][i][(a >> i) & 1];
+  return mirror;
+}
+
+#define MPM_KNAME CPDI
+#define MPM_KSIZE(d) (1 << (2 * (d)))
+#define MPM_KSTENCIL CPDIKernelStencil
+#include "../../transfer/kernels.h"
+
 static void MPMShapeEvaluate_CPDI(void *ctx, const MPMGrid *g, const PetscReal x[], const PetscReal F[], MPMStencil *st)
 {
   const Shape_CPDI *cp = (const Shape_CPDI *)ctx;
@@ -178,6 +235,7 @@ PetscErrorCode MPMShapeCreate_CPDI(MPMShape shape)
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) cp->l0[k] = 0.25; /* until MPMShapeSetUp */
   shape->data               = cp;
   shape->needs_F            = PETSC_TRUE;
+  shape->kernels            = MPMTransferKernels_CPDI;
   shape->ops.support        = MPMShapeSupport_CPDI;
   shape->ops.basis1d        = MPMShapeBasis1d_CPDI;
   shape->ops.evaluate       = MPMShapeEvaluate_CPDI;
