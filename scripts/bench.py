@@ -12,6 +12,8 @@ Cases (point-steps per second, median of --repeat runs, each case's runs interle
   block8q    the same with quadratic B-splines                              vs  mpm3d_quad
   bar1       the 3D bar, linear, 1 point per cell, MUSL, 8.3e4 points         vs  mpm3d cell
   bar2d      the 2D bar (bar_impact_2d.opts), linear, 1 point per cell, MUSL, 9.6e5 points
+  anvil3d    the 3D Taylor anvil (taylor_anvil_3d.opts) in the program's default method (CPDI, the FLIP/PIC blend,
+             splitting, heat conduction), 4.1e3 points, 100 steps: what a user running the defaults in 3D gets
 Each case on every rank count of --ranks; with --before, the same runs with another petmpm (the code before a
 change) interleaved too, and the speed-up. The -log_view phase shares of each case on one rank, and the memory
 per point in 3D: the marginal process memory per point between two sizes (PETSc's -memory_view maximum).
@@ -101,6 +103,7 @@ def main():
          ["-mpm_cells", blk, "-mpm_ppc", "2", "-mpm_scheme", "usl", "-mpm_shape_type", "bspline2", "-ts_max_steps", "3" if a.quick else "6"], "mpm3d_quad", ["cell", "6"]),
         ("bar1", "3D bar, linear, 1 ppc, MUSL, MG + JC", "bar_impact_3d.opts", ["-mpm_cells", "36,36,156", "-ts_max_steps", "20"], "mpm3d", ["cell", "10"]),
         ("bar2d", "2D bar, linear, 1 ppc, MUSL, MG + JC", "bar_impact_2d.opts", ["-mpm_cells", "600,2600", "-ts_max_steps", "20"], None, None),
+        ("anvil3d", "3D Taylor anvil, the default method (CPDI, blend, splitting), R0/9", "taylor_anvil_3d.opts", ["-mpm_cells", "24,24,63", "-ts_max_steps", "100"], None, None),
     ]
     say = Transcript()
     say(f"Point-steps per second, median of {a.repeat} interleaved runs; ratio = petmpm / reference kernel (../shared/bench)"
