@@ -60,6 +60,46 @@ MPM_CPDI_INLINE void CPDIDomain(const Shape_CPDI *cp, PetscInt d, const PetscRea
   }
 }
 
+/* Corner c of the domain x + R s_c: the gradient factor gs = R^-T s_c and, per direction, the two nodes of the linear
+   basis at the corner (folded onto the grid), their weights and mirror signs. */
+MPM_CPDI_INLINE void CPDICorner(const MPMGrid *g, const PetscReal x[], const PetscReal R[], const PetscReal Ri[], PetscInt c, PetscReal gs[], PetscInt idx[][2], PetscReal w[][2], PetscReal sg[][2], const PetscInt d)
+{
+  PetscReal s[MPM_MAX_DIM], xc[MPM_MAX_DIM];
+
+  for (PetscInt k = 0; k < d; k++) s[k] = (c >> k) & 1 ? 1.0 : -1.0;
+  for (PetscInt j = 0; j < d; j++) {
+    gs[j] = 0.0;
+    for (PetscInt k = 0; k < d; k++) gs[j] += Ri[k * d + j] * s[k]; /* (R^-T s)_j */
+  }
+  for (PetscInt i = 0; i < d; i++) {
+    PetscInt  first, n;
+    PetscReal dw[2];
+    xc[i] = x[i];
+    for (PetscInt k = 0; k < d; k++) xc[i] += R[i * d + k] * s[k];
+    MPMShapeLinear1d((xc[i] - g->lo[i]) / g->h[i], &first, &n, w[i], dw);
+    idx[i][0] = first;
+    idx[i][1] = first + 1;
+    MPMShapeFold1d(g, i, 2, idx[i], sg[i]);
+  }
+}
+
+/* The 2^d entries of one corner: node, weight 2^-d N_I(x_c) and gradient weight times gs (stride ds between entries). */
+MPM_CPDI_INLINE void CPDICornerEntries(const MPMGrid *g, PetscReal scale, const PetscReal gs[], PetscInt idx[][2], PetscReal w[][2], PetscInt node[], PetscReal W[], PetscReal DW[], PetscInt ds, const PetscInt d)
+{
+  for (PetscInt a = 0; a < (1 << d); a++) {
+    PetscReal N  = scale;
+    PetscInt  nd = 0;
+    for (PetscInt i = d - 1; i >= 0; i--) {
+      const PetscInt b = (a >> i) & 1;
+      N *= w[i][b];
+      nd = nd * g->gm[i] + idx[i][b];
+    }
+    node[a] = nd;
+    W[a]    = N;
+    for (PetscInt j = 0; j < d; j++) DW[a * ds + j] = N * gs[j];
+  }
+}
+
 /* The stencil of one point, with the dimension d a constant where MPMShapeEvaluate_CPDI calls it, so that every
    loop over d unrolls (the same operations in the same order for every d: the results do not change). */
 MPM_CPDI_INLINE void CPDIEvaluate(const Shape_CPDI *cp, const MPMGrid *g, const PetscReal x[], const PetscReal F[], MPMStencil *st, const PetscInt d)
@@ -71,36 +111,12 @@ MPM_CPDI_INLINE void CPDIEvaluate(const Shape_CPDI *cp, const MPMGrid *g, const 
   CPDIDomain(cp, d, F, R, Ri);
   st->n = 0;
   for (PetscInt c = 0; c < nc; c++) {
-    PetscReal s[MPM_MAX_DIM], gs[MPM_MAX_DIM] = {0, 0, 0}, xc[MPM_MAX_DIM];
+    PetscReal gs[MPM_MAX_DIM], w[MPM_MAX_DIM][2], sg[MPM_MAX_DIM][2];
     PetscInt  idx[MPM_MAX_DIM][2];
-    PetscReal w[MPM_MAX_DIM][2], sg[MPM_MAX_DIM][2];
-    for (PetscInt k = 0; k < d; k++) s[k] = (c >> k) & 1 ? 1.0 : -1.0;
-    for (PetscInt j = 0; j < d; j++)
-      for (PetscInt k = 0; k < d; k++) gs[j] += Ri[k * d + j] * s[k]; /* (R^-T s)_j */
-    for (PetscInt i = 0; i < d; i++) {
-      PetscInt  first, n;
-      PetscReal dw[2];
-      xc[i] = x[i];
-      for (PetscInt k = 0; k < d; k++) xc[i] += R[i * d + k] * s[k];
-      MPMShapeLinear1d((xc[i] - g->lo[i]) / g->h[i], &first, &n, w[i], dw);
-      idx[i][0] = first;
-      idx[i][1] = first + 1;
-      MPMShapeFold1d(g, i, 2, idx[i], sg[i]);
-    }
-    for (PetscInt a = 0; a < (1 << d); a++) {
-      PetscReal N    = scale;
-      PetscInt  node = 0;
-      for (PetscInt i = d - 1; i >= 0; i--) {
-        const PetscInt b = (a >> i) & 1;
-        N *= w[i][b];
-        node            = node * g->gm[i] + idx[i][b];
-        st->s[st->n][i] = sg[i][b];
-      }
-      st->node[st->n] = node;
-      st->w[st->n]    = N;
-      for (PetscInt j = 0; j < d; j++) st->dw[st->n][j] = N * gs[j];
-      st->n++;
-    }
+    CPDICorner(g, x, R, Ri, c, gs, idx, w, sg, d);
+    CPDICornerEntries(g, scale, gs, idx, w, &st->node[st->n], &st->w[st->n], &st->dw[st->n][0], MPM_MAX_DIM, d);
+    for (PetscInt a = 0; a < (1 << d); a++, st->n++)
+      for (PetscInt i = 0; i < d; i++) st->s[st->n][i] = sg[i][(a >> i) & 1];
   }
 }
 
@@ -109,49 +125,24 @@ MPM_CPDI_INLINE void CPDIEvaluate(const Shape_CPDI *cp, const MPMGrid *g, const 
    when one of them is -1 (the kernels' sign-free path otherwise). */
 MPM_CPDI_INLINE PetscBool CPDIKernelStencil(const void *ctx, const MPMGrid *g, const MPMTransferArgs *A, PetscInt p, PetscInt node[], PetscReal W[], PetscReal DW[], PetscReal SG[], const PetscInt d)
 {
-  const Shape_CPDI *cp    = (const Shape_CPDI *)ctx;
-  const PetscInt    nc    = 1 << d;
-  const PetscReal   scale = 1.0 / nc, *x = &A->x[p * d];
-  PetscReal         R[MPM_MAX_DIM * MPM_MAX_DIM], Ri[MPM_MAX_DIM * MPM_MAX_DIM], Fs[MPM_MAX_DIM * MPM_MAX_DIM], sgc[8][MPM_MAX_DIM][2];
+  const Shape_CPDI *cp = (const Shape_CPDI *)ctx;
+  const PetscInt    nc = 1 << d, ne = 1 << d;
+  const PetscReal   scale = 1.0 / nc;
+  PetscReal         R[MPM_MAX_DIM * MPM_MAX_DIM], Ri[MPM_MAX_DIM * MPM_MAX_DIM], Fs[MPM_MAX_DIM * MPM_MAX_DIM], sg[8][MPM_MAX_DIM][2];
   PetscBool         mirror = PETSC_FALSE;
-  PetscInt          n      = 0;
 
   CPDIDomain(cp, d, MPMPointDomain(d, A->F, A->ds, p, Fs), R, Ri);
   for (PetscInt c = 0; c < nc; c++) {
-    PetscReal s[MPM_MAX_DIM], gs[MPM_MAX_DIM] = {0, 0, 0}, xc[MPM_MAX_DIM];
+    PetscReal gs[MPM_MAX_DIM], w[MPM_MAX_DIM][2];
     PetscInt  idx[MPM_MAX_DIM][2];
-    PetscReal w[MPM_MAX_DIM][2];
-    for (PetscInt k = 0; k < d; k++) s[k] = (c >> k) & 1 ? 1.0 : -1.0;
-    for (PetscInt j = 0; j < d; j++)
-      for (PetscInt k = 0; k < d; k++) gs[j] += Ri[k * d + j] * s[k];
-    for (PetscInt i = 0; i < d; i++) {
-      PetscInt  first, nb;
-      PetscReal dw[2];
-      xc[i] = x[i];
-      for (PetscInt k = 0; k < d; k++) xc[i] += R[i * d + k] * s[k];
-      MPMShapeLinear1d((xc[i] - g->lo[i]) / g->h[i], &first, &nb, w[i], dw);
-      idx[i][0] = first;
-      idx[i][1] = first + 1;
-      MPMShapeFold1d(g, i, 2, idx[i], sgc[c][i]);
-      mirror = (PetscBool)(mirror || sgc[c][i][0] < 0.0 || sgc[c][i][1] < 0.0);
-    }
-    for (PetscInt a = 0; a < (1 << d); a++, n++) {
-      PetscReal N  = scale;
-      PetscInt  nd = 0;
-      for (PetscInt i = d - 1; i >= 0; i--) {
-        const PetscInt b = (a >> i) & 1;
-        N *= w[i][b];
-        nd = nd * g->gm[i] + idx[i][b];
-      }
-      node[n] = nd;
-      W[n]    = N;
-      for (PetscInt j = 0; j < d; j++) DW[n * d + j] = N * gs[j];
-    }
+    CPDICorner(g, &A->x[p * d], R, Ri, c, gs, idx, w, sg[c], d);
+    for (PetscInt i = 0; i < d; i++) mirror = (PetscBool)(mirror || sg[c][i][0] < 0.0 || sg[c][i][1] < 0.0);
+    CPDICornerEntries(g, scale, gs, idx, w, &node[c * ne], &W[c * ne], &DW[c * ne * d], d, d);
   }
   if (mirror)
     for (PetscInt c = 0, e = 0; c < nc; c++)
-      for (PetscInt a = 0; a < (1 << d); a++, e++)
-        for (PetscInt i = 0; i < d; i++) SG[e * d + i] = sgc[c][i][(a >> i) & 1];
+      for (PetscInt a = 0; a < ne; a++, e++)
+        for (PetscInt i = 0; i < d; i++) SG[e * d + i] = sg[c][i][(a >> i) & 1];
   return mirror;
 }
 
