@@ -86,7 +86,7 @@ def get(report, path, h=None):
 
 
 OPS = {"<": lambda v, t: v < t, "<=": lambda v, t: v <= t, ">": lambda v, t: v > t, ">=": lambda v, t: v >= t,
-       "==": lambda v, t: v == t, "abs<": lambda v, t: abs(v) < t}
+       "==": lambda v, t: v == t, "abs<": lambda v, t: abs(v) < t, "abs>": lambda v, t: abs(v) > abs(t)}
 
 
 def holds(value, op, target):

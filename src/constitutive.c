@@ -43,10 +43,10 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(mpm->log.constitutive, 0, 0, 0, 0));
   PetscCall(MPMPointsGetArrays(mpm, &pts));
-  if (pts.n > mpm->nwork) { /* workspace: the material index lists; 7 values per point of a chunk; axisymmetric: L - L_tt I per point */
+  if (pts.n > mpm->nwork) { /* workspace: the material index lists; 8 values per point of a chunk; axisymmetric: L - L_tt I per point */
     PetscCall(PetscFree3(mpm->widx, mpm->work, mpm->wL));
     mpm->nwork = pts.n + pts.n / 4;
-    PetscCall(PetscMalloc3(mpm->nwork, &mpm->widx, 7 * MPM_CHUNK, &mpm->work, mpm->grid.axisym ? mpm->nwork * d * d : 0, &mpm->wL));
+    PetscCall(PetscMalloc3(mpm->nwork, &mpm->widx, 8 * MPM_CHUNK, &mpm->work, mpm->grid.axisym ? mpm->nwork * d * d : 0, &mpm->wL));
   }
   if (mpm->grid.axisym) { /* the hoop rate L_tt: the volume change gets (1 + dt L_tt), and the strength models the in-plane block
                              L - L_tt I, whose deviatoric rates and work s : (L - L_tt I) are those of the 3D L with L_tt (docs/algorithm.md) */
@@ -70,7 +70,7 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
       const MPMEOS      E   = mpm->mat[im].eos;
       const MPMStrength Str = stress ? mpm->mat[im].strength : NULL;
       const PetscInt    n = PetscMin(MPM_CHUNK, start[im + 1] - c0), *idx = &mpm->widx[c0];
-      PetscReal        *rho1 = mpm->work, *dvol = rho1 + n, *e1 = dvol + n, *c2 = e1 + n, *cs2 = c2 + n, *pn = cs2 + n, *Tn = pn + n;
+      PetscReal        *rho1 = mpm->work, *dvol = rho1 + n, *e1 = dvol + n, *c2 = e1 + n, *cs2 = c2 + n, *pn = cs2 + n, *Tn = pn + n, *ws = Tn + n;
       const PetscReal  *L = pts.f[MPM_FIELD_GRADV], *m = pts.f[MPM_FIELD_MASS], *q = pts.f[MPM_FIELD_VISCOSITY];
       PetscReal        *rho = pts.f[MPM_FIELD_DENSITY], *V = pts.f[MPM_FIELD_VOLUME], *e = pts.f[MPM_FIELD_ENERGY], *pr = pts.f[MPM_FIELD_PRESSURE];
       PetscReal        *c = pts.f[MPM_FIELD_SOUNDSPEED], *T = pts.f[MPM_FIELD_TEMPERATURE], *F = pts.f[MPM_FIELD_DEFGRAD], *S = pts.f[MPM_FIELD_STRESS];
@@ -82,6 +82,7 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
         dvol[i]           = 1.0 / rho1[i] - 1.0 / rho[p];
         e1[i]             = conservative ? e[p] : e[p] - (pr[p] + q[p]) * dvol[i]; /* conservative: the gather added the work already */
         cs2[i]            = 0.0;
+        ws[i]             = 0.0;
         if (trackF) {
           PetscReal Fn[MPM_MAX_DIM * MPM_MAX_DIM];
           for (PetscInt a = 0; a < d; a++)
@@ -95,7 +96,8 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
         if (Str && !conservative) {
           PetscReal work = 0.0;
           for (PetscInt a = 0; a < d * d; a++) work += S[p * d * d + a] * (Lsh ? Lsh : L)[p * d * d + a];
-          e1[i] += dt * work / rho[p];
+          ws[i] = dt * work / rho[p];
+          e1[i] += ws[i];
         }
       }
       if (!conservative && !midpoint) /* compatible: an expansion beyond the threshold follows the EOS isentrope (exact), not the linear work of p^n */
@@ -114,8 +116,8 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
           if (epsp[idx[i]] > eps0[i]) mpm->diag.plastic_work += m[idx[i]] * MPMVonMisesStress(d, &S[idx[i] * d * d]) * (epsp[idx[i]] - eps0[i]) / rho1[i];
       }
       if (midpoint) {
-        PetscCall(MPMEOSPressureBatch(E, n, rho1, e1, pn, c2)); /* predictor */
-        for (PetscInt i = 0; i < n; i++) e1[i] = e[idx[i]] - (0.5 * (pr[idx[i]] + pn[i]) + q[idx[i]]) * dvol[i];
+        PetscCall(MPMEOSPressureBatch(E, n, rho1, e1, pn, c2));                                                          /* predictor */
+        for (PetscInt i = 0; i < n; i++) e1[i] = e[idx[i]] - (0.5 * (pr[idx[i]] + pn[i]) + q[idx[i]]) * dvol[i] + ws[i]; /* the corrector keeps the stress work */
       }
       PetscCall(MPMEOSPressureBatch(E, n, rho1, e1, pn, c2));
       PetscCall(MPMEOSTemperatureBatch(E, n, rho1, e1, Tn));

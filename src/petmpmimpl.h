@@ -188,7 +188,7 @@ struct _p_MPM {
   PetscInt     nwork;                                    /* capacity of the constitutive workspace [points]         */
   PetscInt    *widx;                                     /* the local points of each material, material by material  */
   PetscReal   *wL;                                       /* axisymmetric: L_p - L_tt,p I, what the strength models see */
-  PetscReal   *work;                                     /* 7 values per point of a chunk of MPM_CHUNK points        */
+  PetscReal   *work;                                     /* 8 values per point of a chunk of MPM_CHUNK points        */
   PetscInt     box_lo[MPM_MAX_DIM], box_hi[MPM_MAX_DIM]; /* owned nodes the node loops sweep (MPMGridZeroForScatter) */
   PetscReal   *cellV, *cellS;                            /* per local cell: sum V_p, sum V_p (p_p + q_p); in the gather of the conservative update with the cell rule, cellS is the cell's work per unit P_p V_p */
   DM           mean_da;                                  /* the point-exchange modules' nodal sums sum N w, sum N w q (nodemean.c) */

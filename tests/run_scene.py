@@ -13,7 +13,7 @@ An expectation file is {"doc": "...", "cases": [CASE, ...]}; a CASE is
    "rate": {"key": "errors.density.L1", "op": [">=", 0.6]}, "expect_last": {...},
    "compare": [{"key": "errors.density.L1", "op": "<", "case": "other", "factor": 0.6}]}
 - expect: report keys (dotted paths, scripts/petmpmlib.py get: checks by name, checks.NAME.error_cells with "h")
-  against an operator and a bound (<, <=, >, >=, ==, abs<), or a list of such pairs;
+  against an operator and a bound (<, <=, >, >=, ==, abs<, abs> (|value| > |bound|)), or a list of such pairs;
 - same_as: equality with an earlier case of the file, of report keys to rtol and, with "fields", of every final
   point field the two share (bitwise for rtol 0), and of the step count;
 - sweep + rate: the case runs once per value of the option ("per": the value is repeated for that many directions,

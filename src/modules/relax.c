@@ -67,6 +67,8 @@ PetscErrorCode MPMRelaxApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
     w[p] = pts.f[MPM_FIELD_VOLUME][p];
     q[p] = pts.f[MPM_FIELD_DENSITY][p] * c2;
   }
+  for (PetscInt p = 0; p < pts.n; p++) /* the cell sums start from zero (the cell rule's transfers leave theirs in the same arrays) */
+    if (cell[p] >= 0) mpm->cellV[cell[p]] = mpm->cellS[cell[p]] = 0.0;
   MPMRelaxCellSums(mpm, cell, pts.n, w, q); /* Kbar_c */
   for (PetscInt p = 0; p < pts.n; p++) {
     PetscReal K, theta;
