@@ -22,6 +22,10 @@ PETSC_EXTERN const char *const MPMSchemes[];
 
 typedef enum { MPM_STRESS_CELL, MPM_STRESS_POINT } MPMStressIntegration;
 PETSC_EXTERN const char *const MPMStressIntegrations[];
+/* The cell rule's cell volume: every occupied cell counts full (full), or each point lends its volume to the cells its
+   domain overlaps, so a partly filled cell counts the material in it (points). */
+typedef enum { MPM_CELL_VOLUME_FULL, MPM_CELL_VOLUME_POINTS } MPMCellVolume;
+PETSC_EXTERN const char *const MPMCellVolumes[];
 /* Internal-energy update: with the pressure the force used (compatible) or predictor-corrector midpoint. */
 typedef enum { MPM_ENERGY_COMPATIBLE, MPM_ENERGY_MIDPOINT, MPM_ENERGY_CONSERVATIVE } MPMEnergyUpdate;
 PETSC_EXTERN const char *const MPMEnergyUpdates[];

@@ -75,6 +75,14 @@ static PetscErrorCode MPMCreateGridOwned(MPM mpm, PetscInt *own[])
       PetscCall(DMCreateLocalVector(mpm->da, &mpm->lnodes));
   }
   PetscCall(PetscCalloc2(g->ncells, &mpm->cellV, g->ncells, &mpm->cellS)); /* zero: the relaxation module expects it between its calls */
+  g->nxcells = 1;
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) { /* the owned cells and one layer around, where the ghosted box has it (its cells' stencils stay in the box) */
+    const PetscInt lo = k < g->dim ? PetscMax(g->gs[k], g->cs[k] - 1) : 0, hi = k < g->dim ? PetscMin(g->gs[k] + g->gm[k] - 1, g->cs[k] + g->cm[k] + 1) : 1;
+    g->xcs[k] = lo;
+    g->xcm[k] = hi - lo;
+    g->nxcells *= g->xcm[k];
+  }
+  PetscCall(PetscCalloc1(2 * g->nxcells, &mpm->xcell));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -89,6 +97,7 @@ PetscErrorCode MPMDestroyGrid(MPM mpm)
   PetscCall(DMDestroy(&mpm->mean_da));
   PetscCall(DMDestroy(&mpm->da));
   PetscCall(PetscFree2(mpm->cellV, mpm->cellS));
+  PetscCall(PetscFree(mpm->xcell));
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) PetscCall(PetscFree(mpm->grid.rank_start[k]));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

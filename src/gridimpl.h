@@ -26,6 +26,9 @@ typedef struct {
   PetscInt  gm[MPM_MAX_DIM];         /* vertices per direction of the ghosted local box         */
   PetscInt  sw;                      /* ghost width of the DMDA [cells]: a point touches nodes within sw cells of its own */
   PetscInt  ncells;                  /* owned cells on this rank                                */
+  PetscInt  xcs[MPM_MAX_DIM];        /* first extended cell: the owned cells and one layer around, within the ghosted box */
+  PetscInt  xcm[MPM_MAX_DIM];        /* extended cells per direction                            */
+  PetscInt  nxcells;                 /* extended cells on this rank                             */
   PetscReal lo[MPM_MAX_DIM];         /* lower corner of the domain [cm]                         */
   PetscReal hi[MPM_MAX_DIM];         /* upper corner of the domain [cm]                         */
   PetscReal h[MPM_MAX_DIM];          /* cell size [cm]                                          */

@@ -6,6 +6,7 @@
 
 const char *const MPMSchemes[]             = {"usl", "musl", "MPMScheme", "MPM_SCHEME_", NULL};
 const char *const MPMStressIntegrations[]  = {"cell", "point", "MPMStressIntegration", "MPM_STRESS_", NULL};
+const char *const MPMCellVolumes[]         = {"full", "points", "MPMCellVolume", "MPM_CELL_VOLUME_", NULL};
 const char *const MPMDtLimitNames[]        = {"sound", "acceleration", "volume", "landing"};
 const char *const MPMEnergyUpdates[]       = {"compatible", "midpoint", "conservative", "MPMEnergyUpdate", "MPM_ENERGY_", NULL};
 const char *const MPMTransferKernelTypes[] = {"specialised", "generic", "MPMTransferKernel", "MPM_TRANSFER_", NULL};
@@ -44,6 +45,7 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   m->scheme                 = MPM_SCHEME_USL;
   m->stress_integration     = MPM_STRESS_POINT;
   m->energy_update          = MPM_ENERGY_COMPATIBLE; /* with the cell rule; point integration sets conservative */
+  m->cell_volume            = MPM_CELL_VOLUME_POINTS;
   m->ke_fix                 = PETSC_TRUE;
   m->update                 = MPM_UPDATE_BLEND;
   m->alpha                  = 0.99;
@@ -148,10 +150,15 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   }
   PetscCall(PetscOptionsEnum("-mpm_scheme", "Stress update order", "", MPMSchemes, (PetscEnum)mpm->scheme, (PetscEnum *)&mpm->scheme, NULL));
   PetscCall(PetscOptionsEnum("-mpm_stress_integration", "Internal force quadrature: cell-averaged stress or point by point", "", MPMStressIntegrations, (PetscEnum)mpm->stress_integration, (PetscEnum *)&mpm->stress_integration, NULL));
-  /* point integration: the conservative update is exact and converges (weak Sod L1 rate 0.9 against 0.6 with compatible) */
-  if (mpm->stress_integration == MPM_STRESS_POINT) mpm->energy_update = MPM_ENERGY_CONSERVATIVE;
+  PetscCall(PetscOptionsEnum("-mpm_cell_volume",
+                             "The cell rule's volume of a cell (read with -mpm_stress_integration cell): full whenever a point lies in it (full), or what the points' domains (their volume, the lattice's aspect) overlap of it (points)", "",
+                             MPMCellVolumes, (PetscEnum)mpm->cell_volume, (PetscEnum *)&mpm->cell_volume, NULL));
+  /* point integration: the conservative update is exact and converges (weak Sod L1 rate 0.9 against 0.6 with compatible);
+     the cell rule with the points' volumes: exact too, and as accurate or more (weak Sod at 512 cells, L1 5.1e-3 against 5.5e-3
+     with CPDI at 1 point per cell); compatible stays with the full-cell rule of the CTH method */
+  if (mpm->stress_integration == MPM_STRESS_POINT || mpm->cell_volume == MPM_CELL_VOLUME_POINTS) mpm->energy_update = MPM_ENERGY_CONSERVATIVE; /* else the full-cell rule: compatible */
   PetscCall(PetscOptionsEnum("-mpm_energy_update",
-                             "Internal energy: de = -(p^n + q) d(1/rho) (compatible, the cell rule's default), the grid forces' work with the time-centred velocity (conservative, point integration's default) or (p^n + p^{n+1})/2 (midpoint)", "",
+                             "Internal energy: de = -(p^n + q) d(1/rho) (compatible, the default of the full-cell rule), the grid forces' work with the time-centred velocity (conservative, the default otherwise) or (p^n + p^{n+1})/2 (midpoint)", "",
                              MPMEnergyUpdates, (PetscEnum)mpm->energy_update, (PetscEnum *)&mpm->energy_update, NULL));
   PetscCall(
     PetscOptionsEnum("-mpm_update_type", "Particle velocity update: v_p <- alpha FLIP + (1 - alpha) PIC with alpha 0 (pic), 1 (flip) or -mpm_update_blend_alpha (blend)", "", MPMUpdateTypes, (PetscEnum)mpm->update, (PetscEnum *)&mpm->update, NULL));
@@ -326,6 +333,7 @@ PetscErrorCode MPMView(MPM mpm, PetscViewer viewer)
                                      MPMBoundaryTypes[mpm->bc_hi[k]]));
   PetscCall(PetscViewerASCIIPrintf(viewer, "%" PetscInt_FMT " points (%" PetscInt_FMT " per cell per direction), CFL %g, scheme %s, stress integration %s\n", mpm->npoints0, mpm->ppc, (double)mpm->cfl, MPMSchemes[mpm->scheme],
                                    MPMStressIntegrations[mpm->stress_integration]));
+  if (mpm->stress_integration == MPM_STRESS_CELL) PetscCall(PetscViewerASCIIPrintf(viewer, "cell rule volume: %s\n", MPMCellVolumes[mpm->cell_volume]));
   PetscCall(PetscViewerASCIIPrintf(viewer, "energy update %s, kinetic energy fix %s\n", MPMEnergyUpdates[mpm->energy_update], mpm->ke_fix ? "on" : "off"));
   PetscCall(PetscViewerASCIIPrintf(viewer, "transfer kernels: %s\n", mpm->kern ? "specialised" : "generic"));
   if (mpm->has_gravity) PetscCall(PetscViewerASCIIPrintf(viewer, "gravity (%g, %g, %g) cm/s^2\n", (double)mpm->gravity[0], (double)mpm->gravity[1], (double)mpm->gravity[2]));

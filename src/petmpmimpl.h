@@ -157,6 +157,7 @@ struct _p_MPM {
   PetscInt             ntout, itout;               /* their number, the next one                */
   MPMScheme            scheme;
   MPMStressIntegration stress_integration;
+  MPMCellVolume        cell_volume; /* the cell rule's cell volume (-mpm_cell_volume) */
   MPMEnergyUpdate      energy_update;
   PetscBool            ke_fix; /* heat the points with the kinetic energy the grid-to-point map discards */
   MPMBoundaryType      bc_lo[MPM_MAX_DIM], bc_hi[MPM_MAX_DIM];
@@ -191,6 +192,7 @@ struct _p_MPM {
   PetscReal   *work;                                     /* 8 values per point of a chunk of MPM_CHUNK points        */
   PetscInt     box_lo[MPM_MAX_DIM], box_hi[MPM_MAX_DIM]; /* owned nodes the node loops sweep (MPMGridZeroForScatter) */
   PetscReal   *cellV, *cellS;                            /* per local cell: sum V_p, sum V_p (p_p + q_p); in the gather of the conservative update with the cell rule, cellS is the cell's work per unit P_p V_p */
+  PetscReal   *xcell;                                    /* -mpm_cell_volume points: per extended cell (grid.xcs, xcm) the volume V_c and V_c P_c the points' domains lend it; in the gather, div vbar_c */
   DM           mean_da;                                  /* the point-exchange modules' nodal sums sum N w, sum N w q (nodemean.c) */
   Vec          mean_l, mean_g;                           /* its ghosted local and global vectors (mean_g: several ranks) */
   TS           ts;

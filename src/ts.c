@@ -37,9 +37,13 @@ static PetscErrorCode MPMTSPreStep(TS ts)
   PetscCall(TSGetStepNumber(ts, &step));
   PetscCall(MPMStepForces(mpm, t)); /* the step's grid forces, which the acceleration limit reads */
   PetscCall(MPMComputeTimeStep(mpm, PETSC_FALSE, &dt));
-  if (dt < mpm->dtmin) { /* the post-step stops the loop without a step */
+  if (dt < mpm->dtmin || !(t + dt > t)) { /* below -mpm_dt_min, or so small (or NaN) that t no longer advances: the post-step stops the loop without a step */
+    const PetscBool collapsed = (PetscBool) !(t + dt > t);
     PetscCall(MPMComputeTimeStep(mpm, PETSC_TRUE, &dt));
-    PetscCall(MPMSetFailure(mpm, "Step %" PetscInt_FMT ", t = %g s: CFL time step %g s fell below -mpm_dt_min %g s", step, (double)t, (double)dt, (double)mpm->dtmin));
+    if (collapsed)
+      PetscCall(MPMSetFailure(mpm, "Step %" PetscInt_FMT ", t = %g s: the time step collapsed to %g s (t + dt == t: time no longer advances); the limit that set it is printed above", step, (double)t, (double)dt));
+    else
+      PetscCall(MPMSetFailure(mpm, "Step %" PetscInt_FMT ", t = %g s: CFL time step %g s fell below -mpm_dt_min %g s", step, (double)t, (double)dt, (double)mpm->dtmin));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   if (t + dt * (1.0 + 1e-6) >= tmax) { /* land on the final time, never leave a sliver */

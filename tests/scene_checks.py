@@ -362,6 +362,11 @@ def test_failure():
         p = run([*SCENE_CTH, "-mpm_cells", "64", "-mpm_dt_min", "1e-6", "-mpm_output", d], expect_ok=False)
         text = p.stdout + p.stderr
         check(p.returncode != 0 and "-mpm_dt_min" in text and "set by point" in text and "at x =" in text, f"time-step floor: exit {p.returncode}, names -mpm_dt_min and the point that sets dt")
+        # a time step that collapses with no -mpm_dt_min set (the full-cell rule with CPDI at one point per cell: cells counted
+        # full that hold a sliver of a point blow a point up until dt ~ 1e-22 s) stops once t + dt == t, instead of stepping forever
+        p = run([*SCENE_CTH, "-mpm_cells", "512", "-mpm_ppc", "1", "-mpm_shape_type", "cpdi", "-mpm_output", d], expect_ok=False)
+        text = p.stdout + p.stderr
+        check(p.returncode != 0 and "time step collapsed" in text and "set by point" in text, f"collapsed time step: exit {p.returncode}, says so and names the point that sets dt")
 
 
 

@@ -168,7 +168,9 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, 
       if (A->kefix) e[p] += share - gain + (1.0 - alpha) * R;
       if (work) {
         PetscReal sL = 0.0, div = 0.0;
-        if (A->cellwork)
+        if (A->pointwork)
+          div = A->pointwork[p];
+        else if (A->cellwork)
           div = A->cellwork[MPMLocalCell(g, &x[p * D])];
         else
           for (PetscInt i = 0; i < D; i++) div += Lb[i * D + i];

@@ -20,12 +20,76 @@ static inline void MPMLocalCellIndex(const MPMGrid *g, PetscInt c, PetscInt ijk[
   ijk[2] = g->cs[2] + c / (g->cm[0] * g->cm[1]);
 }
 
-/* The cell rule's sums of one point: sum V_p and sum V_p (p_p + q_p) of its cell. */
+#define MPM_OVERLAP_1D 4 /* most cells a point's domain spans along an axis (its half-width is capped at 1.5 cells) */
+
+/* The extended cells (MPMGrid::xcs, xcm) that the domain of a point at x with volume V overlaps, and the fraction of V
+   in each (-mpm_cell_volume points): the box of volume V with the lattice's aspect, half-widths
+   r_k = a_k (V / prod_j a_j)^(1/d) / 2, a_k = h_k / ppc, capped at 1.5 h_k and clipped to the domain and to the extended
+   cells, the fractions renormalised over what is left (a point at a wall or a rank's edge keeps its whole volume).
+   Returns the number of cells. */
+static inline PetscInt MPMCellOverlap(MPM mpm, const PetscReal x[], PetscReal V, PetscInt cell[], PetscReal frac[])
+{
+  const MPMGrid *g               = &mpm->grid;
+  const PetscInt d               = g->dim;
+  PetscReal      a               = 1.0, len[MPM_MAX_DIM][MPM_OVERLAP_1D], tot[MPM_MAX_DIM];
+  PetscInt       c0[MPM_MAX_DIM] = {0, 0, 0}, nc[MPM_MAX_DIM] = {1, 1, 1}, n = 0;
+
+  for (PetscInt k = 0; k < d; k++) a *= g->h[k] / mpm->ppc;
+  a         = d == 1 ? V / a : (d == 2 ? PetscSqrtReal(V / a) : PetscCbrtReal(V / a)); /* the domain's stretch of the lattice cell */
+  len[1][0] = len[2][0] = tot[1] = tot[2] = 1.0;
+  for (PetscInt k = 0; k < d; k++) {
+    const PetscReal r  = PetscMin(0.5 * a * g->h[k] / mpm->ppc, 1.5 * g->h[k]);
+    const PetscReal lo = PetscMax(x[k] - r, g->lo[k] + g->xcs[k] * g->h[k]), hi = PetscMin(x[k] + r, g->lo[k] + (g->xcs[k] + g->xcm[k]) * g->h[k]);
+    PetscInt        c1;
+    if (!(hi > lo)) return 0;
+    c0[k] = PetscMax(g->xcs[k], (PetscInt)PetscFloorReal((lo - g->lo[k]) / g->h[k]));
+    c1    = PetscMin(g->xcs[k] + g->xcm[k] - 1, (PetscInt)PetscFloorReal((hi - g->lo[k]) / g->h[k]));
+    nc[k] = PetscMin(c1 - c0[k] + 1, MPM_OVERLAP_1D);
+    for (PetscInt i = 0; i < nc[k]; i++) {
+      const PetscReal clo = g->lo[k] + (c0[k] + i) * g->h[k];
+      len[k][i]           = PetscMax(0.0, PetscMin(hi, clo + g->h[k]) - PetscMax(lo, clo));
+    }
+    tot[k] = hi - lo;
+    c0[k] -= g->xcs[k];
+  }
+  for (PetscInt k2 = 0; k2 < nc[2]; k2++)
+    for (PetscInt k1 = 0; k1 < nc[1]; k1++)
+      for (PetscInt k0 = 0; k0 < nc[0]; k0++) {
+        const PetscReal f = len[0][k0] / tot[0] * (d > 1 ? len[1][k1] / tot[1] : 1.0) * (d > 2 ? len[2][k2] / tot[2] : 1.0);
+        if (f <= 0.0) continue;
+        cell[n]   = ((c0[2] + k2) * g->xcm[1] + c0[1] + k1) * g->xcm[0] + c0[0] + k0;
+        frac[n++] = f;
+      }
+  return n;
+}
+
+/* The cell rule's sums of one point: sum V_p and sum V_p (p_p + q_p) of its cell, or (-mpm_cell_volume points) its
+   volume's share of each cell its domain overlaps. */
 static inline void MPMCellRuleAdd(MPM mpm, const PetscReal x[], PetscReal V, PetscReal P)
 {
-  const PetscInt c = MPMLocalCell(&mpm->grid, x);
-  mpm->cellV[c] += V;
-  mpm->cellS[c] += V * P;
+  if (mpm->cell_volume == MPM_CELL_VOLUME_POINTS) {
+    PetscInt       cell[MPM_OVERLAP_1D * MPM_OVERLAP_1D * MPM_OVERLAP_1D];
+    PetscReal      frac[MPM_OVERLAP_1D * MPM_OVERLAP_1D * MPM_OVERLAP_1D];
+    const PetscInt n = MPMCellOverlap(mpm, x, V, cell, frac);
+    for (PetscInt i = 0; i < n; i++) {
+      mpm->xcell[2 * cell[i]] += frac[i] * V;
+      mpm->xcell[2 * cell[i] + 1] += frac[i] * V * P;
+    }
+    return;
+  }
+  {
+    const PetscInt c = MPMLocalCell(&mpm->grid, x);
+    mpm->cellV[c] += V;
+    mpm->cellS[c] += V * P;
+  }
+}
+
+/* Global (i, j, k) of the c-th extended cell. */
+static inline void MPMExtendedCellIndex(const MPMGrid *g, PetscInt c, PetscInt ijk[])
+{
+  ijk[0] = g->xcs[0] + c % g->xcm[0];
+  ijk[1] = g->xcs[1] + (c / g->xcm[0]) % g->xcm[1];
+  ijk[2] = g->xcs[2] + c / (g->xcm[0] * g->xcm[1]);
 }
 
 /* The generic scatter's point loop (the reference the specialised kernels reproduce), with the dimension d a constant
@@ -90,6 +154,7 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
   if (cellrule) {
     PetscCall(PetscArrayzero(mpm->cellV, g->ncells));
     PetscCall(PetscArrayzero(mpm->cellS, g->ncells));
+    if (mpm->cell_volume == MPM_CELL_VOLUME_POINTS) PetscCall(PetscArrayzero(mpm->xcell, 2 * g->nxcells));
   }
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   PetscCall(MPMGridZeroForScatter(mpm, pts.n, pts.f[MPM_FIELD_POSITION], node));
@@ -111,7 +176,16 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
       MPMScatterGeneric(mpm, &pts, node, tn, force, cellrule, stress, body, 1);
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-  if (cellrule) {
+  if (cellrule && mpm->cell_volume == MPM_CELL_VOLUME_POINTS) { /* f_I += (V P)_c grad N_I(x_c): linear in the points' shares, so a rank adds its own */
+    for (PetscInt c = 0; c < g->nxcells; c++) {
+      PetscInt ijk[3];
+      if (mpm->xcell[2 * c] <= 0.0) continue;
+      MPMExtendedCellIndex(g, c, ijk);
+      MPMShapeEvaluateCell(mpm->shape, g, ijk, &st);
+      for (PetscInt a = 0; a < st.n; a++)
+        for (PetscInt k = 0; k < d; k++) node[st.node[a]].f[k] += st.s[a][k] * mpm->xcell[2 * c + 1] * st.dw[a][k];
+    }
+  } else if (cellrule) {
     for (PetscInt c = 0; c < g->ncells; c++) {
       PetscInt  ijk[3];
       PetscReal phiV, P;
@@ -193,7 +267,9 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
       if (kefix) e[p] += share - gain + (1.0 - alpha) * R;
       if (work) { /* the work the grid's forces did over the kick, sum_p V_p sigma_p : Lbar_p dt_kick = sum_I f_I . vbar_I dt_kick */
         PetscReal sL = 0.0, div = 0.0;
-        if (cellwork)
+        if (A->pointwork)
+          div = A->pointwork[p];
+        else if (cellwork)
           div = mpm->cellS[MPMLocalCell(g, &x[p * d])];
         else
           for (PetscInt i = 0; i < d; i++) div += Lb[i * d + i];
@@ -239,6 +315,7 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
   MPMStencil      st;
   MPMPoints       pts;
   const MPMNode  *node;
+  PetscReal      *pointwork = NULL;
 
   PetscFunctionBegin;
   PetscCall(VecGetArrayRead(mpm->lnodes, (const PetscScalar **)&node));
@@ -252,7 +329,26 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
     const PetscReal *F        = mpm->track_F ? pts.f[MPM_FIELD_DEFGRAD] : NULL;
     const PetscReal *ds       = mpm->shape->needs_F ? pts.f[MPM_FIELD_DOMAINSCALE] : NULL; /* split points' domains */
 
-    if (cellwork) { /* cellS[c] <- (V_c / sum_p V_p) div vbar at the cell rule's point: the cell's work per unit P_p V_p */
+    if (cellwork && mpm->cell_volume == MPM_CELL_VOLUME_POINTS) { /* the point's share of each cell's work (V P)_c div vbar_c: per unit P_p V_p, sum_c frac_pc div vbar_c */
+      PetscCall(PetscMalloc1(pts.n + 1, &pointwork));
+      for (PetscInt c = 0; c < g->nxcells; c++) {
+        PetscInt  ijk[3];
+        PetscReal div = 0.0;
+        if (mpm->xcell[2 * c] <= 0.0) continue;
+        MPMExtendedCellIndex(g, c, ijk);
+        MPMShapeEvaluateCell(mpm->shape, g, ijk, &st);
+        for (PetscInt a = 0; a < st.n; a++)
+          for (PetscInt k = 0; k < d; k++) div += st.s[a][k] * (node[st.node[a]].p[k] + node[st.node[a]].v0[k]) * st.dw[a][k]; /* v^{n+1/2} + v^{n-1/2} */
+        mpm->xcell[2 * c + 1] = div;
+      }
+      for (PetscInt p = 0; p < pts.n; p++) {
+        PetscInt       cell[MPM_OVERLAP_1D * MPM_OVERLAP_1D * MPM_OVERLAP_1D];
+        PetscReal      frac[MPM_OVERLAP_1D * MPM_OVERLAP_1D * MPM_OVERLAP_1D];
+        const PetscInt n = MPMCellOverlap(mpm, &x[p * d], pts.f[MPM_FIELD_VOLUME][p], cell, frac);
+        pointwork[p]     = 0.0;
+        for (PetscInt i = 0; i < n; i++) pointwork[p] += frac[i] * mpm->xcell[2 * cell[i] + 1];
+      }
+    } else if (cellwork) { /* cellS[c] <- (V_c / sum_p V_p) div vbar at the cell rule's point: the cell's work per unit P_p V_p */
       for (PetscInt c = 0; c < g->ncells; c++) {
         PetscInt  ijk[3];
         PetscReal div = 0.0;
@@ -277,6 +373,7 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
                                 .F         = F,
                                 .ds        = ds,
                                 .cellwork  = cellwork ? mpm->cellS : NULL,
+                                .pointwork = pointwork,
                                 .alpha     = alpha,
                                 .kefix     = kefix,
                                 .stress    = stress,
@@ -294,6 +391,7 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
     else
       MPMGatherGeneric(mpm, &A, &pts, node, F, ds, velocity, kinematics, work, cellwork, 1);
   }
+  PetscCall(PetscFree(pointwork));
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   PetscCall(VecRestoreArrayRead(mpm->lnodes, (const PetscScalar **)&node));
   PetscFunctionReturn(PETSC_SUCCESS);
