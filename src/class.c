@@ -47,6 +47,7 @@ PetscErrorCode MPMOptionsCheckRange(const char option[], PetscReal value, PetscR
   if (!bad) PetscFunctionReturn(PETSC_SUCCESS);
   if (hi >= PETSC_MAX_REAL && lo <= -PETSC_MAX_REAL) SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %g: valid is a finite number", option, (double)value);
   if (hi >= PETSC_MAX_REAL) SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %g is out of range: valid is %s %g", option, (double)value, strictlo ? ">" : ">=", (double)lo);
+  if (lo <= -PETSC_MAX_REAL) SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %g is out of range: valid is %s %g", option, (double)value, stricthi ? "<" : "<=", (double)hi);
   SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %g is out of range: valid is %s%g, %g%s", option, (double)value, strictlo ? "(" : "[", (double)lo, (double)hi, stricthi ? ")" : "]");
 }
 

@@ -136,11 +136,23 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
     const PetscReal *rho = pts.f[MPM_FIELD_DENSITY], *e = pts.f[MPM_FIELD_ENERGY], *pr = pts.f[MPM_FIELD_PRESSURE], *c = pts.f[MPM_FIELD_SOUNDSPEED], *L = pts.f[MPM_FIELD_GRADV], *F = pts.f[MPM_FIELD_DEFGRAD];
     const PetscReal  J    = MPMDetIPlusDtL(d, dt, &L[bad * d * d]);
     const char      *hint = "";
+    char             tension[512];
     PetscMPIInt      rank;
     PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
-    if (shape->ops.admissible)
+    {
+      const MPMMaterial *mat = &mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][bad]];
+      PetscReal          pe, c2e;
+      MPMEOSPressureKernel(mat->eos, rho[bad], e[bad], &pe, &c2e);
+      if (!mat->eos->fluid && rho[bad] > 0.0 && pe < 0.0 && c2e < 0.0) { /* a solid stretched past its EOS's spinodal: it would have spalled */
+        PetscCall(PetscSNPrintf(tension, sizeof(tension),
+                                "; the EOS sound speed is imaginary here (c_EOS^2 = %g at p = %g dyn/cm^2): the material is in tension beyond its EOS's spinodal, and a spall pressure, -mat_%s_eos_pmin, lets it spall instead", (double)c2e, (double)pe,
+                                mat->name));
+        hint = tension;
+      }
+    }
+    if (!hint[0] && shape->ops.admissible)
       hint = "; a CPDI domain must stay inside -mpm_shape_cpdi_reach cells of its point";
-    else if (shape->edge_gradient) { /* a stencil node that this point barely reaches and that holds little else: the kick of shapeimpl.h */
+    else if (!hint[0] && shape->edge_gradient) { /* a stencil node that this point barely reaches and that holds little else: the kick of shapeimpl.h */
       const MPMNode *node;
       MPMStencil     st;
       PetscReal      Fs[MPM_MAX_DIM * MPM_MAX_DIM];

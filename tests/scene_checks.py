@@ -237,6 +237,8 @@ def test_bad_input():
             ([*SCENE_CTH, "-region_left_velocity", "nan", "-mpm_output", d], "-region_left_velocity"),
             ([*SCENE_CTH, "-mpm_lo", "nan", "-mpm_output", d], "-mpm_lo"),
             ([*SCENE_CTH, "-mpm_dt_min", "-1", "-mpm_output", d], "-mpm_dt_min"),
+            ([*SCENE_CTH, "-mat_gas_eos_pmin", "1e9", "-mpm_output", d], "-mat_gas_eos_pmin"),
+            ([*SCENE_CTH, "-mpm_cell_volume", "half", "-mpm_output", d], "-mpm_cell_volume"),
             ([*SCENE_CTH, "-mpm_output_interval", "-3", "-mpm_output", d], "-mpm_output_interval"),
             ([*SCENE_CTH, "-mpm_bc_lo", "wal", "-mpm_output", d], "-mpm_bc_lo: 'wal' is not one of wall, free, outflow"),
             ([*SCENE_CTH, "-mpm_exact_type", "foo", "-mpm_output", d], "-mpm_exact_type"),
@@ -367,6 +369,12 @@ def test_failure():
         p = run([*SCENE_CTH, "-mpm_cells", "512", "-mpm_ppc", "1", "-mpm_shape_type", "cpdi", "-mpm_output", d], expect_ok=False)
         text = p.stdout + p.stderr
         check(p.returncode != 0 and "time step collapsed" in text and "set by point" in text, f"collapsed time step: exit {p.returncode}, says so and names the point that sets dt")
+        # copper stretched past its Mie-Gruneisen spinodal (the 2D penetration with GIMP shapes, no tension cutoff): the
+        # diagnosis says so and names the option that lets it spall
+        pen = ["-options_file", os.path.join(SRC, "inputs", "penetration_2d.opts"), "-mpm_shape_type", "gimp", "-mpm_output", d]
+        p = run(pen, expect_ok=False)
+        text = p.stdout + p.stderr
+        check(p.returncode != 0 and "sound speed is imaginary" in text and "-mat_copper_eos_pmin" in text, f"tension past the spinodal: exit {p.returncode}, the diagnosis names -mat_copper_eos_pmin")
 
 
 

@@ -10,10 +10,38 @@ static PetscErrorCode MPMEOSReset(void *obj)
   PetscFunctionBegin;
   ((MPMEOS)obj)->pressureless = PETSC_FALSE;
   ((MPMEOS)obj)->fluid        = PETSC_FALSE;
+  ((MPMEOS)obj)->pmin         = PETSC_MIN_REAL;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static const MPMClass MPMEOSClass = {"equation of state", "eos", "Equation of state", "MPMEOS", "Equation of state p(rho, e)", NULL, &MPMEOSList, sizeof(MPMEOSOps), MPMEOSReset, NULL, NULL, NULL};
+/* The class's own option: the tension cutoff of every pressure-giving type. */
+static PetscErrorCode MPMEOSSetFromOptions_Class(void *obj, PetscOptionItems *PetscOptionsObject)
+{
+  MPMEOS eos = (MPMEOS)obj;
+  char   opt[256];
+
+  PetscFunctionBegin;
+  if (eos->pressureless) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscOptionsHeadBegin(PetscOptionsObject, "Equation of state: spall");
+  PetscCall(PetscOptionsReal("-eos_pmin",
+                             "Spall pressure [dyn/cm^2], <= 0: where the EOS pressure would fall below it, or the state is past the EOS's spinodal in tension (c^2 < 0), the material has spalled and carries no pressure; default -inf, none", "",
+                             eos->pmin, &eos->pmin, NULL));
+  PetscOptionsHeadEnd();
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%seos_pmin", eos->prefix ? eos->prefix : ""));
+  PetscCall(MPMOptionsCheckRange(opt, eos->pmin, PETSC_MIN_REAL, 0.0, PETSC_FALSE, PETSC_FALSE));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMEOSView_Class(void *obj, PetscViewer viewer)
+{
+  MPMEOS eos = (MPMEOS)obj;
+
+  PetscFunctionBegin;
+  if (eos->pmin > PETSC_MIN_REAL) PetscCall(PetscViewerASCIIPrintf(viewer, "spall below p = %g dyn/cm^2 (or past the spinodal): p = 0\n", (double)eos->pmin));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static const MPMClass MPMEOSClass = {"equation of state", "eos", "Equation of state", "MPMEOS", "Equation of state p(rho, e)", NULL, &MPMEOSList, sizeof(MPMEOSOps), MPMEOSReset, MPMEOSSetFromOptions_Class, MPMEOSView_Class, NULL};
 
 MPM_CLASS_INTERFACE(MPMEOS)
 
@@ -62,6 +90,12 @@ PetscErrorCode MPMEOSPressureBatch(MPMEOS eos, PetscInt n, const PetscReal rho[]
     eos->ops.pressure_n(eos->data, n, rho, e, p, c2);
   else
     for (PetscInt i = 0; i < n; i++) eos->ops.pressure(eos->data, rho[i], e[i], &p[i], &c2[i]);
+  if (eos->pmin > PETSC_MIN_REAL) /* spall (MPMEOSPressureKernel) */
+    for (PetscInt i = 0; i < n; i++)
+      if (p[i] < eos->pmin || (p[i] < 0.0 && c2[i] < 0.0)) {
+        p[i]  = 0.0;
+        c2[i] = PetscMax(c2[i], 0.0);
+      }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

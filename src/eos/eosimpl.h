@@ -27,6 +27,7 @@ struct _p_MPMEOS {
   MPM_CLASS_HEADER(MPMEOSOps);
   PetscBool pressureless; /* the type gives no pressure (none): the material needs a strength model */
   PetscBool fluid;        /* the type is a gas's or a liquid's: the material carries no elastic shear */
+  PetscReal pmin;         /* spall pressure [dyn/cm^2] (-mat_<name>_eos_pmin): below it, or past the EOS's spinodal in tension, p = 0 and c^2 >= 0; -inf: none */
 };
 
 PETSC_INTERN PetscErrorCode MPMEOSPressureBatch(MPMEOS, PetscInt, const PetscReal[], const PetscReal[], PetscReal[], PetscReal[]);
@@ -37,6 +38,10 @@ PETSC_INTERN PetscErrorCode MPMEOSTemperatureBatch(MPMEOS, PetscInt, const Petsc
 static inline void MPMEOSPressureKernel(MPMEOS eos, PetscReal rho, PetscReal e, PetscReal *p, PetscReal *c2)
 {
   eos->ops.pressure(eos->data, rho, e, p, c2);
+  if (eos->pmin > PETSC_MIN_REAL && (*p < eos->pmin || (*p < 0.0 && *c2 < 0.0))) { /* spalled: the material holds no tension */
+    *p  = 0.0;
+    *c2 = PetscMax(*c2, 0.0);
+  }
 }
 
 static inline void MPMEOSTemperatureKernel(MPMEOS eos, PetscReal rho, PetscReal e, PetscReal *T)
