@@ -15,7 +15,7 @@ static inline PetscReal MPMDetIPlusDtL(PetscInt d, PetscReal dt, const PetscReal
 }
 
 /* Density from the deformation, rho^{n+1} = rho^n / det(I + dt L), and internal energy from the pressure and
-   viscous work, de = -(pbar + q) d(1/rho). Compatible update (the cell rule's default): pbar = p^n, the pressure
+   viscous work, de = -(pbar + q) d(1/rho). Compatible update (the full-cell rule's default): pbar = p^n, the pressure
    the internal force of this step used, so the work the grid receives is the work the points give up but for
    sum_I m_I |dv_I|^2 / 2 per step (the strong Sod shock sits 3.4 cells ahead with the midpoint rule, 0.2 with
    this one). Conservative (point integration's default): the gather has added the forces' work already.
