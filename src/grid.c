@@ -74,7 +74,7 @@ static PetscErrorCode MPMCreateGridOwned(MPM mpm, PetscInt *own[])
     } else
       PetscCall(DMCreateLocalVector(mpm->da, &mpm->lnodes));
   }
-  PetscCall(PetscCalloc2(g->ncells, &mpm->cellV, g->ncells, &mpm->cellS)); /* zero: the relaxation module expects it between its calls */
+  PetscCall(PetscCalloc2(g->ncells, &mpm->cellV, g->ncells, &mpm->cellS)); /* the pressure relaxation's scratch */
   g->nxcells = 1;
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) { /* the owned cells and one layer around, where the ghosted box has it (its cells' stencils stay in the box) */
     const PetscInt lo = k < g->dim ? PetscMax(g->gs[k], g->cs[k] - 1) : 0, hi = k < g->dim ? PetscMin(g->gs[k] + g->gm[k] - 1, g->cs[k] + g->cm[k] + 1) : 1;

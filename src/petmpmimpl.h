@@ -191,8 +191,8 @@ struct _p_MPM {
   PetscReal   *wL;                                       /* axisymmetric: L_p - L_tt,p I, what the strength models see */
   PetscReal   *work;                                     /* 8 values per point of a chunk of MPM_CHUNK points        */
   PetscInt     box_lo[MPM_MAX_DIM], box_hi[MPM_MAX_DIM]; /* owned nodes the node loops sweep (MPMGridZeroForScatter) */
-  PetscReal   *cellV, *cellS;                            /* per local cell: sum V_p, sum V_p (p_p + q_p); in the gather of the conservative update with the cell rule, cellS is the cell's work per unit P_p V_p */
-  PetscReal   *xcell;                                    /* -mpm_cell_volume points: per extended cell (grid.xcs, xcm) the volume V_c and V_c P_c the points' domains lend it; in the gather, div vbar_c */
+  PetscReal   *cellV, *cellS;                            /* per local cell: the pressure relaxation's scratch sums                  */
+  PetscReal   *xcell;                                    /* the cell rule, per extended cell (grid.xcs, xcm): the volume V_c and V_c P_c its points lend it; in the gather, its work per unit P V */
   DM           mean_da;                                  /* the point-exchange modules' nodal sums sum N w, sum N w q (nodemean.c) */
   Vec          mean_l, mean_g;                           /* its ghosted local and global vectors (mean_g: several ranks) */
   TS           ts;

@@ -170,8 +170,6 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, 
         PetscReal sL = 0.0, div = 0.0;
         if (A->pointwork)
           div = A->pointwork[p];
-        else if (A->cellwork)
-          div = A->cellwork[MPMLocalCell(g, &x[p * D])];
         else
           for (PetscInt i = 0; i < D; i++) div += Lb[i * D + i];
         if (A->stress)

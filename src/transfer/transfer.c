@@ -12,14 +12,6 @@
 #  define MPM_TINLINE static inline
 #endif
 
-/* Global (i, j, k) of the c-th cell of the local cell range (the numbering of MPMLocalCell). */
-static inline void MPMLocalCellIndex(const MPMGrid *g, PetscInt c, PetscInt ijk[])
-{
-  ijk[0] = g->cs[0] + c % g->cm[0];
-  ijk[1] = g->cs[1] + (c / g->cm[0]) % g->cm[1];
-  ijk[2] = g->cs[2] + c / (g->cm[0] * g->cm[1]);
-}
-
 #define MPM_OVERLAP_1D 4 /* most cells a point's domain spans along an axis (its half-width is capped at 1.5 cells) */
 
 /* The extended cells (MPMGrid::xcs, xcm) that the domain of a point at x with volume V overlaps, and the fraction of V
@@ -63,24 +55,29 @@ static inline PetscInt MPMCellOverlap(MPM mpm, const PetscReal x[], PetscReal V,
   return n;
 }
 
-/* The cell rule's sums of one point: sum V_p and sum V_p (p_p + q_p) of its cell, or (-mpm_cell_volume points) its
-   volume's share of each cell its domain overlaps. */
+/* The extended cells a point lends its volume to and the fraction in each: its own cell whole (-mpm_cell_volume full)
+   or the cells its domain overlaps (points). */
+static inline PetscInt MPMCellShares(MPM mpm, const PetscReal x[], PetscReal V, PetscInt cell[], PetscReal frac[])
+{
+  const MPMGrid *g = &mpm->grid;
+
+  if (mpm->cell_volume == MPM_CELL_VOLUME_POINTS) return MPMCellOverlap(mpm, x, V, cell, frac);
+  cell[0] = 0;
+  for (PetscInt k = g->dim - 1; k >= 0; k--) cell[0] = cell[0] * g->xcm[k] + MPMCellIndex(g, k, x[k]) - g->xcs[k];
+  frac[0] = 1.0;
+  return 1;
+}
+
+/* The cell rule's sums of one point, in MPM::xcell: sum f V_p and sum f V_p (p_p + q_p) over the cells of its shares. */
 static inline void MPMCellRuleAdd(MPM mpm, const PetscReal x[], PetscReal V, PetscReal P)
 {
-  if (mpm->cell_volume == MPM_CELL_VOLUME_POINTS) {
-    PetscInt       cell[MPM_OVERLAP_1D * MPM_OVERLAP_1D * MPM_OVERLAP_1D];
-    PetscReal      frac[MPM_OVERLAP_1D * MPM_OVERLAP_1D * MPM_OVERLAP_1D];
-    const PetscInt n = MPMCellOverlap(mpm, x, V, cell, frac);
-    for (PetscInt i = 0; i < n; i++) {
-      mpm->xcell[2 * cell[i]] += frac[i] * V;
-      mpm->xcell[2 * cell[i] + 1] += frac[i] * V * P;
-    }
-    return;
-  }
-  {
-    const PetscInt c = MPMLocalCell(&mpm->grid, x);
-    mpm->cellV[c] += V;
-    mpm->cellS[c] += V * P;
+  PetscInt       cell[MPM_OVERLAP_1D * MPM_OVERLAP_1D * MPM_OVERLAP_1D];
+  PetscReal      frac[MPM_OVERLAP_1D * MPM_OVERLAP_1D * MPM_OVERLAP_1D];
+  const PetscInt n = MPMCellShares(mpm, x, V, cell, frac);
+
+  for (PetscInt i = 0; i < n; i++) {
+    mpm->xcell[2 * cell[i]] += frac[i] * V;
+    mpm->xcell[2 * cell[i] + 1] += frac[i] * V * P;
   }
 }
 
@@ -151,11 +148,7 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
 
   PetscFunctionBegin;
   PetscCall(VecGetArray(mpm->lnodes, (PetscScalar **)&node));
-  if (cellrule) {
-    PetscCall(PetscArrayzero(mpm->cellV, g->ncells));
-    PetscCall(PetscArrayzero(mpm->cellS, g->ncells));
-    if (mpm->cell_volume == MPM_CELL_VOLUME_POINTS) PetscCall(PetscArrayzero(mpm->xcell, 2 * g->nxcells));
-  }
+  if (cellrule) PetscCall(PetscArrayzero(mpm->xcell, 2 * g->nxcells));
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   PetscCall(MPMGridZeroForScatter(mpm, pts.n, pts.f[MPM_FIELD_POSITION], node));
   {
@@ -176,26 +169,19 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
       MPMScatterGeneric(mpm, &pts, node, tn, force, cellrule, stress, body, 1);
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-  if (cellrule && mpm->cell_volume == MPM_CELL_VOLUME_POINTS) { /* f_I += (V P)_c grad N_I(x_c): linear in the points' shares, so a rank adds its own */
+  if (cellrule) { /* f_I += V_c P_c grad N_I(x_c): full, h^d times the cell's mean P; points, the shares' sum (V P)_c, linear in them, so a rank adds its own */
+    const PetscBool full = (PetscBool)(mpm->cell_volume == MPM_CELL_VOLUME_FULL);
     for (PetscInt c = 0; c < g->nxcells; c++) {
-      PetscInt ijk[3];
-      if (mpm->xcell[2 * c] <= 0.0) continue;
+      PetscInt         ijk[3];
+      PetscReal        c1, c2;
+      const PetscReal *vs = &mpm->xcell[2 * c];
+      if (vs[0] <= 0.0) continue;
+      c1 = full ? g->vcell : vs[1]; /* the force's factors, applied in this order */
+      c2 = full ? vs[1] / vs[0] : 1.0;
       MPMExtendedCellIndex(g, c, ijk);
       MPMShapeEvaluateCell(mpm->shape, g, ijk, &st);
       for (PetscInt a = 0; a < st.n; a++)
-        for (PetscInt k = 0; k < d; k++) node[st.node[a]].f[k] += st.s[a][k] * mpm->xcell[2 * c + 1] * st.dw[a][k];
-    }
-  } else if (cellrule) {
-    for (PetscInt c = 0; c < g->ncells; c++) {
-      PetscInt  ijk[3];
-      PetscReal phiV, P;
-      if (mpm->cellV[c] <= 0.0) continue;
-      MPMLocalCellIndex(g, c, ijk);
-      phiV = g->vcell;
-      P    = mpm->cellS[c] / mpm->cellV[c];
-      MPMShapeEvaluateCell(mpm->shape, g, ijk, &st);
-      for (PetscInt a = 0; a < st.n; a++)
-        for (PetscInt k = 0; k < d; k++) node[st.node[a]].f[k] += st.s[a][k] * phiV * P * st.dw[a][k];
+        for (PetscInt k = 0; k < d; k++) node[st.node[a]].f[k] += st.s[a][k] * c1 * c2 * st.dw[a][k];
     }
   }
   PetscCall(VecRestoreArray(mpm->lnodes, (PetscScalar **)&node));
@@ -229,7 +215,7 @@ static PetscReal MPMExpansionWork(void *ctx, PetscInt p, PetscReal e, PetscReal 
 
 /* The generic gather's point loop (the reference the specialised kernels reproduce), with the dimension d a constant
    where MPMGather calls it, so that its loops over d unroll; the same operations in the same order for every d. */
-MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPoints *pts, const MPMNode *node, const PetscReal *F, const PetscReal *ds, PetscBool velocity, PetscBool kinematics, PetscBool work, PetscBool cellwork, const PetscInt d)
+MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPoints *pts, const MPMNode *node, const PetscReal *F, const PetscReal *ds, PetscBool velocity, PetscBool kinematics, PetscBool work, const PetscInt d)
 {
   const MPMGrid   *g     = &mpm->grid;
   const PetscReal  alpha = A->alpha, dt = A->dt;
@@ -269,8 +255,6 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
         PetscReal sL = 0.0, div = 0.0;
         if (A->pointwork)
           div = A->pointwork[p];
-        else if (cellwork)
-          div = mpm->cellS[MPMLocalCell(g, &x[p * d])];
         else
           for (PetscInt i = 0; i < d; i++) div += Lb[i * d + i];
         if (stress)
@@ -329,7 +313,8 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
     const PetscReal *F        = mpm->track_F ? pts.f[MPM_FIELD_DEFGRAD] : NULL;
     const PetscReal *ds       = mpm->shape->needs_F ? pts.f[MPM_FIELD_DOMAINSCALE] : NULL; /* split points' domains */
 
-    if (cellwork && mpm->cell_volume == MPM_CELL_VOLUME_POINTS) { /* the point's share of each cell's work (V P)_c div vbar_c: per unit P_p V_p, sum_c frac_pc div vbar_c */
+    if (cellwork) { /* each cell's work per unit P V (full: (h^d / V_c) div vbar_c, every point of the cell alike; points: div vbar_c), then each point's share, sum_c f_pc of it */
+      const PetscBool full = (PetscBool)(mpm->cell_volume == MPM_CELL_VOLUME_FULL);
       PetscCall(PetscMalloc1(pts.n + 1, &pointwork));
       for (PetscInt c = 0; c < g->nxcells; c++) {
         PetscInt  ijk[3];
@@ -339,25 +324,14 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
         MPMShapeEvaluateCell(mpm->shape, g, ijk, &st);
         for (PetscInt a = 0; a < st.n; a++)
           for (PetscInt k = 0; k < d; k++) div += st.s[a][k] * (node[st.node[a]].p[k] + node[st.node[a]].v0[k]) * st.dw[a][k]; /* v^{n+1/2} + v^{n-1/2} */
-        mpm->xcell[2 * c + 1] = div;
+        mpm->xcell[2 * c + 1] = full ? g->vcell / mpm->xcell[2 * c] * div : div;
       }
       for (PetscInt p = 0; p < pts.n; p++) {
         PetscInt       cell[MPM_OVERLAP_1D * MPM_OVERLAP_1D * MPM_OVERLAP_1D];
         PetscReal      frac[MPM_OVERLAP_1D * MPM_OVERLAP_1D * MPM_OVERLAP_1D];
-        const PetscInt n = MPMCellOverlap(mpm, &x[p * d], pts.f[MPM_FIELD_VOLUME][p], cell, frac);
+        const PetscInt n = MPMCellShares(mpm, &x[p * d], pts.f[MPM_FIELD_VOLUME][p], cell, frac);
         pointwork[p]     = 0.0;
-        for (PetscInt i = 0; i < n; i++) pointwork[p] += frac[i] * mpm->xcell[2 * cell[i] + 1];
-      }
-    } else if (cellwork) { /* cellS[c] <- (V_c / sum_p V_p) div vbar at the cell rule's point: the cell's work per unit P_p V_p */
-      for (PetscInt c = 0; c < g->ncells; c++) {
-        PetscInt  ijk[3];
-        PetscReal div = 0.0;
-        if (mpm->cellV[c] <= 0.0) continue;
-        MPMLocalCellIndex(g, c, ijk);
-        MPMShapeEvaluateCell(mpm->shape, g, ijk, &st);
-        for (PetscInt a = 0; a < st.n; a++)
-          for (PetscInt k = 0; k < d; k++) div += st.s[a][k] * (node[st.node[a]].p[k] + node[st.node[a]].v0[k]) * st.dw[a][k]; /* v^{n+1/2} + v^{n-1/2} */
-        mpm->cellS[c] = g->vcell / mpm->cellV[c] * div;
+        for (PetscInt k = 0; k < n; k++) pointwork[p] += frac[k] * mpm->xcell[2 * cell[k] + 1];
       }
     }
     MPMExpansion          ex = {mpm, pts.f[MPM_FIELD_DENSITY], pts.f[MPM_FIELD_MASS], pts.f[MPM_FIELD_MATERIAL]};
@@ -372,7 +346,6 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
                                 .rho       = rho,
                                 .F         = F,
                                 .ds        = ds,
-                                .cellwork  = cellwork ? mpm->cellS : NULL,
                                 .pointwork = pointwork,
                                 .alpha     = alpha,
                                 .kefix     = kefix,
@@ -385,11 +358,11 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
     if (mpm->kern) {
       mpm->kern->g2p[(velocity ? MPM_G2P_VELOCITY : 0) | (kinematics ? MPM_G2P_KINEMATICS : 0) | (work ? MPM_G2P_WORK : 0)](g, mpm->shape->data, &A, node);
     } else if (d == 3)
-      MPMGatherGeneric(mpm, &A, &pts, node, F, ds, velocity, kinematics, work, cellwork, 3);
+      MPMGatherGeneric(mpm, &A, &pts, node, F, ds, velocity, kinematics, work, 3);
     else if (d == 2)
-      MPMGatherGeneric(mpm, &A, &pts, node, F, ds, velocity, kinematics, work, cellwork, 2);
+      MPMGatherGeneric(mpm, &A, &pts, node, F, ds, velocity, kinematics, work, 2);
     else
-      MPMGatherGeneric(mpm, &A, &pts, node, F, ds, velocity, kinematics, work, cellwork, 1);
+      MPMGatherGeneric(mpm, &A, &pts, node, F, ds, velocity, kinematics, work, 1);
   }
   PetscCall(PetscFree(pointwork));
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));

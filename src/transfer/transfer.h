@@ -30,8 +30,7 @@ typedef struct {
   const PetscReal *m, *V, *pr, *q;                                        /* mass, volume, pressure, artificial viscosity                 */
   const PetscReal *S, *rho;                                               /* deviatoric stress (d x d), density                           */
   const PetscReal *F, *ds;                                                /* deformation gradient and domain scale (CPDI's point domains), or NULL */
-  const PetscReal *cellwork;                                              /* conservative update with the cell rule: work per unit P V of each local cell, else NULL */
-  const PetscReal *pointwork;                                             /* the same per point where points lend their volume to several cells (-mpm_cell_volume points), else NULL */
+  const PetscReal *pointwork;                                             /* conservative update with the cell rule: the point's share of its cells' work per unit P_p V_p, else NULL */
   PetscReal        alpha;                                                 /* FLIP fraction                                               */
   PetscBool        kefix, stress;                                         /* kinetic-energy fix; the stress enters the work               */
   PetscReal        dt, wfac;                                              /* step, half the kick (the work's time factor)                 */
