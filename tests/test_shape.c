@@ -7,20 +7,25 @@
      displacement a symmetry plane allows) is reproduced with the reflected signs.
    CPDI is checked with random deformation gradients (domains sheared, stretched and rotated). Inside, the
    cell-averaged functions of the cell rule (MPMShapeEvaluateCell) must also sum to one, have gradients that
-   sum to zero and reproduce the gradient of a linear field. */
+   sum to zero and reproduce the gradient of a linear field.
+   CPDI's corners are merged per node (CheckCPDIMerge): inside the grid, with domains no wider than a cell, every
+   stencil node is distinct and there are at most 3^d. CPDI is checked a second time with F near 6 I at 2 points per
+   cell (domains about 3 cells wide, so that the corners reach boxes of 4 and of 5 nodes per direction: merged,
+   and kept as the 4^d corner entries). */
 #include "petmpmimpl.h"
 
-static void RandomF(PetscRandom rnd, PetscInt dim, PetscReal F[])
+/* A random deformation gradient near stretch times the identity. */
+static void RandomF(PetscRandom rnd, PetscInt dim, PetscReal stretch, PetscReal F[])
 {
   for (PetscInt i = 0; i < dim; i++)
     for (PetscInt j = 0; j < dim; j++) {
       PetscReal r;
       PetscRandomGetValueReal(rnd, &r);
-      F[i * dim + j] = (i == j ? 1.0 : 0.0) + 0.6 * (r - 0.5);
+      F[i * dim + j] = (i == j ? stretch : 0.0) + 0.6 * (r - 0.5);
     }
 }
 
-static PetscErrorCode CheckType(const char type[], PetscInt dim, PetscBool boundary, PetscReal *worst)
+static PetscErrorCode CheckType(const char type[], PetscInt dim, PetscBool boundary, PetscReal stretch, PetscReal *worst)
 {
   MPMShape    shape;
   MPMGrid     g;
@@ -56,7 +61,7 @@ static PetscErrorCode CheckType(const char type[], PetscInt dim, PetscBool bound
         x[k] = g.lo[k] + (width + r * (g.cells[k] - 2 * width)) * g.h[k]; /* the support on the grid */
       if (x[k] > g.lo[k] + 0.5 * g.cells[k] * g.h[k]) lower = PETSC_FALSE;
     }
-    RandomF(rnd, dim, F);
+    RandomF(rnd, dim, stretch, F);
     MPMShapeEvaluate(shape, &g, x, F, &st);
     for (PetscInt a = 0; a < st.n; a++) {
       PetscInt  idx = st.node[a], ijk[3];
@@ -103,6 +108,55 @@ static PetscErrorCode CheckType(const char type[], PetscInt dim, PetscBool bound
   }
   PetscCall(PetscRandomDestroy(&rnd));
   PetscCall(MPMShapeDestroy(&shape));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* CPDI's merged stencil inside the grid, for domains no wider than a cell (F = I at 1 point per cell, F within 0.3 of
+   I at 2): every node appears once, and a point has at most 3^d of them. */
+static PetscErrorCode CheckCPDIMerge(PetscInt dim, PetscInt *fails)
+{
+  MPMShape    shape;
+  MPMGrid     g;
+  MPMStencil  st;
+  PetscRandom rnd;
+  PetscInt    most = 0, repeated = 0, max3 = 1;
+  PetscBool   ok;
+
+  PetscFunctionBegin;
+  for (PetscInt k = 0; k < dim; k++) max3 *= 3;
+  PetscCall(MPMShapeCreate(PETSC_COMM_SELF, &shape));
+  PetscCall(MPMShapeSetType(shape, MPMSHAPECPDI));
+  PetscCall(PetscMemzero(&g, sizeof(g)));
+  g.dim = dim;
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
+    g.cells[k] = 12;
+    g.h[k]     = 0.25 + 0.05 * k;
+    g.gm[k]    = k < dim ? g.cells[k] + 1 : 1;
+  }
+  PetscCall(PetscRandomCreate(PETSC_COMM_SELF, &rnd));
+  for (PetscInt ppc = 1; ppc <= 2; ppc++) {
+    PetscCall(MPMShapeSetUp(shape, &g, ppc));
+    for (PetscInt s = 0; s < 2000; s++) {
+      PetscReal x[MPM_MAX_DIM] = {0, 0, 0}, F[9];
+      for (PetscInt k = 0; k < dim; k++) {
+        PetscReal r;
+        PetscCall(PetscRandomGetValueReal(rnd, &r));
+        x[k] = g.lo[k] + (4.0 + 4.0 * r) * g.h[k];
+      }
+      RandomF(rnd, dim, 1.0, F);
+      if (ppc == 1)
+        for (PetscInt i = 0; i < dim * dim; i++) F[i] = i % (dim + 1) == 0 ? 1.0 : 0.0;
+      MPMShapeEvaluate(shape, &g, x, F, &st);
+      most = PetscMax(most, st.n);
+      for (PetscInt a = 0; a < st.n; a++)
+        for (PetscInt b = 0; b < a; b++) repeated += st.node[a] == st.node[b];
+    }
+  }
+  PetscCall(PetscRandomDestroy(&rnd));
+  PetscCall(MPMShapeDestroy(&shape));
+  ok = (PetscBool)(most <= max3 && repeated == 0);
+  if (!ok) (*fails)++;
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s cpdi     %" PetscInt_FMT "D merged corners: at most %" PetscInt_FMT " entries (limit %" PetscInt_FMT "), %" PetscInt_FMT " repeated nodes\n", ok ? "PASSED" : "FAILED", dim, most, max3, repeated));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -157,16 +211,19 @@ int main(int argc, char **argv)
   PetscFunctionBeginUser;
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   PetscCall(CheckClassBase(&fails));
-  for (size_t t = 0; t < sizeof(types) / sizeof(types[0]); t++) {
+  for (PetscInt dim = 1; dim <= 3; dim++) PetscCall(CheckCPDIMerge(dim, &fails));
+  for (size_t t = 0; t < sizeof(types) / sizeof(types[0]) + 1; t++) {
+    const PetscBool stretched = (PetscBool)(t == sizeof(types) / sizeof(types[0])); /* CPDI again with F near 6 I */
+    const char     *type      = stretched ? MPMSHAPECPDI : types[t];
     for (PetscInt dim = 1; dim <= 3; dim++) {
       for (PetscInt b = 0; b < 2; b++) {
         PetscReal worst[5] = {0, 0, 0, 0, 0};
         PetscBool ok;
-        PetscCall(CheckType(types[t], dim, (PetscBool)b, worst));
+        PetscCall(CheckType(type, dim, (PetscBool)b, stretched ? 6.0 : 1.0, worst));
         ok = (PetscBool)(worst[0] < tol && worst[1] < tol && worst[2] < tol && worst[3] < tol && worst[4] == 0.0);
         if (!ok) fails++;
-        PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s %-8s %" PetscInt_FMT "D %s: |sum N - 1| %.1e, |sum grad N| h %.1e, |sum N x_I - x|/h %.1e, |sum x_I grad N - I| %.1e, nodes %s (tol %.0e)\n", ok ? "PASSED" : "FAILED", types[t], dim,
-                              b ? "wall/free" : "interior ", (double)worst[0], (double)worst[1], (double)worst[2], (double)worst[3], worst[4] == 0.0 ? "on the grid" : "OFF THE GRID", (double)tol));
+        PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s %-8s %" PetscInt_FMT "D %s%s: |sum N - 1| %.1e, |sum grad N| h %.1e, |sum N x_I - x|/h %.1e, |sum x_I grad N - I| %.1e, nodes %s (tol %.0e)\n", ok ? "PASSED" : "FAILED", type, dim,
+                              b ? "wall/free" : "interior ", stretched ? " (F near 6 I)" : "", (double)worst[0], (double)worst[1], (double)worst[2], (double)worst[3], worst[4] == 0.0 ? "on the grid" : "OFF THE GRID", (double)tol));
       }
     }
   }

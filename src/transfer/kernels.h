@@ -6,10 +6,10 @@
      MPM_KBASIS         its 1D basis, static inline, (xi, &first, &n, w[], dw[]) as MPMShapeLinear1d
    and gets `static const MPMTransferKernels MPMTransferKernels_<MPM_KNAME>[3]`, one table per dimension. A family whose
    stencil is not a tensor product of a 1D basis (CPDI) defines instead of MPM_KNB and MPM_KBASIS
-     MPM_KSIZE(d)       its number of stencil entries in dimension d (a constant)
-     MPM_KSTENCIL(ctx, g, A, p, node, W, DW, SG, d)
-                        an always-inline function that fills point p's entries (node[], W[], DW and SG flat, d per
-                        entry) and returns whether a mirror sign is -1 (then SG is filled, else left alone). */
+     MPM_KSIZE(d)       the most stencil entries a point has in dimension d (a constant)
+     MPM_KSTENCIL(ctx, g, A, p, node, W, DW, SG, ns, d)
+                        an always-inline function that fills point p's *ns entries (node[], W[], DW and SG flat, d
+                        per entry) and returns whether a mirror sign is -1 (then SG is filled, else left alone). */
 #include "transfer.h"
 
 #if defined(__GNUC__)

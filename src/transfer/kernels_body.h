@@ -14,10 +14,11 @@
 #endif
 
 #if defined(MPM_KSTENCIL)
-/* The family's own stencil of point p (kernels.h): MPM_KS entries, the mirror signs SG filled only when one is -1. */
-#  define MPM_KEVAL(g, ctx, A, p, node, W, DW, SG) MPM_KSTENCIL(ctx, g, A, p, node, W, &(DW)[0][0], &(SG)[0][0], MPM_KD)
+/* The family's own stencil of point p (kernels.h): ns <= MPM_KS entries, the mirror signs SG filled only when one is -1. */
+#  define MPM_KEVAL(g, ctx, A, p, node, W, DW, SG, ns) MPM_KSTENCIL(ctx, g, A, p, node, W, &(DW)[0][0], &(SG)[0][0], &(ns), MPM_KD)
 #else
-#  define MPM_KEVAL(g, ctx, A, p, node, W, DW, SG) MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(g, &(A)->x[(p)*MPM_KD], node, W, DW, SG)
+/* A tensor-product family: always MPM_KS entries (ns keeps that constant, so the loops over entries unroll). */
+#  define MPM_KEVAL(g, ctx, A, p, node, W, DW, SG, ns) MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(g, &(A)->x[(p)*MPM_KD], node, W, DW, SG)
 
 /* N_I(x_p), grad N_I(x_p) and, for a point whose stencil reaches across a wall, the mirror signs of one point:
    MPMShapeEvaluate for this family and dimension. Returns whether a sign is -1 (SG filled); otherwise every sign is
@@ -87,15 +88,15 @@ MPM_KINLINE PetscBool MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(const MPMGrid 
 }
 #endif
 
-/* One point's m_I += N_I m_p, (mv)_I += N_I m_p v_p and, by mode, its point pressure force and stress force; SG (the
-   mirror signs) is read only when mirror is set. */
-MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, MPMNode *nodes, PetscInt p, const PetscInt node[MPM_KS], const PetscReal W[MPM_KS], const PetscReal DW[MPM_KS][MPM_KD], const PetscReal SG[MPM_KS][MPM_KD],
-                                                              const int mode, const int mirror)
+/* One point's m_I += N_I m_p, (mv)_I += N_I m_p v_p and, by mode, its point pressure force and stress force, over its ns
+   stencil entries; SG (the mirror signs) is read only when mirror is set. */
+MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, MPMNode *nodes, PetscInt p, const PetscInt ns, const PetscInt node[MPM_KS], const PetscReal W[MPM_KS], const PetscReal DW[MPM_KS][MPM_KD],
+                                                              const PetscReal SG[MPM_KS][MPM_KD], const int mode, const int mirror)
 {
   const PetscInt   D = MPM_KD;
   const PetscReal *v = A->v, *m = A->m, *V = A->V, *pr = A->pr, *q = A->q, *S = A->S;
 
-  for (PetscInt a = 0; a < MPM_KS; a++) {
+  for (PetscInt a = 0; a < ns; a++) {
     MPMNode        *nd = &nodes[node[a]];
     const PetscReal wm = W[a] * m[p];
     nd->m += wm;
@@ -118,17 +119,18 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
 MPM_KINLINE void MPM_KCAT(MPMKP2G, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const void *ctx, const MPMTransferArgs *A, MPMNode *nodes, const int mode)
 {
   for (PetscInt p = 0; p < A->n; p++) {
-    PetscInt  node[MPM_KS];
+    PetscInt  node[MPM_KS], ns = MPM_KS;
     PetscReal W[MPM_KS], DW[MPM_KS][MPM_KD], SG[MPM_KS][MPM_KD];
-    if (MPM_KEVAL(g, ctx, A, p, node, W, DW, SG))
-      MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, node, W, DW, SG, mode, 1);
+    if (MPM_KEVAL(g, ctx, A, p, node, W, DW, SG, ns))
+      MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 1);
     else
-      MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, node, W, DW, SG, mode, 0);
+      MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 0);
   }
 }
 
-/* The grid velocity back to one point, by mode (see MPMGather for the formulas); SG read only when mirror is set. */
-MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const MPMTransferArgs *A, const MPMNode *nodes, PetscInt p, const PetscInt node[MPM_KS], const PetscReal W[MPM_KS], const PetscReal DW[MPM_KS][MPM_KD],
+/* The grid velocity back to one point, by mode (see MPMGather for the formulas), over its ns stencil entries; SG read
+   only when mirror is set. */
+MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const MPMTransferArgs *A, const MPMNode *nodes, PetscInt p, const PetscInt ns, const PetscInt node[MPM_KS], const PetscReal W[MPM_KS], const PetscReal DW[MPM_KS][MPM_KD],
                                                               const PetscReal SG[MPM_KS][MPM_KD], const int mode, const int mirror)
 {
   const PetscInt   D        = MPM_KD;
@@ -138,7 +140,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, 
 
   {
     PetscReal vpic[MPM_KD] = {0}, dv[MPM_KD] = {0}, Lp[MPM_KD * MPM_KD] = {0}, Lb[MPM_KD * MPM_KD] = {0}, dv2 = 0.0, R = 0.0;
-    for (PetscInt a = 0; a < MPM_KS; a++) {
+    for (PetscInt a = 0; a < ns; a++) {
       const MPMNode *nd = &nodes[node[a]];
       for (PetscInt i = 0; i < D; i++) {
         const PetscReal vI = (mirror ? SG[a][i] : 1.0) * nd->p[i];
@@ -188,12 +190,12 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, 
 MPM_KINLINE void MPM_KCAT(MPMKG2P, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const void *ctx, const MPMTransferArgs *A, const MPMNode *nodes, const int mode)
 {
   for (PetscInt p = 0; p < A->n; p++) {
-    PetscInt  node[MPM_KS];
+    PetscInt  node[MPM_KS], ns = MPM_KS;
     PetscReal W[MPM_KS], DW[MPM_KS][MPM_KD], SG[MPM_KS][MPM_KD];
-    if (MPM_KEVAL(g, ctx, A, p, node, W, DW, SG))
-      MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(g, A, nodes, p, node, W, DW, SG, mode, 1);
+    if (MPM_KEVAL(g, ctx, A, p, node, W, DW, SG, ns))
+      MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(g, A, nodes, p, ns, node, W, DW, SG, mode, 1);
     else
-      MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(g, A, nodes, p, node, W, DW, SG, mode, 0);
+      MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(g, A, nodes, p, ns, node, W, DW, SG, mode, 0);
   }
 }
 

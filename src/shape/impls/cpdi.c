@@ -60,9 +60,9 @@ MPM_CPDI_INLINE void CPDIDomain(const Shape_CPDI *cp, PetscInt d, const PetscRea
   }
 }
 
-/* Corner c of the domain x + R s_c: the gradient factor gs = R^-T s_c and, per direction, the two nodes of the linear
-   basis at the corner (folded onto the grid), their weights and mirror signs. */
-MPM_CPDI_INLINE void CPDICorner(const MPMGrid *g, const PetscReal x[], const PetscReal R[], const PetscReal Ri[], PetscInt c, PetscReal gs[], PetscInt idx[][2], PetscReal w[][2], PetscReal sg[][2], const PetscInt d)
+/* Corner c of the domain x + R s_c: the gradient factor gs = R^-T s_c and, per direction, the first of the two nodes of
+   the linear basis at the corner (a global index, not yet folded onto the grid) and their weights. */
+MPM_CPDI_INLINE void CPDICorner(const MPMGrid *g, const PetscReal x[], const PetscReal R[], const PetscReal Ri[], PetscInt c, PetscReal gs[], PetscInt first[], PetscReal w[][2], const PetscInt d)
 {
   PetscReal s[MPM_MAX_DIM], xc[MPM_MAX_DIM];
 
@@ -72,77 +72,142 @@ MPM_CPDI_INLINE void CPDICorner(const MPMGrid *g, const PetscReal x[], const Pet
     for (PetscInt k = 0; k < d; k++) gs[j] += Ri[k * d + j] * s[k]; /* (R^-T s)_j */
   }
   for (PetscInt i = 0; i < d; i++) {
-    PetscInt  first, n;
+    PetscInt  n;
     PetscReal dw[2];
     xc[i] = x[i];
     for (PetscInt k = 0; k < d; k++) xc[i] += R[i * d + k] * s[k];
-    MPMShapeLinear1d((xc[i] - g->lo[i]) / g->h[i], &first, &n, w[i], dw);
-    idx[i][0] = first;
-    idx[i][1] = first + 1;
-    MPMShapeFold1d(g, i, 2, idx[i], sg[i]);
+    MPMShapeLinear1d((xc[i] - g->lo[i]) / g->h[i], &first[i], &n, w[i], dw);
   }
 }
 
-/* The 2^d entries of one corner: node, weight 2^-d N_I(x_c) and gradient weight times gs (stride ds between entries). */
-MPM_CPDI_INLINE void CPDICornerEntries(const MPMGrid *g, PetscReal scale, const PetscReal gs[], PetscInt idx[][2], PetscReal w[][2], PetscInt node[], PetscReal W[], PetscReal DW[], PetscInt ds, const PetscInt d)
-{
-  for (PetscInt a = 0; a < (1 << d); a++) {
-    PetscReal N  = scale;
-    PetscInt  nd = 0;
-    for (PetscInt i = d - 1; i >= 0; i--) {
-      const PetscInt b = (a >> i) & 1;
-      N *= w[i][b];
-      nd = nd * g->gm[i] + idx[i][b];
-    }
-    node[a] = nd;
-    W[a]    = N;
-    for (PetscInt j = 0; j < d; j++) DW[a * ds + j] = N * gs[j];
-  }
-}
-
-/* The stencil of one point, with the dimension d a constant where MPMShapeEvaluate_CPDI calls it, so that every
-   loop over d unrolls (the same operations in the same order for every d: the results do not change). */
-MPM_CPDI_INLINE void CPDIEvaluate(const Shape_CPDI *cp, const MPMGrid *g, const PetscReal x[], const PetscReal F[], MPMStencil *st, const PetscInt d)
+/* The stencil of one point: the 2^d corners' linear entries, 2^-d N_I(x_c) and 2^-d N_I(x_c) R^-T s_c, added up per node.
+   The corners reach a box of n_0 x .. x n_{d-1} nodes (global indices lo + a, per direction); where every n_i <= 4
+   (always while the domain spans at most two cells in each direction) the entries are summed on that box, in corner order,
+   and the box is folded onto the grid once per direction: 3^d entries at one point per cell, 2^d to 3^d at more,
+   against the 4^d of the corners taken one by one. A point whose box is larger keeps the corners' 4^d entries, each
+   corner folded on its own. Fills node[], W[], DW (d values per entry, stride ds) and, when a mirror sign is -1
+   (*mirror), SG (stride ds); returns the number of entries, at most 4^d. The generic stencil (CPDIEvaluate) and the
+   specialised kernels' (CPDIKernelStencil) are both this function, so the two paths agree bit for bit. */
+MPM_CPDI_INLINE PetscInt CPDIStencil(const Shape_CPDI *cp, const MPMGrid *g, const PetscReal x[], const PetscReal F[], PetscInt node[], PetscReal W[], PetscReal DW[], PetscReal SG[], PetscInt ds, PetscBool *mirror, const PetscInt d)
 {
   const PetscInt  nc    = 1 << d;
   const PetscReal scale = 1.0 / nc;
-  PetscReal       R[MPM_MAX_DIM * MPM_MAX_DIM], Ri[MPM_MAX_DIM * MPM_MAX_DIM];
+  PetscReal       R[MPM_MAX_DIM * MPM_MAX_DIM], Ri[MPM_MAX_DIM * MPM_MAX_DIM], gs[8][MPM_MAX_DIM], w[8][MPM_MAX_DIM][2];
+  PetscInt        first[8][MPM_MAX_DIM], lo[MPM_MAX_DIM], n[MPM_MAX_DIM], stride[MPM_MAX_DIM], nb = 1;
+  PetscBool       merge = PETSC_TRUE;
 
   CPDIDomain(cp, d, F, R, Ri);
-  st->n = 0;
-  for (PetscInt c = 0; c < nc; c++) {
-    PetscReal gs[MPM_MAX_DIM], w[MPM_MAX_DIM][2], sg[MPM_MAX_DIM][2];
-    PetscInt  idx[MPM_MAX_DIM][2];
-    CPDICorner(g, x, R, Ri, c, gs, idx, w, sg, d);
-    CPDICornerEntries(g, scale, gs, idx, w, &st->node[st->n], &st->w[st->n], &st->dw[st->n][0], MPM_MAX_DIM, d);
-    for (PetscInt a = 0; a < (1 << d); a++, st->n++)
-      for (PetscInt i = 0; i < d; i++) st->s[st->n][i] = sg[i][(a >> i) & 1];
+  for (PetscInt c = 0; c < nc; c++) CPDICorner(g, x, R, Ri, c, gs[c], first[c], w[c], d);
+  for (PetscInt i = 0; i < d; i++) {
+    PetscInt hi = first[0][i];
+    lo[i]       = first[0][i];
+    for (PetscInt c = 1; c < nc; c++) {
+      lo[i] = PetscMin(lo[i], first[c][i]);
+      hi    = PetscMax(hi, first[c][i]);
+    }
+    n[i]      = hi - lo[i] + 2;
+    stride[i] = nb;
+    nb *= n[i];
+    merge = (PetscBool)(merge && n[i] <= 4);
   }
+  *mirror = PETSC_FALSE;
+  if (merge) {
+    PetscInt  idx[MPM_MAX_DIM][4];
+    PetscReal sg[MPM_MAX_DIM][4];
+
+    for (PetscInt e = 0; e < nb; e++) {
+      W[e] = 0.0;
+      for (PetscInt j = 0; j < d; j++) DW[e * ds + j] = 0.0;
+    }
+    for (PetscInt c = 0; c < nc; c++) { /* N = 2^-d N_2 N_1 N_0 (the directions beyond d: weight 1, offset 0) */
+      const PetscInt n2 = d > 2 ? 2 : 1, n1 = d > 1 ? 2 : 1;
+      PetscReal      wt[MPM_MAX_DIM][2]  = {{1.0, 1.0}, {1.0, 1.0}, {1.0, 1.0}};
+      PetscInt       off[MPM_MAX_DIM][2] = {{0, 0}, {0, 0}, {0, 0}};
+      for (PetscInt i = 0; i < d; i++)
+        for (PetscInt b = 0; b < 2; b++) {
+          wt[i][b]  = w[c][i][b];
+          off[i][b] = (first[c][i] - lo[i] + b) * stride[i];
+        }
+      for (PetscInt b2 = 0; b2 < n2; b2++) {
+        const PetscReal N2 = scale * wt[2][b2];
+        for (PetscInt b1 = 0; b1 < n1; b1++) {
+          const PetscReal N1 = N2 * wt[1][b1];
+          for (PetscInt b0 = 0; b0 < 2; b0++) {
+            const PetscReal N = N1 * wt[0][b0];
+            const PetscInt  e = off[2][b2] + off[1][b1] + off[0][b0];
+            W[e] += N;
+            for (PetscInt j = 0; j < d; j++) DW[e * ds + j] += N * gs[c][j];
+          }
+        }
+      }
+    }
+    for (PetscInt i = 0; i < d; i++) {
+      for (PetscInt a = 0; a < n[i]; a++) idx[i][a] = lo[i] + a;
+      MPMShapeFold1d(g, i, n[i], idx[i], sg[i]);
+      for (PetscInt a = 0; a < n[i]; a++) *mirror = (PetscBool)(*mirror || sg[i][a] < 0.0);
+    }
+    {
+      PetscInt a[MPM_MAX_DIM] = {0, 0, 0}; /* entry e's position in the box, the first direction fastest */
+      for (PetscInt e = 0; e < nb; e++) {
+        PetscInt nd = 0;
+        for (PetscInt i = d - 1; i >= 0; i--) nd = nd * g->gm[i] + idx[i][a[i]];
+        node[e] = nd;
+        if (*mirror)
+          for (PetscInt i = 0; i < d; i++) SG[e * ds + i] = sg[i][a[i]];
+        for (PetscInt i = 0; i < d; i++) {
+          if (++a[i] < n[i]) break;
+          a[i] = 0;
+        }
+      }
+    }
+    return nb;
+  }
+  for (PetscInt c = 0, e = 0; c < nc; c++) {
+    PetscInt  idx[MPM_MAX_DIM][2];
+    PetscReal sg[MPM_MAX_DIM][2];
+    for (PetscInt i = 0; i < d; i++) {
+      idx[i][0] = first[c][i];
+      idx[i][1] = first[c][i] + 1;
+      MPMShapeFold1d(g, i, 2, idx[i], sg[i]);
+    }
+    for (PetscInt a = 0; a < (1 << d); a++, e++) {
+      PetscReal N  = scale;
+      PetscInt  nd = 0;
+      for (PetscInt i = d - 1; i >= 0; i--) {
+        const PetscInt b = (a >> i) & 1;
+        N *= w[c][i][b];
+        nd             = nd * g->gm[i] + idx[i][b];
+        SG[e * ds + i] = sg[i][b];
+        *mirror        = (PetscBool)(*mirror || sg[i][b] < 0.0);
+      }
+      node[e] = nd;
+      W[e]    = N;
+      for (PetscInt j = 0; j < d; j++) DW[e * ds + j] = N * gs[c][j];
+    }
+  }
+  return nc * nc;
 }
 
-/* The specialised transfer kernels' stencil (src/transfer/kernels.h): point p's 4^d entries in CPDIEvaluate's order and
-   with its arithmetic, so the kernels reproduce the generic transfers bit for bit; the mirror signs are written only
-   when one of them is -1 (the kernels' sign-free path otherwise). */
-MPM_CPDI_INLINE PetscBool CPDIKernelStencil(const void *ctx, const MPMGrid *g, const MPMTransferArgs *A, PetscInt p, PetscInt node[], PetscReal W[], PetscReal DW[], PetscReal SG[], const PetscInt d)
+/* MPMShapeEvaluate for CPDI, with the dimension d a constant where MPMShapeEvaluate_CPDI calls it, so that every loop
+   over d unrolls. */
+MPM_CPDI_INLINE void CPDIEvaluate(const Shape_CPDI *cp, const MPMGrid *g, const PetscReal x[], const PetscReal F[], MPMStencil *st, const PetscInt d)
 {
-  const Shape_CPDI *cp = (const Shape_CPDI *)ctx;
-  const PetscInt    nc = 1 << d, ne = 1 << d;
-  const PetscReal   scale = 1.0 / nc;
-  PetscReal         R[MPM_MAX_DIM * MPM_MAX_DIM], Ri[MPM_MAX_DIM * MPM_MAX_DIM], Fs[MPM_MAX_DIM * MPM_MAX_DIM], sg[8][MPM_MAX_DIM][2];
-  PetscBool         mirror = PETSC_FALSE;
+  PetscBool mirror;
 
-  CPDIDomain(cp, d, MPMPointDomain(d, A->F, A->ds, p, Fs), R, Ri);
-  for (PetscInt c = 0; c < nc; c++) {
-    PetscReal gs[MPM_MAX_DIM], w[MPM_MAX_DIM][2];
-    PetscInt  idx[MPM_MAX_DIM][2];
-    CPDICorner(g, &A->x[p * d], R, Ri, c, gs, idx, w, sg[c], d);
-    for (PetscInt i = 0; i < d; i++) mirror = (PetscBool)(mirror || sg[c][i][0] < 0.0 || sg[c][i][1] < 0.0);
-    CPDICornerEntries(g, scale, gs, idx, w, &node[c * ne], &W[c * ne], &DW[c * ne * d], d, d);
-  }
-  if (mirror)
-    for (PetscInt c = 0, e = 0; c < nc; c++)
-      for (PetscInt a = 0; a < ne; a++, e++)
-        for (PetscInt i = 0; i < d; i++) SG[e * d + i] = sg[c][i][(a >> i) & 1];
+  st->n = CPDIStencil(cp, g, x, F, st->node, st->w, &st->dw[0][0], &st->s[0][0], MPM_MAX_DIM, &mirror, d);
+  if (!mirror)
+    for (PetscInt e = 0; e < st->n; e++)
+      for (PetscInt i = 0; i < d; i++) st->s[e][i] = 1.0;
+}
+
+/* The specialised transfer kernels' stencil (src/transfer/kernels.h): point p's entries, CPDIStencil with the kernels'
+   layout; the mirror signs are read only when one of them is -1 (the kernels' sign-free path otherwise). */
+MPM_CPDI_INLINE PetscBool CPDIKernelStencil(const void *ctx, const MPMGrid *g, const MPMTransferArgs *A, PetscInt p, PetscInt node[], PetscReal W[], PetscReal DW[], PetscReal SG[], PetscInt *ns, const PetscInt d)
+{
+  PetscReal Fs[MPM_MAX_DIM * MPM_MAX_DIM];
+  PetscBool mirror;
+
+  *ns = CPDIStencil((const Shape_CPDI *)ctx, g, &A->x[p * d], MPMPointDomain(d, A->F, A->ds, p, Fs), node, W, DW, SG, d, &mirror, d);
   return mirror;
 }
 
