@@ -188,6 +188,50 @@ PetscErrorCode MPMObjectSetOptionsPrefix(void *o, const char prefix[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Whether an option (its name without the dash) is one of another type of a class under an options prefix,
+   -<prefix><key>_<type>_... with <type> a registered type other than own, or the option its types share (the class's
+   shared, which the type in use left unread): an option a scene set for the type that a later option replaced
+   (-mpm_shape_cpdi_reach in a scene run with -mpm_shape_type gimp), not a misspelling. */
+PetscErrorCode MPMClassOtherTypeOption(const MPMClass *cls, const char prefix[], const char own[], const char name[], const char **type)
+{
+  const char **names;
+  int          n;
+
+  PetscFunctionBegin;
+  *type = NULL;
+  PetscCall(PetscFunctionListGet(*cls->list, &names, &n));
+  for (int i = 0; i < n && !*type; i++) {
+    char      head[256];
+    PetscBool match, same;
+    if (!names[i] || !names[i][0]) continue;
+    PetscCall(PetscStrcmp(names[i], own, &same));
+    if (same) continue;
+    PetscCall(PetscSNPrintf(head, sizeof(head), "%s%s_%s_", prefix ? prefix : "", cls->key, names[i]));
+    PetscCall(PetscStrbeginswith(name, head, &match));
+    if (match) *type = names[i];
+  }
+  PetscCall(PetscFree(names));
+  if (!*type && cls->shared) { /* the option several types share, when the type in use does not read it */
+    char      opt[256];
+    PetscBool same;
+    PetscCall(PetscSNPrintf(opt, sizeof(opt), "%s%s_%s", prefix ? prefix : "", cls->key, cls->shared));
+    PetscCall(PetscStrcmp(name, opt, &same));
+    if (same) *type = cls->sharedby;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* MPMClassOtherTypeOption for an object (NULL: none). */
+PetscErrorCode MPMObjectOtherTypeOption(void *o, const char name[], const char **type)
+{
+  MPMObject obj = (MPMObject)o;
+
+  PetscFunctionBegin;
+  *type = NULL;
+  if (obj) PetscCall(MPMClassOtherTypeOption(obj->cls, obj->prefix, obj->type_name, name, type));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* One options block under the object's prefix: the type (-<prefix><key>_type; the class default where none is
    set, an error naming the option where the class has none), the type's own options, then the class's. */
 PetscErrorCode MPMObjectSetFromOptions(void *o)

@@ -24,6 +24,8 @@ typedef struct {
   PetscErrorCode (*setfromoptions)(void *, PetscOptionItems *); /* class-level options after the type's, may be NULL              */
   PetscErrorCode (*view)(void *, PetscViewer);                  /* class-level view lines before the type's, may be NULL          */
   PetscErrorCode (*destroy)(void *);                            /* frees the class's own data, may be NULL                        */
+  const char *shared;                                           /* an option several of its types read, -<prefix><key>_<shared>, or NULL */
+  const char *sharedby;                                         /* those types, for messages                                       */
 } MPMClass;
 
 /* Generic class header, in the PETSc pattern: the class, a type name, an options prefix, the type's data and an ops
@@ -54,6 +56,8 @@ PETSC_INTERN PetscErrorCode MPMObjectSetOptionsPrefix(void *, const char[]);
 PETSC_INTERN PetscErrorCode MPMObjectSetFromOptions(void *);
 PETSC_INTERN PetscErrorCode MPMObjectView(void *, PetscViewer);
 PETSC_INTERN PetscErrorCode MPMObjectDestroy(void *);
+PETSC_INTERN PetscErrorCode MPMClassOtherTypeOption(const MPMClass *, const char[], const char[], const char[], const char **);
+PETSC_INTERN PetscErrorCode MPMObjectOtherTypeOption(void *, const char[], const char **);
 
 /* The typed public interface of a class X (MPMXRegister into the list XList, SetType, GetType, SetOptionsPrefix,
    SetFromOptions, View, Destroy), each a call of the one generic implementation above. */

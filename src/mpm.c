@@ -234,7 +234,51 @@ static const char *const MPMPetscOptionPrefixes[] = {"options_",          "log",
                                                      "viewfromoptions",   "help",    "version",         "skip_petscrc", "mpi_",       "error_output_",    "debugger",     "start_in_debugger",
                                                      "stop_for_debugger"};
 
-/* Fails on options nobody read, so that a misspelled option never silently does nothing (PETSc's own options pass). */
+/* Destroys an object that set-up found the step does not need (a none type: the module leaves the step), keeping its
+   class, options prefix and type for the unused-options check. */
+PetscErrorCode MPMRetireObject(MPM mpm, void *o)
+{
+  MPMObject obj = *(MPMObject *)o;
+
+  PetscFunctionBegin;
+  PetscCheck(mpm->nretired < (PetscInt)PETSC_STATIC_ARRAY_LENGTH(mpm->retired), mpm->comm, PETSC_ERR_PLIB, "Too many retired objects");
+  mpm->retired[mpm->nretired].cls = obj->cls;
+  PetscCall(PetscStrncpy(mpm->retired[mpm->nretired].prefix, obj->prefix ? obj->prefix : "", sizeof(mpm->retired[0].prefix)));
+  PetscCall(PetscStrncpy(mpm->retired[mpm->nretired].type, obj->type_name, sizeof(mpm->retired[0].type)));
+  mpm->nretired++;
+  PetscCall(MPMObjectDestroy(o));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The class and type of one of the run's objects (shape, viscosity, exact solution, each material's EOS and strength,
+   those set-up retired included) whose option this is, when that type is not the one in use
+   (MPMClassOtherTypeOption); NULL otherwise. */
+static PetscErrorCode MPMOtherTypeOption(MPM mpm, const char name[], const char **type, const char **cls)
+{
+  void *objs[3 + 2 * MPM_MAX_MATERIALS] = {mpm->shape, mpm->viscosity, mpm->exact};
+
+  PetscFunctionBegin;
+  *type = NULL;
+  *cls  = NULL;
+  for (PetscInt i = 0; i < mpm->nmat; i++) {
+    objs[3 + 2 * i]     = mpm->mat[i].eos;
+    objs[3 + 2 * i + 1] = mpm->mat[i].strength;
+  }
+  for (PetscInt k = 0; k < 3 + 2 * mpm->nmat && !*type; k++) {
+    PetscCall(MPMObjectOtherTypeOption(objs[k], name, type));
+    if (*type) *cls = ((MPMObject)objs[k])->cls->name;
+  }
+  for (PetscInt k = 0; k < mpm->nretired && !*type; k++) {
+    PetscCall(MPMClassOtherTypeOption(mpm->retired[k].cls, mpm->retired[k].prefix, mpm->retired[k].type, name, type));
+    if (*type) *cls = mpm->retired[k].cls->name;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Fails on options nobody read, so that a misspelled option never silently does nothing (PETSc's own options pass).
+   An option of another type of one of the run's objects (a scene's -mpm_shape_cpdi_reach when the command line
+   chose -mpm_shape_type gimp) is not a misspelling: it gets a note that it has no effect, so that a study can swap a
+   scene's method without editing the scene. */
 static PetscErrorCode MPMCheckUnusedOptions(MPM mpm)
 {
   PetscInt n, nbad = 0;
@@ -245,9 +289,15 @@ static PetscErrorCode MPMCheckUnusedOptions(MPM mpm)
   if (n) {
     char list[2048] = "";
     for (PetscInt i = 0; i < n; i++) {
-      PetscBool petsc = PETSC_FALSE;
+      PetscBool   petsc = PETSC_FALSE;
+      const char *other, *cls;
       for (size_t j = 0; j < PETSC_STATIC_ARRAY_LENGTH(MPMPetscOptionPrefixes) && !petsc; j++) PetscCall(PetscStrbeginswith(names[i], MPMPetscOptionPrefixes[j], &petsc));
       if (petsc) continue;
+      PetscCall(MPMOtherTypeOption(mpm, names[i], &other, &cls));
+      if (other) {
+        PetscCall(PetscPrintf(mpm->comm, "note: -%s is an option of %s type %s, which this run does not use: it has no effect\n", names[i], cls, other));
+        continue;
+      }
       PetscCall(PetscStrlcat(list, " -", sizeof(list)));
       PetscCall(PetscStrlcat(list, names[i], sizeof(list)));
       nbad++;
@@ -267,7 +317,7 @@ PetscErrorCode MPMSetUp(MPM mpm)
 
   PetscFunctionBegin;
   PetscCall(MPMViscosityIsActive(mpm->viscosity, &active));
-  if (!active) PetscCall(MPMViscosityDestroy(&mpm->viscosity)); /* none: the module is not in the step */
+  if (!active) PetscCall(MPMRetireObject(mpm, &mpm->viscosity)); /* none: the module is not in the step */
   PetscCall(MPMLogRegister(mpm));
   PetscCall(PetscLogStagePush(mpm->log.setup));
   { /* the step's modules, in the order they run within each phase */
@@ -291,7 +341,7 @@ PetscErrorCode MPMSetUp(MPM mpm)
     PetscCheck(!mpm->grid.axisym || !mpm->mat[i].strength || !mpm->mat[i].strength->needs_F, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_axisymmetric: material %s's strength model reads F, which has no hoop component here; use a hypoelastic type",
                mpm->mat[i].name);
   if (mpm->shape->needs_F || mpm->split || (mpm->exact && mpm->exact->ops.initial)) mpm->track_F = PETSC_TRUE; /* the points carry F */
-  if (!mpm->exact->ops.evaluate && !mpm->exact->ops.checks) PetscCall(MPMExactDestroy(&mpm->exact));           /* none */
+  if (!mpm->exact->ops.evaluate && !mpm->exact->ops.checks) PetscCall(MPMRetireObject(mpm, &mpm->exact));      /* none */
   PetscCall(MPMPointsSelectFields(mpm));
   PetscCall(MPMCreatePoints(mpm));
   if (mpm->exact) {

@@ -44,6 +44,7 @@ typedef struct {
   const char *meaning; /* what it is                                         */
   PetscBool   output;  /* written to HDF5                                    */
 } MPMFieldInfo;
+PETSC_INTERN PetscErrorCode     MPMRetireObject(MPM, void *);
 PETSC_INTERN const MPMFieldInfo MPMFieldTable[MPM_NUM_FIELDS];
 #define MPM_MAX_FIELDS 32 /* the core fields and those classes and modules register (MPMPointsRegisterField) */
 
@@ -178,6 +179,11 @@ struct _p_MPM {
   PetscReal                 alpha;           /* FLIP fraction: v_p <- alpha (v_p + dv) + (1 - alpha) v_pic [-]     */
   MPMViscosity              viscosity;       /* NULL when the scene asks for none: not in the step */
   MPMExact                  exact;           /* NULL when the scene has no exact solution          */
+  struct {
+    const MPMClass *cls;
+    char            prefix[MPM_MAX_NAME + 16], type[MPM_MAX_NAME];
+  } retired[MPM_MAX_MATERIALS + 2]; /* the objects of none types that set-up destroyed (MPMRetireObject), for the unused-options check */
+  PetscInt nretired;
   /* discretization */
   DM           da;                       /* background grid, dof = MPM_NODE_DOF                       */
   DM           swarm;                    /* material points, DMSWARM_BASIC                            */

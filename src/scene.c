@@ -140,7 +140,7 @@ PetscErrorCode MPMSceneSetFromOptions(MPM mpm, PetscOptionItems *PetscOptionsObj
         mpm->has_stress = PETSC_TRUE;
         if (mpm->mat[i].strength->needs_F) mpm->track_F = PETSC_TRUE;
       } else
-        PetscCall(MPMStrengthDestroy(&mpm->mat[i].strength)); /* a fluid: not in the stress path */
+        PetscCall(MPMRetireObject(mpm, &mpm->mat[i].strength)); /* a fluid: not in the stress path */
     }
   }
   PetscCall(MPMSceneNames(PetscOptionsObject, "-mpm_regions", "Names of the regions that place the materials, in seeding priority", MPM_MAX_REGIONS, names, &mpm->nreg));

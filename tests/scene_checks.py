@@ -244,6 +244,8 @@ def test_bad_input():
             ([*SCENE_CTH, "-mpm_exact_type", "foo", "-mpm_output", d], "-mpm_exact_type"),
             ([*SCENE_CTH, "-mpm_popping_interval", "-1", "-mpm_output", d], "-mpm_popping_interval"),
             (["-options_file", HYDRO, "-mpm_gravity", "0,0", "-mpm_output", d], "-region_col_hydrostatic"),
+            ([*SCENE_CTH, "-mat_gas_eos_idealgas_gama", "1.4", "-mpm_output", d], "-mat_gas_eos_idealgas_gama"),
+            ([*SCENE_CTH, "-mat_gas_strength_johnsoncok_A", "1", "-mpm_output", d], "-mat_gas_strength_johnsoncok_A"),
         ]
         for args, needle in cases:
             p = run(args, expect_ok=False)
@@ -255,6 +257,13 @@ def test_bad_input():
         for opt in ["-options_left", "-options_view", "-ts_view", "-get_total_flops"]:  # PETSc's own options work
             p = run([*SCENE_CTH, "-mpm_output", os.path.join(d, "std"), opt], expect_ok=False)
             check(p.returncode == 0, f"{opt}: a standard PETSc option is accepted (exit {p.returncode})")
+        # A scene's option of a type that a later option replaced is no misspelling: the run goes on with a note.
+        vortex = os.path.join(SRC, "inputs", "mms_vortex_2d.opts")  # sets -mpm_shape_cpdi_reach
+        for args, note in [(["-options_file", vortex, "-mpm_cells", "12,12", "-mpm_shape_type", "gimp"], "-mpm_shape_cpdi_reach is an option of shape function type cpdi"),
+                           (["-options_file", FLYER, "-mat_copper_strength_type", "none", "-mpm_exact_type", "none", "-mpm_cells", "100"], "-mat_copper_strength_G is an option of strength model type elastic, vonmises or johnsoncook"),
+                           ([*SCENE_CTH, "-mpm_viscosity_type", "none", "-mpm_viscosity_vnr_cq", "2"], "-mpm_viscosity_vnr_cq is an option of artificial viscosity type vnr")]:
+            p = run([*args, "-mpm_output", os.path.join(d, "other")], expect_ok=False)
+            check(p.returncode == 0 and note in p.stdout, f"{' '.join(args[-2:])}: runs with the note '{note} ...' (exit {p.returncode})")
 
 
 def test_log_view():

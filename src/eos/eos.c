@@ -41,7 +41,7 @@ static PetscErrorCode MPMEOSView_Class(void *obj, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static const MPMClass MPMEOSClass = {"equation of state", "eos", "Equation of state", "MPMEOS", "Equation of state p(rho, e)", NULL, &MPMEOSList, sizeof(MPMEOSOps), MPMEOSReset, MPMEOSSetFromOptions_Class, MPMEOSView_Class, NULL};
+static const MPMClass MPMEOSClass = {"equation of state", "eos", "Equation of state", "MPMEOS", "Equation of state p(rho, e)", NULL, &MPMEOSList, sizeof(MPMEOSOps), MPMEOSReset, MPMEOSSetFromOptions_Class, MPMEOSView_Class, NULL, NULL, NULL};
 
 MPM_CLASS_INTERFACE(MPMEOS)
 

@@ -18,7 +18,8 @@ static PetscErrorCode MPMExactSetFromOptionsClass(void *obj, PetscOptionItems *P
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static const MPMClass MPMExactClass = {"exact solution", "exact", "Exact solution for the self-check", "MPMExact", "Exact solution of the scene", MPMEXACTNONE, &MPMExactList, sizeof(MPMExactOps), NULL, MPMExactSetFromOptionsClass, NULL, NULL};
+static const MPMClass MPMExactClass = {
+  "exact solution", "exact", "Exact solution for the self-check", "MPMExact", "Exact solution of the scene", MPMEXACTNONE, &MPMExactList, sizeof(MPMExactOps), NULL, MPMExactSetFromOptionsClass, NULL, NULL, NULL, NULL};
 
 MPM_CLASS_INTERFACE(MPMExact)
 

@@ -33,7 +33,7 @@ static PetscErrorCode MPMShapeViewClass(void *obj, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static const MPMClass MPMShapeClass = {"shape function", "shape", "Shape functions", "MPMShape", "Shape function N_I(x)", MPMSHAPECPDI, &MPMShapeList, sizeof(MPMShapeOps), MPMShapeReset, NULL, MPMShapeViewClass, MPMShapeDestroyClass};
+static const MPMClass MPMShapeClass = {"shape function", "shape", "Shape functions", "MPMShape", "Shape function N_I(x)", MPMSHAPECPDI, &MPMShapeList, sizeof(MPMShapeOps), MPMShapeReset, NULL, MPMShapeViewClass, MPMShapeDestroyClass, NULL, NULL};
 
 MPM_CLASS_INTERFACE(MPMShape)
 

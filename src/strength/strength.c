@@ -14,7 +14,8 @@ static PetscErrorCode MPMStrengthReset(void *obj)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static const MPMClass MPMStrengthClass = {"strength model", "strength", "Strength model", "MPMStrength", "Stress besides the EOS pressure", MPMSTRENGTHNONE, &MPMStrengthList, sizeof(MPMStrengthOps), MPMStrengthReset, NULL, NULL, NULL};
+static const MPMClass MPMStrengthClass = {
+  "strength model", "strength", "Strength model", "MPMStrength", "Stress besides the EOS pressure", MPMSTRENGTHNONE, &MPMStrengthList, sizeof(MPMStrengthOps), MPMStrengthReset, NULL, NULL, NULL, "G", "elastic, vonmises or johnsoncook"};
 
 MPM_CLASS_INTERFACE(MPMStrength)
 

@@ -13,7 +13,8 @@ static PetscErrorCode MPMViscosityReset(void *obj)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static const MPMClass MPMViscosityClass = {"artificial viscosity", "viscosity", "Artificial viscosity", "MPMViscosity", "Artificial viscosity q", MPMVISCOSITYVNR, &MPMViscosityList, sizeof(MPMViscosityOps), MPMViscosityReset, NULL, NULL, NULL};
+static const MPMClass MPMViscosityClass = {
+  "artificial viscosity", "viscosity", "Artificial viscosity", "MPMViscosity", "Artificial viscosity q", MPMVISCOSITYVNR, &MPMViscosityList, sizeof(MPMViscosityOps), MPMViscosityReset, NULL, NULL, NULL, NULL, NULL};
 
 MPM_CLASS_INTERFACE(MPMViscosity)
 
