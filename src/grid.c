@@ -4,17 +4,17 @@
    so every point of a cell lives on one rank and cell averages need no communication. */
 #include "petmpmimpl.h"
 
-/* The DMDA, its vectors and the per-cell arrays; own[k] (NULL: PETSc decides) gives the vertices each rank column
-   owns along k, with the ranks per direction of the present grid. */
-static PetscErrorCode MPMCreateGridOwned(MPM mpm, PetscInt *own[])
+/* The DMDA, its vectors and the per-cell arrays; own[k] gives the vertices each rank column owns along k, with the
+   ranks per direction of the present grid, or (own NULL) ranks[k] the ranks per direction (PETSC_DECIDE: PETSc's
+   split) and PETSc the ranges. */
+static PetscErrorCode MPMCreateGridOwned(MPM mpm, PetscInt *own[], const PetscInt ranks[])
 {
   MPMGrid        *g = &mpm->grid;
   PetscInt        sw, M[MPM_MAX_DIM] = {1, 1, 1}, P[MPM_MAX_DIM] = {PETSC_DECIDE, PETSC_DECIDE, PETSC_DECIDE};
   const PetscInt *l[MPM_MAX_DIM] = {NULL, NULL, NULL};
 
   PetscFunctionBegin;
-  if (own)
-    for (PetscInt k = 0; k < g->dim; k++) P[k] = g->nranks[k];
+  for (PetscInt k = 0; k < g->dim; k++) P[k] = own ? g->nranks[k] : ranks[k];
   PetscCall(MPMShapeGetGhostWidth(mpm->shape, &sw));
   if (mpm->viscosity) sw += mpm->viscosity->ghost; /* a limiter reads the neighbouring cells */
   g->sw = sw;
@@ -102,10 +102,79 @@ PetscErrorCode MPMDestroyGrid(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The ranks per direction of the first grid. A DMDA needs every rank's piece to hold at least its stencil width sw of
+   nodes along each direction, and PETSc chooses its split without regard to sw: a small grid on a few ranks (3 x 3 x
+   3 cells on 2 ranks with the ghost width 4 of CPDI) aborted in DMSetUp. PETSc's own split (read from a DMDA of
+   stencil width 0 on the same grid: the split does not depend on the width) is kept where it fits, so every run that
+   worked is partitioned as before; otherwise the split among those that fit with the smallest cut area; none that
+   fits is an error that names -mpm_cells and the rank count. */
+static PetscErrorCode MPMGridLayout(MPM mpm, PetscInt P[])
+{
+  const MPMGrid  *g = &mpm->grid;
+  PetscInt        sw, M[MPM_MAX_DIM] = {1, 1, 1}, Q[MPM_MAX_DIM] = {1, 1, 1}, best = PETSC_MAX_INT;
+  PetscMPIInt     size;
+  DM              da;
+  const PetscInt *l[MPM_MAX_DIM] = {NULL, NULL, NULL};
+  PetscBool       fits           = PETSC_TRUE;
+
+  PetscFunctionBegin;
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) P[k] = PETSC_DECIDE;
+  PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
+  if (size == 1) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MPMShapeGetGhostWidth(mpm->shape, &sw));
+  if (mpm->viscosity) sw += mpm->viscosity->ghost;
+  for (PetscInt k = 0; k < g->dim; k++) M[k] = g->cells[k] + 1;
+  if (g->dim == 1)
+    PetscCall(DMDACreate1d(mpm->comm, DM_BOUNDARY_NONE, M[0], 1, 0, NULL, &da));
+  else if (g->dim == 2)
+    PetscCall(DMDACreate2d(mpm->comm, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DMDA_STENCIL_BOX, M[0], M[1], PETSC_DECIDE, PETSC_DECIDE, 1, 0, NULL, NULL, &da));
+  else
+    PetscCall(DMDACreate3d(mpm->comm, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DMDA_STENCIL_BOX, M[0], M[1], M[2], PETSC_DECIDE, PETSC_DECIDE, PETSC_DECIDE, 1, 0, NULL, NULL, NULL, &da));
+  PetscCall(DMSetUp(da));
+  PetscCall(DMDAGetInfo(da, NULL, NULL, NULL, NULL, &Q[0], &Q[1], &Q[2], NULL, NULL, NULL, NULL, NULL, NULL));
+  PetscCall(DMDAGetOwnershipRanges(da, &l[0], &l[1], &l[2]));
+  for (PetscInt k = 0; k < g->dim; k++)
+    for (PetscInt r = 0; r < Q[k]; r++) fits = (PetscBool)(fits && (Q[k] == 1 || l[k][r] >= sw));
+  PetscCall(DMDestroy(&da));
+  if (fits) PetscFunctionReturn(PETSC_SUCCESS); /* PETSc's own split */
+  for (PetscInt p0 = 1; p0 <= size; p0++) {     /* the split that fits with the smallest cut area */
+    if (size % p0) continue;
+    for (PetscInt p1 = 1; p1 <= size / p0; p1++) {
+      const PetscInt p[MPM_MAX_DIM] = {p0, p1, size / p0 / p1};
+      PetscInt       cut            = 0;
+      PetscBool      ok             = (PetscBool)((size / p0) % p1 == 0);
+      for (PetscInt k = 0; k < MPM_MAX_DIM && ok; k++) {
+        ok = (PetscBool)(k < g->dim ? p[k] == 1 || M[k] / p[k] >= sw : p[k] == 1);
+        cut += (p[k] - 1) * (M[0] * M[1] * M[2] / M[k]);
+      }
+      if (ok && cut < best) {
+        best = cut;
+        for (PetscInt k = 0; k < g->dim; k++) P[k] = p[k];
+      }
+    }
+  }
+  if (best == PETSC_MAX_INT) {
+    char cells[64];
+    PetscCall(PetscSNPrintf(cells, sizeof(cells), "%" PetscInt_FMT, g->cells[0]));
+    for (PetscInt k = 1; k < g->dim; k++) {
+      char c[24];
+      PetscCall(PetscSNPrintf(c, sizeof(c), ",%" PetscInt_FMT, g->cells[k]));
+      PetscCall(PetscStrlcat(cells, c, sizeof(cells)));
+    }
+    SETERRQ(mpm->comm, PETSC_ERR_USER_INPUT,
+            "-mpm_cells %s on %d ranks: no split of the grid gives every rank at least %" PetscInt_FMT " nodes along each direction it is split in (the ghost width of -mpm_shape_type %s%s); use fewer ranks or more cells", cells, size, sw,
+            ((MPMObject)mpm->shape)->type_name, mpm->viscosity && mpm->viscosity->ghost ? " and the viscosity's neighbour cells" : "");
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode MPMCreateGrid(MPM mpm)
 {
+  PetscInt P[MPM_MAX_DIM];
+
   PetscFunctionBegin;
-  PetscCall(MPMCreateGridOwned(mpm, NULL));
+  PetscCall(MPMGridLayout(mpm, P));
+  PetscCall(MPMCreateGridOwned(mpm, NULL, P));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -168,7 +237,7 @@ PetscErrorCode MPMRebalance(MPM mpm)
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   PetscCall(MPMDestroyGrid(mpm));
   for (PetscInt k = 0; k < g->dim; k++) g->nranks[k] = nranks[k];
-  PetscCall(MPMCreateGridOwned(mpm, own));
+  PetscCall(MPMCreateGridOwned(mpm, own, NULL));
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) PetscCall(PetscFree(own[k]));
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) mpm->box_lo[k] = mpm->box_hi[k] = 0;
   PetscCall(MPMShapeSetUp(mpm->shape, g, mpm->ppc)); /* its cell tables cover the rank's ghosted cells */

@@ -252,6 +252,9 @@ def test_bad_input():
             text = p.stdout + p.stderr
             check(p.returncode != 0 and needle in text, f"{' '.join(args[-4:])}: exit {p.returncode}, message names '{needle}'")
             check(len(text.strip().splitlines()) <= 2, f"{' '.join(args[-4:])}: the error prints only itself ({len(text.strip().splitlines())} lines)")
+        p = run([*SCENE_CTH, "-mpm_dim", "2", "-mpm_cells", "8,3", "-mpm_lo", "0,0", "-mpm_hi", "20,1", "-mpm_shape_type", "cpdi",
+                 "-region_left_lo", "0,0", "-region_left_hi", "8,1", "-region_right_lo", "8,0", "-region_right_hi", "20,1", "-mpm_output", d], ranks=3, expect_ok=False)
+        check(p.returncode != 0 and "-mpm_cells 8,3 on 3 ranks" in p.stdout + p.stderr, f"a grid no split of which fits the stencil on 3 ranks: exit {p.returncode}, message names -mpm_cells and the ranks")
         check(len(cases) >= 40, f"{len(cases)} bad inputs")
         check(open(h5, "rb").read() == before, "earlier output left untouched by the failed runs")
         for opt in ["-options_left", "-options_view", "-ts_view", "-get_total_flops"]:  # PETSc's own options work
