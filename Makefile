@@ -7,7 +7,7 @@ NP    ?= 1
 PY    ?= /usr/bin/python3
 MPIEXEC = mpiexec --allow-run-as-root --oversubscribe
 
-.PHONY: all deps configure build run test bench verification clean format
+.PHONY: all deps configure build run test bench methods verification clean format
 all: build
 
 deps:
@@ -33,6 +33,9 @@ test: build
 
 bench: build
 	$(PY) scripts/bench.py
+
+methods: build
+	$(PY) scripts/methods.py --exe $(BUILD)/petmpm
 
 # The study definitions of scripts/studies/ into docs/studies/NAME (cases already there are skipped; FRESH=1
 # measures again), then docs/verification.md from their results.

@@ -19,6 +19,23 @@ def scene_path(name):
     return name if os.sep in name or name.endswith(".opts") else os.path.join(SRC, "inputs", name + ".opts")
 
 
+def scene_cells(path):
+    """The -mpm_cells value of a scene file, or None."""
+    with open(path) as f:
+        for line in f:
+            w = line.split("#")[0].split()
+            if len(w) >= 2 and w[0] == "-mpm_cells":
+                return [int(c) for c in w[1].split(",")]
+    return None
+
+
+def coarsened_args(scene, coarsen):
+    """-options_file inputs/SCENE.opts with the scene's cells divided by coarsen (at least 4 per direction)."""
+    path = scene_path(scene)
+    cells = scene_cells(path)
+    return ["-options_file", path] + (["-mpm_cells", ",".join(str(max(4, c // coarsen)) for c in cells)] if cells else [])
+
+
 def run(exe, args, ranks=1, out=None, timeout=900):
     """Runs petmpm ARGS (through mpiexec for ranks > 1) with its output and report in OUT (when given).
     Returns (report or None, completed process)."""
