@@ -19,14 +19,26 @@ def scene_path(name):
     return name if os.sep in name or name.endswith(".opts") else os.path.join(SRC, "inputs", name + ".opts")
 
 
+def option_value(args, name):
+    """The value petmpm would read for option NAME (with its dash) from a command line ARGS, options files included
+    (the last occurrence wins), or None."""
+    value = None
+    for i, w in enumerate(args[:-1]):
+        if w == "-options_file":
+            with open(args[i + 1]) as f:
+                for line in f:
+                    ws = line.split("#")[0].split()
+                    if len(ws) >= 2 and ws[0] == name:
+                        value = ws[1]
+        elif w == name:
+            value = args[i + 1]
+    return value
+
+
 def scene_cells(path):
     """The -mpm_cells value of a scene file, or None."""
-    with open(path) as f:
-        for line in f:
-            w = line.split("#")[0].split()
-            if len(w) >= 2 and w[0] == "-mpm_cells":
-                return [int(c) for c in w[1].split(",")]
-    return None
+    cells = option_value(["-options_file", path], "-mpm_cells")
+    return [int(c) for c in cells.split(",")] if cells else None
 
 
 def coarsened_args(scene, coarsen):
