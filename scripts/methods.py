@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: BSD-2-Clause
-"""The method matrix: every scene of inputs/ (cells divided by --coarsen) run with each method option in turn, to show
+"""The method matrix: every scene of inputs/ (cells divided by --coarsen) run with each method option in turn (and the
+cell rule with two smooth families), to show
 which methods a scene runs with and to catch what no test names. A run either finishes (with its total-energy
 change), stops with petmpm's own diagnosis (exit 91: the run cannot go on, the last state written), or is refused
 before it starts (exit 95: an option combination the scene cannot take); anything else (a signal, an MPI abort, a
@@ -11,6 +12,7 @@ usage: scripts/methods.py [--exe build/petmpm] [--coarsen 4] [--jobs 2] [--scene
 """
 import argparse
 import concurrent.futures as cf
+import math
 import os
 import re
 import shutil
@@ -32,6 +34,8 @@ CONFIGS = [
     ("flip", ["-mpm_update_type", "flip"], 1),
     ("limited", ["-mpm_viscosity_type", "limited"], 1),
     ("cell rule", ["-mpm_stress_integration", "cell"], 1),
+    ("gimp, cell", ["-mpm_shape_type", "gimp", "-mpm_stress_integration", "cell"], 1),
+    ("bspline2, cell", ["-mpm_shape_type", "bspline2", "-mpm_stress_integration", "cell"], 1),
     ("2 ppc", ["-mpm_ppc", "2"], 1),
     ("cth", ["-options_file", os.path.join(lib.SRC, "inputs", "methods", "cth.opts")], 1),
     ("2 ranks", [], 2),
@@ -54,10 +58,13 @@ def classify(p, report):
         return "ok", "ok" + ("" if de is None or abs(de) < 1e-6 else f", E {de:+.0e}") + ("" if abs(iso) < 1e-3 else f", isentrope {iso:+.0e}")
     if p.returncode == 91:
         step = re.search(r"Step (\d+)", text)
+        if "beyond a wall" in text:
+            return "stop", f"stop {step.group(1) if step else '?'}: past a wall"
         state = re.search(r"has rho = (\S+) g/cm\^3, e = (\S+) erg/g", text)
         why = next((label for key, label in REASONS if key in text), None)
         if not why and state:
-            why = "negative density" if float(state.group(1)) <= 0 else "negative energy" if float(state.group(2)) < 0 else "non-physical state"
+            rho, e = (float(v.rstrip(".")) for v in state.groups())  # PETSc prints nan as "nan."
+            why = "non-finite state" if math.isnan(rho) or math.isnan(e) else "negative density" if rho <= 0 else "negative energy" if e < 0 else "non-physical state"
         why = why or "stopped"
         return "stop", f"stop {step.group(1) if step else '?'}: {why}"
     if p.returncode == 95:
@@ -108,8 +115,9 @@ def main():
              "with petmpm's diagnosis, the last state written (`light node`: a linear-shape node that holds little "
              "but this point's mass, the free-surface kick of docs/validation-dambreak.md; `spall`: tension past the "
              "EOS spinodal, `-mat_<m>_eos_pmin` lets it spall; `CPDI reach`: a domain stretched past "
-             "`-mpm_shape_cpdi_reach`, without splitting; `dt collapse`; `vacuum`: density below `-mpm_vacuum_density`; "
-             "`emptied cells`; else the state the diagnosis names, `negative energy` or `negative density`); `refused`: an option the scene cannot take, refused before the run (the cell rule on "
+             "`-mpm_shape_cpdi_reach`, without splitting; `past a wall`: a point moved farther in one step than a "
+             "wall's reflection can bring back; `dt collapse`; `vacuum`: density below `-mpm_vacuum_density`; "
+             "`emptied cells`; else the state the diagnosis names, `negative energy`, `negative density` or `non-finite state`); `refused`: an option the scene cannot take, refused before the run (the cell rule on "
              "the r-z grid, a grid too small for the rank count). A crash (any other exit, a hang, non-finite values) fails the script.", "",
              f"{counts['ok']} runs finished, {counts['stop']} stopped with a diagnosis, {counts['refused']} refused, "
              f"{counts['crash']} crashed.", "",

@@ -396,6 +396,16 @@ static PetscErrorCode MPMReflectAtWalls(MPM mpm)
 }
 
 /* Whether x lies beyond the domain only across outflow faces (a point there leaves the run). */
+/* Whether a point outside the domain lies beyond a wall face (where the wall reflection should have kept it). */
+static PetscBool MPMBeyondWall(const MPM mpm, const PetscReal x[])
+{
+  const MPMGrid *g = &mpm->grid;
+
+  for (PetscInt k = 0; k < g->dim; k++)
+    if ((x[k] < g->lo[k] && mpm->bc_lo[k] == MPM_BC_WALL) || (x[k] > g->hi[k] && mpm->bc_hi[k] == MPM_BC_WALL)) return PETSC_TRUE;
+  return PETSC_FALSE;
+}
+
 static PetscBool MPMThroughOutflow(const MPM mpm, const PetscReal x[])
 {
   const MPMGrid *g   = &mpm->grid;
@@ -449,7 +459,7 @@ PetscErrorCode MPMMigrate(MPM mpm)
 {
   const MPMGrid *g = &mpm->grid;
   PetscMPIInt    rank, size;
-  PetscInt       n, nmove = 0, nout = 0, ngone = 0, ntotal;
+  PetscInt       n, nmove = 0, nout = 0, ngone = 0, nwall = 0, ntotal;
   PetscReal     *x, *id;
   PetscInt      *owner;
   PetscBool     *gone = NULL;
@@ -473,8 +483,10 @@ PetscErrorCode MPMMigrate(MPM mpm)
       ngone++;
       continue;
     }
+    if (!in && MPMBeyondWall(mpm, xp)) nwall++;
     if (!in && !nout++)
-      PetscCall(PetscPrintf(PETSC_COMM_SELF, "[%d] step %" PetscInt_FMT ": point %.0f left the domain at x = (%g, %g, %g)\n", rank, mpm->steps, (double)id[p], (double)xp[0], (double)(g->dim > 1 ? xp[1] : 0), (double)(g->dim > 2 ? xp[2] : 0)));
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "[%d] step %" PetscInt_FMT ": point %.0f left the domain at x = (%g, %g, %g)%s\n", rank, mpm->steps, (double)id[p], (double)xp[0], (double)(g->dim > 1 ? xp[1] : 0), (double)(g->dim > 2 ? xp[2] : 0),
+                            MPMBeyondWall(mpm, xp) ? ", beyond a wall: it moved farther in one step than the wall's reflection can bring back (a non-physical velocity)" : ""));
     if (size > 1) {
       owner[p] = MPMOwnerRank(g, xp);
       if (owner[p] != rank) nmove++;
@@ -484,8 +496,9 @@ PetscErrorCode MPMMigrate(MPM mpm)
   PetscCall(DMSwarmRestoreField(mpm->swarm, MPMFieldTable[MPM_FIELD_ID].name, NULL, NULL, (void **)&id));
   PetscCall(DMSwarmRestoreField(mpm->swarm, MPMFieldTable[MPM_FIELD_POSITION].name, NULL, NULL, (void **)&x));
   {
-    PetscInt counts[3] = {nmove, nout, ngone};
-    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, counts, 3, MPIU_INT, MPI_SUM, mpm->comm));
+    PetscInt counts[4] = {nmove, nout, ngone, nwall};
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, counts, 4, MPIU_INT, MPI_SUM, mpm->comm));
+    PetscCheck(!counts[3], mpm->comm, PETSC_ERR_NOT_CONVERGED, "Step %" PetscInt_FMT ": %" PetscInt_FMT " point(s) ended beyond a wall, faster than its reflection can return them: a non-physical velocity (diagnosis above)", mpm->steps, counts[3]);
     PetscCheck(!counts[1], mpm->comm, PETSC_ERR_NOT_CONVERGED,
                "Step %" PetscInt_FMT ": %" PetscInt_FMT " point(s) left the domain through a free face; enlarge the domain (-mpm_lo, -mpm_hi) or make the face an outflow (-mpm_bc_lo, -mpm_bc_hi outflow)", mpm->steps, counts[1]);
     if (ngone) PetscCall(MPMRemoveOutflow(mpm, n, gone));
