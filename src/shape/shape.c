@@ -46,8 +46,9 @@ PetscErrorCode MPMShapeCreate(MPI_Comm comm, MPMShape *shape)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The cell average of the 1D basis over global cell i of direction k (see MPMShapeEvaluateCell), folded at the walls. */
-static void MPMShapeCell1d(MPMShape shape, const MPMGrid *g, PetscInt k, PetscInt i, MPMShapeCell *c)
+/* The cell average of the linear 1D basis over global cell i of direction k (see MPMShapeEvaluateCell), folded at the
+   walls. */
+static void MPMShapeCell1d(const MPMGrid *g, PetscInt k, PetscInt i, MPMShapeCell *c)
 {
   const PetscReal gp[2]          = {0.5 - 0.5 / PetscSqrtReal(3.0), 0.5 + 0.5 / PetscSqrtReal(3.0)};
   const PetscInt  base           = i - 3; /* every type touches nodes i-3 .. i+4 at most from cell i */
@@ -58,7 +59,7 @@ static void MPMShapeCell1d(MPMShape shape, const MPMGrid *g, PetscInt k, PetscIn
     for (PetscInt q = 0; q < 2; q++) {
       PetscReal wq[MPM_MAX_1D], dwq[MPM_MAX_1D];
       PetscInt  first, n;
-      shape->ops.basis1d(shape->data, i + 0.5 * (half + gp[q]), &first, &n, wq, dwq);
+      MPMShapeLinear1d(i + 0.5 * (half + gp[q]), &first, &n, wq, dwq);
       for (PetscInt a = 0; a < n; a++) {
         const PetscInt j = first + a - base;
         sw[j] += 0.25 * wq[a];
@@ -91,16 +92,18 @@ PetscErrorCode MPMShapeSetUp(MPMShape shape, const MPMGrid *g, PetscInt ppc)
     shape->cell1d_lo[k] = g->gs[k];
     shape->ncell1d[k]   = g->gm[k];
     PetscCall(PetscMalloc1(g->gm[k], &shape->cell1d[k]));
-    for (PetscInt i = 0; i < g->gm[k]; i++) MPMShapeCell1d(shape, g, k, g->gs[k] + i, &shape->cell1d[k][i]);
+    for (PetscInt i = 0; i < g->gm[k]; i++) MPMShapeCell1d(g, k, g->gs[k] + i, &shape->cell1d[k][i]);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The cell-averaged shape functions of the global cell ijk, (1/V_c) int_c N_I dx and (1/V_c) int_c grad N_I dx,
-   for the cell-rule internal force and for cell-centred reads of the grid. Per direction the 1D basis is
-   averaged with two-point Gauss rules on each half of the cell: exact for the piecewise polynomials of every
-   type whose breakpoints are on vertices and cell centres (linear, B-splines; for linear it is the value at
-   the centre), and the cell average of the point-domain basis for GIMP. */
+/* The cell-averaged linear (Q1) shape functions of the global cell ijk, (1/V_c) int_c N_I dx and (1/V_c) int_c grad N_I
+   dx, over the cell's own 2^d nodes whatever the points' shape functions: the cell-rule internal force and work and
+   cell-centred reads of the grid (the limited viscosity's cell velocity gradient) act through the cell as a zone.
+   The type's own basis averaged over the cell (as before) reaches nodes beyond the cell for GIMP and the B-splines,
+   and at a free surface a cell's force then pushed a node that the surface points give a mass of order overlap^2:
+   the 2D dam break and the 2D bar exploded within two steps (docs/algorithm.md). Per direction the average is taken
+   with two-point Gauss rules on each half of the cell (for the linear basis, the value at the centre). */
 void MPMShapeEvaluateCell(MPMShape shape, const MPMGrid *g, const PetscInt ijk[], MPMStencil *st)
 {
   PetscInt  idx[MPM_MAX_DIM][MPM_MAX_1D], nn[MPM_MAX_DIM];
@@ -110,7 +113,7 @@ void MPMShapeEvaluateCell(MPMShape shape, const MPMGrid *g, const PetscInt ijk[]
     const PetscInt i = ijk[k] - shape->cell1d_lo[k];
     MPMShapeCell   c;
     if (i < 0 || i >= shape->ncell1d[k])
-      MPMShapeCell1d(shape, g, k, ijk[k], &c); /* outside the table */
+      MPMShapeCell1d(g, k, ijk[k], &c); /* outside the table */
     else
       c = shape->cell1d[k][i];
     nn[k] = c.n;
