@@ -4,6 +4,15 @@
    so every point of a cell lives on one rank and cell averages need no communication. */
 #include "petmpmimpl.h"
 
+/* The DMDA's stencil width: the shape functions' ghost width and the cells a viscosity limiter reads beyond it. */
+static PetscInt MPMGridStencilWidth(MPM mpm)
+{
+  PetscInt sw;
+
+  PetscCallAbort(mpm->comm, MPMShapeGetGhostWidth(mpm->shape, &sw));
+  return sw + (mpm->viscosity ? mpm->viscosity->ghost : 0);
+}
+
 /* The DMDA, its vectors and the per-cell arrays; own[k] gives the vertices each rank column owns along k, with the
    ranks per direction of the present grid, or (own NULL) ranks[k] the ranks per direction (PETSC_DECIDE: PETSc's
    split) and PETSc the ranges. */
@@ -15,9 +24,7 @@ static PetscErrorCode MPMCreateGridOwned(MPM mpm, PetscInt *own[], const PetscIn
 
   PetscFunctionBegin;
   for (PetscInt k = 0; k < g->dim; k++) P[k] = own ? g->nranks[k] : ranks[k];
-  PetscCall(MPMShapeGetGhostWidth(mpm->shape, &sw));
-  if (mpm->viscosity) sw += mpm->viscosity->ghost; /* a limiter reads the neighbouring cells */
-  g->sw = sw;
+  g->sw = sw = MPMGridStencilWidth(mpm);
   for (PetscInt k = 0; k < g->dim; k++) M[k] = g->cells[k] + 1;
   switch (g->dim) {
   case 1:
@@ -121,8 +128,7 @@ static PetscErrorCode MPMGridLayout(MPM mpm, PetscInt P[])
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) P[k] = PETSC_DECIDE;
   PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
   if (size == 1) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(MPMShapeGetGhostWidth(mpm->shape, &sw));
-  if (mpm->viscosity) sw += mpm->viscosity->ghost;
+  sw = MPMGridStencilWidth(mpm);
   for (PetscInt k = 0; k < g->dim; k++) M[k] = g->cells[k] + 1;
   if (g->dim == 1)
     PetscCall(DMDACreate1d(mpm->comm, DM_BOUNDARY_NONE, M[0], 1, 0, NULL, &da));

@@ -395,7 +395,6 @@ static PetscErrorCode MPMReflectAtWalls(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Whether x lies beyond the domain only across outflow faces (a point there leaves the run). */
 /* Whether a point outside the domain lies beyond a wall face (where the wall reflection should have kept it). */
 static PetscBool MPMBeyondWall(const MPM mpm, const PetscReal x[])
 {
@@ -406,6 +405,7 @@ static PetscBool MPMBeyondWall(const MPM mpm, const PetscReal x[])
   return PETSC_FALSE;
 }
 
+/* Whether x lies beyond the domain only across outflow faces (a point there leaves the run). */
 static PetscBool MPMThroughOutflow(const MPM mpm, const PetscReal x[])
 {
   const MPMGrid *g   = &mpm->grid;
@@ -483,10 +483,13 @@ PetscErrorCode MPMMigrate(MPM mpm)
       ngone++;
       continue;
     }
-    if (!in && MPMBeyondWall(mpm, xp)) nwall++;
-    if (!in && !nout++)
-      PetscCall(PetscPrintf(PETSC_COMM_SELF, "[%d] step %" PetscInt_FMT ": point %.0f left the domain at x = (%g, %g, %g)%s\n", rank, mpm->steps, (double)id[p], (double)xp[0], (double)(g->dim > 1 ? xp[1] : 0), (double)(g->dim > 2 ? xp[2] : 0),
-                            MPMBeyondWall(mpm, xp) ? ", beyond a wall: it moved farther in one step than the wall's reflection can bring back (a non-physical velocity)" : ""));
+    if (!in) {
+      const PetscBool wall = MPMBeyondWall(mpm, xp);
+      nwall += wall;
+      if (!nout++)
+        PetscCall(PetscPrintf(PETSC_COMM_SELF, "[%d] step %" PetscInt_FMT ": point %.0f left the domain at x = (%g, %g, %g)%s\n", rank, mpm->steps, (double)id[p], (double)xp[0], (double)(g->dim > 1 ? xp[1] : 0), (double)(g->dim > 2 ? xp[2] : 0),
+                              wall ? ", beyond a wall: it moved farther in one step than the wall's reflection can bring back (a non-physical velocity)" : ""));
+    }
     if (size > 1) {
       owner[p] = MPMOwnerRank(g, xp);
       if (owner[p] != rank) nmove++;

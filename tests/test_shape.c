@@ -6,7 +6,7 @@
      sum N_I = 1 and sum grad N_I = 0 still hold, and near the wall the odd field x_k - lo_k (the normal
      displacement a symmetry plane allows) is reproduced with the reflected signs.
    CPDI is checked with random deformation gradients (domains sheared, stretched and rotated). Inside, the
-   cell-averaged functions of the cell rule (MPMShapeEvaluateCell) must also sum to one, have gradients that
+   cell-averaged functions of the cell rule (MPMGridCellBasis) must also sum to one, have gradients that
    sum to zero and reproduce the gradient of a linear field.
    CPDI's corners are merged per node (CheckCPDIMerge): inside the grid, with domains no wider than a cell, every
    stencil node is distinct and there are at most 3^d. CPDI is checked a second time with F near 6 I at 2 points per
@@ -83,7 +83,7 @@ static PetscErrorCode CheckType(const char type[], PetscInt dim, PetscBool bound
       PetscReal  csum = 0, cg[3] = {0, 0, 0}, CG[3][3] = {{0}};
       MPMStencil cst;
       for (PetscInt k = 0; k < dim; k++) ijk[k] = (PetscInt)PetscFloorReal((x[k] - g.lo[k]) / g.h[k]);
-      MPMShapeEvaluateCell(shape, &g, ijk, &cst);
+      MPMGridCellBasis(&g, ijk, &cst);
       for (PetscInt a = 0; a < cst.n; a++) {
         const PetscInt idx = cst.node[a], ii[3] = {idx % g.gm[0], (idx / g.gm[0]) % g.gm[1], idx / (g.gm[0] * g.gm[1])};
         csum += cst.w[a];

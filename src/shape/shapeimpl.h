@@ -15,14 +15,11 @@ typedef struct {
 } MPMShapeOps;
 struct _p_MPMShape {
   MPM_CLASS_HEADER(MPMShapeOps);
-  PetscBool needs_F;                                /* the type reads the points' deformation gradient */
-  PetscBool edge_gradient;                          /* grad N_I does not vanish with N_I at the edge of the support (linear hats): a stencil
-                                                       node that only a point near its far side reaches (a free surface) has mass N_I m_p
-                                                       and force of order V sigma grad N_I, so its velocity grows like 1 / N_I */
-  const MPMTransferKernels *kernels;                /* specialised transfer kernels for d = 1, 2, 3 (kernels.h), NULL: generic only */
-  MPMShapeCell             *cell1d[MPM_MAX_DIM];    /* cell-averaged 1D bases of the ghosted cells gs..gs+gm per direction */
-  PetscInt                  cell1d_lo[MPM_MAX_DIM]; /* the global cell of entry 0                                          */
-  PetscInt                  ncell1d[MPM_MAX_DIM];   /* entries                                                             */
+  PetscBool needs_F;                 /* the type reads the points' deformation gradient */
+  PetscBool edge_gradient;           /* grad N_I does not vanish with N_I at the edge of the support (linear hats): a stencil
+                                        node that only a point near its far side reaches (a free surface) has mass N_I m_p
+                                        and force of order V sigma grad N_I, so its velocity grows like 1 / N_I */
+  const MPMTransferKernels *kernels; /* specialised transfer kernels for d = 1, 2, 3 (kernels.h), NULL: generic only */
 };
 
 /* N_I(x_p) and grad N_I(x_p) at a point with deformation gradient F (read only by types that follow the
@@ -52,4 +49,3 @@ static inline void MPMShapeEvaluate(MPMShape shape, const MPMGrid *g, const Pets
 }
 
 PETSC_INTERN PetscErrorCode MPMShapeSetUp(MPMShape, const MPMGrid *, PetscInt);
-PETSC_INTERN void           MPMShapeEvaluateCell(MPMShape, const MPMGrid *, const PetscInt[], MPMStencil *);

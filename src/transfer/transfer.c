@@ -179,7 +179,7 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
       c1 = full ? g->vcell : vs[1]; /* the force's factors, applied in this order */
       c2 = full ? vs[1] / vs[0] : 1.0;
       MPMExtendedCellIndex(g, c, ijk);
-      MPMShapeEvaluateCell(mpm->shape, g, ijk, &st);
+      MPMGridCellBasis(g, ijk, &st);
       for (PetscInt a = 0; a < st.n; a++)
         for (PetscInt k = 0; k < d; k++) node[st.node[a]].f[k] += st.s[a][k] * c1 * c2 * st.dw[a][k];
     }
@@ -215,7 +215,7 @@ static PetscReal MPMExpansionWork(void *ctx, PetscInt p, PetscReal e, PetscReal 
 
 /* The generic gather's point loop (the reference the specialised kernels reproduce), with the dimension d a constant
    where MPMGather calls it, so that its loops over d unroll; the same operations in the same order for every d. */
-MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPoints *pts, const MPMNode *node, const PetscReal *F, const PetscReal *ds, PetscBool velocity, PetscBool kinematics, PetscBool work, const PetscInt d)
+MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPoints *pts, const MPMNode *node, PetscBool velocity, PetscBool kinematics, PetscBool work, const PetscInt d)
 {
   const MPMGrid   *g     = &mpm->grid;
   const PetscReal  alpha = A->alpha, dt = A->dt;
@@ -227,7 +227,7 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
   for (PetscInt p = 0; p < pts->n; p++) {
     PetscReal vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Lb[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, dv2 = 0.0, R = 0.0, Fs[MPM_MAX_DIM * MPM_MAX_DIM];
     PetscReal Lbtt = 0.0; /* axisymmetric: the hoop rate of vbar, sum N (2 v_I - dv_I)_r / r_p */
-    MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, F, ds, p, Fs), &st);
+    MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, A->F, A->ds, p, Fs), &st);
     for (PetscInt a = 0; a < st.n; a++) {
       const MPMNode *nd = &node[st.node[a]];
       for (PetscInt i = 0; i < d; i++) {
@@ -321,7 +321,7 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
         PetscReal div = 0.0;
         if (mpm->xcell[2 * c] <= 0.0) continue;
         MPMExtendedCellIndex(g, c, ijk);
-        MPMShapeEvaluateCell(mpm->shape, g, ijk, &st);
+        MPMGridCellBasis(g, ijk, &st);
         for (PetscInt a = 0; a < st.n; a++)
           for (PetscInt k = 0; k < d; k++) div += st.s[a][k] * (node[st.node[a]].p[k] + node[st.node[a]].v0[k]) * st.dw[a][k]; /* v^{n+1/2} + v^{n-1/2} */
         mpm->xcell[2 * c + 1] = full ? g->vcell / mpm->xcell[2 * c] * div : div;
@@ -358,11 +358,11 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
     if (mpm->kern) {
       mpm->kern->g2p[(velocity ? MPM_G2P_VELOCITY : 0) | (kinematics ? MPM_G2P_KINEMATICS : 0) | (work ? MPM_G2P_WORK : 0)](g, mpm->shape->data, &A, node);
     } else if (d == 3)
-      MPMGatherGeneric(mpm, &A, &pts, node, F, ds, velocity, kinematics, work, 3);
+      MPMGatherGeneric(mpm, &A, &pts, node, velocity, kinematics, work, 3);
     else if (d == 2)
-      MPMGatherGeneric(mpm, &A, &pts, node, F, ds, velocity, kinematics, work, 2);
+      MPMGatherGeneric(mpm, &A, &pts, node, velocity, kinematics, work, 2);
     else
-      MPMGatherGeneric(mpm, &A, &pts, node, F, ds, velocity, kinematics, work, 1);
+      MPMGatherGeneric(mpm, &A, &pts, node, velocity, kinematics, work, 1);
   }
   PetscCall(PetscFree(pointwork));
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));

@@ -7,7 +7,6 @@
 /* What a viscosity reads and writes in one step. */
 typedef struct {
   const MPMGrid   *grid;            /* the grid                                                       */
-  MPMShape         shape;           /* the shape functions (cell-averaged gradients of the grid velocity) */
   const MPMNode   *node;            /* the ghosted nodal vector after the advance: p holds v_I^{n+1}     */
   PetscInt         n;               /* local points                                                   */
   const PetscReal *x, *rho, *c, *L; /* position [cm], density, sound speed, velocity gradient (d x d) */

@@ -56,7 +56,7 @@ static inline PetscInt PaddedIndex(const Visc_Limited *lim, const PetscInt ijk[]
 }
 
 /* du_k at every padded cell centre from the ghosted grid velocity (MPMNode::p after the grid advance). */
-static void LimitedCellJumps(Visc_Limited *lim, MPMShape shape, const MPMGrid *g, const MPMNode *node)
+static void LimitedCellJumps(Visc_Limited *lim, const MPMGrid *g, const MPMNode *node)
 {
   const PetscInt d = g->dim;
   MPMStencil     st;
@@ -72,7 +72,7 @@ static void LimitedCellJumps(Visc_Limited *lim, MPMShape shape, const MPMGrid *g
     }
     lim->ok[c] = ok;
     if (!ok) continue;
-    MPMShapeEvaluateCell(shape, g, gc, &st); /* the cell average of the velocity gradient */
+    MPMGridCellBasis(g, gc, &st); /* the cell average of the velocity gradient */
     for (PetscInt k = 0; k < d; k++) lim->du[c * d + k] = 0.0;
     for (PetscInt a = 0; a < st.n; a++) {
       const MPMNode *nd = &node[st.node[a]];
@@ -102,7 +102,7 @@ static PetscErrorCode MPMViscosityApply_Limited(MPMViscosity visc, const MPMVisc
       PetscCall(PetscMalloc2(lim->nc * d, &lim->du, lim->nc, &lim->ok));
     }
   }
-  LimitedCellJumps(lim, ctx->shape, g, ctx->node);
+  LimitedCellJumps(lim, g, ctx->node);
   {
     const PetscReal *x = ctx->x, *rho = ctx->rho, *c = ctx->c, *L = ctx->L;
     PetscReal       *q = ctx->q;
