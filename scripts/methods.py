@@ -114,7 +114,7 @@ def main():
              "expansion, not a gas's release); `stop N`: stopped at step N "
              "with petmpm's diagnosis, the last state written (`light node`: a linear-shape node that holds little "
              "but this point's mass, the free-surface kick of docs/validation-dambreak.md; `spall`: tension past the "
-             "EOS spinodal, `-mat_<m>_eos_pmin` lets it spall; `CPDI reach`: a domain stretched past "
+             "EOS spinodal with `-mat_<m>_eos_spall_spinodal false`; `CPDI reach`: a domain stretched past "
              "`-mpm_shape_cpdi_reach`, without splitting; `past a wall`: a point moved farther in one step than a "
              "wall's reflection can bring back; `dt collapse`; `vacuum`: density below `-mpm_vacuum_density`; "
              "`emptied cells`; else the state the diagnosis names, `negative energy`, `negative density` or `non-finite state`); `refused`: an option the scene cannot take, refused before the run (the cell rule on "

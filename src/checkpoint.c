@@ -73,8 +73,8 @@ static hid_t MPMCkptOpen(MPI_Comm comm, const char file[], PetscBool create)
 static void MPMCkptDiag(MPMDiagnostics *dg, PetscReal a[], PetscBool store)
 {
   PetscReal     *v[MPM_CKPT_NDIAG] = {&dg->isentrope_energy, &dg->plastic_work, &dg->popped_sum, &dg->first_popped_time, &dg->first_popped_x[0], &dg->first_popped_x[1], &dg->first_popped_x[2]};
-  PetscInt      *w[]               = {&dg->isentrope_points,  &dg->dt_limit[0],      &dg->dt_limit[1],  &dg->dt_limit[2],   &dg->dt_limit[3],      &dg->vacuum_points_max, &dg->empty_cells_max, &dg->empty_cells0,
-                                      &dg->first_vacuum_step, &dg->first_empty_step, &dg->points_split, &dg->split_refused, &dg->wall_reflections, &dg->domain_resets,     &dg->popping_checks,  &dg->popped_max};
+  PetscInt      *w[]               = {&dg->isentrope_points, &dg->dt_limit[0],  &dg->dt_limit[1],   &dg->dt_limit[2],      &dg->dt_limit[3],   &dg->vacuum_points_max, &dg->empty_cells_max, &dg->empty_cells0, &dg->first_vacuum_step,
+                                      &dg->first_empty_step, &dg->points_split, &dg->split_refused, &dg->wall_reflections, &dg->domain_resets, &dg->popping_checks,    &dg->popped_max,      &dg->spalled};
   const PetscInt nv = 7, nw = (PetscInt)(sizeof(w) / sizeof(w[0]));
   PetscReal     *t = &a[MPM_CKPT_OUTFLOW];
 
@@ -100,7 +100,7 @@ static void MPMCkptDiag(MPMDiagnostics *dg, PetscReal a[], PetscBool store)
 }
 
 /* The counters that are this rank's sums (the report adds them over ranks): their indices in MPMCkptDiag's order. */
-static const PetscInt MPMCkptDiagSums[] = {0, 1, 7, 17, 18, 19, 20}; /* and the outflow tallies from MPM_CKPT_OUTFLOW */
+static const PetscInt MPMCkptDiagSums[] = {0, 1, 7, 17, 18, 19, 20, 23}; /* and the outflow tallies from MPM_CKPT_OUTFLOW */
 
 PetscErrorCode MPMCheckpointWrite(MPM mpm)
 {

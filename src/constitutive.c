@@ -116,10 +116,10 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
           if (epsp[idx[i]] > eps0[i]) mpm->diag.plastic_work += m[idx[i]] * MPMVonMisesStress(d, &S[idx[i] * d * d]) * (epsp[idx[i]] - eps0[i]) / rho1[i];
       }
       if (midpoint) {
-        PetscCall(MPMEOSPressureBatch(E, n, rho1, e1, pn, c2));                                                          /* predictor */
+        PetscCall(MPMEOSPressureBatch(E, n, rho1, e1, pn, c2, NULL));                                                    /* predictor */
         for (PetscInt i = 0; i < n; i++) e1[i] = e[idx[i]] - (0.5 * (pr[idx[i]] + pn[i]) + q[idx[i]]) * dvol[i] + ws[i]; /* the corrector keeps the stress work */
       }
-      PetscCall(MPMEOSPressureBatch(E, n, rho1, e1, pn, c2));
+      PetscCall(MPMEOSPressureBatch(E, n, rho1, e1, pn, c2, &mpm->diag.spalled));
       PetscCall(MPMEOSTemperatureBatch(E, n, rho1, e1, Tn));
       for (PetscInt i = 0; i < n; i++) {
         const PetscInt p = idx[i];
@@ -144,9 +144,10 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
       PetscReal          pe, c2e;
       MPMEOSPressureKernel(mat->eos, rho[bad], e[bad], &pe, &c2e);
       if (!mat->eos->fluid && rho[bad] > 0.0 && pe < 0.0 && c2e < 0.0) { /* a solid stretched past its EOS's spinodal: it would have spalled */
-        PetscCall(PetscSNPrintf(tension, sizeof(tension),
-                                "; the EOS sound speed is imaginary here (c_EOS^2 = %g at p = %g dyn/cm^2): the material is in tension beyond its EOS's spinodal, and a spall pressure, -mat_%s_eos_pmin, lets it spall instead", (double)c2e, (double)pe,
-                                mat->name));
+        PetscCall(
+          PetscSNPrintf(tension, sizeof(tension),
+                        "; the EOS sound speed is imaginary here (c_EOS^2 = %g at p = %g dyn/cm^2): the material is in tension beyond its EOS's spinodal, and -mat_%s_eos_spall_spinodal (or a spall pressure, -mat_%s_eos_pmin) lets it spall instead",
+                        (double)c2e, (double)pe, mat->name, mat->name));
         hint = tension;
       }
     }

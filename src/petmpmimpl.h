@@ -118,6 +118,7 @@ typedef struct {
   PetscInt  split_refused;                                  /* point-steps that called for a split the level limit refused (this rank) */
   PetscInt  wall_reflections;                               /* points this rank put back across a wall (MPMMigrate)              */
   PetscInt  domain_resets;                                  /* point-steps whose skewed CPDI domain this rank reset to a cube (MPMDomainApply) */
+  PetscInt  spalled;                                        /* point-steps whose EOS state spalled, p = 0 (this rank; MPMEOSSpalled)  */
   PetscReal plastic_work;                                   /* sum over the steps of m_p sigma_eq d eps_p / rho_p on this rank [erg] */
   PetscInt  rebalances;                                     /* times -mpm_balance rebuilt the grid's ownership ranges (global) */
   PetscInt  popping_checks;                                 /* checks of the popping module (global)                                 */

@@ -432,7 +432,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   PetscBool      budget;
   PetscInt       nonfinite = 0, npoints, nvac, nempty, nmin, nmax;
   PetscReal      imbalance;
-  PetscReal      eisen, nisen, nsplit, nrefuse, nreflect, nreset, out[3] = {0, 0, 0};
+  PetscReal      eisen, nisen, nsplit, nrefuse, nreflect, nreset, nspall, out[3] = {0, 0, 0};
   PetscBool      outflow = PETSC_FALSE;
   PetscMPIInt    size, rank;
 
@@ -446,8 +446,9 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   PetscCall(MPMDiagnoseVacuum(mpm, &nvac, &nempty));
   PetscCall(MPMPointBalance(mpm, &imbalance, &nmin, &nmax));
   {
-    PetscReal s[8] = {
-      mpm->diag.isentrope_energy, (PetscReal)mpm->diag.isentrope_points, (PetscReal)mpm->diag.points_split, (PetscReal)mpm->diag.split_refused, (PetscReal)mpm->diag.wall_reflections, (PetscReal)mpm->diag.domain_resets, mpm->diag.plastic_work, 0.0};
+    PetscReal s[9] = {
+      mpm->diag.isentrope_energy,  (PetscReal)mpm->diag.isentrope_points, (PetscReal)mpm->diag.points_split, (PetscReal)mpm->diag.split_refused, (PetscReal)mpm->diag.wall_reflections, (PetscReal)mpm->diag.domain_resets, mpm->diag.plastic_work, 0.0,
+      (PetscReal)mpm->diag.spalled};
     if (mpm->has_stress) { /* the elastic shear energy sum V sigma_eq^2 / (6 G) of the hypoelastic models (s : s / (4 G)) */
       MPMPoints pts;
       PetscCall(MPMPointsGetArrays(mpm, &pts));
@@ -457,7 +458,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
       }
       PetscCall(MPMPointsRestoreArrays(mpm, &pts));
     }
-    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 8, MPIU_REAL, MPIU_SUM, mpm->comm));
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 9, MPIU_REAL, MPIU_SUM, mpm->comm));
     wplastic = s[6];
     eshear   = s[7];
     eisen    = s[0];
@@ -466,6 +467,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     nrefuse  = s[3];
     nreflect = s[4];
     nreset   = s[5];
+    nspall   = s[8];
   }
   for (PetscInt k = 0; k < g->dim; k++) outflow = (PetscBool)(outflow || mpm->bc_lo[k] == MPM_BC_OUTFLOW || mpm->bc_hi[k] == MPM_BC_OUTFLOW);
   if (outflow) { /* what left through outflow faces: points, and mass and total energy relative to the initial sums */
@@ -529,6 +531,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     PetscCall(PetscPrintf(mpm->comm, "  energy budget (of the initial kinetic energy): kinetic %.4f, internal change %.4f (plastic work %.4f, elastic shear %.4f, the rest %.4f), error %.2e\n", (double)eb[0], (double)eb[1], (double)eb[2],
                           (double)eb[3], (double)(eb[1] - eb[2] - eb[3]), (double)eb[4]));
   if (nreflect > 0) PetscCall(PetscPrintf(mpm->comm, "  %.0f point-steps carried a point across a wall; it was put back as its mirror image\n", (double)nreflect));
+  if (nspall > 0) PetscCall(PetscPrintf(mpm->comm, "  spall: %.0f point-steps in tension below the spall pressure or past the EOS's spinodal carried p = 0 (-mat_<name>_eos_pmin, -mat_<name>_eos_spall_spinodal)\n", (double)nspall));
   if (mpm->diag.vacuum_points_max || mpm->diag.empty_cells_max)
     PetscCall(PetscPrintf(mpm->comm,
                           "  warning: resolution lost: up to %" PetscInt_FMT " points below the vacuum density (first at step %" PetscInt_FMT "), up to %" PetscInt_FMT " cells emptied inside the material (first at step %" PetscInt_FMT ")\n",
@@ -581,8 +584,8 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     for (PetscInt l = 0; l < MPM_NUM_DT_LIMITS; l++) fprintf(fp, "%s\"%s\": %" PetscInt_FMT, l ? ", " : "", MPMDtLimitNames[l], mpm->diag.dt_limit[l]);
     fprintf(fp,
             "}, \"vacuum_points\": %" PetscInt_FMT ", \"vacuum_points_max\": %" PetscInt_FMT ", \"first_vacuum_step\": %" PetscInt_FMT ", \"empty_cells\": %" PetscInt_FMT ", \"empty_cells_max\": %" PetscInt_FMT
-            ", \"first_empty_step\": %" PetscInt_FMT ", \"points_split\": %.0f, \"split_refused\": %.0f, \"wall_reflections\": %.0f, \"domain_resets\": %.0f}",
-            nvac, mpm->diag.vacuum_points_max, mpm->diag.first_vacuum_step, nempty, mpm->diag.empty_cells_max, mpm->diag.first_empty_step, (double)nsplit, (double)nrefuse, (double)nreflect, (double)nreset);
+            ", \"first_empty_step\": %" PetscInt_FMT ", \"points_split\": %.0f, \"split_refused\": %.0f, \"wall_reflections\": %.0f, \"domain_resets\": %.0f, \"spalled\": %.0f}",
+            nvac, mpm->diag.vacuum_points_max, mpm->diag.first_vacuum_step, nempty, mpm->diag.empty_cells_max, mpm->diag.first_empty_step, (double)nsplit, (double)nrefuse, (double)nreflect, (double)nreset, (double)nspall);
     if (outflow) fprintf(fp, ",\n  \"outflow\": {\"points\": %.0f, \"mass\": %.6e, \"energy\": %.6e}", (double)out[0], (double)out[1], (double)out[2]);
     fprintf(fp, ",\n  \"min_density\": %.10g,\n  \"nonfinite\": %" PetscInt_FMT ",\n  \"checks\": [", (double)rhomin, nonfinite);
     for (PetscInt c = 0; c < mpm->nchecks; c++)

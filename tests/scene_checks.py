@@ -381,12 +381,13 @@ def test_failure():
         p = run([*SCENE_CTH, "-mpm_cells", "512", "-mpm_ppc", "1", "-mpm_shape_type", "cpdi", "-mpm_output", d], expect_ok=False)
         text = p.stdout + p.stderr
         check(p.returncode != 0 and "time step collapsed" in text and "set by point" in text, f"collapsed time step: exit {p.returncode}, says so and names the point that sets dt")
-        # copper stretched past its Mie-Gruneisen spinodal (the 2D penetration with GIMP shapes, no tension cutoff): the
-        # diagnosis says so and names the option that lets it spall
-        pen = ["-options_file", os.path.join(SRC, "inputs", "penetration_2d.opts"), "-mpm_shape_type", "gimp", "-mpm_output", d]
+        # copper stretched past its Mie-Gruneisen spinodal (the 2D penetration with GIMP shapes) with the spall there switched
+        # off: the diagnosis says so and names the options that let it spall (by default it spalls: scene_spall)
+        pen = ["-options_file", os.path.join(SRC, "inputs", "penetration_2d.opts"), "-mpm_shape_type", "gimp", "-mat_copper_eos_spall_spinodal", "false", "-mpm_output", d]
         p = run(pen, expect_ok=False)
         text = p.stdout + p.stderr
-        check(p.returncode != 0 and "sound speed is imaginary" in text and "-mat_copper_eos_pmin" in text, f"tension past the spinodal: exit {p.returncode}, the diagnosis names -mat_copper_eos_pmin")
+        check(p.returncode != 0 and "sound speed is imaginary" in text and "-mat_copper_eos_spall_spinodal" in text and "-mat_copper_eos_pmin" in text,
+              f"tension past the spinodal with -mat_copper_eos_spall_spinodal false: exit {p.returncode}, the diagnosis names the spall options")
         # a point blown past a wall in one step (linear shapes with the cell rule at the dam break's free surface, the light
         # node of docs/validation-dambreak.md, at step 345) is a non-physical velocity, not a point leaving through a free
         # face: the tank has walls only

@@ -11,6 +11,7 @@ static PetscErrorCode MPMEOSReset(void *obj)
   ((MPMEOS)obj)->pressureless = PETSC_FALSE;
   ((MPMEOS)obj)->fluid        = PETSC_FALSE;
   ((MPMEOS)obj)->pmin         = PETSC_MIN_REAL;
+  ((MPMEOS)obj)->spinodal     = PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -23,9 +24,11 @@ static PetscErrorCode MPMEOSSetFromOptions_Class(void *obj, PetscOptionItems *Pe
   PetscFunctionBegin;
   if (eos->pressureless) PetscFunctionReturn(PETSC_SUCCESS);
   PetscOptionsHeadBegin(PetscOptionsObject, "Equation of state: spall");
-  PetscCall(PetscOptionsReal("-eos_pmin",
-                             "Spall pressure [dyn/cm^2], <= 0: where the EOS pressure would fall below it, or the state is past the EOS's spinodal in tension (c^2 < 0), the material has spalled and carries no pressure; default -inf, none", "",
-                             eos->pmin, &eos->pmin, NULL));
+  PetscCall(PetscOptionsReal("-eos_pmin", "Spall pressure [dyn/cm^2], <= 0: where the EOS pressure would fall below it, the material has spalled and carries no pressure; default -inf, none", "", eos->pmin, &eos->pmin, NULL));
+  eos->spall_spinodal = eos->spinodal;
+  if (eos->spinodal)
+    PetscCall(PetscOptionsBool("-eos_spall_spinodal", "Past the EOS's spinodal in tension (p < 0 with c^2 < 0, where the EOS has no state) the material spalls, p = 0; false: the run stops there with its diagnosis", "", eos->spall_spinodal,
+                               &eos->spall_spinodal, NULL));
   PetscOptionsHeadEnd();
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%seos_pmin", eos->prefix ? eos->prefix : ""));
   PetscCall(MPMOptionsCheckRange(opt, eos->pmin, PETSC_MIN_REAL, 0.0, PETSC_FALSE, PETSC_FALSE));
@@ -37,7 +40,8 @@ static PetscErrorCode MPMEOSView_Class(void *obj, PetscViewer viewer)
   MPMEOS eos = (MPMEOS)obj;
 
   PetscFunctionBegin;
-  if (eos->pmin > PETSC_MIN_REAL) PetscCall(PetscViewerASCIIPrintf(viewer, "spall below p = %g dyn/cm^2 (or past the spinodal): p = 0\n", (double)eos->pmin));
+  if (eos->pmin > PETSC_MIN_REAL) PetscCall(PetscViewerASCIIPrintf(viewer, "spall below p = %g dyn/cm^2: p = 0\n", (double)eos->pmin));
+  if (eos->spall_spinodal) PetscCall(PetscViewerASCIIPrintf(viewer, "spall past the spinodal in tension (c^2 < 0): p = 0\n"));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -83,18 +87,20 @@ PetscErrorCode MPMEOSEnergyFromTemperature(MPMEOS eos, PetscReal rho, PetscReal 
 }
 
 /* Batched evaluations over n points (contiguous arrays): the type's batched operation, or a loop over its pointwise one. */
-PetscErrorCode MPMEOSPressureBatch(MPMEOS eos, PetscInt n, const PetscReal rho[], const PetscReal e[], PetscReal p[], PetscReal c2[])
+/* nspall (or NULL): adds the number of the n states that spalled. */
+PetscErrorCode MPMEOSPressureBatch(MPMEOS eos, PetscInt n, const PetscReal rho[], const PetscReal e[], PetscReal p[], PetscReal c2[], PetscInt *nspall)
 {
   PetscFunctionBegin;
   if (eos->ops.pressure_n)
     eos->ops.pressure_n(eos->data, n, rho, e, p, c2);
   else
     for (PetscInt i = 0; i < n; i++) eos->ops.pressure(eos->data, rho[i], e[i], &p[i], &c2[i]);
-  if (eos->pmin > PETSC_MIN_REAL) /* spall (MPMEOSPressureKernel) */
+  if (eos->pmin > PETSC_MIN_REAL || eos->spall_spinodal) /* spall (MPMEOSPressureKernel) */
     for (PetscInt i = 0; i < n; i++)
-      if (p[i] < eos->pmin || (p[i] < 0.0 && c2[i] < 0.0)) {
+      if (MPMEOSSpalled(eos, p[i], c2[i])) {
         p[i]  = 0.0;
         c2[i] = PetscMax(c2[i], 0.0);
+        if (nspall) (*nspall)++;
       }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

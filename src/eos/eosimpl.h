@@ -25,12 +25,21 @@ typedef struct {
   }
 struct _p_MPMEOS {
   MPM_CLASS_HEADER(MPMEOSOps);
-  PetscBool pressureless; /* the type gives no pressure (none): the material needs a strength model */
-  PetscBool fluid;        /* the type is a gas's or a liquid's: the material carries no elastic shear */
-  PetscReal pmin;         /* spall pressure [dyn/cm^2] (-mat_<name>_eos_pmin): below it, or past the EOS's spinodal in tension, p = 0 and c^2 >= 0; -inf: none */
+  PetscBool pressureless;   /* the type gives no pressure (none): the material needs a strength model */
+  PetscBool fluid;          /* the type is a gas's or a liquid's: the material carries no elastic shear */
+  PetscReal pmin;           /* spall pressure [dyn/cm^2] (-mat_<name>_eos_pmin): below it p = 0 and c^2 >= 0; -inf: none */
+  PetscBool spinodal;       /* the type has a spinodal in tension, a density below which c^2 < 0 (Mie-Gruneisen): no state there */
+  PetscBool spall_spinodal; /* -mat_<name>_eos_spall_spinodal: past the spinodal in tension the material spalls (p = 0) instead of stopping the run */
 };
 
-PETSC_INTERN PetscErrorCode MPMEOSPressureBatch(MPMEOS, PetscInt, const PetscReal[], const PetscReal[], PetscReal[], PetscReal[]);
+/* Whether the state (p, c^2) has spalled: below the spall pressure, or, where the type has a spinodal and spalls at it,
+   in tension past it (c^2 < 0). A gas's p < 0 (negative energy) is never spall: it stays a non-physical state. */
+static inline PetscBool MPMEOSSpalled(MPMEOS eos, PetscReal p, PetscReal c2)
+{
+  return (PetscBool)((eos->pmin > PETSC_MIN_REAL && p < eos->pmin) || (eos->spall_spinodal && p < 0.0 && c2 < 0.0));
+}
+
+PETSC_INTERN PetscErrorCode MPMEOSPressureBatch(MPMEOS, PetscInt, const PetscReal[], const PetscReal[], PetscReal[], PetscReal[], PetscInt *);
 PETSC_INTERN PetscReal      MPMEOSIsentrope(MPMEOS, PetscReal, PetscReal, PetscReal);
 PETSC_INTERN PetscErrorCode MPMEOSTemperatureBatch(MPMEOS, PetscInt, const PetscReal[], const PetscReal[], PetscReal[]);
 
@@ -38,7 +47,7 @@ PETSC_INTERN PetscErrorCode MPMEOSTemperatureBatch(MPMEOS, PetscInt, const Petsc
 static inline void MPMEOSPressureKernel(MPMEOS eos, PetscReal rho, PetscReal e, PetscReal *p, PetscReal *c2)
 {
   eos->ops.pressure(eos->data, rho, e, p, c2);
-  if (eos->pmin > PETSC_MIN_REAL && (*p < eos->pmin || (*p < 0.0 && *c2 < 0.0))) { /* spalled: the material holds no tension */
+  if (MPMEOSSpalled(eos, *p, *c2)) { /* spalled: the material holds no tension */
     *p  = 0.0;
     *c2 = PetscMax(*c2, 0.0);
   }

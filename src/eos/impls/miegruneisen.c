@@ -185,6 +185,7 @@ PetscErrorCode MPMEOSCreate_MieGruneisen(MPMEOS eos)
   eos->ops.setfromoptions = MPMEOSSetFromOptions_MG;
   eos->ops.view           = MPMEOSView_MG;
   eos->ops.destroy        = MPMEOSDestroy_MG;
+  eos->spinodal           = PETSC_TRUE; /* c^2 < 0 in tension past eta = -1/s, rho = rho0 s / (s + 1) (copper: 0.6 rho0) */
   PetscCall(MGTabulateIsentrope(mg));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
