@@ -61,7 +61,7 @@ def main():
             subprocess.run([sys.executable, os.path.join(SRC, "scripts", "taylor_profile.py"), os.path.join(SRC, "docs", "taylor_profile.png"), "16.21", "13.56", *h5], check=True)
         md += ["", "## Every shot, axisymmetric rod at R0/12 (R0/9 with --quick)", "", "| shot | V [m/s] | Lf measured / computed | error | Dmax measured / computed | error |", "|---|---|---|---|---|---|"]
         for src, v, L0, lf, dm in SHOTS:
-            rep, err = run(a.exe, "taylor_anvil_rz", ["-mpm_cells", RES[9 if a.quick else 12][1], "-region_rod_hi", f"0.381,{L0}", "-region_rod_velocity", f"0,-{v}",
+            rep, err = run(a.exe, "taylor_anvil_rz", ["-mpm_cells", RES[9 if a.quick else 12][1], "-region_rod_hi", f"0.381,{L0}", "-region_rod_velocity", f"0,-{v}", "-mpm_exact_anvil_speed", str(v),
                                                       "-mpm_exact_anvil_length", str(lf), "-mpm_exact_anvil_diameter", str(dm)], os.path.join(tmp, "shot"))
             if rep is None:
                 md.append(f"| {src} | {v / 100:.0f} | failed: {err} |")

@@ -267,6 +267,13 @@ def test_bad_input():
                            ([*SCENE_CTH, "-mpm_viscosity_type", "none", "-mpm_viscosity_vnr_cq", "2"], "-mpm_viscosity_vnr_cq is an option of artificial viscosity type vnr")]:
             p = run([*args, "-mpm_output", os.path.join(d, "other")], expect_ok=False)
             check(p.returncode == 0 and note in p.stdout, f"{' '.join(args[-2:])}: runs with the note '{note} ...' (exit {p.returncode})")
+        # A Taylor rod at a speed no shot gives is not compared with the 190 m/s shot: measured values, null references, a warning.
+        p = run(["-options_file", RZ, "-mpm_cells", "8,21", "-region_rod_velocity", "0,-2.5e4", "-ts_max_time", "1e-5", "-mpm_output", os.path.join(d, "rod"),
+                 "-mpm_report", os.path.join(d, "rod.json")], expect_ok=False)
+        rep = json.load(open(os.path.join(d, "rod.json"))) if p.returncode == 0 else {"checks": []}
+        refs = {c["name"]: (c["value"], c["reference"]) for c in rep["checks"]}
+        check(p.returncode == 0 and "-mpm_exact_anvil_speed" in p.stdout and refs.get("final_length", (None, 0))[0] and refs["final_length"][1] is None and refs["footprint"][1] is None,
+              f"a 250 m/s rod against the 190 m/s shot: runs (exit {p.returncode}), warns, the anvil checks have no reference ({refs})")
 
 
 def test_log_view():
