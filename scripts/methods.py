@@ -42,7 +42,7 @@ CONFIGS = [
 ]
 # What stopped a run, from its diagnosis (src/constitutive.c, src/ts.c), first match wins.
 REASONS = [("holds little mass but this point", "light node"), ("spinodal", "spall"), ("-mpm_shape_cpdi_reach", "CPDI reach"),
-           ("collapsed", "dt collapse"), ("near vacuum", "vacuum"), ("emptied", "emptied cells")]
+           ("collapsed", "dt collapse"), ("near vacuum", "vacuum"), ("emptied", "emptied cells"), ("left the domain through a free face", "left the domain")]
 
 
 def classify(p, report):
@@ -55,7 +55,7 @@ def classify(p, report):
             return "crash", "non-finite values"
         de = report.get("energy_accounted")
         iso = report.get("robustness", {}).get("isentrope_energy", 0.0)
-        return "ok", "ok" + ("" if de is None or abs(de) < 1e-6 else f", E {de:+.0e}") + ("" if abs(iso) < 1e-3 else f", isentrope {iso:+.0e}")
+        return "ok", "ok" + ("" if de is None or abs(de) < 1e-6 else f", E {de:+.0e}") + ("" if abs(iso) < 1e-3 else f", isentrope {iso:+.0e}") + (", spall" if report.get("robustness", {}).get("spalled", 0) else "")
     if p.returncode == 91:
         step = re.search(r"Step (\d+)", text)
         if "beyond a wall" in text:
@@ -108,7 +108,7 @@ def main():
              "with one method option changed at a time on top of the scene's own method (`default`: the scene as it "
              "stands; `cth`: `inputs/methods/cth.opts`; `2 ranks`: the scene on 2 ranks). `ok`: finished (`E`: the total "
              "energy's relative change less the isentropic expansion's share, where above 1e-6: the compatible and "
-             "midpoint energy updates and a manufactured solution's body force change it by design; `isentrope`: the "
+             "midpoint energy updates and a manufactured solution's body force change it by design; `spall`: points spalled, `robustness.spalled`; `isentrope`: the "
              "energy the isentropic expansion update (`-mpm_isentrope_threshold`) changed, relative, where above "
              "1e-3: a point that expanded by more than the threshold in one step, which for a solid means a spurious "
              "expansion, not a gas's release); `stop N`: stopped at step N "
@@ -116,7 +116,8 @@ def main():
              "but this point's mass, the free-surface kick of docs/validation-dambreak.md; `spall`: tension past the "
              "EOS spinodal with `-mat_<m>_eos_spall_spinodal false`; `CPDI reach`: a domain stretched past "
              "`-mpm_shape_cpdi_reach`, without splitting; `past a wall`: a point moved farther in one step than a "
-             "wall's reflection can bring back; `dt collapse`; `vacuum`: density below `-mpm_vacuum_density`; "
+             "wall's reflection can bring back; `left the domain`: a point (a spalled or kicked fragment) left through a free face, "
+             "which the scene has not made an outflow; `dt collapse`; `vacuum`: density below `-mpm_vacuum_density`; "
              "`emptied cells`; else the state the diagnosis names, `negative energy`, `negative density` or `non-finite state`); `refused`: an option the scene cannot take, refused before the run (the cell rule on "
              "the r-z grid, a grid too small for the rank count). A crash (any other exit, a hang, non-finite values) fails the script.", "",
              f"{counts['ok']} runs finished, {counts['stop']} stopped with a diagnosis, {counts['refused']} refused, "
