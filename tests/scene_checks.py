@@ -401,6 +401,12 @@ def test_failure():
         p = run(["-options_file", os.path.join(SRC, "inputs", "dam_break_2d.opts"), "-mpm_cells", "30,12", "-mpm_shape_type", "linear", "-mpm_stress_integration", "cell", "-mpm_output", d], expect_ok=False)
         text = p.stdout + p.stderr
         check(p.returncode != 0 and "beyond a wall" in text and "non-physical velocity" in text and "free face" not in text, f"a point blown past a wall: exit {p.returncode}, says so (not a free face)")
+        # a run that finishes with the energy changed by the isentropic expansion update (the 2D bar with linear shapes and
+        # the cell rule, coarse: 4.6 times the energy from 19 point-steps at its free surface) says so in a warning
+        p = run(["-options_file", os.path.join(SRC, "inputs", "bar_impact_2d.opts"), "-mpm_stress_integration", "cell", "-mpm_cells", "6,26", "-mpm_output", d])
+        check("warning: the isentropic expansion update changed the total energy" in p.stdout, "a spurious isentropic expansion of 4.6 times the energy: the report warns")
+        p = run([*SCENE_CTH, "-mpm_output", d])
+        check("isentropic expansion update changed" not in p.stdout, "weak Sod (a gas's release, 0 point-steps): no warning")
 
 
 
