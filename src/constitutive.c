@@ -143,7 +143,7 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
       const MPMMaterial *mat = &mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][bad]];
       PetscReal          pe, c2e;
       MPMEOSPressureKernel(mat->eos, rho[bad], e[bad], &pe, &c2e);
-      if (!mat->eos->fluid && rho[bad] > 0.0 && pe < 0.0 && c2e < 0.0) { /* a solid stretched past its EOS's spinodal: it would have spalled */
+      if (mat->eos->spinodal && rho[bad] > 0.0 && pe < 0.0 && c2e < 0.0) { /* stretched past its EOS's spinodal with the spall there switched off */
         PetscCall(
           PetscSNPrintf(tension, sizeof(tension),
                         "; the EOS sound speed is imaginary here (c_EOS^2 = %g at p = %g dyn/cm^2): the material is in tension beyond its EOS's spinodal, and -mat_%s_eos_spall_spinodal (or a spall pressure, -mat_%s_eos_pmin) lets it spall instead",
