@@ -80,17 +80,18 @@ static PetscErrorCode TestTait(PetscInt *fails)
   MPMEOS          eos;
   const PetscReal rho0 = 0.998, c0 = 1500.0, g = 7.0, B = rho0 * c0 * c0 / g;
   PetscReal       p, c2, worst_c = 0, worst_T = 0, worst_p = 0, e, r, e1;
-  PetscBool       ok;
+  PetscBool       ok, cav;
 
   PetscFunctionBegin;
   PetscCall(PetscOptionsSetValue(NULL, "-mat_w_eos_type", "tait"));
   PetscCall(PetscOptionsSetValue(NULL, "-mat_w_eos_tait_c0", "1500"));
+  PetscCall(PetscOptionsSetValue(NULL, "-mat_w_eos_tait_cavitation", "0.05"));
   PetscCall(MPMEOSCreate(PETSC_COMM_WORLD, &eos));
   PetscCall(MPMEOSSetOptionsPrefix(eos, "mat_w_"));
   PetscCall(MPMEOSSetFromOptions(eos));
   PetscCall(MPMEOSPressure(eos, rho0, 123.0, &p, &c2));
   ok = (PetscBool)(p == 0.0 && PetscAbsReal(c2 - c0 * c0) < 1e-12 * c0 * c0);
-  for (PetscReal eta = 0.9; eta < 1.1001; eta += 0.01)
+  for (PetscReal eta = 0.955; eta < 1.1001; eta += 0.01) /* above the cavitation density 0.95 rho0 */
     for (PetscReal Tt = 0.01; Tt < 0.1; Tt *= 1.9) {
       const PetscReal rho = eta * rho0, h = 1e-4 * rho;
       PetscReal       pp, pm, Tb, c2x;
@@ -119,8 +120,17 @@ static PetscErrorCode TestTait(PetscInt *fails)
   }
   e1 = MPMEOSIsentrope(eos, rho0, 0.0, r);
   ok = (PetscBool)(ok && worst_c < 1e-6 && worst_T < 1e-9 && worst_p < 1e-12 && PetscAbsReal(e1 - e) < 1e-9 * PetscAbsReal(e));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s tait: p = 0 and c = c0 at rho0, p = B (eta^gamma - 1) %.1e (tol 1e-12), sound speed vs FD %.2e (tol 1e-6), T round trip %.1e (tol 1e-9), isentrope to 1.05 rho0: %.8g vs RK4 %.8g erg/g\n",
-                        ok ? "PASSED" : "FAILED", (double)worst_p, (double)worst_c, (double)worst_T, (double)e1, (double)e));
+  { /* cavitation: stretched below 0.95 rho0 the water carries no pressure, its sound speed kept; above, tension */
+    PetscReal pc, c2c, pt, c2t;
+    PetscCall(MPMEOSPressure(eos, 0.949 * rho0, 0.0, &pc, &c2c));
+    PetscCall(MPMEOSPressure(eos, 0.951 * rho0, 0.0, &pt, &c2t));
+    cav = (PetscBool)(pc == 0.0 && PetscAbsReal(c2c - c0 * c0 * PetscPowReal(0.949, g - 1.0)) < 1e-12 * c0 * c0 && PetscAbsReal(pt - B * (PetscPowReal(0.951, g) - 1.0)) < 1e-12 * B && pt < -0.29 * B);
+  }
+  ok = (PetscBool)(ok && cav);
+  PetscCall(PetscPrintf(
+    PETSC_COMM_WORLD,
+    "%s tait: p = 0 and c = c0 at rho0, p = B (eta^gamma - 1) %.1e (tol 1e-12), sound speed vs FD %.2e (tol 1e-6), T round trip %.1e (tol 1e-9), isentrope to 1.05 rho0: %.8g vs RK4 %.8g erg/g; cavitation below 0.95 rho0 (p = 0, c kept) %s\n",
+    ok ? "PASSED" : "FAILED", (double)worst_p, (double)worst_c, (double)worst_T, (double)e1, (double)e, cav ? "yes" : "NO"));
   if (!ok) (*fails)++;
   PetscCall(MPMEOSDestroy(&eos));
   PetscFunctionReturn(PETSC_SUCCESS);

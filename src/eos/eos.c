@@ -24,7 +24,8 @@ static PetscErrorCode MPMEOSSetFromOptions_Class(void *obj, PetscOptionItems *Pe
   PetscFunctionBegin;
   if (eos->pressureless) PetscFunctionReturn(PETSC_SUCCESS);
   PetscOptionsHeadBegin(PetscOptionsObject, "Equation of state: spall");
-  PetscCall(PetscOptionsReal("-eos_pmin", "Spall pressure [dyn/cm^2], <= 0: where the EOS pressure would fall below it, the material has spalled and carries no pressure; default -inf, none", "", eos->pmin, &eos->pmin, NULL));
+  PetscCall(PetscOptionsReal("-eos_pmin", "Spall pressure [dyn/cm^2], <= 0: where the EOS pressure would fall below it, the material has spalled and carries no pressure; default -inf (none), for the tait type its cavitation pressure", "", eos->pmin,
+                             &eos->pmin, NULL));
   eos->spall_spinodal = eos->spinodal;
   if (eos->spinodal)
     PetscCall(PetscOptionsBool("-eos_spall_spinodal", "Past the EOS's spinodal in tension (p < 0 with c^2 < 0, where the EOS has no state) the material spalls, p = 0; false: the run stops there with its diagnosis", "", eos->spall_spinodal,
