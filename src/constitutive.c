@@ -112,6 +112,12 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
         PetscReal *epsp = pts.f[MPM_FIELD_PLASTICSTRAIN], eps0[MPM_CHUNK];
         for (PetscInt i = 0; i < n; i++) eps0[i] = epsp[idx[i]];
         PetscCall(MPMStrengthStressBatch(Str, d, dt, n, idx, Lsh ? Lsh : L, F, rho1, T, S, epsp, cs2));
+        if (E->spall_spinodal && E->rho_spinodal > 0.0) /* stretched past the EOS's spinodal the solid has fractured: no shear stress, no shear wave */
+          for (PetscInt i = 0; i < n; i++)
+            if (rho1[i] < E->rho_spinodal) {
+              for (PetscInt a = 0; a < d * d; a++) S[idx[i] * d * d + a] = 0.0;
+              cs2[i] = 0.0;
+            }
         for (PetscInt i = 0; i < n; i++)
           if (epsp[idx[i]] > eps0[i]) mpm->diag.plastic_work += m[idx[i]] * MPMVonMisesStress(d, &S[idx[i] * d * d]) * (epsp[idx[i]] - eps0[i]) / rho1[i];
       }
@@ -129,7 +135,7 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
         rho[p]           = rho1[i];
         V[p]             = m[p] / rho1[i];
         c[p]             = PetscSqrtReal(PetscMax(c2[i], 0.0) + cs2[i]);
-        if (!(rho1[i] > 0.0 && isnormal(rho1[i]) && isfinite(e1[i]) && isfinite(pn[i]) && c2[i] >= 0.0) && (bad < 0 || p < bad)) bad = p; /* C99 classification, inline (PETSc's are library calls) */
+        if (!(rho1[i] > 0.0 && isnormal(rho1[i]) && isfinite(e1[i]) && isfinite(pn[i]) && c2[i] >= 0.0 && !MPMEOSPastSpinodal(E, rho1[i], pn[i], c2[i])) && (bad < 0 || p < bad)) bad = p; /* C99 classification, inline (PETSc's are library calls) */
       }
     }
   if (bad >= 0) {
@@ -143,11 +149,11 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
       const MPMMaterial *mat = &mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][bad]];
       PetscReal          pe, c2e;
       MPMEOSPressureKernel(mat->eos, rho[bad], e[bad], &pe, &c2e);
-      if (mat->eos->spinodal && rho[bad] > 0.0 && pe < 0.0 && c2e < 0.0) { /* stretched past its EOS's spinodal with the spall there switched off */
-        PetscCall(
-          PetscSNPrintf(tension, sizeof(tension),
-                        "; the EOS sound speed is imaginary here (c_EOS^2 = %g at p = %g dyn/cm^2): the material is in tension beyond its EOS's spinodal, and -mat_%s_eos_spall_spinodal (or a spall pressure, -mat_%s_eos_pmin) lets it spall instead",
-                        (double)c2e, (double)pe, mat->name, mat->name));
+      if (rho[bad] > 0.0 && MPMEOSPastSpinodal(mat->eos, rho[bad], pe, c2e)) { /* stretched past its EOS's spinodal with the spall there switched off */
+        PetscCall(PetscSNPrintf(tension, sizeof(tension),
+                                "; the material is in tension beyond its EOS's spinodal (p = %g dyn/cm^2 with c_EOS^2 = %g, at rho = %g against the spinodal density %g g/cm^3), where the EOS has no state, and -mat_%s_eos_spall_spinodal (or a spall "
+                                "pressure, -mat_%s_eos_pmin) lets it spall instead",
+                                (double)pe, (double)c2e, (double)rho[bad], (double)mat->eos->rho_spinodal, mat->name, mat->name));
         hint = tension;
       }
     }

@@ -12,6 +12,7 @@ static PetscErrorCode MPMEOSReset(void *obj)
   ((MPMEOS)obj)->fluid        = PETSC_FALSE;
   ((MPMEOS)obj)->pmin         = PETSC_MIN_REAL;
   ((MPMEOS)obj)->spinodal     = PETSC_FALSE;
+  ((MPMEOS)obj)->rho_spinodal = 0.0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -98,7 +99,7 @@ PetscErrorCode MPMEOSPressureBatch(MPMEOS eos, PetscInt n, const PetscReal rho[]
     for (PetscInt i = 0; i < n; i++) eos->ops.pressure(eos->data, rho[i], e[i], &p[i], &c2[i]);
   if (eos->pmin > PETSC_MIN_REAL || eos->spall_spinodal) /* spall (MPMEOSPressureKernel) */
     for (PetscInt i = 0; i < n; i++)
-      if (MPMEOSSpalled(eos, p[i], c2[i])) {
+      if (MPMEOSSpalled(eos, rho[i], p[i], c2[i])) {
         p[i]  = 0.0;
         c2[i] = PetscMax(c2[i], 0.0);
         if (nspall) (*nspall)++;

@@ -29,14 +29,22 @@ struct _p_MPMEOS {
   PetscBool fluid;          /* the type is a gas's or a liquid's: the material carries no elastic shear */
   PetscReal pmin;           /* spall pressure [dyn/cm^2] (-mat_<name>_eos_pmin): below it p = 0 and c^2 >= 0; -inf: none */
   PetscBool spinodal;       /* the type has a spinodal in tension, a density below which c^2 < 0 (Mie-Gruneisen): no state there */
+  PetscReal rho_spinodal;   /* that density [g/cm^3] (a solid stretched below it has fractured: no shear either); 0: none */
   PetscBool spall_spinodal; /* -mat_<name>_eos_spall_spinodal: past the spinodal in tension the material spalls (p = 0) instead of stopping the run */
 };
 
-/* Whether the state (p, c^2) has spalled: below the spall pressure, or, where the type has a spinodal and spalls at it,
-   in tension past it (c^2 < 0). A gas's p < 0 (negative energy) is never spall: it stays a non-physical state. */
-static inline PetscBool MPMEOSSpalled(MPMEOS eos, PetscReal p, PetscReal c2)
+/* Whether the state (rho, p, c^2) is in tension past the type's spinodal: c^2 < 0, or below the spinodal density (where
+   the Mie-Gruneisen form's expanded branch can give c^2 > 0 from its thermal part, but the cold curve has no state). */
+static inline PetscBool MPMEOSPastSpinodal(MPMEOS eos, PetscReal rho, PetscReal p, PetscReal c2)
 {
-  return (PetscBool)((eos->pmin > PETSC_MIN_REAL && p < eos->pmin) || (eos->spall_spinodal && p < 0.0 && c2 < 0.0));
+  return (PetscBool)(eos->spinodal && p < 0.0 && (c2 < 0.0 || rho < eos->rho_spinodal));
+}
+
+/* Whether the state has spalled: below the spall pressure, or, where the type has a spinodal and spalls at it, in tension
+   past it. A gas's p < 0 (negative energy) is never spall: it stays a non-physical state. */
+static inline PetscBool MPMEOSSpalled(MPMEOS eos, PetscReal rho, PetscReal p, PetscReal c2)
+{
+  return (PetscBool)((eos->pmin > PETSC_MIN_REAL && p < eos->pmin) || (eos->spall_spinodal && MPMEOSPastSpinodal(eos, rho, p, c2)));
 }
 
 PETSC_INTERN PetscErrorCode MPMEOSPressureBatch(MPMEOS, PetscInt, const PetscReal[], const PetscReal[], PetscReal[], PetscReal[], PetscInt *);
@@ -47,7 +55,7 @@ PETSC_INTERN PetscErrorCode MPMEOSTemperatureBatch(MPMEOS, PetscInt, const Petsc
 static inline void MPMEOSPressureKernel(MPMEOS eos, PetscReal rho, PetscReal e, PetscReal *p, PetscReal *c2)
 {
   eos->ops.pressure(eos->data, rho, e, p, c2);
-  if (MPMEOSSpalled(eos, *p, *c2)) { /* spalled: the material holds no tension */
+  if (MPMEOSSpalled(eos, rho, *p, *c2)) { /* spalled: the material holds no tension */
     *p  = 0.0;
     *c2 = PetscMax(*c2, 0.0);
   }

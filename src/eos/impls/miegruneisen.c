@@ -10,6 +10,13 @@
    where e_s is the isentrope through the reference state, de_s/drho = p(rho, e_s)/rho^2, tabulated at set-up.
    Sound speed c^2 = dp/drho|_e + p/rho^2 dp/de|_rho. Compressions with s eta >= 1 (beyond the Hugoniot's
    asymptote) have no state: p and c^2 come back NaN, and the run stops with its diagnosis.
+   Expanded past the spinodal rho_x = rho0 s / (s + 1) (eta = -1/s, where the cold curve's c^2 turns negative and the
+   solid spalls), Gamma is held at its value there, Gamma_x = rho0 G(rho_x) / rho_x (copper: 3.06), so that rho Gamma
+   = rho Gamma_x -> 0 with rho: a hot fragment expanding towards vacuum behaves as a gas, its thermal pressure and
+   sound speed bounded by its energy. With rho Gamma = rho0 (Gamma0 - b) as rho -> 0 instead, the thermal pressure
+   stays finite and c^2 ~ p Gamma rho0 / rho^2 grows without bound (1e7 cm/s at 0.6% of rho0), and one spalled
+   point sets a time step 20 times smaller (docs/algorithm.md). Above rho_x the form is unchanged; p, c^2 and T are
+   continuous at rho_x.
    The defaults are OFHC copper (copper.md). Options -mat_<name>_eos_miegruneisen_{rho0,c0,s,gamma0,b,cv,T0}. */
 #include "../eosimpl.h"
 
@@ -25,6 +32,8 @@ typedef struct {
   PetscReal cv;     /* specific heat [erg/(g eV)]                         */
   PetscReal T0;     /* reference temperature, e = 0 at (rho0, T0) [eV]    */
   PetscReal rhi;    /* upper end of the isentrope table, rho/rho0 [-]     */
+  PetscReal rhox;   /* the spinodal density rho0 s / (s + 1) [g/cm^3]     */
+  PetscReal gammax; /* Gamma held below rhox: rho0 G(rhox) / rhox [-]     */
   PetscReal es[MG_TABLE];
 } EOS_MG;
 
@@ -45,14 +54,22 @@ static inline void MGHugoniot(const EOS_MG *mg, PetscReal eta, PetscReal *PH, Pe
 static void MPMEOSPressure_MG(void *ctx, PetscReal rho, PetscReal e, PetscReal *p, PetscReal *c2)
 {
   const EOS_MG   *mg  = (const EOS_MG *)ctx;
-  const PetscReal eta = 1.0 - mg->rho0 / rho, mu = rho / mg->rho0 - 1.0, G = mg->gamma0 + mg->b * mu, r2 = mg->rho0 / (rho * rho);
+  const PetscReal eta = 1.0 - mg->rho0 / rho, r2 = mg->rho0 / (rho * rho);
   PetscReal       PH, dPH, eH, deH, dpdrho;
 
   MGHugoniot(mg, eta, &PH, &dPH, &eH);
-  deH    = (PH + eta * dPH) / (2.0 * mg->rho0);
-  *p     = PH + mg->rho0 * G * (e - eH);
-  dpdrho = (dPH - mg->rho0 * G * deH) * r2 + mg->b * (e - eH);
-  *c2    = dpdrho + *p * G * r2;
+  deH = (PH + eta * dPH) / (2.0 * mg->rho0);
+  if (rho >= mg->rhox) { /* rho Gamma = rho0 G */
+    const PetscReal mu = rho / mg->rho0 - 1.0, G = mg->gamma0 + mg->b * mu;
+    *p     = PH + mg->rho0 * G * (e - eH);
+    dpdrho = (dPH - mg->rho0 * G * deH) * r2 + mg->b * (e - eH);
+    *c2    = dpdrho + *p * G * r2;
+  } else { /* expanded past the spinodal: Gamma = Gamma_x, rho Gamma = rho Gamma_x */
+    const PetscReal A = rho * mg->gammax;
+    *p                = PH + A * (e - eH);
+    dpdrho            = (dPH * r2 - A * deH * r2) + mg->gammax * (e - eH);
+    *c2               = dpdrho + *p * A / (rho * rho);
+  }
 }
 
 static PetscReal MGPressure(void *ctx, PetscReal rho, PetscReal e)
@@ -62,10 +79,11 @@ static PetscReal MGPressure(void *ctx, PetscReal rho, PetscReal e)
   return p;
 }
 
+/* T_s(rho): d ln T_s / d ln rho = Gamma(rho) from (rho0, T0); past the spinodal Gamma_x, so T_s = T_s(rho_x) (rho / rho_x)^Gamma_x. */
 static inline PetscReal MGIsentropeTemperature(const EOS_MG *mg, PetscReal rho)
 {
-  const PetscReal eta = 1.0 - mg->rho0 / rho;
-  return mg->T0 * PetscExpReal(mg->gamma0 * eta + mg->b * (PetscLogReal(rho / mg->rho0) - eta));
+  const PetscReal r = PetscMax(rho, mg->rhox), eta = 1.0 - mg->rho0 / r, T = mg->T0 * PetscExpReal(mg->gamma0 * eta + mg->b * (PetscLogReal(r / mg->rho0) - eta));
+  return rho >= mg->rhox ? T : T * PetscPowReal(rho / mg->rhox, mg->gammax);
 }
 
 /* e_s(rho) by linear interpolation in the table (linear extrapolation outside it, for temperatures only). */
@@ -93,17 +111,20 @@ static void MPMEOSEnergy_MG(void *ctx, PetscReal rho, PetscReal T, PetscReal *e)
 }
 
 /* de_s/drho = p(rho, e_s)/rho^2 from e_s(rho0) = 0, by RK4 outwards from rho0 on the table's nodes (rho0 is a node). */
-static PetscErrorCode MGTabulateIsentrope(EOS_MG *mg)
+static PetscErrorCode MGTabulateIsentrope(MPMEOS eos, EOS_MG *mg)
 {
   PetscReal dr;
   PetscInt  i0;
 
   PetscFunctionBegin;
-  mg->rhi    = 0.98 * mg->s / (mg->s - 1.0); /* s eta < 1 <=> rho/rho0 < s/(s-1) */
-  i0         = (PetscInt)PetscFloorReal((1.0 - MG_RLO) / (mg->rhi - MG_RLO) * (MG_TABLE - 1) + 0.5);
-  mg->rhi    = MG_RLO + (1.0 - MG_RLO) * (MG_TABLE - 1) / (PetscReal)i0; /* put rho0 on node i0 */
-  dr         = (mg->rhi - MG_RLO) / (MG_TABLE - 1) * mg->rho0;
-  mg->es[i0] = 0.0;
+  mg->rhox          = mg->rho0 * mg->s / (mg->s + 1.0);
+  eos->rho_spinodal = mg->rhox;
+  mg->gammax        = (mg->gamma0 + mg->b * (mg->rhox / mg->rho0 - 1.0)) * mg->rho0 / mg->rhox;
+  mg->rhi           = 0.98 * mg->s / (mg->s - 1.0); /* s eta < 1 <=> rho/rho0 < s/(s-1) */
+  i0                = (PetscInt)PetscFloorReal((1.0 - MG_RLO) / (mg->rhi - MG_RLO) * (MG_TABLE - 1) + 0.5);
+  mg->rhi           = MG_RLO + (1.0 - MG_RLO) * (MG_TABLE - 1) / (PetscReal)i0; /* put rho0 on node i0 */
+  dr                = (mg->rhi - MG_RLO) / (MG_TABLE - 1) * mg->rho0;
+  mg->es[i0]        = 0.0;
   for (PetscInt dir = -1; dir <= 1; dir += 2) {
     for (PetscInt i = i0; i + dir >= 0 && i + dir < MG_TABLE; i += dir) {
       const PetscReal rho = mg->rho0 * (MG_RLO + i * dr / mg->rho0);
@@ -143,7 +164,7 @@ static PetscErrorCode MPMEOSSetFromOptions_MG(MPMEOS eos, PetscOptionItems *Pets
     PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%s%s%s", eos->prefix ? eos->prefix : "", pre, par[i].name));
     PetscCall(MPMOptionsCheckRange(opt, *par[i].v, par[i].lo, par[i].hi, par[i].strictlo, PETSC_FALSE));
   }
-  PetscCall(MGTabulateIsentrope(mg));
+  PetscCall(MGTabulateIsentrope(eos, mg));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -186,6 +207,6 @@ PetscErrorCode MPMEOSCreate_MieGruneisen(MPMEOS eos)
   eos->ops.view           = MPMEOSView_MG;
   eos->ops.destroy        = MPMEOSDestroy_MG;
   eos->spinodal           = PETSC_TRUE; /* c^2 < 0 in tension past eta = -1/s, rho = rho0 s / (s + 1) (copper: 0.6 rho0) */
-  PetscCall(MGTabulateIsentrope(mg));
+  PetscCall(MGTabulateIsentrope(eos, mg));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
