@@ -43,6 +43,29 @@ static PetscErrorCode TestMieGruneisen(PetscInt *fails)
       worst_T = PetscMax(worst_T, PetscAbsReal(Tb - Tt) / Tt);
     }
   }
+  { /* expanded past the spinodal rho_x = rho0 s/(s+1), Gamma held at Gamma_x: c^2 against the isentropic FD of a hot state, p
+       continuous at rho_x, and rho Gamma -> 0 (p at 1e-3 rho0 a small fraction of p at 0.3 rho0, same e) */
+    const PetscReal rhox = rho0 * 1.489 / 2.489, eh = 1e11;
+    PetscReal       worst_x = 0, pa, ca, pb, cb, plo, phi;
+    for (PetscReal rr = 0.02; rr < 0.55; rr *= 1.6) {
+      const PetscReal rho = rr * rho0, h = 1e-5 * rho;
+      PetscReal       pp, pm, c2x;
+      PetscCall(MPMEOSPressure(eos, rho, eh, &p, &c2));
+      PetscCall(MPMEOSPressure(eos, rho + h, eh + p / (rho * rho) * h, &pp, &c2x));
+      PetscCall(MPMEOSPressure(eos, rho - h, eh - p / (rho * rho) * h, &pm, &c2x));
+      worst_x = PetscMax(worst_x, PetscAbsReal((pp - pm) / (2 * h) - c2) / c2);
+    }
+    PetscCall(MPMEOSPressure(eos, rhox * (1 + 1e-10), eh, &pa, &ca));
+    PetscCall(MPMEOSPressure(eos, rhox * (1 - 1e-10), eh, &pb, &cb));
+    PetscCall(MPMEOSPressure(eos, 1e-3 * rho0, eh, &plo, &c2));
+    PetscCall(MPMEOSPressure(eos, 0.3 * rho0, eh, &phi, &c2));
+    ok = (PetscBool)(worst_x < 1e-4 && PetscAbsReal(pa - pb) < 1e-6 * PetscAbsReal(pa) && plo > 0 && plo < 0.01 * phi);
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD,
+                          "%s miegruneisen expanded past the spinodal (e = 1e11 erg/g, 0.02 to 0.5 rho0): sound speed vs isentropic FD %.1e (tol 1e-4), jump at rho_x p %.1e (tol 1e-6; c^2 %.2f, the slope of rho Gamma changes there), p(1e-3 "
+                          "rho0)/p(0.3 rho0) %.2e (< 0.01)\n",
+                          ok ? "PASSED" : "FAILED", (double)worst_x, (double)(PetscAbsReal(pa - pb) / PetscAbsReal(pa)), (double)(PetscAbsReal(ca - cb) / PetscAbsReal(ca)), (double)(plo / phi)));
+    if (!ok) (*fails)++;
+  }
   /* isentropic compression to 1.3 rho0 from (rho0, e = 0) by RK4, then T against the closed form of T_s */
   e = 0;
   r = rho0;
