@@ -29,8 +29,10 @@ static PetscErrorCode MPMEOSSetFromOptions_Class(void *obj, PetscOptionItems *Pe
                              &eos->pmin, NULL));
   eos->spall_spinodal = eos->spinodal;
   if (eos->spinodal)
-    PetscCall(PetscOptionsBool("-eos_spall_spinodal", "Past the EOS's spinodal in tension (p < 0 with c^2 < 0, where the EOS has no state) the material spalls, p = 0; false: the run stops there with its diagnosis", "", eos->spall_spinodal,
-                               &eos->spall_spinodal, NULL));
+    PetscCall(
+      PetscOptionsBool("-eos_spall_spinodal",
+                       "Past the EOS's spinodal in tension (p < 0 with c^2 < 0 or below the spinodal density, where the EOS has no state) the material spalls, p = 0, and has fractured (no shear stress); false: the run stops there with its diagnosis",
+                       "", eos->spall_spinodal, &eos->spall_spinodal, NULL));
   PetscOptionsHeadEnd();
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%seos_pmin", eos->prefix ? eos->prefix : ""));
   PetscCall(MPMOptionsCheckRange(opt, eos->pmin, PETSC_MIN_REAL, 0.0, PETSC_FALSE, PETSC_FALSE));

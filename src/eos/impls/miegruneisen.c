@@ -14,8 +14,8 @@
    solid spalls), Gamma is held at its value there, Gamma_x = rho0 G(rho_x) / rho_x (copper: 3.06), so that rho Gamma
    = rho Gamma_x -> 0 with rho: a hot fragment expanding towards vacuum behaves as a gas, its thermal pressure and
    sound speed bounded by its energy. With rho Gamma = rho0 (Gamma0 - b) as rho -> 0 instead, the thermal pressure
-   stays finite and c^2 ~ p Gamma rho0 / rho^2 grows without bound (1e7 cm/s at 0.6% of rho0), and one spalled
-   point sets a time step 20 times smaller (docs/algorithm.md). Above rho_x the form is unchanged; p and T are
+   stays finite and c^2 ~ p Gamma rho0 / rho^2 grows without bound; with the fractured solid's shear term that the
+   constitutive update now drops, such points made the r-z sphere's step 8 times smaller (docs/algorithm.md). Above rho_x the form is unchanged; p and T are
    continuous at rho_x, c^2 is not (the slope of rho Gamma changes there from rho0 b to Gamma_x).
    The defaults are OFHC copper (copper.md). Options -mat_<name>_eos_miegruneisen_{rho0,c0,s,gamma0,b,cv,T0}. */
 #include "../eosimpl.h"
