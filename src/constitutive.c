@@ -112,9 +112,9 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
         PetscReal *epsp = pts.f[MPM_FIELD_PLASTICSTRAIN], eps0[MPM_CHUNK];
         for (PetscInt i = 0; i < n; i++) eps0[i] = epsp[idx[i]];
         PetscCall(MPMStrengthStressBatch(Str, d, dt, n, idx, Lsh ? Lsh : L, F, rho1, T, S, epsp, cs2));
-        if (E->spall_spinodal && E->rho_spinodal > 0.0) /* stretched past the EOS's spinodal the solid has fractured: no shear stress, no shear wave */
+        if (E->spall_spinodal) /* stretched past the EOS's spinodal the solid has fractured: no shear stress, no shear wave */
           for (PetscInt i = 0; i < n; i++)
-            if (rho1[i] < E->rho_spinodal) {
+            if (MPMEOSFractured(E, rho1[i])) {
               for (PetscInt a = 0; a < d * d; a++) S[idx[i] * d * d + a] = 0.0;
               cs2[i] = 0.0;
             }

@@ -11,7 +11,6 @@ static PetscErrorCode MPMEOSReset(void *obj)
   ((MPMEOS)obj)->pressureless = PETSC_FALSE;
   ((MPMEOS)obj)->fluid        = PETSC_FALSE;
   ((MPMEOS)obj)->pmin         = PETSC_MIN_REAL;
-  ((MPMEOS)obj)->spinodal     = PETSC_FALSE;
   ((MPMEOS)obj)->rho_spinodal = 0.0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -27,8 +26,8 @@ static PetscErrorCode MPMEOSSetFromOptions_Class(void *obj, PetscOptionItems *Pe
   PetscOptionsHeadBegin(PetscOptionsObject, "Equation of state: spall");
   PetscCall(PetscOptionsReal("-eos_pmin", "Spall pressure [dyn/cm^2], <= 0: where the EOS pressure would fall below it, the material has spalled and carries no pressure; default -inf (none), for the tait type its cavitation pressure", "", eos->pmin,
                              &eos->pmin, NULL));
-  eos->spall_spinodal = eos->spinodal;
-  if (eos->spinodal)
+  eos->spall_spinodal = (PetscBool)(eos->rho_spinodal > 0.0);
+  if (eos->spall_spinodal)
     PetscCall(
       PetscOptionsBool("-eos_spall_spinodal",
                        "Past the EOS's spinodal in tension (p < 0 with c^2 < 0 or below the spinodal density, where the EOS has no state) the material spalls, p = 0, and has fractured (no shear stress); false: the run stops there with its diagnosis",

@@ -28,8 +28,7 @@ struct _p_MPMEOS {
   PetscBool pressureless;   /* the type gives no pressure (none): the material needs a strength model */
   PetscBool fluid;          /* the type is a gas's or a liquid's: the material carries no elastic shear */
   PetscReal pmin;           /* spall pressure [dyn/cm^2] (-mat_<name>_eos_pmin): below it p = 0 and c^2 >= 0; -inf: none */
-  PetscBool spinodal;       /* the type has a spinodal in tension, a density below which c^2 < 0 (Mie-Gruneisen): no state there */
-  PetscReal rho_spinodal;   /* that density [g/cm^3] (a solid stretched below it has fractured: no shear either); 0: none */
+  PetscReal rho_spinodal;   /* the type's spinodal density [g/cm^3] (Mie-Gruneisen): below it in tension the EOS has no state, c^2 < 0, and a solid has fractured; 0: the type has none */
   PetscBool spall_spinodal; /* -mat_<name>_eos_spall_spinodal: past the spinodal in tension the material spalls (p = 0) instead of stopping the run */
 };
 
@@ -37,7 +36,14 @@ struct _p_MPMEOS {
    the Mie-Gruneisen form's expanded branch can give c^2 > 0 from its thermal part, but the cold curve has no state). */
 static inline PetscBool MPMEOSPastSpinodal(MPMEOS eos, PetscReal rho, PetscReal p, PetscReal c2)
 {
-  return (PetscBool)(eos->spinodal && p < 0.0 && (c2 < 0.0 || rho < eos->rho_spinodal));
+  return (PetscBool)(eos->rho_spinodal > 0.0 && p < 0.0 && (c2 < 0.0 || rho < eos->rho_spinodal));
+}
+
+/* Whether a solid at density rho has fractured (spall at the spinodal on, and stretched below its density): it carries no
+   shear stress and no shear wave (MPMConstitutive). */
+static inline PetscBool MPMEOSFractured(MPMEOS eos, PetscReal rho)
+{
+  return (PetscBool)(eos->spall_spinodal && rho < eos->rho_spinodal);
 }
 
 /* Whether the state has spalled: below the spall pressure, or, where the type has a spinodal and spalls at it, in tension

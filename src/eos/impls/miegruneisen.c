@@ -110,8 +110,10 @@ static void MPMEOSEnergy_MG(void *ctx, PetscReal rho, PetscReal T, PetscReal *e)
   *e               = MGIsentropeEnergy(mg, rho) + mg->cv * (T - MGIsentropeTemperature(mg, rho));
 }
 
-/* de_s/drho = p(rho, e_s)/rho^2 from e_s(rho0) = 0, by RK4 outwards from rho0 on the table's nodes (rho0 is a node). */
-static PetscErrorCode MGTabulateIsentrope(MPMEOS eos, EOS_MG *mg)
+/* The derived parameters: the spinodal density rho_x = rho0 s / (s + 1) (eta = -1/s; copper 0.6 rho0, where c^2 < 0 in
+   tension), Gamma_x, and the isentrope table, de_s/drho = p(rho, e_s)/rho^2 from e_s(rho0) = 0, by RK4 outwards from
+   rho0 on the table's nodes (rho0 is a node). */
+static PetscErrorCode MGSetUp(MPMEOS eos, EOS_MG *mg)
 {
   PetscReal dr;
   PetscInt  i0;
@@ -164,7 +166,7 @@ static PetscErrorCode MPMEOSSetFromOptions_MG(MPMEOS eos, PetscOptionItems *Pets
     PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%s%s%s", eos->prefix ? eos->prefix : "", pre, par[i].name));
     PetscCall(MPMOptionsCheckRange(opt, *par[i].v, par[i].lo, par[i].hi, par[i].strictlo, PETSC_FALSE));
   }
-  PetscCall(MGTabulateIsentrope(eos, mg));
+  PetscCall(MGSetUp(eos, mg));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -206,7 +208,6 @@ PetscErrorCode MPMEOSCreate_MieGruneisen(MPMEOS eos)
   eos->ops.setfromoptions = MPMEOSSetFromOptions_MG;
   eos->ops.view           = MPMEOSView_MG;
   eos->ops.destroy        = MPMEOSDestroy_MG;
-  eos->spinodal           = PETSC_TRUE; /* c^2 < 0 in tension past eta = -1/s, rho = rho0 s / (s + 1) (copper: 0.6 rho0) */
-  PetscCall(MGTabulateIsentrope(eos, mg));
+  PetscCall(MGSetUp(eos, mg));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
