@@ -33,8 +33,7 @@ def case(exe, ranks, balance, weak, steps, cells):
         args += ["-mpm_cells", f"24,24,{104 * k}", "-mpm_hi", f"0.6,0.6,{2.6 * k:g}", "-region_bar_hi", f"0.4,0.4,{2.4 * k:g}"]
     else:
         args += ["-mpm_cells", cells]
-    if balance:
-        args += ["-mpm_balance"]
+    args += ["-mpm_balance", "true" if balance else "false"]  # on by default
     with tempfile.TemporaryDirectory() as d:
         rep, p = run(exe, args, ranks, d)
     if rep is None:

@@ -13,10 +13,12 @@
      /state           (MPM_CKPT_NSTATE)
      /diagnostics     (ranks x MPM_CKPT_NDIAG)
      /outputs         (outputs x 2: time, points);  /checks (checks x 2: value, reference), /check_names (checks x MPM_MAX_NAME)
+     /ownership       (sum of the ranks per direction)  the grid's nodes per rank column along each direction
    On the rank count that wrote it, each rank takes back its own points in their order, so the run continues bit for
    bit as if never interrupted; on another rank count the points are dealt out evenly and migrated to the ranks that
-   own their cells (the same answer to round-off: sums run in another order); so they are with -mpm_balance, whose
-   ownership ranges follow the points. The output file DIR/petmpm.h5 is
+   own their cells (the same answer to round-off: sums run in another order). With -mpm_balance the checkpoint's
+   ownership ranges (/ownership) rebuild the writer's grid on its rank count, so the continued run is bit for bit the
+   uninterrupted one; on another rank count the grid is rebalanced from the points. The output file DIR/petmpm.h5 is
    reopened and continues at the checkpoint's output count (rows a later output wrote before the interruption are
    overwritten), so output and report read as one run. */
 #include "h5impl.h"
@@ -74,7 +76,7 @@ static void MPMCkptDiag(MPMDiagnostics *dg, PetscReal a[], PetscBool store)
 {
   PetscReal     *v[MPM_CKPT_NDIAG] = {&dg->isentrope_energy, &dg->plastic_work, &dg->popped_sum, &dg->first_popped_time, &dg->first_popped_x[0], &dg->first_popped_x[1], &dg->first_popped_x[2]};
   PetscInt      *w[]               = {&dg->isentrope_points, &dg->dt_limit[0],  &dg->dt_limit[1],   &dg->dt_limit[2],      &dg->dt_limit[3],   &dg->vacuum_points_max, &dg->empty_cells_max, &dg->empty_cells0, &dg->first_vacuum_step,
-                                      &dg->first_empty_step, &dg->points_split, &dg->split_refused, &dg->wall_reflections, &dg->domain_resets, &dg->popping_checks,    &dg->popped_max,      &dg->spalled};
+                                      &dg->first_empty_step, &dg->points_split, &dg->split_refused, &dg->wall_reflections, &dg->domain_resets, &dg->popping_checks,    &dg->popped_max,      &dg->spalled,      &dg->rebalances};
   const PetscInt nv = 7, nw = (PetscInt)(sizeof(w) / sizeof(w[0]));
   PetscReal     *t = &a[MPM_CKPT_OUTFLOW];
 
@@ -189,6 +191,16 @@ PetscErrorCode MPMCheckpointWrite(MPM mpm)
     }
     PetscCall(PetscFree2(out, chk));
   }
+  { /* the grid's ownership ranges (nodes per rank column along each direction), which a restart on this rank count rebuilds */
+    const MPMGrid *g = &mpm->grid;
+    PetscReal     *own;
+    PetscInt       nown = 0;
+    PetscCall(PetscMalloc1(g->nranks[0] + g->nranks[1] + g->nranks[2], &own));
+    for (PetscInt k = 0; k < d; k++)
+      for (PetscInt r = 0; r < g->nranks[k]; r++) own[nown++] = (PetscReal)(g->rank_start[k][r + 1] - g->rank_start[k][r]);
+    PetscCall(MPMCkptWrite(f, "ownership", (hsize_t)nown, 0, rank ? 0 : (hsize_t)nown, own));
+    PetscCall(PetscFree(own));
+  }
   PetscCheck(H5Fclose(f) >= 0, mpm->comm, PETSC_ERR_FILE_WRITE, "Cannot close the checkpoint %s", file);
   if (!rank) { /* keep the last two */
     if (mpm->ckpt_file[0][0]) (void)unlink(mpm->ckpt_file[0]);
@@ -207,6 +219,7 @@ PetscErrorCode MPMRestartRead(MPM mpm)
   PetscMPIInt    rank, size;
   PetscReal      st[MPM_CKPT_NSTATE], *cnt;
   PetscInt       n, offset = 0, N, wsize;
+  PetscBool      owned = PETSC_FALSE; /* the writer's ownership ranges rebuilt */
   hid_t          f;
   MPMPoints      pts;
 
@@ -232,6 +245,24 @@ PetscErrorCode MPMRestartRead(MPM mpm)
     offset = rank * (N / size) + PetscMin(rank, N % size);
   }
   PetscCall(PetscFree(cnt));
+  if (wsize == size && mpm->balance && size > 1 && H5Lexists(f, "ownership", H5P_DEFAULT) > 0) { /* the grid the checkpoint was written on */
+    const MPMGrid *g                = &mpm->grid;
+    PetscInt      *own[MPM_MAX_DIM] = {NULL, NULL, NULL}, nown = 0, i = 0;
+    PetscReal     *a;
+    for (PetscInt k = 0; k < d; k++) nown += g->nranks[k];
+    PetscCall(PetscMalloc1(nown, &a));
+    PetscCall(MPMCkptRead(f, "ownership", 0, (hsize_t)nown, a, NULL));
+    for (PetscInt k = 0; k < d; k++) {
+      PetscInt sum = 0;
+      PetscCall(PetscMalloc1(g->nranks[k], &own[k]));
+      for (PetscInt r = 0; r < g->nranks[k]; r++) sum += own[k][r] = (PetscInt)a[i++];
+      PetscCheck(sum == g->cells[k] + 1, mpm->comm, PETSC_ERR_FILE_READ, "-mpm_restart %s: the checkpoint's ownership ranges along direction %" PetscInt_FMT " hold %" PetscInt_FMT " nodes, not %" PetscInt_FMT, mpm->restart, k, sum, g->cells[k] + 1);
+    }
+    PetscCall(PetscFree(a));
+    PetscCall(MPMGridSetOwnership(mpm, own));
+    for (PetscInt k = 0; k < MPM_MAX_DIM; k++) PetscCall(PetscFree(own[k]));
+    owned = PETSC_TRUE;
+  }
   PetscCall(DMSwarmSetLocalSizes(mpm->swarm, n, PetscMax(16, n / 100)));
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   for (PetscInt k = 0; k < mpm->nfields; k++) {
@@ -304,8 +335,8 @@ PetscErrorCode MPMRestartRead(MPM mpm)
     PetscCall(PetscFree3(out, chk, cn));
   }
   PetscCheck(H5Fclose(f) >= 0, mpm->comm, PETSC_ERR_FILE_READ, "-mpm_restart %s: cannot close the checkpoint", mpm->restart);
-  if (wsize != size || mpm->balance) PetscCall(MPMMigrate(mpm)); /* to the ranks that own their cells now */
-  if (mpm->balance && size > 1) PetscCall(MPMRebalance(mpm));
+  if (wsize != size || (mpm->balance && !owned)) PetscCall(MPMMigrate(mpm)); /* to the ranks that own their cells now */
+  if (mpm->balance && size > 1 && !owned) PetscCall(MPMRebalance(mpm));
   PetscCall(TSSetTime(mpm->ts, mpm->time));
   PetscCall(TSSetStepNumber(mpm->ts, mpm->steps));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -211,7 +211,7 @@ PetscErrorCode MPMPointBalance(MPM mpm, PetscReal *imbalance, PetscInt *nmin, Pe
 PetscErrorCode MPMRebalance(MPM mpm)
 {
   MPMGrid  *g                = &mpm->grid;
-  PetscInt *own[MPM_MAX_DIM] = {NULL, NULL, NULL}, nranks[MPM_MAX_DIM];
+  PetscInt *own[MPM_MAX_DIM] = {NULL, NULL, NULL};
   MPMPoints pts;
 
   PetscFunctionBegin;
@@ -220,7 +220,6 @@ PetscErrorCode MPMRebalance(MPM mpm)
     const PetscInt nc = g->cells[k], np = g->nranks[k], minc = PetscMin(g->sw + 1, nc / np);
     PetscReal     *hist, total = 0.0, acc = 0.0;
     PetscInt       r = 0, start = 0;
-    nranks[k] = np;
     PetscCall(PetscCalloc1(nc, &hist));
     for (PetscInt p = 0; p < pts.n; p++) hist[MPMCellIndex(g, k, pts.f[MPM_FIELD_POSITION][p * g->dim + k])] += 1.0;
     PetscCall(MPIU_Allreduce(MPI_IN_PLACE, hist, nc, MPIU_REAL, MPIU_SUM, mpm->comm));
@@ -241,14 +240,25 @@ PetscErrorCode MPMRebalance(MPM mpm)
     PetscCall(PetscFree(hist));
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-  PetscCall(MPMDestroyGrid(mpm));
-  for (PetscInt k = 0; k < g->dim; k++) g->nranks[k] = nranks[k];
-  PetscCall(MPMCreateGridOwned(mpm, own, NULL));
+  PetscCall(MPMGridSetOwnership(mpm, own));
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) PetscCall(PetscFree(own[k]));
+  mpm->diag.rebalances++;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Rebuilds the grid with the ownership ranges own[k] (nodes per rank column along each direction, the grid's
+   g->nranks[k] of them) and migrates the points to the ranks that own their cells: a rebalance, and a restart on
+   the rank count that wrote the checkpoint (the grid it was written on, so that the run continues bit for bit). */
+PetscErrorCode MPMGridSetOwnership(MPM mpm, PetscInt *own[])
+{
+  MPMGrid *g = &mpm->grid;
+
+  PetscFunctionBegin;
+  PetscCall(MPMDestroyGrid(mpm));
+  PetscCall(MPMCreateGridOwned(mpm, own, NULL));
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) mpm->box_lo[k] = mpm->box_hi[k] = 0;
   PetscCall(MPMShapeSetUp(mpm->shape, g, mpm->ppc)); /* its cell tables cover the rank's ghosted cells */
   PetscCall(MPMMigrate(mpm));
-  mpm->diag.rebalances++;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

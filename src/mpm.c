@@ -37,6 +37,7 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   m->diag.first_vacuum_step = -1;
   m->diag.first_popped_time = -1.0;
   m->progress               = 10.0;
+  m->balance                = PETSC_TRUE;
   m->balance_threshold      = 1.2;
   m->balance_interval       = 50;
   m->diag.first_empty_step  = -1;
@@ -199,7 +200,7 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   }
   PetscCall(PetscOptionsBool("-mpm_view", "Print the configuration of the run", "", mpm->view, &mpm->view, NULL));
   PetscCall(
-    PetscOptionsBool("-mpm_balance", "Set the grid's ownership ranges from the points (each rank column along each axis an equal share), at set-up and whenever the imbalance exceeds -mpm_balance_threshold", "", mpm->balance, &mpm->balance, NULL));
+    PetscOptionsBool("-mpm_balance", "Set the grid's ownership ranges from the points (each rank column along each axis an equal share), at set-up and whenever the imbalance exceeds -mpm_balance_threshold (false: PETSc's partition)", "", mpm->balance, &mpm->balance, NULL));
   if (mpm->balance) {
     PetscCall(PetscOptionsReal("-mpm_balance_threshold", "Rebalance when the most points on a rank exceed this multiple of the mean [-], >= 1", "", mpm->balance_threshold, &mpm->balance_threshold, NULL));
     PetscCall(MPMOptionsCheckRange("-mpm_balance_threshold", mpm->balance_threshold, 1.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));

@@ -283,6 +283,7 @@ PETSC_INTERN PetscInt       MPMFieldBlockSize(PetscInt, PetscInt);
 PETSC_INTERN PetscErrorCode MPMCreateGrid(MPM);
 PETSC_INTERN PetscErrorCode MPMGridLocalToGlobal(MPM);
 PETSC_INTERN PetscErrorCode MPMRebalance(MPM);
+PETSC_INTERN PetscErrorCode MPMGridSetOwnership(MPM, PetscInt *[]);
 PETSC_INTERN PetscErrorCode MPMDestroyGrid(MPM);
 PETSC_INTERN PetscErrorCode MPMPointBalance(MPM, PetscReal *, PetscInt *, PetscInt *);
 PETSC_INTERN PetscErrorCode MPMGridGlobalToLocal(MPM);

@@ -104,8 +104,10 @@ static PetscErrorCode MPMTSPostStep(TS ts)
     PetscReal   imb;
     PetscMPIInt size;
     PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
-    PetscCall(MPMPointBalance(mpm, &imb, NULL, NULL));
-    if (size > 1 && imb > mpm->balance_threshold) PetscCall(MPMRebalance(mpm));
+    if (size > 1) {
+      PetscCall(MPMPointBalance(mpm, &imb, NULL, NULL));
+      if (imb > mpm->balance_threshold) PetscCall(MPMRebalance(mpm));
+    }
   }
   {
     PetscMPIInt sig[2] = {(PetscMPIInt)MPMSignalCaught, mpm->ckpt_wall > 0.0 && MPI_Wtime() - mpm->ckpt_last >= mpm->ckpt_wall}; /* rank 0's clock decides */

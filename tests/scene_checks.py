@@ -460,9 +460,10 @@ def test_interrupt():
 
 def test_restart():
     """Checkpoints and restart: the dam break (point splitting, every module of the default method, popping checks) run
-    through, and stopped at step 700 with checkpoints every 250 steps (the last two kept) and continued from the one at
-    step 500 into the same output folder: on the rank count that wrote it the output file's every dataset and the
-    report's checks equal the uninterrupted run's bit for bit (1 and 2 ranks); a checkpoint written on 2 ranks
+    through, and stopped at step 700 with checkpoints every 260 steps (the last two kept) and continued from the one at
+    step 520 into the same output folder: on the rank count that wrote it the output file's every dataset and the
+    report's checks equal the uninterrupted run's bit for bit (1 and 2 ranks; on 2 the grid balanced by default, its
+    ownership ranges set at a rebalance before step 520, which the checkpoint carries); a checkpoint written on 2 ranks
     continued on 1 gives the same checks to 1e-6; a run stopped by SIGTERM writes a checkpoint that continues to the
     uninterrupted answer, bit for bit."""
     import h5py
@@ -484,12 +485,16 @@ def test_restart():
         for ranks in (1, 2):
             a, b = os.path.join(d, f"a{ranks}"), os.path.join(d, f"b{ranks}")
             run([*scene, "-mpm_output", a, "-mpm_report", os.path.join(a, "report.json")], ranks)
-            run([*scene, "-mpm_output", b, "-mpm_checkpoint_interval", "250", "-ts_max_steps", "700"], ranks)
+            run([*scene, "-mpm_output", b, "-mpm_checkpoint_interval", "260", "-ts_max_steps", "700"], ranks)
             kept = sorted(f for f in os.listdir(b) if f.startswith("checkpoint-"))
-            check(kept == ["checkpoint-250.h5", "checkpoint-500.h5"], f"{ranks} rank(s): the last two checkpoints kept ({kept})")
-            run([*scene, "-mpm_output", b, "-mpm_restart", os.path.join(b, "checkpoint-500.h5"), "-mpm_report", os.path.join(b, "report.json")], ranks)
+            check(kept == ["checkpoint-260.h5", "checkpoint-520.h5"], f"{ranks} rank(s): the last two checkpoints kept ({kept})")
+            run([*scene, "-mpm_output", b, "-mpm_restart", os.path.join(b, "checkpoint-520.h5"), "-mpm_report", os.path.join(b, "report.json")], ranks)
             diff = same_files(a, b)
-            check(not diff and report(a) == report(b), f"{ranks} rank(s): restart from step 500 equals the uninterrupted run bit for bit (datasets differing: {diff})")
+            check(not diff and report(a) == report(b), f"{ranks} rank(s): restart from step 520 equals the uninterrupted run bit for bit (datasets differing: {diff})")
+            if ranks > 1:  # the balanced grid the checkpoint was written on, not a new balance of the points at step 520
+                with open(os.path.join(a, "report.json")) as fa, open(os.path.join(b, "report.json")) as fb:
+                    ba, bb = json.load(fa)["balance"], json.load(fb)["balance"]
+                check(ba == bb and ba["rebalances"] >= 2, f"{ranks} ranks: the restarted run's balance equals the uninterrupted run's ({bb})")
             ref[ranks] = report(a)
         c = os.path.join(d, "c")
         run([*scene, "-mpm_output", c, "-mpm_checkpoint_interval", "500", "-ts_max_steps", "500"], 2)
