@@ -92,7 +92,8 @@ def fit_rate(h, err):
 
 
 def get(report, path, h=None):
-    """A report value by dotted path: errors.density.L1, conservation.mass, checks.plateau_pressure.rel_error
+    """A report value by dotted path: errors.density.L1, conservation.mass, conservation.momentum.1 (a component),
+    checks.plateau_pressure.rel_error
     (checks are found by name), checks.shock_position.error_cells (|value - reference| / h, the cell size h given),
     particles_per_cell (particles over the product of the cells), ns_per_point_step (the cost per point-step and rank)."""
     parts = path.split(".")
@@ -110,7 +111,7 @@ def get(report, path, h=None):
         return c[field]
     v = report
     for p in parts:
-        v = v[p]
+        v = v[int(p)] if isinstance(v, list) else v[p]  # a list's component by index: conservation.momentum.0
     return v
 
 

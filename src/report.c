@@ -428,7 +428,7 @@ static PetscReal MPMRelErr(PetscReal v, PetscReal r)
 PetscErrorCode MPMWriteReport(MPM mpm)
 {
   const MPMGrid *g = &mpm->grid;
-  PetscReal      err[MPM_NERR][3], rhomin = 0, dmass, denergy, mass, energy, mom[MPM_MAX_DIM], kinetic, wplastic = 0, eshear = 0, eb[5] = {0, 0, 0, 0, 0}, gb[4] = {0, 0, 0, 0}, shock_cells = -1.0, pss;
+  PetscReal      err[MPM_NERR][3], rhomin = 0, dmass, denergy, mass, energy, mom[MPM_MAX_DIM], kinetic, wplastic = 0, eelastic = 0, eb[5] = {0, 0, 0, 0, 0}, gb[4] = {0, 0, 0, 0}, shock_cells = -1.0, pss;
   PetscBool      budget;
   PetscInt       nonfinite = 0, npoints, nvac, nempty, nmin, nmax;
   PetscReal      imbalance;
@@ -449,18 +449,23 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     PetscReal s[9] = {
       mpm->diag.isentrope_energy,  (PetscReal)mpm->diag.isentrope_points, (PetscReal)mpm->diag.points_split, (PetscReal)mpm->diag.split_refused, (PetscReal)mpm->diag.wall_reflections, (PetscReal)mpm->diag.domain_resets, mpm->diag.plastic_work, 0.0,
       (PetscReal)mpm->diag.spalled};
-    if (mpm->has_stress) { /* the elastic shear energy sum V sigma_eq^2 / (6 G) of the hypoelastic models (s : s / (4 G)) */
-      MPMPoints pts;
+    if (mpm->has_stress) { /* the stored elastic energy: hyperelastic models V_0 W(F) (V_0 = V / det F), hypoelastic ones their shear energy V sigma_eq^2 / (6 G) (s : s / (4 G)) */
+      const PetscInt d = g->dim;
+      MPMPoints      pts;
       PetscCall(MPMPointsGetArrays(mpm, &pts));
       for (PetscInt p = 0; p < pts.n; p++) {
         const MPMStrength str = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].strength;
-        if (str && str->G > 0.0) s[7] += pts.f[MPM_FIELD_VOLUME][p] * PetscSqr(MPMVonMisesStress(g->dim, &pts.f[MPM_FIELD_STRESS][p * g->dim * g->dim])) / (6.0 * str->G);
+        const PetscReal  *F   = pts.f[MPM_FIELD_DEFGRAD] ? &pts.f[MPM_FIELD_DEFGRAD][p * d * d] : NULL;
+        if (str && str->ops.energy && F)
+          s[7] += pts.f[MPM_FIELD_VOLUME][p] / MPMDeterminant(d, F) * str->ops.energy(str->data, d, F);
+        else if (str && str->G > 0.0)
+          s[7] += pts.f[MPM_FIELD_VOLUME][p] * PetscSqr(MPMVonMisesStress(d, &pts.f[MPM_FIELD_STRESS][p * d * d])) / (6.0 * str->G);
       }
       PetscCall(MPMPointsRestoreArrays(mpm, &pts));
     }
     PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 9, MPIU_REAL, MPIU_SUM, mpm->comm));
     wplastic = s[6];
-    eshear   = s[7];
+    eelastic = s[7];
     eisen    = s[0];
     nisen    = s[1];
     nsplit   = s[2];
@@ -485,11 +490,11 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   }
   dmass  = (mass - mpm->mass0) / mpm->mass0; /* signed relative changes, printed and reported alike */
   budget = (PetscBool)(mpm->has_stress && mpm->kinetic0 > 0.0);
-  if (budget) { /* over the initial kinetic energy: kinetic, internal change, plastic work, elastic shear energy, total change */
+  if (budget) { /* over the initial kinetic energy: kinetic, internal change, plastic work, stored elastic energy, total change */
     eb[0] = kinetic / mpm->kinetic0;
     eb[1] = (energy - kinetic - (mpm->energy0 - mpm->kinetic0)) / mpm->kinetic0;
     eb[2] = wplastic / mpm->kinetic0;
-    eb[3] = eshear / mpm->kinetic0;
+    eb[3] = eelastic / mpm->kinetic0;
     eb[4] = (energy - mpm->energy0) / mpm->kinetic0;
   }
   denergy = mpm->energy0 != 0 ? (energy - mpm->energy0) / PetscAbsReal(mpm->energy0) : energy;
@@ -533,8 +538,8 @@ PetscErrorCode MPMWriteReport(MPM mpm)
       PetscCall(PetscPrintf(mpm->comm, "  warning: not at rest at the final time: kinetic energy %.3g of its initial value, above -mpm_stop_at_rest %g\n", (double)(mpm->kinetic0 > 0 ? kinetic / mpm->kinetic0 : 0.0), (double)mpm->rest_fraction));
   }
   if (budget)
-    PetscCall(PetscPrintf(mpm->comm, "  energy budget (of the initial kinetic energy): kinetic %.4f, internal change %.4f (plastic work %.4f, elastic shear %.4f, the rest %.4f), error %.2e\n", (double)eb[0], (double)eb[1], (double)eb[2],
-                          (double)eb[3], (double)(eb[1] - eb[2] - eb[3]), (double)eb[4]));
+    PetscCall(PetscPrintf(mpm->comm, "  energy budget (of the initial kinetic energy): kinetic %.4f, internal change %.4f (plastic work %.4f, elastic %.4f, the rest %.4f), error %.2e\n", (double)eb[0], (double)eb[1], (double)eb[2], (double)eb[3],
+                          (double)(eb[1] - eb[2] - eb[3]), (double)eb[4]));
   if (nreflect > 0) PetscCall(PetscPrintf(mpm->comm, "  %.0f point-steps carried a point across a wall; it was put back as its mirror image\n", (double)nreflect));
   if (nspall > 0) PetscCall(PetscPrintf(mpm->comm, "  spall: %.0f point-steps in tension below the spall pressure or past the EOS's spinodal carried p = 0 (-mat_<name>_eos_pmin, -mat_<name>_eos_spall_spinodal)\n", (double)nspall));
   if (mpm->diag.vacuum_points_max || mpm->diag.empty_cells_max)
@@ -583,7 +588,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
       fprintf(fp, "  \"popping\": {\"checks\": %" PetscInt_FMT ", \"popped_max\": %" PetscInt_FMT ", \"popped_sum\": %.0f, \"first_time\": %.10g, \"first_position\": [%.10g, %.10g, %.10g]},\n", mpm->diag.popping_checks, mpm->diag.popped_max,
               (double)mpm->diag.popped_sum, (double)mpm->diag.first_popped_time, (double)x[0], (double)x[1], (double)x[2]);
     }
-    if (budget) fprintf(fp, "  \"energy_budget\": {\"kinetic\": %.6e, \"internal_change\": %.6e, \"plastic_work\": %.6e, \"elastic_shear\": %.6e, \"error\": %.6e},\n", (double)eb[0], (double)eb[1], (double)eb[2], (double)eb[3], (double)eb[4]);
+    if (budget) fprintf(fp, "  \"energy_budget\": {\"kinetic\": %.6e, \"internal_change\": %.6e, \"plastic_work\": %.6e, \"elastic\": %.6e, \"error\": %.6e},\n", (double)eb[0], (double)eb[1], (double)eb[2], (double)eb[3], (double)eb[4]);
     fprintf(fp, "  \"energy_accounted\": %.6e,\n", (double)(mpm->energy0 != 0 ? (denergy * PetscAbsReal(mpm->energy0) - eisen) / PetscAbsReal(mpm->energy0) : denergy - eisen));
     fprintf(fp, "  \"robustness\": {\"isentrope_energy\": %.6e, \"isentrope_point_steps\": %.0f, \"dt_limit\": {", (double)(mpm->energy0 != 0 ? eisen / PetscAbsReal(mpm->energy0) : eisen), (double)nisen);
     for (PetscInt l = 0; l < MPM_NUM_DT_LIMITS; l++) fprintf(fp, "%s\"%s\": %" PetscInt_FMT, l ? ", " : "", MPMDtLimitNames[l], mpm->diag.dt_limit[l]);

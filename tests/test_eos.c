@@ -337,6 +337,33 @@ int main(int argc, char **argv)
     err /= mu;
     if (!(err < 1e-14 && PetscAbsReal(c2 - (lam + 2 * mu) / 2.0) < 1e-12 * c2)) fails++;
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s neohookean: simple shear, uniaxial stretch and F = I against closed forms, rel. error %.1e (tol 1e-14); c^2 = (lambda + 2 mu)/rho\n", err < 1e-14 ? "PASSED" : "FAILED", (double)err));
+    { /* the stored energy the report's budget reads: W(I) = 0 and (dW/dF) F^T = J sigma (centred differences) in 2D and 3D */
+      const PetscReal Fs[2][9] = {{1.13, 0.21, -0.08, 0.94}, {1.07, 0.12, -0.05, 0.09, 0.88, 0.17, -0.11, 0.04, 1.19}}, I3[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+      PetscReal       ew = PetscAbsReal(nh->ops.energy(nh->data, 2, Id)) + PetscAbsReal(nh->ops.energy(nh->data, 3, I3));
+      for (PetscInt c = 0; c < 2; c++) {
+        const PetscInt  d = c + 2;
+        const PetscReal J = MPMDeterminant(d, Fs[c]), hh = 1e-6;
+        PetscReal       Fc[9], sg[9], P[9];
+        PetscCall(MPMStrengthStress(nh, d, 0.0, NULL, Fs[c], 1.0, 0.0, sg, NULL, &c2));
+        for (PetscInt a = 0; a < d * d; a++) { /* P = dW/dF */
+          PetscReal Wp, Wm;
+          for (PetscInt b = 0; b < d * d; b++) Fc[b] = Fs[c][b];
+          Fc[a] += hh;
+          Wp = nh->ops.energy(nh->data, d, Fc);
+          Fc[a] -= 2 * hh;
+          Wm   = nh->ops.energy(nh->data, d, Fc);
+          P[a] = (Wp - Wm) / (2 * hh);
+        }
+        for (PetscInt i = 0; i < d; i++)
+          for (PetscInt j = 0; j < d; j++) {
+            PetscReal PFt = 0.0;
+            for (PetscInt k = 0; k < d; k++) PFt += P[i * d + k] * Fs[c][j * d + k];
+            ew = PetscMax(ew, PetscAbsReal(PFt - J * sg[i * d + j]) / mu);
+          }
+      }
+      if (!(ew < 1e-8)) fails++;
+      PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s neohookean: stored energy W(I) = 0 and (dW/dF) F^T = J sigma in 2D and 3D, error %.1e of mu (tol 1e-8)\n", ew < 1e-8 ? "PASSED" : "FAILED", (double)ew));
+    }
     PetscCall(MPMStrengthDestroy(&nh));
   }
   PetscCall(TestMieGruneisen(&fails));

@@ -9,6 +9,7 @@ typedef struct {
   void (*stress_n)(void *, PetscInt, PetscReal, PetscInt, const PetscInt[], const PetscReal[], const PetscReal[], const PetscReal[], const PetscReal[], PetscReal[], PetscReal[],
                    PetscReal[]);                              /* batched over the points idx[0..n): L, F, T, s, eps_p by point, rho and c^2 contiguous; NULL: a loop over stress */
   PetscReal (*flow)(void *, PetscReal, PetscReal, PetscReal); /* (eps_p, deps_p/dt [1/s], T [eV]) -> yield stress [dyn/cm^2]; NULL: never yields */
+  PetscReal (*energy)(void *, PetscInt, const PetscReal[]);   /* hyperelastic types: (d, F) -> stored energy per reference volume [erg/cm^3]; NULL: s : s / (4 G) per volume (hypoelastic) */
 } MPMStrengthOps;
 
 /* The batched stress operation of a type from its pointwise one (see MPMStrengthOps::stress_n), with the dimension

@@ -28,6 +28,18 @@ static void MPMStrengthStress_NeoHookean(void *ctx, PetscInt d, PetscReal dt, co
 
 MPM_STRENGTH_BATCHED(MPMStrengthStress_NeoHookean)
 
+/* The stored energy W(F) = mu/2 (tr C - d) - mu ln J + lambda/2 (ln J)^2 per reference volume, whose derivative dW/dF is
+   the P above (plane strain: the missing directions add nothing to tr C - 3). */
+static PetscReal MPMStrengthEnergy_NeoHookean(void *ctx, PetscInt d, const PetscReal F[])
+{
+  const Strength_NeoHookean *nh  = (const Strength_NeoHookean *)ctx;
+  const PetscReal            lnJ = PetscLogReal(MPMDeterminant(d, F));
+  PetscReal                  trC = 0.0;
+
+  for (PetscInt a = 0; a < d * d; a++) trC += F[a] * F[a];
+  return 0.5 * nh->mu * (trC - d) - nh->mu * lnJ + 0.5 * nh->lambda * lnJ * lnJ;
+}
+
 static PetscErrorCode MPMStrengthSetFromOptions_NeoHookean(MPMStrength str, PetscOptionItems *PetscOptionsObject)
 {
   Strength_NeoHookean *nh = (Strength_NeoHookean *)str->data;
@@ -77,6 +89,7 @@ PetscErrorCode MPMStrengthCreate_NeoHookean(MPMStrength str)
   str->needs_F            = PETSC_TRUE;
   str->ops.stress         = MPMStrengthStress_NeoHookean;
   str->ops.stress_n       = MPMStrengthStress_NeoHookean_n;
+  str->ops.energy         = MPMStrengthEnergy_NeoHookean;
   str->ops.setfromoptions = MPMStrengthSetFromOptions_NeoHookean;
   str->ops.view           = MPMStrengthView_NeoHookean;
   str->ops.destroy        = MPMStrengthDestroy_NeoHookean;
