@@ -14,6 +14,122 @@ static inline PetscReal MPMDetIPlusDtL(PetscInt d, PetscReal dt, const PetscReal
   }
 }
 
+/* The new state of a chunk of points that lie contiguously (one material): p, T, e, rho, V = m / rho and the wave speed
+   c = sqrt(max(c_EOS^2, 0) + c_s^2), the work arrays and the fields distinct (restrict: the loop vectorizes). */
+static inline void MPMConstitutiveStore(PetscInt n, const PetscReal *restrict pn, const PetscReal *restrict Tn, const PetscReal *restrict e1, const PetscReal *restrict rho1, const PetscReal *restrict c2, const PetscReal *restrict cs2,
+                                        const PetscReal *restrict m, PetscReal *restrict pr, PetscReal *restrict T, PetscReal *restrict e, PetscReal *restrict rho, PetscReal *restrict V, PetscReal *restrict c)
+{
+  for (PetscInt i = 0; i < n; i++) {
+    pr[i]  = pn[i];
+    T[i]   = Tn[i];
+    e[i]   = e1[i];
+    rho[i] = rho1[i];
+    V[i]   = m[i] / rho1[i];
+    c[i]   = PetscSqrtReal(PetscMax(c2[i], 0.0) + cs2[i]);
+  }
+}
+
+/* The update of one chunk of material im's points (c0 .. c0 + n of its index list), with the dimension d and ident (one
+   material: the list is the identity, point c0 + i) compile-time constants where MPMConstitutive calls it, so that the
+   loops over d unroll and the loops over the chunk read the fields directly; the same operations in the same order
+   for every instantiation (the same numbers). bad: the first non-physical point so far (in/out). */
+#define MPM_CP(i) (ident ? c0 + (i) : idx[i])
+static inline __attribute__((always_inline)) PetscErrorCode MPMConstitutiveChunk(MPM mpm, const MPMPoints *pts, PetscInt im, PetscInt c0, PetscInt n, PetscReal dt, const PetscReal *Lsh, PetscInt *badp, const PetscInt d, const PetscBool ident)
+{
+  const PetscBool   midpoint = (PetscBool)(mpm->energy_update == MPM_ENERGY_MIDPOINT), conservative = (PetscBool)(mpm->energy_update == MPM_ENERGY_CONSERVATIVE);
+  const PetscBool   trackF = mpm->track_F, stress = mpm->has_stress;
+  const MPMShape    shape = mpm->shape;
+  const PetscInt   *idx   = &mpm->widx[c0];
+  PetscInt          bad   = *badp;
+  const MPMEOS      E     = mpm->mat[im].eos;
+  const MPMStrength Str   = stress ? mpm->mat[im].strength : NULL;
+  PetscReal        *rho1 = mpm->work, *dvol = rho1 + n, *e1 = dvol + n, *c2 = e1 + n, *cs2 = c2 + n, *pn = cs2 + n, *Tn = pn + n, *ws = Tn + n;
+  const PetscReal  *L = pts->f[MPM_FIELD_GRADV], *m = pts->f[MPM_FIELD_MASS], *q = pts->f[MPM_FIELD_VISCOSITY];
+  PetscReal        *rho = pts->f[MPM_FIELD_DENSITY], *V = pts->f[MPM_FIELD_VOLUME], *e = pts->f[MPM_FIELD_ENERGY], *pr = pts->f[MPM_FIELD_PRESSURE];
+  PetscReal        *c = pts->f[MPM_FIELD_SOUNDSPEED], *T = pts->f[MPM_FIELD_TEMPERATURE], *F = pts->f[MPM_FIELD_DEFGRAD], *S = pts->f[MPM_FIELD_STRESS];
+
+  PetscFunctionBegin;
+  if (Lsh) { /* kinematics: rho^{n+1} = rho^n / J, d(1/rho) (loops free of branches per point); axisymmetric: J has the hoop factor */
+    const PetscReal *hoop = pts->f[MPM_FIELD_HOOPRATE];
+    for (PetscInt i = 0; i < n; i++) rho1[i] = rho[MPM_CP(i)] / (MPMDetIPlusDtL(d, dt, &L[MPM_CP(i) * d * d]) * (1.0 + dt * hoop[MPM_CP(i)]));
+  } else
+    for (PetscInt i = 0; i < n; i++) rho1[i] = rho[MPM_CP(i)] / MPMDetIPlusDtL(d, dt, &L[MPM_CP(i) * d * d]);
+  for (PetscInt i = 0; i < n; i++) {
+    dvol[i] = 1.0 / rho1[i] - 1.0 / rho[MPM_CP(i)];
+    cs2[i]  = 0.0;
+    ws[i]   = 0.0;
+  }
+  if (conservative) /* e: the gather added the work already */
+    for (PetscInt i = 0; i < n; i++) e1[i] = e[MPM_CP(i)];
+  else /* e from the work of p^n + q */
+    for (PetscInt i = 0; i < n; i++) e1[i] = e[MPM_CP(i)] - (pr[MPM_CP(i)] + q[MPM_CP(i)]) * dvol[i];
+  if (trackF || (Str && !conservative))
+    for (PetscInt i = 0; i < n; i++) { /* F^{n+1}; the work of s^n */
+      const PetscInt p = MPM_CP(i);
+      if (trackF) {
+        PetscReal Fn[MPM_MAX_DIM * MPM_MAX_DIM];
+        for (PetscInt a = 0; a < d; a++)
+          for (PetscInt b = 0; b < d; b++) {
+            Fn[a * d + b] = F[p * d * d + a * d + b];
+            for (PetscInt k = 0; k < d; k++) Fn[a * d + b] += dt * L[p * d * d + a * d + k] * F[p * d * d + k * d + b];
+          }
+        for (PetscInt a = 0; a < d * d; a++) F[p * d * d + a] = Fn[a];
+        if (shape->ops.admissible && !shape->ops.admissible(shape->data, &mpm->grid, MPMPointDomain(d, F, pts->f[MPM_FIELD_DOMAINSCALE], p, Fn)) && (bad < 0 || p < bad)) bad = p;
+      }
+      if (Str && !conservative) {
+        PetscReal work = 0.0;
+        for (PetscInt a = 0; a < d * d; a++) work += S[p * d * d + a] * (Lsh ? Lsh : L)[p * d * d + a];
+        ws[i] = dt * work / rho[p];
+        e1[i] += ws[i];
+      }
+    }
+  if (!conservative && !midpoint) /* compatible: an expansion beyond the threshold follows the EOS isentrope (exact), not the linear work of p^n */
+    for (PetscInt i = 0; i < n; i++) {
+      const PetscInt p = MPM_CP(i);
+      if (dvol[i] * rho[p] > mpm->isentrope_threshold) {
+        const PetscReal delin = -pr[p] * dvol[i]; /* the linear update's pressure work, already in e1 */
+        e1[i] += MPMIsentropeWork(mpm, E, m[p], rho[p], e[p], rho1[i], delin) - delin;
+      }
+    }
+  if (Str) { /* s^{n+1}, eps_p; the plastic work sum m sigma_eq d eps_p / rho for the report's energy budget */
+    PetscReal *epsp = pts->f[MPM_FIELD_PLASTICSTRAIN], eps0[MPM_CHUNK];
+    for (PetscInt i = 0; i < n; i++) eps0[i] = epsp[MPM_CP(i)];
+    PetscCall(MPMStrengthStressBatch(Str, d, dt, n, idx, Lsh ? Lsh : L, F, rho1, T, S, epsp, cs2));
+    if (E->spall_spinodal) /* stretched past the EOS's spinodal the solid has fractured: no shear stress, no shear wave */
+      for (PetscInt i = 0; i < n; i++)
+        if (MPMEOSFractured(E, rho1[i])) {
+          for (PetscInt a = 0; a < d * d; a++) S[MPM_CP(i) * d * d + a] = 0.0;
+          cs2[i] = 0.0;
+        }
+    for (PetscInt i = 0; i < n; i++)
+      if (epsp[MPM_CP(i)] > eps0[i]) mpm->diag.plastic_work += m[MPM_CP(i)] * MPMVonMisesStress(d, &S[MPM_CP(i) * d * d]) * (epsp[MPM_CP(i)] - eps0[i]) / rho1[i];
+  }
+  if (midpoint) {
+    PetscCall(MPMEOSPressureBatch(E, n, rho1, e1, pn, c2, NULL));                                                             /* predictor */
+    for (PetscInt i = 0; i < n; i++) e1[i] = e[MPM_CP(i)] - (0.5 * (pr[MPM_CP(i)] + pn[i]) + q[MPM_CP(i)]) * dvol[i] + ws[i]; /* the corrector keeps the stress work */
+  }
+  PetscCall(MPMEOSPressureBatch(E, n, rho1, e1, pn, c2, &mpm->diag.spalled));
+  PetscCall(MPMEOSTemperatureBatch(E, n, rho1, e1, Tn));
+  if (ident)
+    MPMConstitutiveStore(n, pn, Tn, e1, rho1, c2, cs2, &m[c0], &pr[c0], &T[c0], &e[c0], &rho[c0], &V[c0], &c[c0]);
+  else
+    for (PetscInt i = 0; i < n; i++) {
+      const PetscInt p = idx[i];
+      pr[p]            = pn[i];
+      T[p]             = Tn[i];
+      e[p]             = e1[i];
+      rho[p]           = rho1[i];
+      V[p]             = m[p] / rho1[i];
+      c[p]             = PetscSqrtReal(PetscMax(c2[i], 0.0) + cs2[i]);
+    }
+  for (PetscInt i = 0; i < n; i++)
+    if (!(rho1[i] > 0.0 && isnormal(rho1[i]) && isfinite(e1[i]) && isfinite(pn[i]) && c2[i] >= 0.0 && !MPMEOSPastSpinodal(E, rho1[i], pn[i], c2[i])) && (bad < 0 || MPM_CP(i) < bad))
+      bad = MPM_CP(i); /* C99 classification, inline (PETSc's are library calls) */
+  *badp = bad;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+#undef MPM_CP
+
 /* Density from the deformation, rho^{n+1} = rho^n / det(I + dt L), and internal energy from the pressure and
    viscous work, de = -(pbar + q) d(1/rho). Compatible update (the full-cell rule's default): pbar = p^n, the pressure
    the internal force of this step used, so the work the grid receives is the work the points give up but for
@@ -32,11 +148,10 @@ static inline PetscReal MPMDetIPlusDtL(PetscInt d, PetscReal dt, const PetscReal
    (MPMSetFailure): the time loop stops and MPMSolve writes the last state. */
 PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
 {
-  const PetscInt  d        = mpm->grid.dim;
-  const PetscBool midpoint = (PetscBool)(mpm->energy_update == MPM_ENERGY_MIDPOINT), conservative = (PetscBool)(mpm->energy_update == MPM_ENERGY_CONSERVATIVE);
+  const PetscInt  d = mpm->grid.dim;
   MPMPoints       pts;
-  const PetscBool trackF = mpm->track_F, stress = mpm->has_stress;
-  MPMShape        shape = mpm->shape;
+  const PetscBool trackF = mpm->track_F;
+  MPMShape        shape  = mpm->shape;
   PetscInt        bad = -1, nbad, start[MPM_MAX_MATERIALS + 1] = {0};
   PetscReal      *Lsh = NULL; /* axisymmetric: L - L_tt I, what the strength models see */
 
@@ -67,76 +182,19 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
   }
   for (PetscInt im = 0, c0 = 0; im < mpm->nmat; im++, c0 = start[im])
     for (; c0 < start[im + 1]; c0 += MPM_CHUNK) { /* the material's points in chunks that stay in cache */
-      const MPMEOS      E   = mpm->mat[im].eos;
-      const MPMStrength Str = stress ? mpm->mat[im].strength : NULL;
-      const PetscInt    n = PetscMin(MPM_CHUNK, start[im + 1] - c0), *idx = &mpm->widx[c0];
-      PetscReal        *rho1 = mpm->work, *dvol = rho1 + n, *e1 = dvol + n, *c2 = e1 + n, *cs2 = c2 + n, *pn = cs2 + n, *Tn = pn + n, *ws = Tn + n;
-      const PetscReal  *L = pts.f[MPM_FIELD_GRADV], *m = pts.f[MPM_FIELD_MASS], *q = pts.f[MPM_FIELD_VISCOSITY];
-      PetscReal        *rho = pts.f[MPM_FIELD_DENSITY], *V = pts.f[MPM_FIELD_VOLUME], *e = pts.f[MPM_FIELD_ENERGY], *pr = pts.f[MPM_FIELD_PRESSURE];
-      PetscReal        *c = pts.f[MPM_FIELD_SOUNDSPEED], *T = pts.f[MPM_FIELD_TEMPERATURE], *F = pts.f[MPM_FIELD_DEFGRAD], *S = pts.f[MPM_FIELD_STRESS];
-
-      for (PetscInt i = 0; i < n; i++) { /* kinematics: rho^{n+1}, d(1/rho), F^{n+1}; e from the work of p^n + q (and s^n) */
-        const PetscInt  p = idx[i];
-        const PetscReal J = MPMDetIPlusDtL(d, dt, &L[p * d * d]) * (Lsh ? 1.0 + dt * pts.f[MPM_FIELD_HOOPRATE][p] : 1.0);
-        rho1[i]           = rho[p] / J;
-        dvol[i]           = 1.0 / rho1[i] - 1.0 / rho[p];
-        e1[i]             = conservative ? e[p] : e[p] - (pr[p] + q[p]) * dvol[i]; /* conservative: the gather added the work already */
-        cs2[i]            = 0.0;
-        ws[i]             = 0.0;
-        if (trackF) {
-          PetscReal Fn[MPM_MAX_DIM * MPM_MAX_DIM];
-          for (PetscInt a = 0; a < d; a++)
-            for (PetscInt b = 0; b < d; b++) {
-              Fn[a * d + b] = F[p * d * d + a * d + b];
-              for (PetscInt k = 0; k < d; k++) Fn[a * d + b] += dt * L[p * d * d + a * d + k] * F[p * d * d + k * d + b];
-            }
-          for (PetscInt a = 0; a < d * d; a++) F[p * d * d + a] = Fn[a];
-          if (shape->ops.admissible && !shape->ops.admissible(shape->data, &mpm->grid, MPMPointDomain(d, F, pts.f[MPM_FIELD_DOMAINSCALE], p, Fn)) && (bad < 0 || p < bad)) bad = p;
-        }
-        if (Str && !conservative) {
-          PetscReal work = 0.0;
-          for (PetscInt a = 0; a < d * d; a++) work += S[p * d * d + a] * (Lsh ? Lsh : L)[p * d * d + a];
-          ws[i] = dt * work / rho[p];
-          e1[i] += ws[i];
-        }
-      }
-      if (!conservative && !midpoint) /* compatible: an expansion beyond the threshold follows the EOS isentrope (exact), not the linear work of p^n */
-        for (PetscInt i = 0; i < n; i++) {
-          const PetscInt p = idx[i];
-          if (dvol[i] * rho[p] > mpm->isentrope_threshold) {
-            const PetscReal delin = -pr[p] * dvol[i]; /* the linear update's pressure work, already in e1 */
-            e1[i] += MPMIsentropeWork(mpm, E, m[p], rho[p], e[p], rho1[i], delin) - delin;
-          }
-        }
-      if (Str) { /* s^{n+1}, eps_p; the plastic work sum m sigma_eq d eps_p / rho for the report's energy budget */
-        PetscReal *epsp = pts.f[MPM_FIELD_PLASTICSTRAIN], eps0[MPM_CHUNK];
-        for (PetscInt i = 0; i < n; i++) eps0[i] = epsp[idx[i]];
-        PetscCall(MPMStrengthStressBatch(Str, d, dt, n, idx, Lsh ? Lsh : L, F, rho1, T, S, epsp, cs2));
-        if (E->spall_spinodal) /* stretched past the EOS's spinodal the solid has fractured: no shear stress, no shear wave */
-          for (PetscInt i = 0; i < n; i++)
-            if (MPMEOSFractured(E, rho1[i])) {
-              for (PetscInt a = 0; a < d * d; a++) S[idx[i] * d * d + a] = 0.0;
-              cs2[i] = 0.0;
-            }
-        for (PetscInt i = 0; i < n; i++)
-          if (epsp[idx[i]] > eps0[i]) mpm->diag.plastic_work += m[idx[i]] * MPMVonMisesStress(d, &S[idx[i] * d * d]) * (epsp[idx[i]] - eps0[i]) / rho1[i];
-      }
-      if (midpoint) {
-        PetscCall(MPMEOSPressureBatch(E, n, rho1, e1, pn, c2, NULL));                                                    /* predictor */
-        for (PetscInt i = 0; i < n; i++) e1[i] = e[idx[i]] - (0.5 * (pr[idx[i]] + pn[i]) + q[idx[i]]) * dvol[i] + ws[i]; /* the corrector keeps the stress work */
-      }
-      PetscCall(MPMEOSPressureBatch(E, n, rho1, e1, pn, c2, &mpm->diag.spalled));
-      PetscCall(MPMEOSTemperatureBatch(E, n, rho1, e1, Tn));
-      for (PetscInt i = 0; i < n; i++) {
-        const PetscInt p = idx[i];
-        pr[p]            = pn[i];
-        T[p]             = Tn[i];
-        e[p]             = e1[i];
-        rho[p]           = rho1[i];
-        V[p]             = m[p] / rho1[i];
-        c[p]             = PetscSqrtReal(PetscMax(c2[i], 0.0) + cs2[i]);
-        if (!(rho1[i] > 0.0 && isnormal(rho1[i]) && isfinite(e1[i]) && isfinite(pn[i]) && c2[i] >= 0.0 && !MPMEOSPastSpinodal(E, rho1[i], pn[i], c2[i])) && (bad < 0 || p < bad)) bad = p; /* C99 classification, inline (PETSc's are library calls) */
-      }
+      const PetscInt n = PetscMin(MPM_CHUNK, start[im + 1] - c0);
+      if (mpm->nmat == 1 && d == 1)
+        PetscCall(MPMConstitutiveChunk(mpm, &pts, im, c0, n, dt, Lsh, &bad, 1, PETSC_TRUE));
+      else if (mpm->nmat == 1 && d == 2)
+        PetscCall(MPMConstitutiveChunk(mpm, &pts, im, c0, n, dt, Lsh, &bad, 2, PETSC_TRUE));
+      else if (mpm->nmat == 1)
+        PetscCall(MPMConstitutiveChunk(mpm, &pts, im, c0, n, dt, Lsh, &bad, 3, PETSC_TRUE));
+      else if (d == 1)
+        PetscCall(MPMConstitutiveChunk(mpm, &pts, im, c0, n, dt, Lsh, &bad, 1, PETSC_FALSE));
+      else if (d == 2)
+        PetscCall(MPMConstitutiveChunk(mpm, &pts, im, c0, n, dt, Lsh, &bad, 2, PETSC_FALSE));
+      else
+        PetscCall(MPMConstitutiveChunk(mpm, &pts, im, c0, n, dt, Lsh, &bad, 3, PETSC_FALSE));
     }
   if (bad >= 0) {
     const PetscReal *rho = pts.f[MPM_FIELD_DENSITY], *e = pts.f[MPM_FIELD_ENERGY], *pr = pts.f[MPM_FIELD_PRESSURE], *c = pts.f[MPM_FIELD_SOUNDSPEED], *L = pts.f[MPM_FIELD_GRADV], *F = pts.f[MPM_FIELD_DEFGRAD];

@@ -81,12 +81,69 @@ static inline void MPMCellRuleAdd(MPM mpm, const PetscReal x[], PetscReal V, Pet
   }
 }
 
-/* Global (i, j, k) of the c-th extended cell. */
-static inline void MPMExtendedCellIndex(const MPMGrid *g, PetscInt c, PetscInt ijk[])
+/* The cell rule's sums of every point when each lends its whole volume to its own cell (-mpm_cell_volume full): the
+   operations of MPMCellRuleAdd with the one share f = 1 (the same numbers), d a constant where it is called. */
+MPM_TINLINE void MPMCellRuleAddFull(MPM mpm, PetscInt n, const PetscReal x[], const PetscReal V[], const PetscReal pr[], const PetscReal q[], const PetscInt d)
 {
-  ijk[0] = g->xcs[0] + c % g->xcm[0];
-  ijk[1] = g->xcs[1] + (c / g->xcm[0]) % g->xcm[1];
-  ijk[2] = g->xcs[2] + c / (g->xcm[0] * g->xcm[1]);
+  const MPMGrid *g  = &mpm->grid;
+  PetscReal     *xc = mpm->xcell;
+
+  for (PetscInt p = 0; p < n; p++) {
+    const PetscReal P = pr[p] + q[p];
+    PetscInt        c = 0;
+    for (PetscInt k = d - 1; k >= 0; k--) c = c * g->xcm[k] + MPMCellIndex(g, k, x[p * d + k]) - g->xcs[k];
+    xc[2 * c] += V[p];
+    xc[2 * c + 1] += V[p] * P;
+  }
+}
+
+/* The extended cells (MPMGrid::xcs, xcm) in their storage order, x fastest: c the flat index of cell ijk (global
+   indices; a body's continue still advances c). */
+#define MPM_FOR_EXTENDED_CELLS(g, ijk, c)                                                 \
+  for ((ijk)[2] = (g)->xcs[2], (c) = 0; (ijk)[2] < (g)->xcs[2] + (g)->xcm[2]; (ijk)[2]++) \
+    for ((ijk)[1] = (g)->xcs[1]; (ijk)[1] < (g)->xcs[1] + (g)->xcm[1]; (ijk)[1]++)        \
+      for ((ijk)[0] = (g)->xcs[0]; (ijk)[0] < (g)->xcs[0] + (g)->xcm[0]; (ijk)[0]++, (c)++)
+
+/* The cell rule's force f_I += V_c P_c grad N_I(x_c) on the nodes of every extended cell that holds material, with
+   the cell-averaged linear basis of MPMGridCellBasis written out for dimension d (a constant where it is called): a
+   cell's 2^d nodes lie in the grid (no folding, every sign 1), the basis gradients are +-1/h_k times 2^-(d-1), formed
+   and applied in MPMGridCellBasis's and MPMShapeTensor's order (the same numbers). */
+MPM_TINLINE void MPMCellRuleForce(MPM mpm, MPMNode *node, PetscBool full, const PetscInt d)
+{
+  const MPMGrid *g = &mpm->grid;
+  PetscReal      dw[MPM_MAX_DIM][2], DW[8][MPM_MAX_DIM];
+  PetscInt       off[8], ijk[3], c;
+
+  for (PetscInt k = 0; k < d; k++) {
+    dw[k][0] = -1.0 / g->h[k];
+    dw[k][1] = 1.0 / g->h[k];
+  }
+  for (PetscInt s = 0; s < (1 << d); s++) { /* corner s = (a, b, c), a fastest */
+    const PetscInt a = s & 1, b = (s >> 1) & 1, e = (s >> 2) & 1;
+    off[s] = (e * g->gm[1] + b) * g->gm[0] + a;
+    if (d == 1) DW[s][0] = dw[0][a];
+    if (d == 2) {
+      DW[s][0] = dw[0][a] * 0.5;
+      DW[s][1] = 0.5 * dw[1][b];
+    }
+    if (d == 3) {
+      DW[s][0] = dw[0][a] * 0.5 * 0.5;
+      DW[s][1] = 0.5 * dw[1][b] * 0.5;
+      DW[s][2] = 0.5 * 0.5 * dw[2][e];
+    }
+  }
+  MPM_FOR_EXTENDED_CELLS(g, ijk, c)
+  {
+    const PetscReal *vs = &mpm->xcell[2 * c];
+    PetscReal        c1, c2;
+    MPMNode         *nd;
+    if (vs[0] <= 0.0) continue;
+    c1 = full ? g->vcell : vs[1]; /* the force's factors, applied in this order */
+    c2 = full ? vs[1] / vs[0] : 1.0;
+    nd = &node[((ijk[2] - g->gs[2]) * g->gm[1] + ijk[1] - g->gs[1]) * g->gm[0] + ijk[0] - g->gs[0]];
+    for (PetscInt s = 0; s < (1 << d); s++)
+      for (PetscInt k = 0; k < d; k++) nd[off[s]].f[k] += c1 * c2 * DW[s][k];
+  }
 }
 
 /* The generic scatter's point loop (the reference the specialised kernels reproduce), with the dimension d a constant
@@ -142,7 +199,6 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
   const PetscInt  d        = g->dim;
   const PetscBool cellrule = (PetscBool)(force && mpm->stress_integration == MPM_STRESS_CELL);
   const PetscBool stress = (PetscBool)(force && mpm->has_stress), body = (PetscBool)(force && mpm->has_bodyforce);
-  MPMStencil      st;
   MPMPoints       pts;
   MPMNode        *node;
 
@@ -159,8 +215,14 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
     if (mpm->kern && !body) { /* the specialised kernel, then the cell sums of the cell rule */
       const MPMTransferArgs A = {.n = pts.n, .x = (PetscReal *)x, .v = (PetscReal *)v, .m = m, .V = V, .pr = pr, .q = q, .S = S, .F = mpm->track_F ? pts.f[MPM_FIELD_DEFGRAD] : NULL, .ds = mpm->shape->needs_F ? pts.f[MPM_FIELD_DOMAINSCALE] : NULL};
       mpm->kern->p2g[(force && !cellrule ? MPM_P2G_PRESSURE : 0) | (stress ? MPM_P2G_STRESS : 0)](g, mpm->shape->data, &A, node);
-      if (cellrule)
+      if (cellrule && mpm->cell_volume != MPM_CELL_VOLUME_FULL)
         for (PetscInt p = 0; p < pts.n; p++) MPMCellRuleAdd(mpm, &x[p * d], V[p], pr[p] + q[p]);
+      else if (cellrule && d == 1)
+        MPMCellRuleAddFull(mpm, pts.n, x, V, pr, q, 1);
+      else if (cellrule && d == 2)
+        MPMCellRuleAddFull(mpm, pts.n, x, V, pr, q, 2);
+      else if (cellrule)
+        MPMCellRuleAddFull(mpm, pts.n, x, V, pr, q, 3);
     } else if (d == 3)
       MPMScatterGeneric(mpm, &pts, node, tn, force, cellrule, stress, body, 3);
     else if (d == 2)
@@ -171,18 +233,12 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   if (cellrule) { /* f_I += V_c P_c grad N_I(x_c): full, h^d times the cell's mean P; points, the shares' sum (V P)_c, linear in them, so a rank adds its own */
     const PetscBool full = (PetscBool)(mpm->cell_volume == MPM_CELL_VOLUME_FULL);
-    for (PetscInt c = 0; c < g->nxcells; c++) {
-      PetscInt         ijk[3];
-      PetscReal        c1, c2;
-      const PetscReal *vs = &mpm->xcell[2 * c];
-      if (vs[0] <= 0.0) continue;
-      c1 = full ? g->vcell : vs[1]; /* the force's factors, applied in this order */
-      c2 = full ? vs[1] / vs[0] : 1.0;
-      MPMExtendedCellIndex(g, c, ijk);
-      MPMGridCellBasis(g, ijk, &st);
-      for (PetscInt a = 0; a < st.n; a++)
-        for (PetscInt k = 0; k < d; k++) node[st.node[a]].f[k] += st.s[a][k] * c1 * c2 * st.dw[a][k];
-    }
+    if (d == 1)
+      MPMCellRuleForce(mpm, node, full, 1);
+    else if (d == 2)
+      MPMCellRuleForce(mpm, node, full, 2);
+    else
+      MPMCellRuleForce(mpm, node, full, 3);
   }
   PetscCall(VecRestoreArray(mpm->lnodes, (PetscScalar **)&node));
   PetscCall(MPMGridLocalToGlobal(mpm));
@@ -316,11 +372,11 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
     if (cellwork) { /* each cell's work per unit P V (full: (h^d / V_c) div vbar_c, every point of the cell alike; points: div vbar_c), then each point's share, sum_c f_pc of it */
       const PetscBool full = (PetscBool)(mpm->cell_volume == MPM_CELL_VOLUME_FULL);
       PetscCall(PetscMalloc1(pts.n + 1, &pointwork));
-      for (PetscInt c = 0; c < g->nxcells; c++) {
-        PetscInt  ijk[3];
+      PetscInt ijk[3], c;
+      MPM_FOR_EXTENDED_CELLS(g, ijk, c)
+      {
         PetscReal div = 0.0;
         if (mpm->xcell[2 * c] <= 0.0) continue;
-        MPMExtendedCellIndex(g, c, ijk);
         MPMGridCellBasis(g, ijk, &st);
         for (PetscInt a = 0; a < st.n; a++)
           for (PetscInt k = 0; k < d; k++) div += st.s[a][k] * (node[st.node[a]].p[k] + node[st.node[a]].v0[k]) * st.dw[a][k]; /* v^{n+1/2} + v^{n-1/2} */
