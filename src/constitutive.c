@@ -14,19 +14,24 @@ static inline PetscReal MPMDetIPlusDtL(PetscInt d, PetscReal dt, const PetscReal
   }
 }
 
-/* The new state of a chunk of points that lie contiguously (one material): p, T, e, rho, V = m / rho and the wave speed
-   c = sqrt(max(c_EOS^2, 0) + c_s^2), the work arrays and the fields distinct (restrict: the loop vectorizes). */
+/* The new state of point p from entry i of the chunk's work arrays: p, T, e, rho, V = m / rho and the wave speed
+   c = sqrt(max(c_EOS^2, 0) + c_s^2). */
+#define MPM_CONSTITUTIVE_STORE(i, p)                       \
+  do {                                                     \
+    pr[p]  = pn[i];                                        \
+    T[p]   = Tn[i];                                        \
+    e[p]   = e1[i];                                        \
+    rho[p] = rho1[i];                                      \
+    V[p]   = m[p] / rho1[i];                               \
+    c[p]   = PetscSqrtReal(PetscMax(c2[i], 0.0) + cs2[i]); \
+  } while (0)
+
+/* The stores of a chunk of points that lie contiguously (one material), the work arrays and the fields distinct
+   (restrict: the loop vectorizes). */
 static inline void MPMConstitutiveStore(PetscInt n, const PetscReal *restrict pn, const PetscReal *restrict Tn, const PetscReal *restrict e1, const PetscReal *restrict rho1, const PetscReal *restrict c2, const PetscReal *restrict cs2,
                                         const PetscReal *restrict m, PetscReal *restrict pr, PetscReal *restrict T, PetscReal *restrict e, PetscReal *restrict rho, PetscReal *restrict V, PetscReal *restrict c)
 {
-  for (PetscInt i = 0; i < n; i++) {
-    pr[i]  = pn[i];
-    T[i]   = Tn[i];
-    e[i]   = e1[i];
-    rho[i] = rho1[i];
-    V[i]   = m[i] / rho1[i];
-    c[i]   = PetscSqrtReal(PetscMax(c2[i], 0.0) + cs2[i]);
-  }
+  for (PetscInt i = 0; i < n; i++) MPM_CONSTITUTIVE_STORE(i, i);
 }
 
 /* The update of one chunk of material im's points (c0 .. c0 + n of its index list), with the dimension d and ident (one
@@ -113,15 +118,7 @@ static inline __attribute__((always_inline)) PetscErrorCode MPMConstitutiveChunk
   if (ident)
     MPMConstitutiveStore(n, pn, Tn, e1, rho1, c2, cs2, &m[c0], &pr[c0], &T[c0], &e[c0], &rho[c0], &V[c0], &c[c0]);
   else
-    for (PetscInt i = 0; i < n; i++) {
-      const PetscInt p = idx[i];
-      pr[p]            = pn[i];
-      T[p]             = Tn[i];
-      e[p]             = e1[i];
-      rho[p]           = rho1[i];
-      V[p]             = m[p] / rho1[i];
-      c[p]             = PetscSqrtReal(PetscMax(c2[i], 0.0) + cs2[i]);
-    }
+    for (PetscInt i = 0; i < n; i++) MPM_CONSTITUTIVE_STORE(i, idx[i]);
   for (PetscInt i = 0; i < n; i++)
     if (!(rho1[i] > 0.0 && isnormal(rho1[i]) && isfinite(e1[i]) && isfinite(pn[i]) && c2[i] >= 0.0 && !MPMEOSPastSpinodal(E, rho1[i], pn[i], c2[i])) && (bad < 0 || MPM_CP(i) < bad))
       bad = MPM_CP(i); /* C99 classification, inline (PETSc's are library calls) */
