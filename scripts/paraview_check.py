@@ -1,0 +1,110 @@
+#!/usr/bin/env pvpython
+# SPDX-License-Identifier: BSD-2-Clause
+"""Opens a petmpm output folder's XDMF in ParaView (pvpython or pvbatch; Debian: apt-get install paraview
+python3-paraview) and checks that ParaView reads what petmpm wrote (issue 18 item 7):
+
+  - the temporal collections `points` and `grid` with one time per row of /time;
+  - at every time, the points block has particle_count points, and every point array ParaView shows (scalars, and the
+    vector and tensor components, position_x, stress_xy, ...) equals the HDF5 dataset row it names, `id` as an integer;
+  - the grid block is the DMDA's node lattice (cells + 1 per direction) and its arrays equal /grid/nodes (the nodal
+    mass, then the velocity components).
+
+usage: pvpython scripts/paraview_check.py DIR
+
+Prints one line per check and exits non-zero if any fails (or 77, the skip code, where ParaView cannot be imported).
+It reads the data through ParaView's own XDMF reader; it renders nothing (that needs a display with OpenGL 3.2)."""
+import os
+import sys
+
+import h5py
+import numpy as np
+
+try:
+    from paraview import servermanager as sm
+    from paraview.simple import XDMFReader
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+except ImportError:
+    print("SKIPPED: ParaView's Python modules are not installed (Debian: apt-get install paraview python3-paraview)")
+    sys.exit(77)
+
+COMP = "xyz"
+
+
+def hdf5_column(h5, name, row, count):
+    """The HDF5 values a ParaView array named `name` shows at output row `row`: a field, or one component of a vector
+    (name_x) or a tensor (name_xy) field."""
+    pf = h5["particle_fields"]
+    if name in pf:  # a scalar, or a vector or tensor typed as such (3D): its components per point
+        a = np.asarray(pf[name][row])
+        return a.reshape(a.shape[0], -1)[:count].squeeze(axis=1) if a.ndim > 1 and a.reshape(a.shape[0], -1).shape[1] == 1 else (a.reshape(a.shape[0], -1)[:count] if a.ndim > 1 else a[:count])
+    base, comp = name.rsplit("_", 1)
+    a = np.asarray(pf[base][row])
+    if len(comp) == 1:
+        return a.reshape(a.shape[0], -1)[:count, COMP.index(comp)]
+    d = int(round(np.sqrt(a.reshape(a.shape[0], -1).shape[1])))
+    return a.reshape(a.shape[0], d, d)[:count, COMP.index(comp[0]), COMP.index(comp[1])]
+
+
+def main():
+    args = sys.argv[1:]
+    if not args:
+        print(__doc__)
+        return 2
+    out, fails = args[0], 0
+
+    def check(ok, what):
+        nonlocal fails
+        fails += not ok
+        print(("PASSED " if ok else "FAILED ") + what)
+
+    h5 = h5py.File(os.path.join(out, "petmpm.h5"), "r")
+    times, counts = np.asarray(h5["time"]).reshape(-1), np.asarray(h5["particle_count"]).reshape(-1)
+    reader = XDMFReader(FileNames=[os.path.join(out, "petmpm.xmf")])
+    reader.UpdatePipelineInformation()
+    tv = list(reader.TimestepValues) if len(times) > 1 else [float(times[0])]
+    check(len(tv) == len(times) and np.allclose(tv, times, rtol=0, atol=0), f"{len(tv)} times in ParaView, {len(times)} rows of /time")
+    worst, narrays, ngrid = 0.0, 0, 0
+    for s, t in enumerate(tv):
+        reader.UpdatePipeline(t)
+        data = sm.Fetch(reader)
+        blocks = {data.GetMetaData(b).Get(data.NAME()): data.GetBlock(b) for b in range(data.GetNumberOfBlocks())}
+        pts = blocks.get("points")
+        if pts is None or pts.GetNumberOfPoints() != counts[s]:
+            check(False, f"t = {t:g}: the points block holds {pts.GetNumberOfPoints() if pts else None} points, /particle_count {counts[s]}")
+            continue
+        pd = pts.GetPointData()
+        for i in range(pd.GetNumberOfArrays()):
+            arr = pd.GetArray(i)
+            name, vals = arr.GetName(), vtk_to_numpy(arr)
+            ref = hdf5_column(h5, name, s, int(counts[s]))
+            if name == "id" and s == 0:
+                check(arr.GetDataTypeAsString() in ("long", "long long", "int", "idtype"), f"id is an integer array in ParaView ({arr.GetDataTypeAsString()})")
+            worst = max(worst, float(np.max(np.abs(vals - ref))) if vals.size else 0.0)
+            narrays += 1
+        xyz = vtk_to_numpy(pts.GetPoints().GetData())
+        worst = max(worst, float(np.max(np.abs(xyz - np.asarray(h5["particle_fields"]["xyz"][s]).reshape(-1, 3)[: int(counts[s])]))))
+        grid = blocks.get("grid")
+        if grid is not None and "grid" in h5:  # /grid/nodes: (times, nz, ny, nx, 1 + d): the nodal mass, then the velocity
+            nodes = np.asarray(h5["grid"]["nodes"][s])
+            nodes = nodes.reshape(-1, nodes.shape[-1])
+            for i in range(grid.GetPointData().GetNumberOfArrays()):
+                arr = grid.GetPointData().GetArray(i)
+                name = arr.GetName()
+                if name == "mass":
+                    ref = nodes[:, 0]
+                elif name == "velocity":  # 1D: one component; 3D: typed as a vector
+                    ref = nodes[:, 1:] if arr.GetNumberOfComponents() > 1 else nodes[:, 1]
+                else:
+                    ref = nodes[:, 1 + COMP.index(name.rsplit("_", 1)[1])]
+                worst = max(worst, float(np.max(np.abs(vtk_to_numpy(arr) - ref))))
+                ngrid += 1
+    check(worst == 0.0, f"{narrays} point arrays and {ngrid} grid arrays over {len(tv)} times equal the HDF5 datasets (largest difference {worst:g})")
+    if "grid" in h5:
+        shape = list(h5["grid"]["nodes"].shape[1:-1])[::-1]  # nodes per direction, x first
+        dims = list(blocks["grid"].GetDimensions()) if "grid" in blocks else None
+        check(dims is not None and dims[: len(shape)] == shape and ngrid > 0, f"the grid block is the node lattice {dims} of /grid/nodes")
+    return 1 if fails else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
