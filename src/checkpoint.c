@@ -26,7 +26,7 @@
 #include <unistd.h>
 
 #define MPM_CKPT_NSTATE 28
-#define MPM_CKPT_OUTFLOW 26 /* the outflow tallies' place in the diagnostics, after the counters of MPMCkptDiag */
+#define MPM_CKPT_OUTFLOW 28 /* the outflow tallies' place in the diagnostics, after the counters of MPMCkptDiag */
 #define MPM_CKPT_NDIAG (MPM_CKPT_OUTFLOW + MPM_OUTFLOW_N)
 
 /* A 1D dataset of N doubles of which this rank writes n at offset. */
@@ -80,7 +80,7 @@ static void MPMCkptDiag(MPMDiagnostics *dg, PetscReal a[], PetscBool store)
   const PetscInt nv = 7, nw = (PetscInt)(sizeof(w) / sizeof(w[0]));
   PetscReal     *t = &a[MPM_CKPT_OUTFLOW];
 
-  _Static_assert(7 + sizeof(w) / sizeof(w[0]) <= MPM_CKPT_OUTFLOW, "MPMCkptDiag: the counters run into the outflow tallies");
+  _Static_assert(7 + sizeof(w) / sizeof(w[0]) + 2 <= MPM_CKPT_OUTFLOW, "MPMCkptDiag: the counters run into the outflow tallies");
   for (PetscInt i = 0; i < nv; i++) {
     if (store)
       a[i] = *v[i];
@@ -92,6 +92,13 @@ static void MPMCkptDiag(MPMDiagnostics *dg, PetscReal a[], PetscBool store)
       a[nv + i] = (PetscReal)*w[i];
     else
       *w[i] = (PetscInt)a[nv + i];
+  }
+  if (store) { /* the volume fill (global), after the counters */
+    a[nv + nw]     = dg->volume_fill_worst;
+    a[nv + nw + 1] = (PetscReal)dg->first_overlap_step;
+  } else {
+    dg->volume_fill_worst  = a[nv + nw];
+    dg->first_overlap_step = (PetscInt)a[nv + nw + 1];
   }
   for (PetscInt i = 0; i < MPM_OUTFLOW_N; i++) {
     if (store)

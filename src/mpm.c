@@ -25,37 +25,40 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   PetscFunctionBegin;
   PetscCall(MPMInitializePackage());
   PetscCall(PetscNew(&m));
-  m->comm                   = comm;
-  m->grid.dim               = 1;
-  m->ppc                    = 1;
-  m->cfl                    = 0.5;
-  m->dtmin                  = 0.0;
-  m->dvol_max               = 0.2;
-  m->accel_cfl              = 0.5;
-  m->isentrope_threshold    = 0.25;
-  m->vacuum_density         = 1e-3;
-  m->diag.first_vacuum_step = -1;
-  m->diag.first_popped_time = -1.0;
-  m->progress               = 10.0;
-  m->balance                = PETSC_TRUE;
-  m->balance_threshold      = 1.2;
-  m->balance_interval       = 50;
-  m->diag.first_empty_step  = -1;
-  m->diag.empty_cells0      = -1;
-  m->output_interval        = 0;
-  m->scheme                 = MPM_SCHEME_USL;
-  m->stress_integration     = MPM_STRESS_POINT;
-  m->energy_update          = MPM_ENERGY_COMPATIBLE; /* with the cell rule; point integration sets conservative */
-  m->cell_volume            = MPM_CELL_VOLUME_POINTS;
-  m->ke_fix                 = PETSC_TRUE;
-  m->update                 = MPM_UPDATE_BLEND;
-  m->alpha                  = 0.99;
-  m->split                  = PETSC_TRUE;
-  m->conduction             = 2.0;
-  m->pressure_relax         = 0.25;
-  m->rest_time              = -1.0;
-  m->pressure_relax_mach    = 0.005;
-  m->domain_skew            = 0.5;
+  m->comm                    = comm;
+  m->grid.dim                = 1;
+  m->ppc                     = 1;
+  m->cfl                     = 0.5;
+  m->dtmin                   = 0.0;
+  m->dvol_max                = 0.2;
+  m->accel_cfl               = 0.5;
+  m->isentrope_threshold     = 0.25;
+  m->vacuum_density          = 1e-3;
+  m->diag.first_vacuum_step  = -1;
+  m->diag.first_overlap_step = -1;
+  m->diag.volume_fill        = 1.0;
+  m->diag.volume_fill_worst  = 1.0;
+  m->diag.first_popped_time  = -1.0;
+  m->progress                = 10.0;
+  m->balance                 = PETSC_TRUE;
+  m->balance_threshold       = 1.2;
+  m->balance_interval        = 50;
+  m->diag.first_empty_step   = -1;
+  m->diag.empty_cells0       = -1;
+  m->output_interval         = 0;
+  m->scheme                  = MPM_SCHEME_USL;
+  m->stress_integration      = MPM_STRESS_POINT;
+  m->energy_update           = MPM_ENERGY_COMPATIBLE; /* with the cell rule; point integration sets conservative */
+  m->cell_volume             = MPM_CELL_VOLUME_POINTS;
+  m->ke_fix                  = PETSC_TRUE;
+  m->update                  = MPM_UPDATE_BLEND;
+  m->alpha                   = 0.99;
+  m->split                   = PETSC_TRUE;
+  m->conduction              = 2.0;
+  m->pressure_relax          = 0.25;
+  m->rest_time               = -1.0;
+  m->pressure_relax_mach     = 0.005;
+  m->domain_skew             = 0.5;
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
     m->grid.cells[k] = 1;
     m->grid.lo[k]    = 0.0;
@@ -199,8 +202,8 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
     PetscCheck(!dir, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_report %s is a directory; valid is a file name (DIR/report.json)", mpm->report);
   }
   PetscCall(PetscOptionsBool("-mpm_view", "Print the configuration of the run", "", mpm->view, &mpm->view, NULL));
-  PetscCall(
-    PetscOptionsBool("-mpm_balance", "Set the grid's ownership ranges from the points (each rank column along each axis an equal share), at set-up and whenever the imbalance exceeds -mpm_balance_threshold (false: PETSc's partition)", "", mpm->balance, &mpm->balance, NULL));
+  PetscCall(PetscOptionsBool("-mpm_balance", "Set the grid's ownership ranges from the points (each rank column along each axis an equal share), at set-up and whenever the imbalance exceeds -mpm_balance_threshold (false: PETSc's partition)", "",
+                             mpm->balance, &mpm->balance, NULL));
   if (mpm->balance) {
     PetscCall(PetscOptionsReal("-mpm_balance_threshold", "Rebalance when the most points on a rank exceed this multiple of the mean [-], >= 1", "", mpm->balance_threshold, &mpm->balance_threshold, NULL));
     PetscCall(MPMOptionsCheckRange("-mpm_balance_threshold", mpm->balance_threshold, 1.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));

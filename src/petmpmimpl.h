@@ -54,7 +54,8 @@ typedef struct {
   PetscReal *f[MPM_MAX_FIELDS]; /* NULL for a field the scene does not carry */
 } MPMPoints;
 
-#define MPM_CHUNK 256 /* points per batch of the constitutive update */
+#define MPM_VOLUME_FILL_TOL 0.05 /* the points' volumes may fill their interior cells to within this fraction */
+#define MPM_CHUNK 256            /* points per batch of the constitutive update */
 #define MPM_MAX_CHECKS 64
 #define MPM_MAX_OUTPUT_TIMES 64
 
@@ -114,6 +115,8 @@ typedef struct {
   PetscInt  empty_cells_max;             /* most cells emptied inside the material at one step                         */
   PetscInt  empty_cells0;                /* such cells in the initial state (gaps between bodies), -1 before the first count */
   PetscInt  first_vacuum_step, first_empty_step;
+  PetscReal volume_fill, volume_fill_worst;                 /* the points' volumes over their interior cells' volume, last and farthest from 1 (global; MPMDiagnoseVacuum) */
+  PetscInt  first_overlap_step;                             /* the first diagnosis whose fill was off 1 by more than MPM_VOLUME_FILL_TOL (-1: none) */
   PetscInt  points_split;                                   /* points this rank split (each split adds one point)                       */
   PetscInt  split_refused;                                  /* point-steps that called for a split the level limit refused (this rank) */
   PetscInt  wall_reflections;                               /* points this rank put back across a wall (MPMMigrate)              */
