@@ -6,7 +6,12 @@
    the first time either appears the run says so, and the report gives the largest counts and when they first
    appeared. Empty cells the initial state has (gaps between bodies) are the baseline, not holes. Where the shape
    functions spread a point over its deformed domain (CPDI), a cell counts as occupied when a point's domain, the
-   box of half-widths sum_k |F_ik s_k| h_k / (2 ppc), overlaps it: a domain that covers a cell leaves no hole there. Holes are found among each rank's owned cells (a hole across a rank boundary is not counted). */
+   box of half-widths sum_k |F_ik s_k| h_k / (2 ppc), overlaps it: a domain that covers a cell leaves no hole there. Holes are found among each rank's owned cells (a hole across a rank boundary is not counted).
+   Volume consistency: over the interior cells (occupied, and so are the 3^d - 1 around them), the volumes of the
+   points centred in them against the cells' volume. A point's volume follows its own velocity gradient, and nothing
+   else ties the points' volumes to the space they fill; where they drift (point integration at one point per cell
+   with a shock across a density jump, a split near-vacuum interior) the sum leaves 1, and past MPM_VOLUME_FILL_TOL
+   the run says so once (robustness.volume_fill in the report). */
 #include "petmpmimpl.h"
 
 PetscErrorCode MPMDiagnoseVacuum(MPM mpm, PetscInt *nvacuum, PetscInt *nempty)
