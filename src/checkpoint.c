@@ -94,10 +94,10 @@ static void MPMCkptDiag(MPMDiagnostics *dg, PetscReal a[], PetscBool store)
       *w[i] = (PetscInt)a[nv + i];
   }
   if (store) { /* the volume fill (global), after the counters */
-    a[nv + nw]     = dg->volume_fill_worst;
+    a[nv + nw]     = dg->volume_fill_max;
     a[nv + nw + 1] = (PetscReal)dg->first_overlap_step;
   } else {
-    dg->volume_fill_worst  = a[nv + nw];
+    dg->volume_fill_max  = a[nv + nw];
     dg->first_overlap_step = (PetscInt)a[nv + nw + 1];
   }
   for (PetscInt i = 0; i < MPM_OUTFLOW_N; i++) {

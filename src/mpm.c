@@ -37,7 +37,7 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   m->diag.first_vacuum_step  = -1;
   m->diag.first_overlap_step = -1;
   m->diag.volume_fill        = 1.0;
-  m->diag.volume_fill_worst  = 1.0;
+  m->diag.volume_fill_max    = 0.0;
   m->diag.first_popped_time  = -1.0;
   m->progress                = 10.0;
   m->balance                 = PETSC_TRUE;

@@ -115,8 +115,8 @@ typedef struct {
   PetscInt  empty_cells_max;             /* most cells emptied inside the material at one step                         */
   PetscInt  empty_cells0;                /* such cells in the initial state (gaps between bodies), -1 before the first count */
   PetscInt  first_vacuum_step, first_empty_step;
-  PetscReal volume_fill, volume_fill_worst;                 /* the points' volumes over their interior cells' volume, last and farthest from 1 (global; MPMDiagnoseVacuum) */
-  PetscInt  first_overlap_step;                             /* the first diagnosis whose fill was off 1 by more than MPM_VOLUME_FILL_TOL (-1: none) */
+  PetscReal volume_fill, volume_fill_max;                   /* the points' volumes over their interior cells' volume, last and largest (global; MPMDiagnoseVacuum) */
+  PetscInt  first_overlap_step;                             /* the first diagnosis whose fill exceeded 1 + MPM_VOLUME_FILL_TOL (-1: none) */
   PetscInt  points_split;                                   /* points this rank split (each split adds one point)                       */
   PetscInt  split_refused;                                  /* point-steps that called for a split the level limit refused (this rank) */
   PetscInt  wall_reflections;                               /* points this rank put back across a wall (MPMMigrate)              */

@@ -547,8 +547,8 @@ PetscErrorCode MPMWriteReport(MPM mpm)
                           "  warning: resolution lost: up to %" PetscInt_FMT " points below the vacuum density (first at step %" PetscInt_FMT "), up to %" PetscInt_FMT " cells emptied inside the material (first at step %" PetscInt_FMT ")\n",
                           mpm->diag.vacuum_points_max, mpm->diag.first_vacuum_step, mpm->diag.empty_cells_max, mpm->diag.first_empty_step));
   if (mpm->diag.first_overlap_step >= 0)
-    PetscCall(PetscPrintf(mpm->comm, "  warning: the points' volumes filled %.3f of their interior cells (first off by more than %g at step %" PetscInt_FMT "; %.3f at the end): their domains %s\n", (double)mpm->diag.volume_fill_worst,
-                          (double)MPM_VOLUME_FILL_TOL, mpm->diag.first_overlap_step, (double)mpm->diag.volume_fill, mpm->diag.volume_fill_worst > 1.0 ? "overlapped" : "left gaps"));
+    PetscCall(PetscPrintf(mpm->comm, "  warning: the points' volumes filled up to %.3f of their interior cells (above 1 + %g from step %" PetscInt_FMT "; %.3f at the end): their domains overlapped\n", (double)mpm->diag.volume_fill_max,
+                          (double)MPM_VOLUME_FILL_TOL, mpm->diag.first_overlap_step, (double)mpm->diag.volume_fill));
   if (mpm->exact) {
     for (PetscInt q = 0; q < MPMNumErrors(mpm); q++) PetscCall(PetscPrintf(mpm->comm, "  %-12s error: L1 %.4e  L2 %.4e  Linf %.4e\n", MPMErrorNames[q], (double)err[q][0], (double)err[q][1], (double)err[q][2]));
     for (PetscInt c = 0; c < mpm->nchecks; c++)
@@ -598,9 +598,9 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     fprintf(fp,
             "}, \"vacuum_points\": %" PetscInt_FMT ", \"vacuum_points_max\": %" PetscInt_FMT ", \"first_vacuum_step\": %" PetscInt_FMT ", \"empty_cells\": %" PetscInt_FMT ", \"empty_cells_max\": %" PetscInt_FMT
             ", \"first_empty_step\": %" PetscInt_FMT
-            ", \"points_split\": %.0f, \"split_refused\": %.0f, \"wall_reflections\": %.0f, \"domain_resets\": %.0f, \"spalled\": %.0f, \"volume_fill\": %.6f, \"volume_fill_worst\": %.6f, \"first_overlap_step\": %" PetscInt_FMT "}",
+            ", \"points_split\": %.0f, \"split_refused\": %.0f, \"wall_reflections\": %.0f, \"domain_resets\": %.0f, \"spalled\": %.0f, \"volume_fill\": %.6f, \"volume_fill_max\": %.6f, \"first_overlap_step\": %" PetscInt_FMT "}",
             nvac, mpm->diag.vacuum_points_max, mpm->diag.first_vacuum_step, nempty, mpm->diag.empty_cells_max, mpm->diag.first_empty_step, (double)nsplit, (double)nrefuse, (double)nreflect, (double)nreset, (double)nspall,
-            (double)mpm->diag.volume_fill, (double)mpm->diag.volume_fill_worst, mpm->diag.first_overlap_step);
+            (double)mpm->diag.volume_fill, (double)mpm->diag.volume_fill_max, mpm->diag.first_overlap_step);
     if (outflow) fprintf(fp, ",\n  \"outflow\": {\"points\": %.0f, \"mass\": %.6e, \"energy\": %.6e}", (double)out[0], (double)out[1], (double)out[2]);
     fprintf(fp, ",\n  \"min_density\": %.10g,\n  \"nonfinite\": %" PetscInt_FMT ",\n  \"checks\": [", (double)rhomin, nonfinite);
     for (PetscInt c = 0; c < mpm->nchecks; c++)
