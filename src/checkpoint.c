@@ -97,7 +97,7 @@ static void MPMCkptDiag(MPMDiagnostics *dg, PetscReal a[], PetscBool store)
     a[nv + nw]     = dg->volume_fill_max;
     a[nv + nw + 1] = (PetscReal)dg->first_overlap_step;
   } else {
-    dg->volume_fill_max  = a[nv + nw];
+    dg->volume_fill_max    = a[nv + nw];
     dg->first_overlap_step = (PetscInt)a[nv + nw + 1];
   }
   for (PetscInt i = 0; i < MPM_OUTFLOW_N; i++) {

@@ -47,7 +47,7 @@ typedef struct {
 } MPMObjectOps;
 typedef struct {
   MPM_CLASS_HEADER(MPMObjectOps);
-} *MPMObject;
+} * MPMObject;
 
 PETSC_INTERN PetscErrorCode MPMObjectCreate(MPI_Comm, const MPMClass *, size_t, void *);
 PETSC_INTERN PetscErrorCode MPMObjectSetType(void *, const char[]);

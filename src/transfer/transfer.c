@@ -104,21 +104,19 @@ MPM_TINLINE void MPMCellRuleAddFull(MPM mpm, PetscInt n, const PetscReal x[], co
     for ((ijk)[1] = (g)->xcs[1]; (ijk)[1] < (g)->xcs[1] + (g)->xcm[1]; (ijk)[1]++)        \
       for ((ijk)[0] = (g)->xcs[0]; (ijk)[0] < (g)->xcs[0] + (g)->xcm[0]; (ijk)[0]++, (c)++)
 
-/* The cell rule's force f_I += V_c P_c grad N_I(x_c) on the nodes of every extended cell that holds material, with
-   the cell-averaged linear basis of MPMGridCellBasis written out for dimension d (a constant where it is called): a
-   cell's 2^d nodes lie in the grid (no folding, every sign 1), the basis gradients are +-1/h_k times 2^-(d-1), formed
-   and applied in MPMGridCellBasis's and MPMShapeTensor's order (the same numbers). */
-MPM_TINLINE void MPMCellRuleForce(MPM mpm, MPMNode *node, PetscBool full, const PetscInt d)
+/* The cell-averaged linear basis of MPMGridCellBasis written out for the extended cells: a cell's 2^d nodes lie in the
+   grid (no folding, every sign 1); corner s (a, b, e, a fastest) sits off[s] nodes after the cell's first node
+   (MPMCellFirstNode) with gradient DW[s] = +-1/h_k times 2^-(d-1), formed in MPMGridCellBasis's and MPMShapeTensor's
+   order (the same numbers). Returns the number of corners. */
+static inline PetscInt MPMCellBasisTable(const MPMGrid *g, PetscInt d, PetscInt off[8], PetscReal DW[8][MPM_MAX_DIM])
 {
-  const MPMGrid *g = &mpm->grid;
-  PetscReal      dw[MPM_MAX_DIM][2], DW[8][MPM_MAX_DIM];
-  PetscInt       off[8], ijk[3], c;
+  PetscReal dw[MPM_MAX_DIM][2];
 
   for (PetscInt k = 0; k < d; k++) {
     dw[k][0] = -1.0 / g->h[k];
     dw[k][1] = 1.0 / g->h[k];
   }
-  for (PetscInt s = 0; s < (1 << d); s++) { /* corner s = (a, b, c), a fastest */
+  for (PetscInt s = 0; s < (1 << d); s++) {
     const PetscInt a = s & 1, b = (s >> 1) & 1, e = (s >> 2) & 1;
     off[s] = (e * g->gm[1] + b) * g->gm[0] + a;
     if (d == 1) DW[s][0] = dw[0][a];
@@ -132,6 +130,24 @@ MPM_TINLINE void MPMCellRuleForce(MPM mpm, MPMNode *node, PetscBool full, const 
       DW[s][2] = 0.5 * 0.5 * dw[2][e];
     }
   }
+  return 1 << d;
+}
+
+/* The local (ghosted) index of the first node of the global cell ijk. */
+static inline PetscInt MPMCellFirstNode(const MPMGrid *g, const PetscInt ijk[])
+{
+  return ((ijk[2] - g->gs[2]) * g->gm[1] + ijk[1] - g->gs[1]) * g->gm[0] + ijk[0] - g->gs[0];
+}
+
+/* The cell rule's force f_I += V_c P_c grad N_I(x_c) on the nodes of every extended cell that holds material (d a
+   constant where it is called). */
+MPM_TINLINE void MPMCellRuleForce(MPM mpm, MPMNode *node, PetscBool full, const PetscInt d)
+{
+  const MPMGrid *g = &mpm->grid;
+  PetscReal      DW[8][MPM_MAX_DIM];
+  PetscInt       off[8], ijk[3], c;
+  const PetscInt ns = MPMCellBasisTable(g, d, off, DW);
+
   MPM_FOR_EXTENDED_CELLS(g, ijk, c)
   {
     const PetscReal *vs = &mpm->xcell[2 * c];
@@ -140,8 +156,8 @@ MPM_TINLINE void MPMCellRuleForce(MPM mpm, MPMNode *node, PetscBool full, const 
     if (vs[0] <= 0.0) continue;
     c1 = full ? g->vcell : vs[1]; /* the force's factors, applied in this order */
     c2 = full ? vs[1] / vs[0] : 1.0;
-    nd = &node[((ijk[2] - g->gs[2]) * g->gm[1] + ijk[1] - g->gs[1]) * g->gm[0] + ijk[0] - g->gs[0]];
-    for (PetscInt s = 0; s < (1 << d); s++)
+    nd = &node[MPMCellFirstNode(g, ijk)];
+    for (PetscInt s = 0; s < ns; s++)
       for (PetscInt k = 0; k < d; k++) nd[off[s]].f[k] += c1 * c2 * DW[s][k];
   }
 }
@@ -352,7 +368,6 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
   const PetscInt  d     = g->dim;
   const PetscReal alpha = mpm->alpha;
   const PetscBool kefix = mpm->ke_fix;
-  MPMStencil      st;
   MPMPoints       pts;
   const MPMNode  *node;
   PetscReal      *pointwork = NULL;
@@ -371,15 +386,17 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
 
     if (cellwork) { /* each cell's work per unit P V (full: (h^d / V_c) div vbar_c, every point of the cell alike; points: div vbar_c), then each point's share, sum_c f_pc of it */
       const PetscBool full = (PetscBool)(mpm->cell_volume == MPM_CELL_VOLUME_FULL);
+      PetscReal       DW[8][MPM_MAX_DIM];
+      PetscInt        off[8], ijk[3], c;
+      const PetscInt  ns = MPMCellBasisTable(g, d, off, DW);
       PetscCall(PetscMalloc1(pts.n + 1, &pointwork));
-      PetscInt ijk[3], c;
       MPM_FOR_EXTENDED_CELLS(g, ijk, c)
       {
-        PetscReal div = 0.0;
+        const MPMNode *nd  = &node[MPMCellFirstNode(g, ijk)];
+        PetscReal      div = 0.0;
         if (mpm->xcell[2 * c] <= 0.0) continue;
-        MPMGridCellBasis(g, ijk, &st);
-        for (PetscInt a = 0; a < st.n; a++)
-          for (PetscInt k = 0; k < d; k++) div += st.s[a][k] * (node[st.node[a]].p[k] + node[st.node[a]].v0[k]) * st.dw[a][k]; /* v^{n+1/2} + v^{n-1/2} */
+        for (PetscInt s = 0; s < ns; s++)
+          for (PetscInt k = 0; k < d; k++) div += (nd[off[s]].p[k] + nd[off[s]].v0[k]) * DW[s][k]; /* v^{n+1/2} + v^{n-1/2} */
         mpm->xcell[2 * c + 1] = full ? g->vcell / mpm->xcell[2 * c] * div : div;
       }
       for (PetscInt p = 0; p < pts.n; p++) {
