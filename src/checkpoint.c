@@ -270,6 +270,7 @@ PetscErrorCode MPMRestartRead(MPM mpm)
     for (PetscInt k = 0; k < MPM_MAX_DIM; k++) PetscCall(PetscFree(own[k]));
     owned = PETSC_TRUE;
   }
+  PetscCall(MPMPointsRelease(mpm));
   PetscCall(DMSwarmSetLocalSizes(mpm->swarm, n, PetscMax(16, n / 100)));
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   for (PetscInt k = 0; k < mpm->nfields; k++) {

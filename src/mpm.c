@@ -414,6 +414,7 @@ PetscErrorCode MPMDestroy(MPM *mpm)
   PetscCall(VecDestroy(&m->tsu));
   PetscCall(MPMDestroyGrid(m));
   PetscCall(PetscFree3(m->widx, m->work, m->wL));
+  if (m->swarm) PetscCall(MPMPointsRelease(m));
   PetscCall(DMDestroy(&m->swarm));
   for (PetscInt i = 0; i < m->nmat; i++) {
     PetscCall(MPMEOSDestroy(&m->mat[i].eos));

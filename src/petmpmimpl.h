@@ -48,7 +48,8 @@ PETSC_INTERN PetscErrorCode     MPMRetireObject(MPM, void *);
 PETSC_INTERN const MPMFieldInfo MPMFieldTable[MPM_NUM_FIELDS];
 #define MPM_MAX_FIELDS 32 /* the core fields and those classes and modules register (MPMPointsRegisterField) */
 
-/* Raw arrays of every particle field, valid between MPMPointsGetArrays() and MPMPointsRestoreArrays(). */
+/* Raw arrays of every particle field, valid between MPMPointsGetArrays() and MPMPointsRestoreArrays() (and, held,
+   until the swarm changes: MPMPointsRelease). */
 typedef struct {
   PetscInt   n;
   PetscReal *f[MPM_MAX_FIELDS]; /* NULL for a field the scene does not carry */
@@ -191,6 +192,8 @@ struct _p_MPM {
   /* discretization */
   DM           da;                       /* background grid, dof = MPM_NODE_DOF                       */
   DM           swarm;                    /* material points, DMSWARM_BASIC                            */
+  MPMPoints    pts;                      /* the fields' arrays while held (MPMPointsGetArrays)        */
+  PetscBool    pts_held;                 /* the swarm's fields are out; MPMPointsRelease returns them  */
   Vec          nodes;                    /* global nodal vector                                       */
   Vec          lnodes;                   /* ghosted local nodal vector                                */
   MPMFieldInfo field[MPM_MAX_FIELDS];    /* the point fields: MPMFieldTable, then the registered ones  */
@@ -296,6 +299,7 @@ PETSC_INTERN PetscErrorCode MPMPointsGetArrays(MPM, MPMPoints *);
 PETSC_INTERN PetscErrorCode MPMPointsSelectFields(MPM);
 PETSC_INTERN PetscErrorCode MPMPointsRegisterField(MPM, const char[], PetscInt, const char[], const char[], PetscBool, PetscInt *);
 PETSC_INTERN PetscErrorCode MPMPointsRestoreArrays(MPM, MPMPoints *);
+PETSC_INTERN PetscErrorCode MPMPointsRelease(MPM);
 PETSC_INTERN PetscErrorCode MPMMigrate(MPM);
 PETSC_INTERN PetscErrorCode MPMSortPoints(MPM);
 PETSC_INTERN PetscErrorCode MPMStepForces(MPM, PetscReal);

@@ -74,6 +74,7 @@ PetscErrorCode MPMSplitApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
     PetscCall(PetscFree2(axis, place));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
+  PetscCall(MPMPointsRelease(mpm));
   PetscCall(DMSwarmAddNPoints(mpm->swarm, nsplit));
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   { /* every rank gathers the (id, material) of every splitting parent and sorts them: child i of the sorted list takes next_id + i */
