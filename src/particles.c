@@ -482,19 +482,20 @@ PetscErrorCode MPMMigrate(MPM mpm)
   PetscMPIInt    rank, size;
   PetscInt       n, nmove = 0, nout = 0, ngone = 0, nwall = 0, ntotal;
   PetscReal     *x, *id;
-  PetscInt      *owner;
-  PetscBool     *gone = NULL;
+  PetscInt      *owner = NULL;
+  PetscBool     *gone  = NULL;
+  MPMPoints      pts;
 
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(mpm->log.migrate, 0, 0, 0, 0));
   PetscCall(MPMReflectAtWalls(mpm));
   PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
   PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
-  PetscCall(MPMPointsRelease(mpm));
-  PetscCall(DMSwarmGetLocalSize(mpm->swarm, &n));
-  PetscCall(DMSwarmGetField(mpm->swarm, MPMFieldTable[MPM_FIELD_POSITION].name, NULL, NULL, (void **)&x));
-  PetscCall(DMSwarmGetField(mpm->swarm, MPMFieldTable[MPM_FIELD_ID].name, NULL, NULL, (void **)&id));
-  PetscCall(DMSwarmGetField(mpm->swarm, DMSwarmField_rank, NULL, NULL, (void **)&owner));
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  n  = pts.n;
+  x  = pts.f[MPM_FIELD_POSITION];
+  id = pts.f[MPM_FIELD_ID];
+  if (size > 1) PetscCall(DMSwarmGetField(mpm->swarm, DMSwarmField_rank, NULL, NULL, (void **)&owner));
   for (PetscInt p = 0; p < n; p++) {
     const PetscReal *xp = &x[p * g->dim];
     PetscBool        in = PETSC_TRUE;
@@ -517,9 +518,8 @@ PetscErrorCode MPMMigrate(MPM mpm)
       if (owner[p] != rank) nmove++;
     }
   }
-  PetscCall(DMSwarmRestoreField(mpm->swarm, DMSwarmField_rank, NULL, NULL, (void **)&owner));
-  PetscCall(DMSwarmRestoreField(mpm->swarm, MPMFieldTable[MPM_FIELD_ID].name, NULL, NULL, (void **)&id));
-  PetscCall(DMSwarmRestoreField(mpm->swarm, MPMFieldTable[MPM_FIELD_POSITION].name, NULL, NULL, (void **)&x));
+  if (size > 1) PetscCall(DMSwarmRestoreField(mpm->swarm, DMSwarmField_rank, NULL, NULL, (void **)&owner));
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   {
     PetscInt counts[4] = {nmove, nout, ngone, nwall};
     PetscCall(MPIU_Allreduce(MPI_IN_PLACE, counts, 4, MPIU_INT, MPI_SUM, mpm->comm));
@@ -530,6 +530,7 @@ PetscErrorCode MPMMigrate(MPM mpm)
     PetscCall(PetscFree(gone));
     mpm->npoints -= counts[2];
     if (counts[0]) {
+      PetscCall(MPMPointsRelease(mpm));
       PetscCall(DMSwarmMigrate(mpm->swarm, PETSC_TRUE));
       PetscCall(DMSwarmGetSize(mpm->swarm, &ntotal));
       PetscCheck(ntotal == mpm->npoints, mpm->comm, PETSC_ERR_PLIB, "Step %" PetscInt_FMT ": migration changed the number of points from %" PetscInt_FMT " to %" PetscInt_FMT, mpm->steps, mpm->npoints, ntotal);
@@ -660,20 +661,20 @@ PetscErrorCode MPMSortPoints(MPM mpm)
   PetscInt      *key, *start, *perm, n;
   PetscReal     *x, *tmp;
   PetscBool      sorted = PETSC_TRUE;
+  MPMPoints      pts;
 
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(mpm->log.sort, 0, 0, 0, 0));
-  PetscCall(DMSwarmGetLocalSize(mpm->swarm, &n));
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  n = pts.n;
+  x = pts.f[MPM_FIELD_POSITION];
   PetscCall(PetscMalloc3(n, &key, g->ncells + 1, &start, n, &perm));
   PetscCall(PetscArrayzero(start, g->ncells + 1));
-  PetscCall(MPMPointsRelease(mpm));
-  PetscCall(DMSwarmGetField(mpm->swarm, MPMFieldTable[MPM_FIELD_POSITION].name, NULL, NULL, (void **)&x));
   for (PetscInt p = 0; p < n; p++) {
     key[p] = PetscMax(0, MPMLocalCell(g, &x[p * g->dim])); /* after migration every point is in an owned cell */
     start[key[p] + 1]++;
     if (p && key[p] < key[p - 1]) sorted = PETSC_FALSE;
   }
-  PetscCall(DMSwarmRestoreField(mpm->swarm, MPMFieldTable[MPM_FIELD_POSITION].name, NULL, NULL, (void **)&x));
   if (!sorted) {
     PetscInt bsmax = 1;
     for (PetscInt c = 0; c < g->ncells; c++) start[c + 1] += start[c];
@@ -682,16 +683,15 @@ PetscErrorCode MPMSortPoints(MPM mpm)
     PetscCall(PetscMalloc1(n * bsmax, &tmp));
     for (PetscInt f = 0; f < mpm->nfields; f++) {
       const PetscInt bs = MPMFieldBlockSize(mpm->field[f].bs, g->dim);
-      PetscReal     *a;
-      if (!mpm->field_on[f]) continue;
-      PetscCall(DMSwarmGetField(mpm->swarm, mpm->field[f].name, NULL, NULL, (void **)&a));
+      PetscReal     *a  = pts.f[f];
+      if (!a) continue;
       for (PetscInt i = 0; i < n; i++)
         for (PetscInt k = 0; k < bs; k++) tmp[i * bs + k] = a[perm[i] * bs + k];
       PetscCall(PetscArraycpy(a, tmp, n * bs));
-      PetscCall(DMSwarmRestoreField(mpm->swarm, mpm->field[f].name, NULL, NULL, (void **)&a));
     }
     PetscCall(PetscFree(tmp));
   }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   PetscCall(PetscFree3(key, start, perm));
   PetscCall(PetscLogEventEnd(mpm->log.sort, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
