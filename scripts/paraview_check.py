@@ -9,10 +9,14 @@ python3-paraview) and checks that ParaView reads what petmpm wrote (issue 18 ite
   - the grid block is the DMDA's node lattice (cells + 1 per direction) and its arrays equal /grid/nodes (the nodal
     mass, then the velocity components).
 
-usage: pvpython scripts/paraview_check.py DIR
+usage: pvpython scripts/paraview_check.py DIR [--render PNG FIELD]
 
 Prints one line per check and exits non-zero if any fails (or 77, the skip code, where ParaView cannot be imported).
-It reads the data through ParaView's own XDMF reader; it renders nothing (that needs a display with OpenGL 3.2)."""
+It reads the data through ParaView's own XDMF reader. With --render it also draws the points of the last output
+coloured by the point field FIELD (ParaView's default colour map over the field's range) into PNG, and checks the
+picture: the points are drawn (a pixel or more each, up to 2000), and their colours span the map (at least 8 distinct colours where the field
+varies). Rendering needs an OpenGL 3.2 display; without a GPU, Mesa's software renderer under Xvfb serves:
+  LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -s "-screen 0 1280x1024x24 +extension GLX" pvpython scripts/paraview_check.py DIR --render out.png density"""
 import os
 import sys
 
@@ -51,6 +55,7 @@ def main():
         print(__doc__)
         return 2
     out, fails = args[0], 0
+    render = args[args.index("--render") + 1: args.index("--render") + 3] if "--render" in args else None
 
     def check(ok, what):
         nonlocal fails
@@ -103,8 +108,49 @@ def main():
         shape = list(h5["grid"]["nodes"].shape[1:-1])[::-1]  # nodes per direction, x first
         dims = list(blocks["grid"].GetDimensions()) if "grid" in blocks else None
         check(dims is not None and dims[: len(shape)] == shape and ngrid > 0, f"the grid block is the node lattice {dims} of /grid/nodes")
+    if render:
+        fails += draw(reader, tv[-1], h5, int(counts[-1]), render[0], render[1], check)
     return 1 if fails else 0
 
 
+def draw(reader, t, h5, count, png, field, check):
+    """Renders the points at time t coloured by `field` into png and checks the picture (see the usage). Returns 0
+    (the checks report through check)."""
+    from paraview.simple import ColorBy, CreateView, ExtractBlock, Render, ResetCamera, SaveScreenshot, Show
+    import matplotlib.image as mpimg
+    view = CreateView("RenderView")
+    view.ViewSize = [800, 500]
+    view.OrientationAxesVisibility = 0
+    view.Background = [1.0, 1.0, 1.0]
+    try:  # ParaView 5.10 and later choose the background from a palette unless told
+        view.UseColorPaletteForBackground = 0
+    except AttributeError:
+        pass
+    view.ViewTime = t
+    pts = ExtractBlock(Input=reader)
+    try:
+        pts.Selectors = ["/Root/points"]
+    except AttributeError:
+        pts.BlockIndices = [1]
+    shown = Show(pts, view)
+    shown.SetRepresentationType("Points")
+    shown.PointSize = 3
+    ColorBy(shown, ("POINTS", field))
+    shown.RescaleTransferFunctionToDataRange(True, False)
+    ResetCamera(view)
+    Render(view)
+    SaveScreenshot(png, view, ImageResolution=[800, 500])
+    img = mpimg.imread(png)[:, :, :3]
+    data = np.any(np.abs(img - 1.0) > 0.02, axis=2)  # pixels that are not the white background
+    colours = len({tuple(c) for c in np.round(img[data] * 31).astype(int)})
+    vals = np.asarray(h5["particle_fields"][field][-1]).reshape(-1)[:count]
+    varies = float(np.ptp(vals)) > 1e-12 * max(1.0, float(np.max(np.abs(vals))))
+    check(min(count, 2000) <= data.sum() < 0.95 * data.size, f"{png}: the {count} points at t = {t:g} are drawn: {data.sum()} pixels ({100 * data.mean():.1f}% of the picture; at least one per point up to 2000)")
+    check(colours >= 8 or not varies, f"{png}: coloured by {field}, {colours} distinct colours (the field ranges over {np.min(vals):g} to {np.max(vals):g})")
+    return 0
+
+
 if __name__ == "__main__":
-    sys.exit(main())
+    code = main()
+    sys.stdout.flush()
+    os._exit(code)  # not ParaView's teardown, which under Xvfb's software GL ends in a GLXBadContext error after a render
