@@ -26,7 +26,7 @@
 #include <unistd.h>
 
 #define MPM_CKPT_NSTATE 28
-#define MPM_CKPT_OUTFLOW 28 /* the outflow tallies' place in the diagnostics, after the counters of MPMCkptDiag */
+#define MPM_CKPT_OUTFLOW 30 /* the outflow tallies' place in the diagnostics, after the counters of MPMCkptDiag */
 #define MPM_CKPT_NDIAG (MPM_CKPT_OUTFLOW + MPM_OUTFLOW_N)
 
 /* A 1D dataset of N doubles of which this rank writes n at offset. */
@@ -80,7 +80,7 @@ static void MPMCkptDiag(MPMDiagnostics *dg, PetscReal a[], PetscBool store)
   const PetscInt nv = 7, nw = (PetscInt)(sizeof(w) / sizeof(w[0]));
   PetscReal     *t = &a[MPM_CKPT_OUTFLOW];
 
-  _Static_assert(7 + sizeof(w) / sizeof(w[0]) + 2 <= MPM_CKPT_OUTFLOW, "MPMCkptDiag: the counters run into the outflow tallies");
+  _Static_assert(7 + sizeof(w) / sizeof(w[0]) + 4 <= MPM_CKPT_OUTFLOW, "MPMCkptDiag: the counters run into the outflow tallies");
   for (PetscInt i = 0; i < nv; i++) {
     if (store)
       a[i] = *v[i];
@@ -93,12 +93,16 @@ static void MPMCkptDiag(MPMDiagnostics *dg, PetscReal a[], PetscBool store)
     else
       *w[i] = (PetscInt)a[nv + i];
   }
-  if (store) { /* the volume fill (global), after the counters */
+  if (store) { /* the volume fill (global), after the counters, then the volume-fill module's sums (this rank's) */
     a[nv + nw]     = dg->volume_fill_max;
     a[nv + nw + 1] = (PetscReal)dg->first_overlap_step;
+    a[nv + nw + 2] = dg->fill_volume;
+    a[nv + nw + 3] = dg->fill_point_steps;
   } else {
     dg->volume_fill_max    = a[nv + nw];
     dg->first_overlap_step = (PetscInt)a[nv + nw + 1];
+    dg->fill_volume        = a[nv + nw + 2];
+    dg->fill_point_steps   = a[nv + nw + 3];
   }
   for (PetscInt i = 0; i < MPM_OUTFLOW_N; i++) {
     if (store)
@@ -109,7 +113,7 @@ static void MPMCkptDiag(MPMDiagnostics *dg, PetscReal a[], PetscBool store)
 }
 
 /* The counters that are this rank's sums (the report adds them over ranks): their indices in MPMCkptDiag's order. */
-static const PetscInt MPMCkptDiagSums[] = {0, 1, 7, 17, 18, 19, 20, 23}; /* and the outflow tallies from MPM_CKPT_OUTFLOW */
+static const PetscInt MPMCkptDiagSums[] = {0, 1, 7, 17, 18, 19, 20, 23, 27, 28}; /* and the outflow tallies from MPM_CKPT_OUTFLOW */
 
 PetscErrorCode MPMCheckpointWrite(MPM mpm)
 {

@@ -102,6 +102,7 @@ PetscErrorCode MPMDestroyGrid(MPM mpm)
   PetscCall(VecDestroy(&mpm->mean_l));
   PetscCall(VecDestroy(&mpm->mean_g));
   PetscCall(DMDestroy(&mpm->mean_da));
+  PetscCall(PetscFree(mpm->fill_ref)); /* on the new grid's nodes, made anew */
   PetscCall(DMDestroy(&mpm->da));
   PetscCall(PetscFree2(mpm->cellV, mpm->cellS));
   PetscCall(PetscFree(mpm->xcell));

@@ -56,6 +56,9 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   m->split                   = PETSC_TRUE;
   m->conduction              = 2.0;
   m->pressure_relax          = 0.25;
+  m->fill_rate               = 0.0;
+  m->fill_tol                = 0.05;
+  m->fill_mach               = 0.05;
   m->rest_time               = -1.0;
   m->pressure_relax_mach     = 0.005;
   m->domain_skew             = 0.5;
@@ -129,6 +132,16 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscCall(
     PetscOptionsReal("-mpm_pressure_relax", "Sub-cell pressure relaxation K_r: fluid points of a cell exchange volume towards a common pressure at the acoustic rate K_r c / h [-], >= 0 (0: off)", "", mpm->pressure_relax, &mpm->pressure_relax, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_pressure_relax", mpm->pressure_relax, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+  PetscCall(PetscOptionsReal("-mpm_volume_fill",
+                             "Volume consistency theta: fluid points on a node whose points' volumes exceed (1 + -mpm_volume_fill_tol) of its undeformed fill give back this fraction of the excess each step [-], in [0, 1] (0: off)", "",
+                             mpm->fill_rate, &mpm->fill_rate, NULL));
+  PetscCall(MPMOptionsCheckRange("-mpm_volume_fill", mpm->fill_rate, 0.0, 1.0, PETSC_FALSE, PETSC_FALSE));
+  if (mpm->fill_rate > 0.0) {
+    PetscCall(PetscOptionsReal("-mpm_volume_fill_tol", "Overfill of a node's volume the volume consistency leaves alone [-], >= 0", "", mpm->fill_tol, &mpm->fill_tol, NULL));
+    PetscCall(MPMOptionsCheckRange("-mpm_volume_fill_tol", mpm->fill_tol, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+    PetscCall(PetscOptionsReal("-mpm_volume_fill_mach", "A point whose velocity jump across a cell |div v| h exceeds this fraction of its sound speed (a shock, a fast expansion) keeps its volume [-], > 0", "", mpm->fill_mach, &mpm->fill_mach, NULL));
+    PetscCall(MPMOptionsCheckRange("-mpm_volume_fill_mach", mpm->fill_mach, 0.0, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
+  }
   if (mpm->pressure_relax > 0.0) {
     PetscCall(PetscOptionsReal("-mpm_pressure_relax_mach", "A point whose velocity jump across a cell |div v| h exceeds this fraction of its sound speed (a shock, a fast expansion) does not relax [-], > 0", "", mpm->pressure_relax_mach,
                                &mpm->pressure_relax_mach, NULL));
@@ -333,6 +346,7 @@ PetscErrorCode MPMSetUp(MPM mpm)
     if (mpm->viscosity) PetscCall(MPMModuleAdd(mpm, "MPMViscosity", MPM_PHASE_POINT_STATE, MPMViscosityModuleApply, NULL));
     if (mpm->conduction > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMConduction", MPM_PHASE_POINT_END, MPMConductionApply, NULL));
     if (mpm->pressure_relax > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMRelax", MPM_PHASE_POINT_END, MPMRelaxApply, NULL));
+    if (mpm->fill_rate > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMVolumeFill", MPM_PHASE_POINT_END, MPMFillApply, NULL));
     if (mpm->popping_interval > 0) PetscCall(MPMModuleAdd(mpm, "MPMPopping", MPM_PHASE_POINT_END, MPMPoppingApply, NULL));
     if (mpm->shape->needs_F && mpm->grid.dim > 1 && mpm->domain_skew > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMDomain", MPM_PHASE_POINT_ADAPT, MPMDomainApply, NULL));
     if (mpm->split) PetscCall(MPMModuleAdd(mpm, "MPMSplit", MPM_PHASE_POINT_ADAPT, MPMSplitApply, NULL));

@@ -118,6 +118,7 @@ typedef struct {
   PetscInt  first_vacuum_step, first_empty_step;
   PetscReal volume_fill, volume_fill_max;                   /* the points' volumes over their interior cells' volume, last and largest (global; MPMDiagnoseVacuum) */
   PetscInt  first_overlap_step;                             /* the first diagnosis whose fill exceeded 1 + MPM_VOLUME_FILL_TOL (-1: none) */
+  PetscReal fill_volume, fill_point_steps;                  /* volume the volume-fill module took back, and the point-steps it acted on (this rank's) */
   PetscInt  points_split;                                   /* points this rank split (each split adds one point)                       */
   PetscInt  split_refused;                                  /* point-steps that called for a split the level limit refused (this rank) */
   PetscInt  wall_reflections;                               /* points this rank put back across a wall (MPMMigrate)              */
@@ -139,28 +140,29 @@ struct _p_MPM {
   char                 outdir[PETSC_MAX_PATH_LEN]; /* output directory                                  */
   char                 report[PETSC_MAX_PATH_LEN]; /* JSON report file, empty for none                  */
   MPMGrid              grid;
-  PetscInt             ppc;                        /* points per cell per direction                     */
-  PetscReal            cfl;                        /* Courant number                                    */
-  PetscReal            dtmin;                      /* smallest time step before the run is stopped [s]  */
-  PetscReal            dvol_max;                   /* largest relative volume change of a point per step (time step limit) [-] */
-  PetscReal            accel_cfl;                  /* Courant number of the grid acceleration limit [-]          */
-  PetscReal            isentrope_threshold;        /* relative expansion per step above which e follows the isentrope [-] */
-  PetscReal            vacuum_density;             /* points below this fraction of their material's initial density count as vacuum [-] */
-  MPMDtLimit           dt_limit;                   /* what set the current step's size */
-  PetscReal            conduction;                 /* -mpm_conduction: artificial heat conduction coefficient C_h [-], 0: off */
-  PetscReal            pressure_relax;             /* -mpm_pressure_relax: sub-cell pressure relaxation rate K_r [-], 0: off */
-  PetscReal            pressure_relax_mach;        /* points whose |div v| h / c exceeds this do not relax [-] */
-  PetscReal            domain_skew;                /* -mpm_domain_skew: a CPDI domain less square than this is reset to a cube [-], 0: never */
-  PetscBool            split;                      /* -mpm_split: the point splitting module is in the step  */
-  PetscInt             popping_interval;           /* -mpm_popping_interval: steps between popping checks, 0: off */
-  PetscReal            popping_speed;              /* -mpm_popping_speed: a point faster than this has popped [cm/s], 0: not checked */
-  PetscReal            split_length;               /* a domain longer than this along an axis splits [cells] */
-  PetscReal            split_min_scale;            /* smallest domain scale a split may leave: 2^-max_level [-] */
-  PetscReal            next_id;                    /* the next unused point id (splitting)                  */
-  PetscInt             sort_interval;              /* steps between sorts of the points by cell, 0: never  */
-  PetscInt             output_interval;            /* steps between outputs, 0: start and end only      */
-  PetscReal            tout[MPM_MAX_OUTPUT_TIMES]; /* -mpm_output_times: steps land on them [s] */
-  PetscInt             ntout, itout;               /* their number, the next one                */
+  PetscInt             ppc;                            /* points per cell per direction                     */
+  PetscReal            cfl;                            /* Courant number                                    */
+  PetscReal            dtmin;                          /* smallest time step before the run is stopped [s]  */
+  PetscReal            dvol_max;                       /* largest relative volume change of a point per step (time step limit) [-] */
+  PetscReal            accel_cfl;                      /* Courant number of the grid acceleration limit [-]          */
+  PetscReal            isentrope_threshold;            /* relative expansion per step above which e follows the isentrope [-] */
+  PetscReal            vacuum_density;                 /* points below this fraction of their material's initial density count as vacuum [-] */
+  MPMDtLimit           dt_limit;                       /* what set the current step's size */
+  PetscReal            conduction;                     /* -mpm_conduction: artificial heat conduction coefficient C_h [-], 0: off */
+  PetscReal            fill_rate, fill_tol, fill_mach; /* -mpm_volume_fill theta (0: off), -mpm_volume_fill_tol, -mpm_volume_fill_mach */
+  PetscReal            pressure_relax;                 /* -mpm_pressure_relax: sub-cell pressure relaxation rate K_r [-], 0: off */
+  PetscReal            pressure_relax_mach;            /* points whose |div v| h / c exceeds this do not relax [-] */
+  PetscReal            domain_skew;                    /* -mpm_domain_skew: a CPDI domain less square than this is reset to a cube [-], 0: never */
+  PetscBool            split;                          /* -mpm_split: the point splitting module is in the step  */
+  PetscInt             popping_interval;               /* -mpm_popping_interval: steps between popping checks, 0: off */
+  PetscReal            popping_speed;                  /* -mpm_popping_speed: a point faster than this has popped [cm/s], 0: not checked */
+  PetscReal            split_length;                   /* a domain longer than this along an axis splits [cells] */
+  PetscReal            split_min_scale;                /* smallest domain scale a split may leave: 2^-max_level [-] */
+  PetscReal            next_id;                        /* the next unused point id (splitting)                  */
+  PetscInt             sort_interval;                  /* steps between sorts of the points by cell, 0: never  */
+  PetscInt             output_interval;                /* steps between outputs, 0: start and end only      */
+  PetscReal            tout[MPM_MAX_OUTPUT_TIMES];     /* -mpm_output_times: steps land on them [s] */
+  PetscInt             ntout, itout;                   /* their number, the next one                */
   MPMScheme            scheme;
   MPMStressIntegration stress_integration;
   MPMCellVolume        cell_volume; /* the cell rule's cell volume (-mpm_cell_volume) */
@@ -206,6 +208,7 @@ struct _p_MPM {
   PetscInt     box_lo[MPM_MAX_DIM], box_hi[MPM_MAX_DIM]; /* owned nodes the node loops sweep (MPMGridZeroForScatter) */
   PetscReal   *cellV, *cellS;                            /* per local cell: the pressure relaxation's scratch sums                  */
   PetscReal   *xcell;                                    /* the cell rule, per extended cell (grid.xcs, xcm): the volume V_c and V_c P_c its points lend it; in the gather, its work per unit P V */
+  PetscReal   *fill_ref;                                 /* the volume-fill module's reference nodal volumes V_I^0 (ghosted local nodes; fill.c) */
   DM           mean_da;                                  /* the point-exchange modules' nodal sums sum N w, sum N w q (nodemean.c) */
   Vec          mean_l, mean_g;                           /* its ghosted local and global vectors (mean_g: several ranks) */
   TS           ts;
@@ -267,6 +270,15 @@ static inline PetscReal MPMLatticeHalfWidth(const MPM mpm, PetscInt k)
 }
 
 /* div v_p = tr L_p, plus the hoop rate v_r / r on an axisymmetric grid. */
+/* Point p's stencil: the transfers' shape functions with its domain (the point-exchange modules' nodal sums). */
+static inline void MPMNodalMeanStencilOf(MPM mpm, const MPMPoints *pts, PetscInt p, MPMStencil *st)
+{
+  const PetscInt d = mpm->grid.dim;
+  PetscReal      Fs[MPM_MAX_DIM * MPM_MAX_DIM];
+
+  MPMShapeEvaluate(mpm->shape, &mpm->grid, &pts->f[MPM_FIELD_POSITION][p * d], MPMPointDomain(d, pts->f[MPM_FIELD_DEFGRAD], pts->f[MPM_FIELD_DOMAINSCALE], p, Fs), st);
+}
+
 static inline PetscReal MPMPointDivergence(const MPMPoints *pts, PetscInt d, PetscInt p)
 {
   PetscReal div = pts->f[MPM_FIELD_HOOPRATE] ? pts->f[MPM_FIELD_HOOPRATE][p] : 0.0;
@@ -316,6 +328,7 @@ PETSC_INTERN PetscErrorCode MPMSplitApply(MPMModule, MPM, const MPMStepContext *
 PETSC_INTERN PetscErrorCode MPMDomainApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMConductionApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMRelaxApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
+PETSC_INTERN PetscErrorCode MPMFillApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMNodalMeanSetUp(MPM);
 PETSC_INTERN PetscErrorCode MPMNodalMeanSum(MPM, PetscReal **);
 PETSC_INTERN PetscErrorCode MPMPoppingApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);

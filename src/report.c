@@ -425,6 +425,14 @@ static PetscReal MPMRelErr(PetscReal v, PetscReal r)
   return r != 0.0 ? PetscAbsReal(v - r) / PetscAbsReal(r) : PetscAbsReal(v - r);
 }
 
+/* The domain's volume (r-z: per radian, int r dr dz). */
+static PetscReal MPMDomainVolume(const MPMGrid *g)
+{
+  PetscReal v = g->axisym ? 0.5 * (g->hi[0] * g->hi[0] - g->lo[0] * g->lo[0]) : g->hi[0] - g->lo[0];
+  for (PetscInt k = 1; k < g->dim; k++) v *= g->hi[k] - g->lo[k];
+  return v;
+}
+
 PetscErrorCode MPMWriteReport(MPM mpm)
 {
   const MPMGrid *g = &mpm->grid;
@@ -432,7 +440,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   PetscBool      budget;
   PetscInt       nonfinite = 0, npoints, nvac, nempty, nmin, nmax;
   PetscReal      imbalance;
-  PetscReal      eisen, nisen, nsplit, nrefuse, nreflect, nreset, nspall, out[3] = {0, 0, 0};
+  PetscReal      eisen, nisen, nsplit, nrefuse, nreflect, nreset, nspall, vfill, nfill, out[3] = {0, 0, 0};
   PetscBool      outflow = PETSC_FALSE;
   PetscMPIInt    size, rank;
 
@@ -446,9 +454,17 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   PetscCall(MPMDiagnoseVacuum(mpm, &nvac, &nempty));
   PetscCall(MPMPointBalance(mpm, &imbalance, &nmin, &nmax));
   {
-    PetscReal s[9] = {
-      mpm->diag.isentrope_energy,  (PetscReal)mpm->diag.isentrope_points, (PetscReal)mpm->diag.points_split, (PetscReal)mpm->diag.split_refused, (PetscReal)mpm->diag.wall_reflections, (PetscReal)mpm->diag.domain_resets, mpm->diag.plastic_work, 0.0,
-      (PetscReal)mpm->diag.spalled};
+    PetscReal s[11] = {mpm->diag.isentrope_energy,
+                       (PetscReal)mpm->diag.isentrope_points,
+                       (PetscReal)mpm->diag.points_split,
+                       (PetscReal)mpm->diag.split_refused,
+                       (PetscReal)mpm->diag.wall_reflections,
+                       (PetscReal)mpm->diag.domain_resets,
+                       mpm->diag.plastic_work,
+                       0.0,
+                       (PetscReal)mpm->diag.spalled,
+                       mpm->diag.fill_volume,
+                       mpm->diag.fill_point_steps};
     if (mpm->has_stress) { /* the stored elastic energy: hyperelastic models V_0 W(F) (V_0 = V / det F), hypoelastic ones their shear energy V sigma_eq^2 / (6 G) (s : s / (4 G)) */
       const PetscInt d = g->dim;
       MPMPoints      pts;
@@ -463,7 +479,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
       }
       PetscCall(MPMPointsRestoreArrays(mpm, &pts));
     }
-    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 9, MPIU_REAL, MPIU_SUM, mpm->comm));
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 11, MPIU_REAL, MPIU_SUM, mpm->comm));
     wplastic = s[6];
     eelastic = s[7];
     eisen    = s[0];
@@ -473,6 +489,8 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     nreflect = s[4];
     nreset   = s[5];
     nspall   = s[8];
+    vfill    = s[9];
+    nfill    = s[10];
   }
   for (PetscInt k = 0; k < g->dim; k++) outflow = (PetscBool)(outflow || mpm->bc_lo[k] == MPM_BC_OUTFLOW || mpm->bc_hi[k] == MPM_BC_OUTFLOW);
   if (outflow) { /* what left through outflow faces: points, and mass and total energy relative to the initial sums */
@@ -598,9 +616,10 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     fprintf(fp,
             "}, \"vacuum_points\": %" PetscInt_FMT ", \"vacuum_points_max\": %" PetscInt_FMT ", \"first_vacuum_step\": %" PetscInt_FMT ", \"empty_cells\": %" PetscInt_FMT ", \"empty_cells_max\": %" PetscInt_FMT
             ", \"first_empty_step\": %" PetscInt_FMT
-            ", \"points_split\": %.0f, \"split_refused\": %.0f, \"wall_reflections\": %.0f, \"domain_resets\": %.0f, \"spalled\": %.0f, \"volume_fill\": %.6f, \"volume_fill_max\": %.6f, \"first_overlap_step\": %" PetscInt_FMT "}",
+            ", \"points_split\": %.0f, \"split_refused\": %.0f, \"wall_reflections\": %.0f, \"domain_resets\": %.0f, \"spalled\": %.0f, \"volume_fill\": %.6f, \"volume_fill_max\": %.6f, \"first_overlap_step\": %" PetscInt_FMT
+            ", \"volume_fill_removed\": %.6e, \"volume_fill_point_steps\": %.0f}",
             nvac, mpm->diag.vacuum_points_max, mpm->diag.first_vacuum_step, nempty, mpm->diag.empty_cells_max, mpm->diag.first_empty_step, (double)nsplit, (double)nrefuse, (double)nreflect, (double)nreset, (double)nspall,
-            (double)mpm->diag.volume_fill, (double)mpm->diag.volume_fill_max, mpm->diag.first_overlap_step);
+            (double)mpm->diag.volume_fill, (double)mpm->diag.volume_fill_max, mpm->diag.first_overlap_step, (double)(vfill / MPMDomainVolume(&mpm->grid)), (double)nfill);
     if (outflow) fprintf(fp, ",\n  \"outflow\": {\"points\": %.0f, \"mass\": %.6e, \"energy\": %.6e}", (double)out[0], (double)out[1], (double)out[2]);
     fprintf(fp, ",\n  \"min_density\": %.10g,\n  \"nonfinite\": %" PetscInt_FMT ",\n  \"checks\": [", (double)rhomin, nonfinite);
     for (PetscInt c = 0; c < mpm->nchecks; c++)

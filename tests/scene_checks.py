@@ -245,6 +245,7 @@ def test_bad_input():
             (["-options_file", RZ, "-mpm_stop_at_rest", "1.5", "-mpm_output", d], "-mpm_stop_at_rest"),
             (["-options_file", RZ, "-mpm_exact_anvil_length", "0", "-mpm_output", d], "-mpm_exact_anvil_length"),
             ([*SCENE_CTH, "-mpm_pressure_relax", "-1", "-mpm_output", d], "-mpm_pressure_relax"),
+            ([*SCENE_CTH, "-mpm_volume_fill", "1.5", "-mpm_output", d], "-mpm_volume_fill"),
             ([*SCENE_CTH, "-mpm_gravity", "nan", "-mpm_output", d], "-mpm_gravity"),
             ([*SCENE_CTH, "-mpm_gravity", "inf", "-mpm_output", d], "-mpm_gravity"),
             ([*SCENE_CTH, "-ts_max_time", "nan", "-mpm_output", d], "-ts_max_time"),

@@ -8,15 +8,6 @@
    are in its rank's ghosted box. */
 #include "../petmpmimpl.h"
 
-/* The point's stencil (the transfers' shape functions and domain). */
-static inline void MPMNodalMeanStencil(MPM mpm, const MPMPoints *pts, PetscInt p, MPMStencil *st)
-{
-  const PetscInt d = mpm->grid.dim;
-  PetscReal      Fs[MPM_MAX_DIM * MPM_MAX_DIM];
-
-  MPMShapeEvaluate(mpm->shape, &mpm->grid, &pts->f[MPM_FIELD_POSITION][p * d], MPMPointDomain(d, pts->f[MPM_FIELD_DEFGRAD], pts->f[MPM_FIELD_DOMAINSCALE], p, Fs), st);
-}
-
 /* The nodal sums' DMDA (2 values per node) and its vectors, made on first use; the local vector starts zeroed. */
 PetscErrorCode MPMNodalMeanSetUp(MPM mpm)
 {
@@ -56,7 +47,7 @@ PetscErrorCode MPMPointsNodalMean(MPM mpm, const MPMPoints *pts, const PetscReal
   PetscCall(VecGetArray(mpm->mean_l, &W));
   for (PetscInt p = 0; p < pts->n; p++) { /* sum N w and sum N w q to the nodes */
     if (w[p] == 0.0) continue;
-    MPMNodalMeanStencil(mpm, pts, p, &st);
+    MPMNodalMeanStencilOf(mpm, pts, p, &st);
     for (PetscInt a = 0; a < st.n; a++) {
       W[2 * st.node[a]] += st.w[a] * w[p];
       W[2 * st.node[a] + 1] += st.w[a] * w[p] * q[p];
@@ -68,7 +59,7 @@ PetscErrorCode MPMPointsNodalMean(MPM mpm, const MPMPoints *pts, const PetscReal
   for (PetscInt p = 0; p < pts->n; p++) { /* the interpolants of q_I and q_I^2 at the point */
     PetscReal s1 = 0.0, s2 = 0.0;
     if (w[p] == 0.0) continue;
-    MPMNodalMeanStencil(mpm, pts, p, &st);
+    MPMNodalMeanStencilOf(mpm, pts, p, &st);
     for (PetscInt a = 0; a < st.n; a++)
       if (W[2 * st.node[a]] > 0.0) {
         const PetscReal qI = W[2 * st.node[a] + 1] / W[2 * st.node[a]];
