@@ -14,6 +14,7 @@
 
 typedef struct {
   PetscReal G, A, B, n, C, m, Tm, Tr, epsdot0;
+  PetscBool total_rate; /* the rate term reads the total equivalent strain rate of the step, not the plastic one */
 } Strength_JC;
 
 /* The homologous temperature T* in [0, 1]. */
@@ -53,17 +54,17 @@ static PetscReal MPMStrengthFlow_JC(void *ctx, PetscReal epsp, PetscReal rate, P
    return (the yield check and 4.5 iterations, one pow and one log each; measured on the 3D bar) where the general
    return's regula falsi needs 9.2 (the check, the bracket's end and 7.2 iterations), so the
    answers differ from it within that tolerance. Returns dg. */
-static inline PetscReal MPMStrengthReturn_JC(const Strength_JC *jc, PetscInt d, PetscReal dt, PetscReal theta, PetscReal s[], PetscReal *epsp)
+static inline PetscReal MPMStrengthReturn_JC(const Strength_JC *jc, PetscInt d, PetscReal dt, PetscReal theta, PetscReal Rfix, PetscReal s[], PetscReal *epsp)
 {
   const PetscReal seq = MPMVonMisesStress(d, s), G3 = 3.0 * jc->G, rinv = dt > 0.0 ? 1.0 / (dt * jc->epsdot0) : 0.0;
-  const PetscReal Y0 = MPMStrengthFlowTheta_JC((void *)jc, *epsp, 0.0, theta);
+  const PetscReal Y0 = Rfix > 0.0 ? (jc->A + jc->B * (*epsp > 0.0 ? PetscPowReal(*epsp, jc->n) : 0.0)) * Rfix * theta : MPMStrengthFlowTheta_JC((void *)jc, *epsp, 0.0, theta);
   PetscReal       a  = 0.0, b, dg;
 
   if (seq - Y0 <= 0.0) return 0.0;
   dg = b = (seq - Y0) / G3;
   for (PetscInt it = 0; it < 100; it++) {
     const PetscReal eps = *epsp + dg, en = eps > 0.0 ? PetscPowReal(eps, jc->n) : 0.0, H = jc->A + jc->B * en, r = dg * rinv;
-    const PetscReal R = r > 1.0 ? 1.0 + jc->C * PetscLogReal(r) : 1.0, res = seq - G3 * dg - H * R * theta;
+    const PetscReal R = Rfix > 0.0 ? Rfix : (r > 1.0 ? 1.0 + jc->C * PetscLogReal(r) : 1.0), res = seq - G3 * dg - H * R * theta;
     PetscReal       slope, next;
 
     if (PetscAbsReal(res) <= 1e-12 * seq) break;
@@ -72,7 +73,7 @@ static inline PetscReal MPMStrengthReturn_JC(const Strength_JC *jc, PetscInt d, 
     else
       b = dg;
     if (b - a <= 1e-14 * b) break;
-    slope = G3 + theta * ((eps > 0.0 ? jc->B * jc->n * en / eps : 0.0) * R + (r > 1.0 ? H * jc->C / dg : 0.0));
+    slope = G3 + theta * ((eps > 0.0 ? jc->B * jc->n * en / eps : 0.0) * R + (Rfix <= 0.0 && r > 1.0 ? H * jc->C / dg : 0.0));
     next  = dg + res / slope;
     dg    = next > a && next < b ? next : 0.5 * (a + b);
   }
@@ -89,7 +90,21 @@ static void MPMStrengthStress_JC(void *ctx, PetscInt d, PetscReal dt, const Pets
   /* An elastic trial below A (1 - T*) needs no return and no pow: for m >= 1, T*^m <= T* and eps_p^n >= 0, so the flow
      stress at the rate 0 of the yield check is at least A (1 - T*), in floating point too (pow is faithfully rounded
      and the operations are monotonic): the return would find no yield and leave s and eps_p as they are. */
-  if (!(jc->m >= 1.0 && MPMVonMisesStress(d, s) <= jc->A * (1.0 - MPMStrengthHomologous_JC(jc, T)))) (void)MPMStrengthReturn_JC(jc, d, dt, MPMStrengthThermal_JC(jc, T), s, epsp);
+  if (!(jc->m >= 1.0 && MPMVonMisesStress(d, s) <= jc->A * (1.0 - MPMStrengthHomologous_JC(jc, T)))) {
+    PetscReal Rfix = 0.0; /* the plastic rate's factor, found with dg (the default) */
+    if (jc->total_rate) { /* the total equivalent strain rate sqrt(2/3 D' : D') of the step, D' the deviator of the 3 x 3 rate of deformation */
+      PetscReal D[3][3] = {{0}}, tr, dd = 0.0, r;
+      for (PetscInt i = 0; i < d; i++)
+        for (PetscInt j = 0; j < d; j++) D[i][j] = 0.5 * (L[i * d + j] + L[j * d + i]);
+      tr = D[0][0] + D[1][1] + D[2][2];
+      for (PetscInt i = 0; i < 3; i++) D[i][i] -= tr / 3.0;
+      for (PetscInt i = 0; i < 3; i++)
+        for (PetscInt j = 0; j < 3; j++) dd += D[i][j] * D[i][j];
+      r    = PetscSqrtReal(2.0 / 3.0 * dd) / jc->epsdot0;
+      Rfix = r > 1.0 ? 1.0 + jc->C * PetscLogReal(r) : 1.0;
+    }
+    (void)MPMStrengthReturn_JC(jc, d, dt, MPMStrengthThermal_JC(jc, T), Rfix, s, epsp);
+  }
   *c2 = MPMHypoelasticWaveSpeed2(jc->G, rho);
 }
 
@@ -122,6 +137,8 @@ static PetscErrorCode MPMStrengthSetFromOptions_JC(MPMStrength str, PetscOptionI
     PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%s%s", pre, par[i].name));
     PetscCall(PetscOptionsReal(opt, par[i].text, "", *par[i].v, par[i].v, NULL));
   }
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%stotal_rate", pre));
+  PetscCall(PetscOptionsBool(opt, "The rate term reads the total equivalent strain rate sqrt(2/3 D':D') of the step, a common choice in hydrocodes, instead of the plastic strain rate", "", jc->total_rate, &jc->total_rate, NULL));
   PetscOptionsHeadEnd();
   for (size_t i = 0; i < sizeof(par) / sizeof(par[0]); i++) {
     PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%s%s%s", str->prefix ? str->prefix : "", pre, par[i].name));
