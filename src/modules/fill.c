@@ -25,8 +25,8 @@
    steps as part of its structure. Excess is only taken, never given (a gap inside the material and a free surface look
    alike on the nodes). The nodal sums are summed over the ranks and the smoothed excess is computed on the owned nodes
    and sent to the ghosts, so that every rank count gives the same answer.
-   Measured (README, docs/hard-cases.md): the helium bubble's median density 2.9e-4 g/cm^3 at t = 2e-4 s (8.5e-5 without,
-   2.7e-4 with the cell rule), the points' volumes 133.2 cm^2 in the 133.5 cm^2 box (151 without); the cylindrical Sedov
+   Measured (README, docs/algorithm.md): the helium bubble's median density 2.9e-4 g/cm^3 at t = 2e-4 s (8.5e-5 without,
+   2.7e-4 with the cell rule), the points' volumes 131.2 cm^2 in the 133.5 cm^2 box (151 without); the cylindrical Sedov
    blast at 64^2 cells L1 pressure 22% (64% without). Off by default: it also acts on the overlap that CPDI's points
    have for a while in a smooth rarefaction, and there its compression at fixed e costs accuracy (weak Sod at 512
    cells, CPDI, one point per cell: L1 density 0.59% without, 0.88% with theta = 0.02, 1.5% with 0.5). */
@@ -71,10 +71,11 @@ static PetscErrorCode MPMFillReference(MPM mpm)
 }
 
 /* Replaces the nodal volumes V_I in W[2 I] (summed over the ranks, ghosts included) by the excess each node gives back,
-   E_I = max(0, phi_I - (1 + tol)) V_I^0, with phi_I = sum_J V_J / sum_J V_J^0 over the 3^d block of nodes around I (the
-   fill smoothed, so that the nodes' scatter about a complete fill, which a disordered set of points always has, does
-   not read as overlap: taken back where it is high and never given where it is low, it would compress the material
-   step by step); computed on the owned nodes, then sent to the ghosts. W[2 I + 1] is kept. */
+   E_I = max(0, phi_I - (1 + tol)) V_I^0, with phi_I = sum_J w_J V_J / sum_J w_J V_J^0 over the 3^d block of nodes
+   around I, w_J the product of (1, 2, 1) per direction (the fill smoothed, so that the nodes' scatter about a complete
+   fill, which a disordered set of points always has, odd-even in a rarefaction, does not read as overlap: taken back
+   where it is high and never given where it is low, it would compress the material step by step; without the weights
+   it took back 19% of weak Sod's volume); computed on the owned nodes, then sent to the ghosts. W[2 I + 1] is kept. */
 static PetscErrorCode MPMFillExcess(MPM mpm, PetscReal **W)
 {
   const MPMGrid *g = &mpm->grid;
