@@ -21,22 +21,19 @@ PetscErrorCode MPMDiagnoseVacuum(MPM mpm, PetscInt *nvacuum, PetscInt *nempty)
   const MPMGrid *g = &mpm->grid;
   const PetscInt d = g->dim;
   PetscReal      rhomin[MPM_MAX_MATERIALS], *vsum, fill[2] = {0.0, 0.0};
-  PetscInt      *count, *centres, n[2] = {0, 0}, xmin = -1;
+  PetscInt      *count, n[2] = {0, 0}, xmin = -1;
   MPMPoints      pts;
 
   PetscFunctionBegin;
   for (PetscInt i = 0; i < mpm->nmat; i++) rhomin[i] = PETSC_MAX_REAL;
   for (PetscInt r = 0; r < mpm->nreg; r++) rhomin[mpm->reg[r].material] = PetscMin(rhomin[mpm->reg[r].material], mpm->reg[r].rho);
-  PetscCall(PetscCalloc3(g->ncells, &count, g->ncells, &vsum, g->ncells, &centres));
+  PetscCall(PetscCalloc2(g->ncells, &count, g->ncells, &vsum));
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   for (PetscInt p = 0; p < pts.n; p++) {
     const PetscReal *x = &pts.f[MPM_FIELD_POSITION][p * d];
     {
       const PetscInt c = MPMLocalCell(g, x);
-      if (c >= 0) {
-        vsum[c] += pts.f[MPM_FIELD_VOLUME][p];
-        centres[c]++;
-      }
+      if (c >= 0) vsum[c] += pts.f[MPM_FIELD_VOLUME][p];
     }
     if (mpm->shape->needs_F) { /* the cells the point's domain overlaps */
       PetscReal        Fs[MPM_MAX_DIM * MPM_MAX_DIM];
@@ -96,7 +93,7 @@ PetscErrorCode MPMDiagnoseVacuum(MPM mpm, PetscInt *nvacuum, PetscInt *nempty)
                           (double)mpm->time, (double)pts.f[MPM_FIELD_ID][xmin], (double)pts.f[MPM_FIELD_POSITION][xmin * d], (double)pts.f[MPM_FIELD_DENSITY][xmin], (double)mpm->vacuum_density));
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-  PetscCall(PetscFree3(count, vsum, centres));
+  PetscCall(PetscFree2(count, vsum));
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, n, 2, MPIU_INT, MPI_SUM, mpm->comm));
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, fill, 2, MPIU_REAL, MPIU_SUM, mpm->comm));
   if (fill[1] > 0.0) {

@@ -140,7 +140,7 @@ PetscErrorCode MPMGetScene(MPM mpm, MPMScene *sc)
 }
 
 /* Lattice site s (0 <= s < prod_k cm_k ppc) of this rank's cells: its position and its global lattice index. */
-static void MPMSiteAt(const MPMGrid *g, PetscInt ppc, PetscInt s, PetscReal x[], PetscReal *id)
+void MPMSiteAt(const MPMGrid *g, PetscInt ppc, PetscInt s, PetscReal x[], PetscReal *id)
 {
   PetscInt  gl[MPM_MAX_DIM] = {0, 0, 0};
   PetscReal stride          = 1.0;

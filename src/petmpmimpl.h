@@ -287,6 +287,13 @@ static inline PetscReal MPMPointDivergence(const MPMPoints *pts, PetscInt d, Pet
   return div;
 }
 
+/* Whether point p is in a shock or a fast expansion: its velocity jump across a cell |div v| h_min exceeds the fraction
+   mach of its sound speed sqrt(c2) (the modules that act only in a quiescent flow). */
+static inline PetscBool MPMPointInShock(MPM mpm, const MPMPoints *pts, PetscInt p, PetscReal c2, PetscReal mach)
+{
+  return (PetscBool)(PetscAbsReal(MPMPointDivergence(pts, mpm->grid.dim, p)) * mpm->grid.hmin > mach * PetscSqrtReal(c2));
+}
+
 /* Loops c over the owned nodes (their index in the global nodal vector) of the box the step's node loops sweep:
    outside it every node holds zeros (MPMGridZeroForScatter). */
 #define MPM_FOR_BOX_NODES(mpm, c)                                        \
@@ -307,6 +314,7 @@ PETSC_INTERN PetscErrorCode MPMPointBalance(MPM, PetscReal *, PetscInt *, PetscI
 PETSC_INTERN PetscErrorCode MPMGridGlobalToLocal(MPM);
 PETSC_INTERN PetscErrorCode MPMGridZeroForScatter(MPM, PetscInt, const PetscReal[], MPMNode *);
 PETSC_INTERN PetscErrorCode MPMCreatePoints(MPM);
+PETSC_INTERN void           MPMSiteAt(const MPMGrid *, PetscInt, PetscInt, PetscReal[], PetscReal *);
 PETSC_INTERN PetscErrorCode MPMPointsGetArrays(MPM, MPMPoints *);
 PETSC_INTERN PetscErrorCode MPMPointsSelectFields(MPM);
 PETSC_INTERN PetscErrorCode MPMPointsRegisterField(MPM, const char[], PetscInt, const char[], const char[], PetscBool, PetscInt *);
@@ -334,6 +342,7 @@ PETSC_INTERN PetscErrorCode MPMNodalMeanSum(MPM, PetscReal **);
 PETSC_INTERN PetscErrorCode MPMPoppingApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMPointsNodalMean(MPM, const MPMPoints *, const PetscReal[], const PetscReal[], PetscReal[], PetscReal[]);
 PETSC_INTERN void           MPMPointEOSUpdate(MPM, MPMPoints *, PetscInt, PetscReal, PetscReal);
+PETSC_INTERN void           MPMPointChangeVolume(MPM, MPMPoints *, PetscInt, PetscReal, PetscReal);
 PETSC_INTERN PetscErrorCode MPMViscosityModuleApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMScatter(MPM, PetscBool, PetscReal);
 PETSC_INTERN PetscErrorCode MPMGather(MPM, PetscReal, PetscReal, PetscBool, PetscBool);

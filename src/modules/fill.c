@@ -37,31 +37,26 @@
 static PetscErrorCode MPMFillReference(MPM mpm)
 {
   const MPMGrid *g = &mpm->grid;
-  const PetscInt d = g->dim, ppc = mpm->ppc;
-  PetscInt       npd = 1, nloc;
+  const PetscInt d = g->dim, nloc = g->gm[0] * g->gm[1] * g->gm[2];
+  PetscInt       npd = 1;
   PetscReal     *W, Ide[MPM_MAX_DIM * MPM_MAX_DIM] = {0};
   MPMStencil     st;
 
   PetscFunctionBegin;
   for (PetscInt k = 0; k < d; k++) {
-    npd *= ppc;
+    npd *= mpm->ppc;
     Ide[k * d + k] = 1.0;
   }
-  nloc = g->gm[0] * g->gm[1] * g->gm[2];
   PetscCall(PetscFree(mpm->fill_ref));
   PetscCall(PetscMalloc1(nloc, &mpm->fill_ref));
   PetscCall(VecZeroEntries(mpm->mean_l));
   PetscCall(VecGetArray(mpm->mean_l, &W));
-  for (PetscInt c = 0; c < g->ncells; c++) {
-    const PetscInt ijk[3] = {c % g->cm[0], (c / g->cm[0]) % g->cm[1], c / (g->cm[0] * g->cm[1])};
-    for (PetscInt s = 0; s < npd; s++) {
-      const PetscInt abc[3] = {s % ppc, (s / ppc) % ppc, s / (ppc * ppc)};
-      PetscReal      x[MPM_MAX_DIM], V = g->vcell / npd;
-      for (PetscInt k = 0; k < d; k++) x[k] = g->lo[k] + (g->cs[k] + ijk[k] + (abc[k] + 0.5) / ppc) * g->h[k];
-      if (g->axisym) V *= x[0]; /* per radian */
-      MPMShapeEvaluate(mpm->shape, g, x, mpm->track_F ? Ide : NULL, &st);
-      for (PetscInt a = 0; a < st.n; a++) W[2 * st.node[a]] += st.w[a] * V;
-    }
+  for (PetscInt s = 0; s < g->ncells * npd; s++) { /* the seeding's lattice sites (MPMSiteAt) */
+    PetscReal x[MPM_MAX_DIM], id, V = g->vcell / npd;
+    MPMSiteAt(g, mpm->ppc, s, x, &id);
+    if (g->axisym) V *= x[0]; /* per radian */
+    MPMShapeEvaluate(mpm->shape, g, x, mpm->track_F ? Ide : NULL, &st);
+    for (PetscInt a = 0; a < st.n; a++) W[2 * st.node[a]] += st.w[a] * V;
   }
   PetscCall(MPMNodalMeanSum(mpm, &W));
   for (PetscInt i = 0; i < nloc; i++) mpm->fill_ref[i] = W[2 * i];
@@ -93,11 +88,13 @@ static PetscErrorCode MPMFillExcess(MPM mpm, PetscReal **W)
           const PetscInt a[3] = {ijk[0] + o % 3 - 1, ijk[1] + (d > 1 ? (o / 3) % 3 - 1 : 0), ijk[2] + (d > 2 ? o / 9 - 1 : 0)};
           PetscBool      in   = PETSC_TRUE;
           PetscReal      w    = 1.0;
+          PetscInt       nJ;
           for (PetscInt k = 0; k < 3; k++) in = (PetscBool)(in && a[k] >= 0 && a[k] < g->gm[k]);
           if (!in) continue;
           for (PetscInt k = 0; k < d; k++) w *= a[k] == ijk[k] ? 2.0 : 1.0; /* the weights (1, 2, 1) per direction */
-          S += w * (*W)[2 * ((a[2] * g->gm[1] + a[1]) * g->gm[0] + a[0])];
-          S0 += w * mpm->fill_ref[(a[2] * g->gm[1] + a[1]) * g->gm[0] + a[0]];
+          nJ = (a[2] * g->gm[1] + a[1]) * g->gm[0] + a[0];
+          S += w * (*W)[2 * nJ];
+          S0 += w * mpm->fill_ref[nJ];
         }
         if (S0 > 0.0 && (*W)[2 * nI] > 0.0) E[nI] = PetscMax(0.0, S / S0 - (1.0 + mpm->fill_tol)) * mpm->fill_ref[nI];
       }
@@ -114,11 +111,10 @@ static PetscErrorCode MPMFillExcess(MPM mpm, PetscReal **W)
 
 PetscErrorCode MPMFillApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
 {
-  const PetscInt d = mpm->grid.dim;
-  PetscReal     *W, *c, over = 0.0;
-  PetscInt       nact = 0;
-  MPMPoints      pts;
-  MPMStencil     st;
+  PetscReal *W, *c, over = 0.0;
+  PetscInt   nact = 0;
+  MPMPoints  pts;
+  MPMStencil st;
 
   PetscFunctionBegin;
   PetscCall(MPMNodalMeanSetUp(mpm));
@@ -132,7 +128,7 @@ PetscErrorCode MPMFillApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, M
     PetscReal          pr, c2;
     if (!MPMStrengthIsSolid(mat->strength)) {
       MPMEOSPressureKernel(mat->eos, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_ENERGY][p], &pr, &c2);
-      if (c2 > 0.0 && !(PetscAbsReal(MPMPointDivergence(&pts, d, p)) * mpm->grid.hmin > mpm->fill_mach * PetscSqrtReal(c2))) c[p] = pts.f[MPM_FIELD_VOLUME][p] / (pts.f[MPM_FIELD_DENSITY][p] * c2);
+      if (c2 > 0.0 && !MPMPointInShock(mpm, &pts, p, c2, mpm->fill_mach)) c[p] = pts.f[MPM_FIELD_VOLUME][p] / (pts.f[MPM_FIELD_DENSITY][p] * c2);
     }
     MPMNodalMeanStencilOf(mpm, &pts, p, &st);
     for (PetscInt a = 0; a < st.n; a++) {
@@ -143,7 +139,7 @@ PetscErrorCode MPMFillApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, M
   PetscCall(MPMNodalMeanSum(mpm, &W));
   PetscCall(MPMFillExcess(mpm, &W));
   for (PetscInt p = 0; p < pts.n; p++) {
-    PetscReal x = 0.0, dV, r, *V = &pts.f[MPM_FIELD_VOLUME][p];
+    PetscReal x = 0.0, dV;
     if (c[p] <= 0.0) continue;
     MPMNodalMeanStencilOf(mpm, &pts, p, &st);
     for (PetscInt a = 0; a < st.n; a++) {
@@ -151,16 +147,10 @@ PetscErrorCode MPMFillApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, M
       if (W[2 * nI] > 0.0 && W[2 * nI + 1] > 0.0) x += st.w[a] * W[2 * nI] / W[2 * nI + 1];
     }
     if (x <= 0.0) continue;
-    dV = PetscMax(-mpm->fill_rate * c[p] * x, -0.5 * *V);
-    r  = (*V + dV) / *V;
-    if (pts.f[MPM_FIELD_DEFGRAD]) { /* the domain follows the volume */
-      const PetscReal s = d == 1 ? r : (d == 2 ? PetscSqrtReal(r) : PetscCbrtReal(r));
-      for (PetscInt k = 0; k < d * d; k++) pts.f[MPM_FIELD_DEFGRAD][p * d * d + k] *= s;
-    }
-    *V += dV;
+    dV = PetscMax(-mpm->fill_rate * c[p] * x, -0.5 * pts.f[MPM_FIELD_VOLUME][p]);
+    MPMPointChangeVolume(mpm, &pts, p, dV, pts.f[MPM_FIELD_ENERGY][p]);
     over -= dV;
     nact++;
-    MPMPointEOSUpdate(mpm, &pts, p, pts.f[MPM_FIELD_MASS][p] / *V, pts.f[MPM_FIELD_ENERGY][p]);
   }
   PetscCall(VecRestoreArray(mpm->mean_l, &W));
   PetscCall(VecZeroEntries(mpm->mean_l)); /* the point-exchange modules find it zeroed */

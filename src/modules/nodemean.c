@@ -74,6 +74,23 @@ PetscErrorCode MPMPointsNodalMean(MPM mpm, const MPMPoints *pts, const PetscReal
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* A module's volume change dV of point p with the specific internal energy e1 after it: a CPDI domain scales
+   isotropically with the volume, and the EOS gives p, T and c at m / (V + dV) (the pressure relaxation, the volume
+   consistency). */
+void MPMPointChangeVolume(MPM mpm, MPMPoints *pts, PetscInt p, PetscReal dV, PetscReal e1)
+{
+  const PetscInt  d = mpm->grid.dim;
+  PetscReal      *V = &pts->f[MPM_FIELD_VOLUME][p];
+  const PetscReal r = (*V + dV) / *V;
+
+  if (pts->f[MPM_FIELD_DEFGRAD]) { /* the domain follows the volume */
+    const PetscReal a = d == 1 ? r : (d == 2 ? PetscSqrtReal(r) : PetscCbrtReal(r));
+    for (PetscInt k = 0; k < d * d; k++) pts->f[MPM_FIELD_DEFGRAD][p * d * d + k] *= a;
+  }
+  *V += dV;
+  MPMPointEOSUpdate(mpm, pts, p, pts->f[MPM_FIELD_MASS][p] / *V, e1);
+}
+
 /* After a module changed the points' e (and rho): p, T and c from the EOS; c keeps a strength model's share. */
 void MPMPointEOSUpdate(MPM mpm, MPMPoints *pts, PetscInt p, PetscReal rho1, PetscReal e1)
 {

@@ -58,8 +58,8 @@ PetscErrorCode MPMRelaxApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
     if (MPMStrengthIsSolid(mat->strength) || cell[p] < 0) continue; /* solids keep their pressure pattern: a viscous liquid relaxes */
     MPMEOSPressureKernel(mat->eos, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_ENERGY][p], &pr, &c2);
     if (!(c2 > 0.0)) continue;
-    if (PetscAbsReal(MPMPointDivergence(&pts, d, p)) * mpm->grid.hmin > mpm->pressure_relax_mach * PetscSqrtReal(c2)) continue; /* in a shock or a fast expansion */
-    if (pts.f[MPM_FIELD_DOMAINSCALE]) {                                                                                         /* a point made by splitting: the material expanded towards vacuum here */
+    if (MPMPointInShock(mpm, &pts, p, c2, mpm->pressure_relax_mach)) continue;
+    if (pts.f[MPM_FIELD_DOMAINSCALE]) { /* a point made by splitting: the material expanded towards vacuum here */
       PetscBool split = PETSC_FALSE;
       for (PetscInt k = 0; k < d; k++) split = (PetscBool)(split || pts.f[MPM_FIELD_DOMAINSCALE][p * d + k] < 1.0);
       if (split) continue;
@@ -82,17 +82,11 @@ PetscErrorCode MPMRelaxApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
     if (cell[p] >= 0) mpm->cellV[cell[p]] = mpm->cellS[cell[p]] = 0.0;
   MPMRelaxCellSums(mpm, cell, pts.n, w, q); /* p_c */
   for (PetscInt p = 0; p < pts.n; p++) {
-    PetscReal *V = &pts.f[MPM_FIELD_VOLUME][p], pc, dV, r;
+    PetscReal pc, dV;
     if (w[p] == 0.0) continue;
     pc = mpm->cellS[cell[p]] / mpm->cellV[cell[p]];
     dV = w[p] * (q[p] - pc);
-    r  = (*V + dV) / *V;
-    if (pts.f[MPM_FIELD_DEFGRAD]) { /* the domain follows the volume */
-      const PetscReal a = d == 1 ? r : (d == 2 ? PetscSqrtReal(r) : PetscCbrtReal(r));
-      for (PetscInt k = 0; k < d * d; k++) pts.f[MPM_FIELD_DEFGRAD][p * d * d + k] *= a;
-    }
-    *V += dV;
-    MPMPointEOSUpdate(mpm, &pts, p, pts.f[MPM_FIELD_MASS][p] / *V, pts.f[MPM_FIELD_ENERGY][p] - pc * dV / pts.f[MPM_FIELD_MASS][p]);
+    MPMPointChangeVolume(mpm, &pts, p, dV, pts.f[MPM_FIELD_ENERGY][p] - pc * dV / pts.f[MPM_FIELD_MASS][p]);
   }
   for (PetscInt p = 0; p < pts.n; p++) /* scratch left zeroed */
     if (cell[p] >= 0) mpm->cellV[cell[p]] = mpm->cellS[cell[p]] = 0.0;

@@ -33,6 +33,19 @@ static inline void MPMHypoelasticTrial(PetscInt d, PetscReal dt, PetscReal G, co
   for (PetscInt i = 0; i < d * d; i++) s[i] += dt * ds[i];
 }
 
+/* The equivalent strain rate sqrt(2/3 D':D') of the 3D strain-rate deviator (MPMStrainRateDeviator; the unresolved
+   directions' diagonal entries are -tr(D)/3). */
+static inline PetscReal MPMEquivalentStrainRate(PetscInt d, const PetscReal L[])
+{
+  PetscReal trD = 0.0, dd;
+
+  for (PetscInt i = 0; i < d; i++) trD += L[i * d + i];
+  dd = (3 - d) * PetscSqr(trD / 3.0);
+  for (PetscInt i = 0; i < d; i++)
+    for (PetscInt j = 0; j < d; j++) dd += PetscSqr(MPMStrainRateDeviator(d, L, trD, i, j));
+  return PetscSqrtReal(2.0 / 3.0 * dd);
+}
+
 /* von Mises equivalent stress sqrt(3/2 s':s') of the full 3D deviator the d x d block stands for. */
 static inline PetscReal MPMVonMisesStress(PetscInt d, const PetscReal s[])
 {

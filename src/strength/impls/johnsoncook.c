@@ -32,12 +32,17 @@ static inline PetscReal MPMStrengthThermal_JC(const Strength_JC *jc, PetscReal T
 }
 
 /* The flow stress with the thermal factor theta already evaluated: the radial return's iterations. */
+/* The rate factor 1 + C ln(epsdot / epsdot0) for r = epsdot / epsdot0 above 1, else 1. */
+static inline PetscReal MPMStrengthRateFactor_JC(const Strength_JC *jc, PetscReal r)
+{
+  return r > 1.0 ? 1.0 + jc->C * PetscLogReal(r) : 1.0;
+}
+
 static inline PetscReal MPMStrengthFlowTheta_JC(void *ctx, PetscReal epsp, PetscReal rate, PetscReal theta)
 {
   const Strength_JC *jc = (const Strength_JC *)ctx;
-  const PetscReal    r  = rate / jc->epsdot0;
 
-  return (jc->A + (epsp > 0.0 ? jc->B * PetscPowReal(epsp, jc->n) : 0.0)) * (1.0 + (r > 1.0 ? jc->C * PetscLogReal(r) : 0.0)) * theta;
+  return (jc->A + (epsp > 0.0 ? jc->B * PetscPowReal(epsp, jc->n) : 0.0)) * MPMStrengthRateFactor_JC(jc, rate / jc->epsdot0) * theta;
 }
 
 static PetscReal MPMStrengthFlow_JC(void *ctx, PetscReal epsp, PetscReal rate, PetscReal T)
@@ -53,18 +58,20 @@ static PetscReal MPMStrengthFlow_JC(void *ctx, PetscReal epsp, PetscReal rate, P
    general return's tolerance |residual| <= 1e-12 sigma_eq^trial. Newton needs 5.5 evaluations of the flow stress per
    return (the yield check and 4.5 iterations, one pow and one log each; measured on the 3D bar) where the general
    return's regula falsi needs 9.2 (the check, the bracket's end and 7.2 iterations), so the
-   answers differ from it within that tolerance. Returns dg. */
-static inline PetscReal MPMStrengthReturn_JC(const Strength_JC *jc, PetscInt d, PetscReal dt, PetscReal theta, PetscReal Rfix, PetscReal s[], PetscReal *epsp)
+   answers differ from it within that tolerance. With the total rate (rate >= 0, -mat_<m>_strength_johnsoncook_total_rate)
+   R is that rate's factor, fixed over the iterations, and dY/ddg loses its rate term. Returns dg. */
+static inline PetscReal MPMStrengthReturn_JC(const Strength_JC *jc, PetscInt d, PetscReal dt, PetscReal theta, PetscReal rate, PetscReal s[], PetscReal *epsp)
 {
+  const PetscBool total = (PetscBool)(rate >= 0.0);
   const PetscReal seq = MPMVonMisesStress(d, s), G3 = 3.0 * jc->G, rinv = dt > 0.0 ? 1.0 / (dt * jc->epsdot0) : 0.0;
-  const PetscReal Y0 = Rfix > 0.0 ? (jc->A + jc->B * (*epsp > 0.0 ? PetscPowReal(*epsp, jc->n) : 0.0)) * Rfix * theta : MPMStrengthFlowTheta_JC((void *)jc, *epsp, 0.0, theta);
-  PetscReal       a  = 0.0, b, dg;
+  const PetscReal Y0 = MPMStrengthFlowTheta_JC((void *)jc, *epsp, total ? rate : 0.0, theta), Rt = total ? MPMStrengthRateFactor_JC(jc, rate / jc->epsdot0) : 1.0;
+  PetscReal       a = 0.0, b, dg;
 
   if (seq - Y0 <= 0.0) return 0.0;
   dg = b = (seq - Y0) / G3;
   for (PetscInt it = 0; it < 100; it++) {
     const PetscReal eps = *epsp + dg, en = eps > 0.0 ? PetscPowReal(eps, jc->n) : 0.0, H = jc->A + jc->B * en, r = dg * rinv;
-    const PetscReal R = Rfix > 0.0 ? Rfix : (r > 1.0 ? 1.0 + jc->C * PetscLogReal(r) : 1.0), res = seq - G3 * dg - H * R * theta;
+    const PetscReal R = total ? Rt : MPMStrengthRateFactor_JC(jc, r), res = seq - G3 * dg - H * R * theta;
     PetscReal       slope, next;
 
     if (PetscAbsReal(res) <= 1e-12 * seq) break;
@@ -73,7 +80,7 @@ static inline PetscReal MPMStrengthReturn_JC(const Strength_JC *jc, PetscInt d, 
     else
       b = dg;
     if (b - a <= 1e-14 * b) break;
-    slope = G3 + theta * ((eps > 0.0 ? jc->B * jc->n * en / eps : 0.0) * R + (Rfix <= 0.0 && r > 1.0 ? H * jc->C / dg : 0.0));
+    slope = G3 + theta * ((eps > 0.0 ? jc->B * jc->n * en / eps : 0.0) * R + (!total && r > 1.0 ? H * jc->C / dg : 0.0));
     next  = dg + res / slope;
     dg    = next > a && next < b ? next : 0.5 * (a + b);
   }
@@ -90,21 +97,7 @@ static void MPMStrengthStress_JC(void *ctx, PetscInt d, PetscReal dt, const Pets
   /* An elastic trial below A (1 - T*) needs no return and no pow: for m >= 1, T*^m <= T* and eps_p^n >= 0, so the flow
      stress at the rate 0 of the yield check is at least A (1 - T*), in floating point too (pow is faithfully rounded
      and the operations are monotonic): the return would find no yield and leave s and eps_p as they are. */
-  if (!(jc->m >= 1.0 && MPMVonMisesStress(d, s) <= jc->A * (1.0 - MPMStrengthHomologous_JC(jc, T)))) {
-    PetscReal Rfix = 0.0; /* the plastic rate's factor, found with dg (the default) */
-    if (jc->total_rate) { /* the total equivalent strain rate sqrt(2/3 D' : D') of the step, D' the deviator of the 3 x 3 rate of deformation */
-      PetscReal D[3][3] = {{0}}, tr, dd = 0.0, r;
-      for (PetscInt i = 0; i < d; i++)
-        for (PetscInt j = 0; j < d; j++) D[i][j] = 0.5 * (L[i * d + j] + L[j * d + i]);
-      tr = D[0][0] + D[1][1] + D[2][2];
-      for (PetscInt i = 0; i < 3; i++) D[i][i] -= tr / 3.0;
-      for (PetscInt i = 0; i < 3; i++)
-        for (PetscInt j = 0; j < 3; j++) dd += D[i][j] * D[i][j];
-      r    = PetscSqrtReal(2.0 / 3.0 * dd) / jc->epsdot0;
-      Rfix = r > 1.0 ? 1.0 + jc->C * PetscLogReal(r) : 1.0;
-    }
-    (void)MPMStrengthReturn_JC(jc, d, dt, MPMStrengthThermal_JC(jc, T), Rfix, s, epsp);
-  }
+  if (!(jc->m >= 1.0 && MPMVonMisesStress(d, s) <= jc->A * (1.0 - MPMStrengthHomologous_JC(jc, T)))) (void)MPMStrengthReturn_JC(jc, d, dt, MPMStrengthThermal_JC(jc, T), jc->total_rate ? MPMEquivalentStrainRate(d, L) : -1.0, s, epsp);
   *c2 = MPMHypoelasticWaveSpeed2(jc->G, rho);
 }
 
