@@ -78,6 +78,7 @@ typedef const char *MPMExactType;
 #define MPMEXACTNOH "noh"
 #define MPMEXACTANVIL "anvil"
 #define MPMEXACTHYDROSTATIC "hydrostatic"
+#define MPMEXACTSLIDE "slide"
 #define MPMEXACTDAMBREAK "dambreak"
 
 /* The MPM object */

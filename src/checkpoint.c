@@ -80,7 +80,7 @@ static void MPMCkptDiag(MPMDiagnostics *dg, PetscReal a[], PetscBool store)
   const PetscInt nv = 7, nw = (PetscInt)(sizeof(w) / sizeof(w[0]));
   PetscReal     *t = &a[MPM_CKPT_OUTFLOW];
 
-  _Static_assert(7 + sizeof(w) / sizeof(w[0]) + 4 <= MPM_CKPT_OUTFLOW, "MPMCkptDiag: the counters run into the outflow tallies");
+  _Static_assert(7 + sizeof(w) / sizeof(w[0]) + 5 <= MPM_CKPT_OUTFLOW, "MPMCkptDiag: the counters run into the outflow tallies");
   for (PetscInt i = 0; i < nv; i++) {
     if (store)
       a[i] = *v[i];
@@ -93,16 +93,18 @@ static void MPMCkptDiag(MPMDiagnostics *dg, PetscReal a[], PetscBool store)
     else
       *w[i] = (PetscInt)a[nv + i];
   }
-  if (store) { /* the volume fill (global), after the counters, then the volume-fill module's sums (this rank's) */
+  if (store) { /* the volume fill (global), after the counters, then the volume-fill module's and the wall friction's sums (this rank's) */
     a[nv + nw]     = dg->volume_fill_max;
     a[nv + nw + 1] = (PetscReal)dg->first_overlap_step;
     a[nv + nw + 2] = dg->fill_volume;
     a[nv + nw + 3] = dg->fill_point_steps;
+    a[nv + nw + 4] = dg->friction_work;
   } else {
     dg->volume_fill_max    = a[nv + nw];
     dg->first_overlap_step = (PetscInt)a[nv + nw + 1];
     dg->fill_volume        = a[nv + nw + 2];
     dg->fill_point_steps   = a[nv + nw + 3];
+    dg->friction_work      = a[nv + nw + 4];
   }
   for (PetscInt i = 0; i < MPM_OUTFLOW_N; i++) {
     if (store)
@@ -113,7 +115,7 @@ static void MPMCkptDiag(MPMDiagnostics *dg, PetscReal a[], PetscBool store)
 }
 
 /* The counters that are this rank's sums (the report adds them over ranks): their indices in MPMCkptDiag's order. */
-static const PetscInt MPMCkptDiagSums[] = {0, 1, 7, 17, 18, 19, 20, 23, 27, 28}; /* and the outflow tallies from MPM_CKPT_OUTFLOW */
+static const PetscInt MPMCkptDiagSums[] = {0, 1, 7, 17, 18, 19, 20, 23, 27, 28, 29}; /* and the outflow tallies from MPM_CKPT_OUTFLOW */
 
 PetscErrorCode MPMCheckpointWrite(MPM mpm)
 {

@@ -29,6 +29,7 @@ PETSC_EXTERN PetscErrorCode MPMExactCreate_Sedov(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_Noh(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_Anvil(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_Hydrostatic(MPMExact);
+PETSC_EXTERN PetscErrorCode MPMExactCreate_Slide(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_DamBreak(MPMExact);
 
 static PetscBool MPMPackageInitialized = PETSC_FALSE;
@@ -67,6 +68,7 @@ PetscErrorCode MPMInitializePackage(void)
   PetscCall(MPMExactRegister(MPMEXACTNOH, MPMExactCreate_Noh));
   PetscCall(MPMExactRegister(MPMEXACTANVIL, MPMExactCreate_Anvil));
   PetscCall(MPMExactRegister(MPMEXACTHYDROSTATIC, MPMExactCreate_Hydrostatic));
+  PetscCall(MPMExactRegister(MPMEXACTSLIDE, MPMExactCreate_Slide));
   PetscCall(MPMExactRegister(MPMEXACTDAMBREAK, MPMExactCreate_DamBreak));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

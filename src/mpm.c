@@ -190,6 +190,17 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscCall(PetscOptionsBool("-mpm_ke_fix", "Turn the kinetic energy the grid-to-point velocity map discards into internal energy of the point", "", mpm->ke_fix, &mpm->ke_fix, NULL));
   PetscCall(MPMOptionsDimEnums(PetscOptionsObject, "-mpm_bc_lo", "Boundary at the lower face of each direction", MPMBoundaryTypes, g->dim, (PetscEnum *)mpm->bc_lo));
   PetscCall(MPMOptionsDimEnums(PetscOptionsObject, "-mpm_bc_hi", "Boundary at the upper face of each direction", MPMBoundaryTypes, g->dim, (PetscEnum *)mpm->bc_hi));
+  PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-mpm_wall_friction_lo", "Coulomb friction coefficient mu of the wall at the lower face of each direction [-], >= 0 (0: frictionless); a wall with friction is a contact: the body may leave it",
+                               g->dim, mpm->friction_lo));
+  PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-mpm_wall_friction_hi", "Coulomb friction coefficient mu of the wall at the upper face of each direction [-], >= 0 (0: frictionless)", g->dim, mpm->friction_hi));
+  for (PetscInt k = 0; k < g->dim; k++) {
+    PetscCall(MPMOptionsCheckRange("-mpm_wall_friction_lo", mpm->friction_lo[k], 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+    PetscCall(MPMOptionsCheckRange("-mpm_wall_friction_hi", mpm->friction_hi[k], 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+    PetscCheck(mpm->friction_lo[k] == 0.0 || mpm->bc_lo[k] == MPM_BC_WALL, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_wall_friction_lo %g in direction %" PetscInt_FMT ": that face is %s, not a wall (-mpm_bc_lo); friction acts at walls only",
+               (double)mpm->friction_lo[k], k, MPMBoundaryTypes[mpm->bc_lo[k]]);
+    PetscCheck(mpm->friction_hi[k] == 0.0 || mpm->bc_hi[k] == MPM_BC_WALL, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_wall_friction_hi %g in direction %" PetscInt_FMT ": that face is %s, not a wall (-mpm_bc_hi); friction acts at walls only",
+               (double)mpm->friction_hi[k], k, MPMBoundaryTypes[mpm->bc_hi[k]]);
+  }
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-mpm_gravity", "Body acceleration g [cm/s^2]; enables the gravity module", g->dim, mpm->gravity));
   for (PetscInt k = 0; k < g->dim; k++) {
     PetscCall(MPMOptionsCheckRange("-mpm_gravity", mpm->gravity[k], -PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
@@ -200,6 +211,7 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
     PetscCheck(g->dim == 2, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_axisymmetric needs -mpm_dim 2 (x = r, y = z), got %" PetscInt_FMT, g->dim);
     PetscCheck(g->lo[0] == 0.0 && mpm->bc_lo[0] == MPM_BC_WALL, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_axisymmetric: the axis is x = 0: -mpm_lo must be 0 in x (got %g) and -mpm_bc_lo wall in x", (double)g->lo[0]);
     PetscCheck(mpm->stress_integration == MPM_STRESS_POINT, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_axisymmetric needs -mpm_stress_integration point (the cell rule has no hoop term)");
+    PetscCheck(mpm->friction_lo[0] == 0.0, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_wall_friction_lo %g in x: with -mpm_axisymmetric that face is the axis r = 0, a symmetry line; valid is 0", (double)mpm->friction_lo[0]);
   }
   PetscCall(PetscOptionsString("-mpm_output", "Output directory DIR (DIR/petmpm.h5, DIR/petmpm.xmf)", "", mpm->outdir, mpm->outdir, sizeof(mpm->outdir), NULL));
   PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-mpm_sort_interval", "Steps between sorts of the points by cell (transfers then find their nodes in cache) [-], >= 0 (0: never)", &mpm->sort_interval, 0, PETSC_MAX_INT));

@@ -127,15 +127,17 @@ static inline PetscInt MPMRegionAt(MPM mpm, const PetscReal x[])
 PetscErrorCode MPMGetScene(MPM mpm, MPMScene *sc)
 {
   PetscFunctionBegin;
-  sc->comm    = mpm->comm;
-  sc->grid    = &mpm->grid;
-  sc->bc_lo   = mpm->bc_lo;
-  sc->bc_hi   = mpm->bc_hi;
-  sc->nmat    = mpm->nmat;
-  sc->nreg    = mpm->nreg;
-  sc->mat     = mpm->mat;
-  sc->reg     = mpm->reg;
-  sc->gravity = mpm->gravity;
+  sc->comm        = mpm->comm;
+  sc->grid        = &mpm->grid;
+  sc->bc_lo       = mpm->bc_lo;
+  sc->bc_hi       = mpm->bc_hi;
+  sc->nmat        = mpm->nmat;
+  sc->nreg        = mpm->nreg;
+  sc->mat         = mpm->mat;
+  sc->reg         = mpm->reg;
+  sc->gravity     = mpm->gravity;
+  sc->friction_lo = mpm->friction_lo;
+  sc->friction_hi = mpm->friction_hi;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

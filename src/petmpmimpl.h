@@ -91,6 +91,7 @@ PETSC_INTERN const char *const MPMDtLimitNames[];
 /* Time, carried explicitly through a step: t^n, the step dt_n and the leapfrog kick (dt_{n-1} + dt_n)/2 [s]. */
 typedef struct {
   PetscReal tn, dt, kick;
+  PetscBool remap; /* the nodal velocities are the MUSL remap's, not the kick's (forces such as wall friction act once, in the kick) */
 } MPMStepContext;
 
 typedef struct _p_MPMModule *MPMModule;
@@ -125,6 +126,7 @@ typedef struct {
   PetscInt  domain_resets;                                  /* point-steps whose skewed CPDI domain this rank reset to a cube (MPMDomainApply) */
   PetscInt  spalled;                                        /* point-steps whose EOS state spalled, p = 0 (this rank; MPMEOSSpalled)  */
   PetscReal plastic_work;                                   /* sum over the steps of m_p sigma_eq d eps_p / rho_p on this rank [erg] */
+  PetscReal friction_work;                                  /* kinetic energy wall friction took out, on this rank's wall nodes [erg] */
   PetscInt  rebalances;                                     /* times -mpm_balance rebuilt the grid's ownership ranges (global) */
   PetscInt  popping_checks;                                 /* checks of the popping module (global)                                 */
   PetscInt  popped_max;                                     /* most points popped at one check (global)                              */
@@ -169,7 +171,8 @@ struct _p_MPM {
   MPMEnergyUpdate      energy_update;
   PetscBool            ke_fix; /* heat the points with the kinetic energy the grid-to-point map discards */
   MPMBoundaryType      bc_lo[MPM_MAX_DIM], bc_hi[MPM_MAX_DIM];
-  PetscReal            gravity[MPM_MAX_DIM]; /* body acceleration g [cm/s^2]                      */
+  PetscReal            gravity[MPM_MAX_DIM];                               /* body acceleration g [cm/s^2]                      */
+  PetscReal            friction_lo[MPM_MAX_DIM], friction_hi[MPM_MAX_DIM]; /* Coulomb friction coefficient of each wall face [-], 0: frictionless */
   PetscBool            has_gravity;
   PetscBool            has_stress;    /* some material has a strength model: s_p enters the force            */
   PetscBool            track_F;       /* the shape functions or a strength model read the deformation gradient */

@@ -440,8 +440,8 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   PetscBool      budget;
   PetscInt       nonfinite = 0, npoints, nvac, nempty, nmin, nmax;
   PetscReal      imbalance;
-  PetscReal      eisen, nisen, nsplit, nrefuse, nreflect, nreset, nspall, vfill, nfill, out[3] = {0, 0, 0};
-  PetscBool      outflow = PETSC_FALSE;
+  PetscReal      eisen, nisen, nsplit, nrefuse, nreflect, nreset, nspall, vfill, nfill, wfric, out[3] = {0, 0, 0};
+  PetscBool      outflow = PETSC_FALSE, friction = PETSC_FALSE;
   PetscMPIInt    size, rank;
 
   PetscFunctionBegin;
@@ -454,7 +454,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   PetscCall(MPMDiagnoseVacuum(mpm, &nvac, &nempty));
   PetscCall(MPMPointBalance(mpm, &imbalance, &nmin, &nmax));
   {
-    PetscReal s[11] = {mpm->diag.isentrope_energy,
+    PetscReal s[12] = {mpm->diag.isentrope_energy,
                        (PetscReal)mpm->diag.isentrope_points,
                        (PetscReal)mpm->diag.points_split,
                        (PetscReal)mpm->diag.split_refused,
@@ -464,7 +464,8 @@ PetscErrorCode MPMWriteReport(MPM mpm)
                        0.0,
                        (PetscReal)mpm->diag.spalled,
                        mpm->diag.fill_volume,
-                       mpm->diag.fill_point_steps};
+                       mpm->diag.fill_point_steps,
+                       mpm->diag.friction_work};
     if (mpm->has_stress) { /* the stored elastic energy: hyperelastic models V_0 W(F) (V_0 = V / det F), hypoelastic ones their shear energy V sigma_eq^2 / (6 G) (s : s / (4 G)) */
       const PetscInt d = g->dim;
       MPMPoints      pts;
@@ -479,7 +480,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
       }
       PetscCall(MPMPointsRestoreArrays(mpm, &pts));
     }
-    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 11, MPIU_REAL, MPIU_SUM, mpm->comm));
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 12, MPIU_REAL, MPIU_SUM, mpm->comm));
     wplastic = s[6];
     eelastic = s[7];
     eisen    = s[0];
@@ -491,7 +492,9 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     nspall   = s[8];
     vfill    = s[9];
     nfill    = s[10];
+    wfric    = s[11];
   }
+  for (PetscInt k = 0; k < g->dim; k++) friction = (PetscBool)(friction || mpm->friction_lo[k] > 0.0 || mpm->friction_hi[k] > 0.0);
   for (PetscInt k = 0; k < g->dim; k++) outflow = (PetscBool)(outflow || mpm->bc_lo[k] == MPM_BC_OUTFLOW || mpm->bc_hi[k] == MPM_BC_OUTFLOW);
   if (outflow) { /* what left through outflow faces: points, and mass and total energy relative to the initial sums */
     out[0] = mpm->diag.outflow[MPM_OUTFLOW_POINTS];
@@ -513,7 +516,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     eb[1] = (energy - kinetic - (mpm->energy0 - mpm->kinetic0)) / mpm->kinetic0;
     eb[2] = wplastic / mpm->kinetic0;
     eb[3] = eelastic / mpm->kinetic0;
-    eb[4] = (energy - mpm->energy0) / mpm->kinetic0;
+    eb[4] = (energy + wfric - mpm->energy0) / mpm->kinetic0; /* wall friction's work left the system */
   }
   denergy = mpm->energy0 != 0 ? (energy - mpm->energy0) / PetscAbsReal(mpm->energy0) : energy;
   pss     = mpm->wall_loop > 0 ? mpm->point_steps / mpm->wall_loop : 0.0;
@@ -545,7 +548,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     if (gb[0] != 0.0) {
       gb[1] = (kinetic - mpm->kinetic0) / gb[0];
       gb[2] = (energy - kinetic - mpm->potential - (mpm->energy0 - mpm->kinetic0 - mpm->potential0)) / gb[0];
-      gb[3] = (energy - mpm->energy0) / gb[0];
+      gb[3] = (energy + wfric - mpm->energy0) / gb[0];
     }
     PetscCall(PetscPrintf(mpm->comm, "  gravity: potential energy released %.6g erg; of it kinetic %.4f, internal (viscous and numerical dissipation, compression) %.4f, error %.2e\n", (double)gb[0], (double)gb[1], (double)gb[2], (double)gb[3]));
   }
@@ -555,6 +558,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     else
       PetscCall(PetscPrintf(mpm->comm, "  warning: not at rest at the final time: kinetic energy %.3g of its initial value, above -mpm_stop_at_rest %g\n", (double)(mpm->kinetic0 > 0 ? kinetic / mpm->kinetic0 : 0.0), (double)mpm->rest_fraction));
   }
+  if (friction) PetscCall(PetscPrintf(mpm->comm, "  wall friction: work %.6g erg, %.4f of the initial kinetic energy (energy that left the system: the budgets count it)\n", (double)wfric, (double)(mpm->kinetic0 > 0.0 ? wfric / mpm->kinetic0 : 0.0)));
   if (budget)
     PetscCall(PetscPrintf(mpm->comm, "  energy budget (of the initial kinetic energy): kinetic %.4f, internal change %.4f (plastic work %.4f, elastic %.4f, the rest %.4f), error %.2e\n", (double)eb[0], (double)eb[1], (double)eb[2], (double)eb[3],
                           (double)(eb[1] - eb[2] - eb[3]), (double)eb[4]));
@@ -610,7 +614,8 @@ PetscErrorCode MPMWriteReport(MPM mpm)
               (double)mpm->diag.popped_sum, (double)mpm->diag.first_popped_time, (double)x[0], (double)x[1], (double)x[2]);
     }
     if (budget) fprintf(fp, "  \"energy_budget\": {\"kinetic\": %.6e, \"internal_change\": %.6e, \"plastic_work\": %.6e, \"elastic\": %.6e, \"error\": %.6e},\n", (double)eb[0], (double)eb[1], (double)eb[2], (double)eb[3], (double)eb[4]);
-    fprintf(fp, "  \"energy_accounted\": %.6e,\n", (double)(mpm->energy0 != 0 ? (denergy * PetscAbsReal(mpm->energy0) - eisen) / PetscAbsReal(mpm->energy0) : denergy - eisen));
+    if (friction) fprintf(fp, "  \"friction_work\": %.6e,\n  \"friction_work_fraction\": %.6e,\n", (double)wfric, (double)(mpm->kinetic0 > 0.0 ? wfric / mpm->kinetic0 : 0.0));
+    fprintf(fp, "  \"energy_accounted\": %.6e,\n", (double)(mpm->energy0 != 0 ? (denergy * PetscAbsReal(mpm->energy0) + wfric - eisen) / PetscAbsReal(mpm->energy0) : denergy + wfric - eisen));
     fprintf(fp, "  \"robustness\": {\"isentrope_energy\": %.6e, \"isentrope_point_steps\": %.0f, \"dt_limit\": {", (double)(mpm->energy0 != 0 ? eisen / PetscAbsReal(mpm->energy0) : eisen), (double)nisen);
     for (PetscInt l = 0; l < MPM_NUM_DT_LIMITS; l++) fprintf(fp, "%s\"%s\": %" PetscInt_FMT, l ? ", " : "", MPMDtLimitNames[l], mpm->diag.dt_limit[l]);
     fprintf(fp,

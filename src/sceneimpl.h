@@ -36,7 +36,8 @@ typedef struct {
   PetscInt               nmat, nreg;
   const MPMMaterial     *mat;
   const MPMRegion       *reg;
-  const PetscReal       *gravity; /* -mpm_gravity [cm/s^2] */
+  const PetscReal       *gravity;                   /* -mpm_gravity [cm/s^2] */
+  const PetscReal       *friction_lo, *friction_hi; /* wall friction coefficient of each face [-] */
 } MPMScene;
 
 /* A region's hydrostatic state under the scene's gravity (-region_<r>_hydrostatic, src/scene.c): p(z) at depth z below

@@ -278,6 +278,11 @@ def test_bad_input():
             (["-options_file", HYDRO, "-mpm_gravity", "0,0", "-mpm_output", d], "-region_col_hydrostatic"),
             ([*SCENE_CTH, "-mat_gas_eos_idealgas_gama", "1.4", "-mpm_output", d], "-mat_gas_eos_idealgas_gama"),
             ([*SCENE_CTH, "-mat_gas_strength_johnsoncok_A", "1", "-mpm_output", d], "-mat_gas_strength_johnsoncok_A"),
+            ([*SCENE_CTH, "-mpm_wall_friction_lo", "-0.1", "-mpm_output", d], "-mpm_wall_friction_lo"),
+            ([*SCENE_CTH, "-mpm_wall_friction_hi", "nan", "-mpm_output", d], "-mpm_wall_friction_hi"),
+            ([*SCENE_CTH, "-mpm_bc_hi", "free", "-mpm_wall_friction_hi", "0.2", "-mpm_output", d], "-mpm_wall_friction_hi 0.2 in direction 0: that face is free"),
+            (["-options_file", RZ, "-mpm_wall_friction_lo", "0.1,0.1", "-mpm_output", d], "-mpm_wall_friction_lo 0.1 in x: with -mpm_axisymmetric"),
+            (["-options_file", RZ, "-mpm_exact_type", "slide", "-mpm_output", d], "-mpm_exact_type slide"),
         ]
         for args, needle in cases:
             p = run(args, expect_ok=False)

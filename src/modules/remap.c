@@ -18,7 +18,11 @@ PetscErrorCode MPMRemapApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
     for (PetscInt k = 0; k < d; k++) node[c].p[k] *= minv;
   }
   PetscCall(VecRestoreArray(mpm->nodes, (PetscScalar **)&node));
-  PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_VELOCITY, ctx));
+  {
+    MPMStepContext rctx = *ctx;
+    rctx.remap          = PETSC_TRUE;
+    PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_VELOCITY, &rctx));
+  }
   PetscCall(MPMGridGlobalToLocal(mpm));
   PetscCall(MPMGather(mpm, ctx->dt, ctx->dt, PETSC_FALSE, PETSC_TRUE));
   PetscFunctionReturn(PETSC_SUCCESS);

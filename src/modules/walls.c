@@ -1,31 +1,79 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
-/* Walls module (grid phase MPM_PHASE_GRID_VELOCITY): rigid frictionless walls, the normal velocity of the nodes on
-   a wall face is zero: (mv)_I, f_I and v_I^n lose their normal component there. Registered when a face is a wall
-   (-mpm_bc_lo, -mpm_bc_hi); it runs wherever nodal velocities are formed (the advance and the MUSL remap). */
+/* Walls module (grid phase MPM_PHASE_GRID_VELOCITY): rigid walls. Registered when a face is a wall (-mpm_bc_lo,
+   -mpm_bc_hi); it runs wherever nodal velocities are formed (the advance and the MUSL remap).
+   A frictionless wall (a symmetry plane): the normal velocity of the nodes on the face is zero, (mv)_I, f_I and v_I^n
+   lose their normal component there, whichever way the node moves.
+   A wall with Coulomb friction (-mpm_wall_friction_lo, -mpm_wall_friction_hi > 0) is a contact with a rigid body
+   (Bardenhagen, Brackbill & Sulsky, CMAME 187 (2000) 529): a node that moves into it loses its normal velocity v_n,
+   an impulse m_I |v_n| per step, and friction takes at most mu times that from its tangential velocity,
+   v_t <- v_t max(0, 1 - mu |v_n| / |v_t|), which stops a node whose tangential speed is below mu |v_n| (sticking); a
+   node that moves away separates (a sticky wall would pull the body down where it lifts, and friction on the
+   compressive impulses alone would then exceed mu times the net normal force: measured on inputs/slide_2d.opts, the
+   block stopped 2.7 times too soon). The symmetry planes act first, so that friction reads the tangential velocity
+   they leave (an anvil's edge on a symmetry plane). Friction acts in the kick only (the MUSL remap's velocities come
+   from points that already felt it). Its work is what the step's energy loses: with m_I (v_I - v_I^n) = dt (f_I +
+   f_fric), the conservative update's sum over the grid of m_I |v|^2 / 2 changes by f_fric . (v_I^n + v_I) / 2 dt more
+   than the internal work, so the module tallies m_I (v* - v_t) . (v_I^n + v_t) / 2 per node (v* the tangential
+   velocity before friction), which the report adds back (friction_work). */
 #include "../petmpmimpl.h"
 
-/* Zeroes component k of every owned node in the plane of local index ik of direction k. */
-static void MPMWallPlane(const MPMGrid *g, MPMNode *node, PetscInt k, PetscInt ik)
+/* Calls fn on every owned node in the plane of local index ik of direction k (side -1: the lower face, +1: the upper). */
+static void MPMWallPlaneEach(const MPMGrid *g, MPMNode *node, PetscInt k, PetscInt ik, PetscInt side, PetscReal mu, PetscReal *work, void (*fn)(MPMNode *, PetscInt, PetscInt, PetscInt, PetscReal, PetscReal *))
 {
   const PetscInt k1 = (k + 1) % 3, k2 = (k + 2) % 3;
   PetscInt       l[3];
 
   l[k] = ik;
   for (l[k2] = 0; l[k2] < g->xm[k2]; l[k2]++)
-    for (l[k1] = 0; l[k1] < g->xm[k1]; l[k1]++) {
-      MPMNode *nd = &node[(l[2] * g->xm[1] + l[1]) * g->xm[0] + l[0]];
-      nd->p[k] = nd->f[k] = nd->v0[k] = 0.0;
+    for (l[k1] = 0; l[k1] < g->xm[k1]; l[k1]++) fn(&node[(l[2] * g->xm[1] + l[1]) * g->xm[0] + l[0]], g->dim, k, side, mu, work);
+}
+
+/* Calls fn on the nodes of every wall face this rank owns nodes of whose friction coefficient is (contact) or is not
+   (!contact) positive, with the coefficient. */
+static void MPMWallFacesEach(MPM mpm, MPMNode *node, PetscBool contact, PetscReal *work, void (*fn)(MPMNode *, PetscInt, PetscInt, PetscInt, PetscReal, PetscReal *))
+{
+  const MPMGrid *g = &mpm->grid;
+
+  for (PetscInt k = 0; k < g->dim; k++) {
+    if (mpm->bc_lo[k] == MPM_BC_WALL && g->xs[k] == 0 && (mpm->friction_lo[k] > 0.0) == contact) MPMWallPlaneEach(g, node, k, 0, -1, mpm->friction_lo[k], work, fn);
+    if (mpm->bc_hi[k] == MPM_BC_WALL && g->xs[k] + g->xm[k] == g->cells[k] + 1 && (mpm->friction_hi[k] > 0.0) == contact) MPMWallPlaneEach(g, node, k, g->xm[k] - 1, 1, mpm->friction_hi[k], work, fn);
+  }
+}
+
+/* A frictionless wall (a symmetry plane): the normal velocity is zero, whichever way the node moves. */
+static void MPMWallNode(MPMNode *nd, PetscInt d, PetscInt k, PetscInt side, PetscReal mu, PetscReal *work)
+{
+  nd->p[k] = nd->f[k] = nd->v0[k] = 0.0;
+}
+
+/* A frictional wall: a contact. A node moving into it loses its normal velocity and, by friction, at most mu times that
+   of its tangential velocity (work: the energy friction took); a node moving away separates. */
+static void MPMWallContactNode(MPMNode *nd, PetscInt d, PetscInt k, PetscInt side, PetscReal mu, PetscReal *work)
+{
+  const PetscReal vn = side * nd->p[k]; /* > 0: into the wall */
+  PetscReal       vt = 0.0;
+
+  if (vn < 0.0) return;
+  for (PetscInt j = 0; j < d; j++)
+    if (j != k) vt += nd->p[j] * nd->p[j];
+  if (work && vt > 0.0 && nd->m > 0.0) {
+    const PetscReal lambda = PetscMin(1.0, mu * vn / PetscSqrtReal(vt)); /* the share of v_t friction takes */
+    for (PetscInt j = 0; j < d; j++) {
+      if (j == k) continue;
+      {
+        const PetscReal vs = nd->p[j];
+        nd->p[j]           = (1.0 - lambda) * vs;
+        *work += nd->m * (vs - nd->p[j]) * (nd->v0[j] + nd->p[j]) * 0.5;
+      }
     }
+  }
+  nd->p[k] = nd->f[k] = nd->v0[k] = 0.0;
 }
 
 PetscErrorCode MPMWallsApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *node)
 {
-  const MPMGrid *g = &mpm->grid;
-
   PetscFunctionBegin;
-  for (PetscInt k = 0; k < g->dim; k++) {
-    if (mpm->bc_lo[k] == MPM_BC_WALL && g->xs[k] == 0) MPMWallPlane(g, node, k, 0);
-    if (mpm->bc_hi[k] == MPM_BC_WALL && g->xs[k] + g->xm[k] == g->cells[k] + 1) MPMWallPlane(g, node, k, g->xm[k] - 1);
-  }
+  MPMWallFacesEach(mpm, node, PETSC_FALSE, NULL, MPMWallNode);                                               /* symmetry planes first: friction reads the velocity they leave */
+  MPMWallFacesEach(mpm, node, PETSC_TRUE, ctx->remap ? NULL : &mpm->diag.friction_work, MPMWallContactNode); /* friction acts in the kick only */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
