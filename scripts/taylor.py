@@ -3,7 +3,8 @@
 """The Taylor anvil tables of docs/validation-taylor.md: the 190 m/s rod in 3D (inputs/taylor_anvil_3d.opts) and
 axisymmetric (inputs/taylor_anvil_rz.opts) at R0/6, R0/9 and R0/12 cells, every shot of
 ../shared/reference/taylor_ofhc_copper.csv on the rz rod at R0/12, and the rz rod at R0/9 with each shape family at
-1, 2 and 3 points per cell per direction. Writes a markdown file (default docs/validation-taylor-runs.md) and the
+1, 2 and 3 points per cell per direction, and the anvil's friction (-mpm_wall_friction_lo: mu 0 to 0.1 at the three
+resolutions, and every shot with mu = 0.05). Writes a markdown file (default docs/validation-taylor-runs.md) and the
 final-profile plot of the three 3D runs (docs/taylor_profile.png, scripts/taylor_profile.py).
 
 usage: scripts/taylor.py [--exe build/petmpm] [--out docs/validation-taylor-runs.md] [--quick]
@@ -20,6 +21,7 @@ import petmpmlib as lib  # noqa: E402
 SHOTS = [("Johnson & Cook 1983", 1.3e4, 2.54, 1.956, 0.991), ("Johnson & Cook 1983", 1.46e4, 2.54, 1.869, 1.067),
          ("Johnson & Cook 1983", 1.9e4, 2.54, 1.621, 1.356), ("Wilkins & Guinan 1973", 2.1e4, 2.347, 1.509, 1.658)]
 RES = {6: ("16,16,42", "16,42"), 9: ("24,24,63", "24,63"), 12: ("32,32,84", "32,84")}
+FRICTION = (0.0, 0.02, 0.05, 0.1)  # the anvil's Coulomb friction coefficients tried (3D: 0 and 0.05)
 
 
 def run(exe, scene, args, out):
@@ -63,6 +65,27 @@ def main():
         for src, v, L0, lf, dm in SHOTS:
             rep, err = run(a.exe, "taylor_anvil_rz", ["-mpm_cells", RES[9 if a.quick else 12][1], "-region_rod_hi", f"0.381,{L0}", "-region_rod_velocity", f"0,-{v}", "-mpm_exact_anvil_speed", str(v),
                                                       "-mpm_exact_anvil_length", str(lf), "-mpm_exact_anvil_diameter", str(dm)], os.path.join(tmp, "shot"))
+            if rep is None:
+                md.append(f"| {src} | {v / 100:.0f} | failed: {err} |")
+                continue
+            md.append(f"| {src} | {v / 100:.0f} | {10 * lf:.2f} / {10 * check(rep, 'final_length'):.2f} | {100 * (check(rep, 'final_length') / lf - 1):+.1f}% | "
+                      f"{10 * dm:.2f} / {10 * check(rep, 'footprint'):.2f} | {100 * (check(rep, 'footprint') / dm - 1):+.1f}% |")
+        md += ["", "## Anvil friction: 190 m/s (-mpm_wall_friction_lo), Lf / Dmax [mm] by friction coefficient", "",
+               "| cells a radius | model | " + " | ".join(f"mu = {mu}" for mu in FRICTION) + " |", "|---|---|" + "---|" * len(FRICTION)]
+        for n, (c3, c2) in RES.items():
+            for scene, cells, mus in (("taylor_anvil_rz", c2, FRICTION), ("taylor_anvil_3d", c3, (0.0, 0.05))):
+                if a.quick and scene.endswith("3d"):
+                    continue
+                row = []
+                for mu in FRICTION:
+                    rep, err = run(a.exe, scene, ["-mpm_cells", cells, "-mpm_wall_friction_lo", f"0,0,{mu}" if scene.endswith("3d") else f"0,{mu}"], os.path.join(tmp, "mu")) if mu in mus else (None, ["-"])
+                    row.append(f"{10 * check(rep, 'final_length'):.2f} / {10 * check(rep, 'footprint'):.2f} ({rep['friction_work_fraction'] if 'friction_work_fraction' in rep else 0:.3f}, {rep['energy_budget']['error']:.0e})" if rep else err[0][:40])
+                md.append(f"| {n} | {'3D' if scene.endswith('3d') else 'rz'} | " + " | ".join(row) + " |")
+        md += ["", "(in brackets: the friction's work and the energy budget's error, both over the impact's kinetic energy)", "",
+               "## Every shot with anvil friction mu = 0.05, axisymmetric rod at R0/12 (R0/9 with --quick)", "", "| shot | V [m/s] | Lf measured / computed | error | Dmax measured / computed | error |", "|---|---|---|---|---|---|"]
+        for src, v, L0, lf, dm in SHOTS:
+            rep, err = run(a.exe, "taylor_anvil_rz", ["-mpm_cells", RES[9 if a.quick else 12][1], "-region_rod_hi", f"0.381,{L0}", "-region_rod_velocity", f"0,-{v}", "-mpm_exact_anvil_speed", str(v),
+                                                      "-mpm_exact_anvil_length", str(lf), "-mpm_exact_anvil_diameter", str(dm), "-mpm_wall_friction_lo", "0,0.05"], os.path.join(tmp, "shot"))
             if rep is None:
                 md.append(f"| {src} | {v / 100:.0f} | failed: {err} |")
                 continue
