@@ -37,7 +37,7 @@ PETSC_EXTERN const char *const MPMTransferKernelTypes[];
 /* Particle velocity update: v_p <- alpha (v_p + sum_I N_I (v_I^{n+1} - v_I^n)) + (1 - alpha) sum_I N_I v_I^{n+1} with
    alpha = 0 (PIC; Harlow 1964), 1 (FLIP; Brackbill & Ruppel, JCP 65 (1986) 314) or -mpm_update_blend_alpha (blend;
    Zhu & Bridson, ACM TOG 24 (2005) 965). Positions always move with the grid velocity. */
-typedef enum { MPM_UPDATE_PIC, MPM_UPDATE_FLIP, MPM_UPDATE_BLEND } MPMUpdateType;
+typedef enum { MPM_UPDATE_PIC, MPM_UPDATE_FLIP, MPM_UPDATE_BLEND, MPM_UPDATE_APIC } MPMUpdateType;
 PETSC_EXTERN const char *const MPMUpdateTypes[];
 
 /* Boundary faces: wall (a frictionless symmetry wall, by mirror images), free (traction-free; a point that leaves
@@ -79,6 +79,7 @@ typedef const char *MPMExactType;
 #define MPMEXACTANVIL "anvil"
 #define MPMEXACTHYDROSTATIC "hydrostatic"
 #define MPMEXACTSLIDE "slide"
+#define MPMEXACTSPIN "spin"
 #define MPMEXACTDAMBREAK "dambreak"
 
 /* The MPM object */

@@ -30,6 +30,7 @@ PETSC_EXTERN PetscErrorCode MPMExactCreate_Noh(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_Anvil(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_Hydrostatic(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_Slide(MPMExact);
+PETSC_EXTERN PetscErrorCode MPMExactCreate_Spin(MPMExact);
 PETSC_EXTERN PetscErrorCode MPMExactCreate_DamBreak(MPMExact);
 
 static PetscBool MPMPackageInitialized = PETSC_FALSE;
@@ -69,6 +70,7 @@ PetscErrorCode MPMInitializePackage(void)
   PetscCall(MPMExactRegister(MPMEXACTANVIL, MPMExactCreate_Anvil));
   PetscCall(MPMExactRegister(MPMEXACTHYDROSTATIC, MPMExactCreate_Hydrostatic));
   PetscCall(MPMExactRegister(MPMEXACTSLIDE, MPMExactCreate_Slide));
+  PetscCall(MPMExactRegister(MPMEXACTSPIN, MPMExactCreate_Spin));
   PetscCall(MPMExactRegister(MPMEXACTDAMBREAK, MPMExactCreate_DamBreak));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -10,7 +10,7 @@ const char *const MPMCellVolumes[]         = {"full", "points", "MPMCellVolume",
 const char *const MPMDtLimitNames[]        = {"sound", "acceleration", "volume", "landing"};
 const char *const MPMEnergyUpdates[]       = {"compatible", "midpoint", "conservative", "MPMEnergyUpdate", "MPM_ENERGY_", NULL};
 const char *const MPMTransferKernelTypes[] = {"specialised", "generic", "MPMTransferKernel", "MPM_TRANSFER_", NULL};
-const char *const MPMUpdateTypes[]         = {"pic", "flip", "blend", "MPMUpdateType", "MPM_UPDATE_", NULL};
+const char *const MPMUpdateTypes[]         = {"pic", "flip", "blend", "apic", "MPMUpdateType", "MPM_UPDATE_", NULL};
 const char *const MPMBoundaryTypes[]       = {"wall", "free", "outflow", "MPMBoundaryType", "MPM_BC_", NULL};
 
 /* The defaults are the default method, what a problem file that names no method gets: the most accurate
@@ -52,6 +52,7 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   m->cell_volume             = MPM_CELL_VOLUME_POINTS;
   m->ke_fix                  = PETSC_TRUE;
   m->update                  = MPM_UPDATE_BLEND;
+  m->affine                  = -1;
   m->alpha                   = 0.99;
   m->split                   = PETSC_TRUE;
   m->conduction              = 2.0;
@@ -177,9 +178,9 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscCall(PetscOptionsEnum("-mpm_energy_update",
                              "Internal energy: de = -(p^n + q) d(1/rho) (compatible, the default of the full-cell rule), the grid forces' work with the time-centred velocity (conservative, the default otherwise) or (p^n + p^{n+1})/2 (midpoint)", "",
                              MPMEnergyUpdates, (PetscEnum)mpm->energy_update, (PetscEnum *)&mpm->energy_update, NULL));
-  PetscCall(
-    PetscOptionsEnum("-mpm_update_type", "Particle velocity update: v_p <- alpha FLIP + (1 - alpha) PIC with alpha 0 (pic), 1 (flip) or -mpm_update_blend_alpha (blend)", "", MPMUpdateTypes, (PetscEnum)mpm->update, (PetscEnum *)&mpm->update, NULL));
-  mpm->alpha = mpm->update == MPM_UPDATE_PIC ? 0.0 : 1.0;
+  PetscCall(PetscOptionsEnum("-mpm_update_type", "Particle velocity update: v_p <- alpha FLIP + (1 - alpha) PIC with alpha 0 (pic), 1 (flip) or -mpm_update_blend_alpha (blend); or PIC with an affine velocity per point (apic, Jiang et al. 2015)", "",
+                             MPMUpdateTypes, (PetscEnum)mpm->update, (PetscEnum *)&mpm->update, NULL));
+  mpm->alpha = mpm->update == MPM_UPDATE_PIC || mpm->update == MPM_UPDATE_APIC ? 0.0 : 1.0;
   if (mpm->update == MPM_UPDATE_BLEND) {
     mpm->alpha = 0.99; /* Zhu & Bridson's */
     PetscCall(PetscOptionsReal("-mpm_update_blend_alpha", "FLIP fraction alpha in v = alpha FLIP + (1 - alpha) PIC [-], in [0, 1]", "", mpm->alpha, &mpm->alpha, NULL));
@@ -187,7 +188,10 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   }
   PetscCall(PetscOptionsEnum("-mpm_transfer_kernel", "Point-grid transfer kernels: specialised for the dimension and shape family (where the family has them) or the generic reference", "", MPMTransferKernelTypes, (PetscEnum)mpm->transfer_kernel,
                              (PetscEnum *)&mpm->transfer_kernel, NULL));
-  PetscCall(PetscOptionsBool("-mpm_ke_fix", "Turn the kinetic energy the grid-to-point velocity map discards into internal energy of the point", "", mpm->ke_fix, &mpm->ke_fix, NULL));
+  if (mpm->update == MPM_UPDATE_APIC) mpm->ke_fix = PETSC_FALSE; /* its accounting assumes m_I v_I = sum N_I m_p v_p, which the affine part breaks */
+  PetscCall(PetscOptionsBool("-mpm_ke_fix", "Turn the kinetic energy the grid-to-point velocity map discards into internal energy of the point (not with -mpm_update_type apic)", "", mpm->ke_fix, &mpm->ke_fix, NULL));
+  PetscCheck(!(mpm->ke_fix && mpm->update == MPM_UPDATE_APIC), mpm->comm, PETSC_ERR_USER_INPUT,
+             "-mpm_ke_fix with -mpm_update_type apic: the fix's energy accounting assumes the grid's momentum is sum N_I m_p v_p, which APIC's affine part changes; valid is -mpm_ke_fix false");
   PetscCall(MPMOptionsDimEnums(PetscOptionsObject, "-mpm_bc_lo", "Boundary at the lower face of each direction", MPMBoundaryTypes, g->dim, (PetscEnum *)mpm->bc_lo));
   PetscCall(MPMOptionsDimEnums(PetscOptionsObject, "-mpm_bc_hi", "Boundary at the upper face of each direction", MPMBoundaryTypes, g->dim, (PetscEnum *)mpm->bc_hi));
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-mpm_wall_friction_lo", "Coulomb friction coefficient mu of the wall at the lower face of each direction [-], >= 0 (0: frictionless); a wall with friction is a contact: the body may leave it",
@@ -366,13 +370,15 @@ PetscErrorCode MPMSetUp(MPM mpm)
 
   PetscCall(MPMCreateGrid(mpm));
   PetscCall(MPMShapeSetUp(mpm->shape, &mpm->grid, mpm->ppc));
-  mpm->kern = mpm->transfer_kernel == MPM_TRANSFER_SPECIALISED && mpm->shape->kernels && !mpm->grid.axisym ? &mpm->shape->kernels[mpm->grid.dim - 1] : NULL; /* the specialised kernels have no hoop terms */
+  mpm->kern =
+    mpm->transfer_kernel == MPM_TRANSFER_SPECIALISED && mpm->shape->kernels && !mpm->grid.axisym && mpm->update != MPM_UPDATE_APIC ? &mpm->shape->kernels[mpm->grid.dim - 1] : NULL; /* the specialised kernels have no hoop terms and no affine part */
   for (PetscInt i = 0; i < mpm->nmat; i++)
     PetscCheck(!mpm->grid.axisym || !mpm->mat[i].strength || !mpm->mat[i].strength->needs_F, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_axisymmetric: material %s's strength model reads F, which has no hoop component here; use a hypoelastic type",
                mpm->mat[i].name);
   if (mpm->shape->needs_F || mpm->split || (mpm->exact && mpm->exact->ops.initial)) mpm->track_F = PETSC_TRUE; /* the points carry F */
   if (!mpm->exact->ops.evaluate && !mpm->exact->ops.checks) PetscCall(MPMRetireObject(mpm, &mpm->exact));      /* none */
   PetscCall(MPMPointsSelectFields(mpm));
+  if (mpm->update == MPM_UPDATE_APIC) PetscCall(MPMPointsRegisterField(mpm, "affine", -1, "1/s", "APIC affine velocity C_p = B_p D_p^-1 (v(x) = v_p + C_p (x - x_p) about the point)", PETSC_TRUE, &mpm->affine));
   PetscCall(MPMCreatePoints(mpm));
   if (mpm->exact) {
     MPMScene scene;

@@ -83,6 +83,29 @@ static inline PetscReal MPMProbeValue(const MPMPoints *pts, PetscInt d, MPMProbe
   return 0.0;
 }
 
+/* The points' angular momentum about the axis through c along z, L = sum m_p ((x_p - c) x v_p)_z [g cm^2/s], and their
+   moment of inertia about it, I = sum m_p |x_p - c|^2 over x and y [g cm^2] (2D and 3D). */
+PetscErrorCode MPMProbeAngularMomentum(MPMProbe probe, const PetscReal c[], PetscReal *Lz, PetscReal *Iz)
+{
+  MPM            mpm    = probe->mpm;
+  const PetscInt d      = mpm->grid.dim;
+  PetscReal      sum[2] = {0, 0};
+  MPMPoints      pts;
+
+  PetscFunctionBegin;
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt p = 0; p < pts.n; p++) {
+    const PetscReal *x = &pts.f[MPM_FIELD_POSITION][p * d], *v = &pts.f[MPM_FIELD_VELOCITY][p * d], m = pts.f[MPM_FIELD_MASS][p];
+    sum[0] += m * ((x[0] - c[0]) * v[1] - (x[1] - c[1]) * v[0]);
+    sum[1] += m * (PetscSqr(x[0] - c[0]) + PetscSqr(x[1] - c[1]));
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, sum, 2, MPIU_REAL, MPIU_SUM, mpm->comm));
+  *Lz = sum[0];
+  *Iz = sum[1];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* The largest value of a point quantity over the points with lo < x < hi (position along the first direction). */
 PetscErrorCode MPMProbeMax(MPMProbe probe, MPMProbeQuantity quantity, PetscReal lo, PetscReal hi, PetscReal *max, PetscBool *found)
 {

@@ -221,7 +221,7 @@ def test_bad_input():
         before = open(h5, "rb").read()
         cases = [
             ([*SCENE_CTH, "-mpm_shape_type", "quadratic", "-mpm_output", d], "-mpm_shape_type"),
-            ([*SCENE_CTH, "-mpm_update_type", "apic", "-mpm_output", d], "-mpm_update_type"),
+            ([*SCENE_CTH, "-mpm_update_type", "apik", "-mpm_output", d], "-mpm_update_type"),
             ([*SCENE_CTH, "-mpm_viscosity_type", "huge", "-mpm_output", d], "-mpm_viscosity_type"),
             (["-mpm_output", d], "-mpm_materials"),
             ([*SCENE_CTH, "-mpm_output", "/proc/petmpm/none"], "/proc/petmpm/none"),
@@ -283,6 +283,8 @@ def test_bad_input():
             ([*SCENE_CTH, "-mpm_bc_hi", "free", "-mpm_wall_friction_hi", "0.2", "-mpm_output", d], "-mpm_wall_friction_hi 0.2 in direction 0: that face is free"),
             (["-options_file", RZ, "-mpm_wall_friction_lo", "0.1,0.1", "-mpm_output", d], "-mpm_wall_friction_lo 0.1 in x: with -mpm_axisymmetric"),
             (["-options_file", RZ, "-mpm_exact_type", "slide", "-mpm_output", d], "-mpm_exact_type slide"),
+            ([*SCENE_CTH, "-mpm_update_type", "apic", "-mpm_ke_fix", "true", "-mpm_output", d], "-mpm_ke_fix with -mpm_update_type apic"),
+            ([*SCENE_CTH, "-mpm_exact_type", "spin", "-mpm_output", d], "-mpm_exact_spin_omega"),
         ]
         for args, needle in cases:
             p = run(args, expect_ok=False)

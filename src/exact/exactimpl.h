@@ -32,6 +32,7 @@ PETSC_INTERN PetscErrorCode MPMProbeAddCheck(MPMProbe, const char[], PetscReal, 
 PETSC_INTERN PetscErrorCode MPMProbeExtent(MPMProbe, PetscInt, const PetscReal[], PetscReal, PetscReal, PetscReal *, PetscReal *, PetscBool *);
 PETSC_INTERN PetscErrorCode MPMProbeReach(MPMProbe, PetscInt, PetscInt, PetscReal, PetscReal, PetscReal *, PetscBool *);
 PETSC_INTERN PetscErrorCode MPMProbeMaxDeviation(MPMProbe, MPMProbeQuantity, PetscReal, PetscReal *, PetscBool *);
+PETSC_INTERN PetscErrorCode MPMProbeAngularMomentum(MPMProbe, const PetscReal[], PetscReal *, PetscReal *);
 
 /* An exact solution knows the fields at a point and the scene's named scalar checks. */
 typedef struct {

@@ -162,6 +162,21 @@ MPM_TINLINE void MPMCellRuleForce(MPM mpm, MPMNode *node, PetscBool full, const 
   }
 }
 
+/* APIC (-mpm_update_type apic): x_I - x_p for stencil entry a of the point at xp, with x_I the node's position before
+   the stencil folded it across a wall (its mirror image, where the entry's sign is -1 in that component). */
+static inline void MPMStencilOffset(const MPMGrid *g, const PetscReal xp[], const MPMStencil *st, PetscInt a, PetscReal dx[])
+{
+  PetscInt n = st->node[a];
+
+  for (PetscInt k = 0; k < g->dim; k++) {
+    const PetscInt i = n % g->gm[k];
+    PetscReal      x = g->lo[k] + (g->gs[k] + i) * g->h[k];
+    n /= g->gm[k];
+    if (st->s[a][k] < 0.0) x = 2.0 * (g->mirror_lo[k] && (!g->mirror_hi[k] || xp[k] - g->lo[k] < g->hi[k] - xp[k]) ? g->lo[k] : g->hi[k]) - x;
+    dx[k] = x - xp[k];
+  }
+}
+
 /* The generic scatter's point loop (the reference the specialised kernels reproduce), with the dimension d a constant
    where MPMScatter calls it, so that its loops over d unroll; the same operations in the same order for every d. */
 MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node, PetscReal tn, PetscBool force, PetscBool cellrule, PetscBool stress, PetscBool body, const PetscInt d)
@@ -171,6 +186,7 @@ MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node,
   const PetscReal *V = pts->f[MPM_FIELD_VOLUME], *pr = pts->f[MPM_FIELD_PRESSURE], *q = pts->f[MPM_FIELD_VISCOSITY];
   const PetscReal *F = mpm->track_F ? pts->f[MPM_FIELD_DEFGRAD] : NULL, *S = pts->f[MPM_FIELD_STRESS], *X = pts->f[MPM_FIELD_REFPOSITION];
   const PetscReal *ds = mpm->shape->needs_F ? pts->f[MPM_FIELD_DOMAINSCALE] : NULL; /* split points' domains */
+  const PetscReal *C  = mpm->affine >= 0 ? pts->f[mpm->affine] : NULL;
   MPMStencil       st;
 
   for (PetscInt p = 0; p < pts->n; p++) {
@@ -184,7 +200,16 @@ MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node,
       const PetscReal wm = st.w[a] * m[p];
       nd->m += wm;
       nd->w2 += st.w[a] * st.w[a];
-      for (PetscInt k = 0; k < d; k++) nd->p[k] += st.s[a][k] * wm * v[p * d + k];
+      if (C) { /* APIC: the point's affine velocity at the node, v_p + C_p (x_I - x_p) */
+        PetscReal dx[MPM_MAX_DIM];
+        MPMStencilOffset(g, &x[p * d], &st, a, dx);
+        for (PetscInt k = 0; k < d; k++) {
+          PetscReal vk = v[p * d + k];
+          for (PetscInt j = 0; j < d; j++) vk += C[p * d * d + k * d + j] * dx[j];
+          nd->p[k] += st.s[a][k] * wm * vk;
+        }
+      } else
+        for (PetscInt k = 0; k < d; k++) nd->p[k] += st.s[a][k] * wm * v[p * d + k];
       if (force && !cellrule)
         for (PetscInt k = 0; k < d; k++) nd->f[k] += st.s[a][k] * V[p] * P * st.dw[a][k];
       if (stress)
@@ -285,6 +310,38 @@ static PetscReal MPMExpansionWork(void *ctx, PetscInt p, PetscReal e, PetscReal 
   return MPMIsentropeWork(ex->mpm, ex->mpm->mat[(PetscInt)ex->mat[p]].eos, ex->m[p], ex->rho[p], e, ex->rho[p] / (1.0 + eps), delin);
 }
 
+/* APIC: C = B D^-1 from the moments B = sum N_I v_I (x_I - x_p)^T and D = sum N_I (x_I - x_p)(x_I - x_p)^T (d x d, row
+   major). D is symmetric positive definite for every shape family but degenerates for linear hats at a node (t (1 - t)
+   h^2 there), so it gets 1e-12 h_k^2 on its diagonal first. */
+static void MPMAffineFromMoments(const MPMGrid *g, const PetscReal B[], PetscReal D[], PetscReal C[])
+{
+  const PetscInt d = g->dim;
+  PetscReal      Di[MPM_MAX_DIM * MPM_MAX_DIM];
+
+  for (PetscInt k = 0; k < d; k++) D[k * d + k] += 1e-12 * g->h[k] * g->h[k];
+  if (d == 1)
+    Di[0] = 1.0 / D[0];
+  else if (d == 2) {
+    const PetscReal idet = 1.0 / (D[0] * D[3] - D[1] * D[2]);
+    Di[0]                = D[3] * idet;
+    Di[1]                = -D[1] * idet;
+    Di[2]                = -D[2] * idet;
+    Di[3]                = D[0] * idet;
+  } else {
+    const PetscReal idet = 1.0 / MPMDeterminant(3, D);
+    for (PetscInt i = 0; i < 3; i++)
+      for (PetscInt j = 0; j < 3; j++) { /* the adjugate: cofactor of (j, i) */
+        const PetscInt r0 = (j + 1) % 3, r1 = (j + 2) % 3, c0 = (i + 1) % 3, c1 = (i + 2) % 3;
+        Di[i * 3 + j] = (D[r0 * 3 + c0] * D[r1 * 3 + c1] - D[r0 * 3 + c1] * D[r1 * 3 + c0]) * idet;
+      }
+  }
+  for (PetscInt i = 0; i < d; i++)
+    for (PetscInt j = 0; j < d; j++) {
+      C[i * d + j] = 0.0;
+      for (PetscInt k = 0; k < d; k++) C[i * d + j] += B[i * d + k] * Di[k * d + j];
+    }
+}
+
 /* The generic gather's point loop (the reference the specialised kernels reproduce), with the dimension d a constant
    where MPMGather calls it, so that its loops over d unroll; the same operations in the same order for every d. */
 MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPoints *pts, const MPMNode *node, PetscBool velocity, PetscBool kinematics, PetscBool work, const PetscInt d)
@@ -294,14 +351,25 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
   const PetscBool  kefix = A->kefix, stress = A->stress;
   PetscReal       *x = A->x, *v = A->v, *L = A->L, *e = A->e;
   const PetscReal *S = A->S;
+  PetscReal       *C = mpm->affine >= 0 ? pts->f[mpm->affine] : NULL;
   MPMStencil       st;
 
   for (PetscInt p = 0; p < pts->n; p++) {
     PetscReal vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Lb[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, dv2 = 0.0, R = 0.0, Fs[MPM_MAX_DIM * MPM_MAX_DIM];
-    PetscReal Lbtt = 0.0; /* axisymmetric: the hoop rate of vbar, sum N (2 v_I - dv_I)_r / r_p */
+    PetscReal Lbtt                          = 0.0;                                      /* axisymmetric: the hoop rate of vbar, sum N (2 v_I - dv_I)_r / r_p */
+    PetscReal Bm[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Dm[MPM_MAX_DIM * MPM_MAX_DIM] = {0}; /* APIC's moments */
     MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, A->F, A->ds, p, Fs), &st);
     for (PetscInt a = 0; a < st.n; a++) {
       const MPMNode *nd = &node[st.node[a]];
+      if (C && velocity) {
+        PetscReal dx[MPM_MAX_DIM];
+        MPMStencilOffset(g, &x[p * d], &st, a, dx);
+        for (PetscInt i = 0; i < d; i++)
+          for (PetscInt j = 0; j < d; j++) {
+            Bm[i * d + j] += st.w[a] * st.s[a][i] * nd->p[i] * dx[j];
+            Dm[i * d + j] += st.w[a] * dx[i] * dx[j];
+          }
+      }
       for (PetscInt i = 0; i < d; i++) {
         const PetscReal vI = st.s[a][i] * nd->p[i], dvI = st.s[a][i] * (nd->p[i] - nd->v0[i]); /* mirrored: reflected */
         vpic[i] += st.w[a] * vI;
@@ -323,6 +391,7 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
         v[p * d + i] = vn;
       }
       if (kefix) e[p] += share - gain + (1.0 - alpha) * R;
+      if (C) MPMAffineFromMoments(g, Bm, Dm, &C[p * d * d]);
       if (work) { /* the work the grid's forces did over the kick, sum_p V_p sigma_p : Lbar_p dt_kick = sum_I f_I . vbar_I dt_kick */
         PetscReal sL = 0.0, div = 0.0;
         if (A->pointwork)
