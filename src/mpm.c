@@ -364,7 +364,7 @@ PetscErrorCode MPMSetUp(MPM mpm)
     if (mpm->pressure_relax > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMRelax", MPM_PHASE_POINT_END, MPMRelaxApply, NULL));
     if (mpm->fill_rate > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMVolumeFill", MPM_PHASE_POINT_END, MPMFillApply, NULL));
     if (mpm->popping_interval > 0) PetscCall(MPMModuleAdd(mpm, "MPMPopping", MPM_PHASE_POINT_END, MPMPoppingApply, NULL));
-    if (mpm->shape->needs_F && mpm->grid.dim > 1 && mpm->domain_skew > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMDomain", MPM_PHASE_POINT_ADAPT, MPMDomainApply, NULL));
+    if ((mpm->shape->needs_F || mpm->split) && mpm->grid.dim > 1 && mpm->domain_skew > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMDomain", MPM_PHASE_POINT_ADAPT, MPMDomainApply, NULL));
     if (mpm->split) PetscCall(MPMModuleAdd(mpm, "MPMSplit", MPM_PHASE_POINT_ADAPT, MPMSplitApply, NULL));
   }
 

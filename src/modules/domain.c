@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
-/* Domain regularisation module (point phase MPM_PHASE_POINT_ADAPT, before splitting; shape functions that read a
-   point's domain, CPDI; -mpm_domain_skew). A point's domain is the parallelepiped R = F diag(s) l0 (split.c). In a
+/* Domain regularisation module (point phase MPM_PHASE_POINT_ADAPT, before splitting; wherever a point's domain is
+   read: the CPDI shape functions, and splitting with any shape family; -mpm_domain_skew). A point's domain is the parallelepiped R = F diag(s) l0 (split.c). In a
    sheared flow its edges turn towards each other and the domain becomes a sliver: in the cylindrical Sedov blast a
    point's F reached [[40, -31], [-86, 67]], edges 95 l0 long and a fraction of a cell apart, and the domain-averaged
    gradient weights reached 1.4e4 1/cm against 1/h = 64, so L_p was noise and the run blew up. Splitting halves a
