@@ -456,6 +456,7 @@ PetscErrorCode MPMDestroy(MPM *mpm)
   PetscCall(MPMViscosityDestroy(&m->viscosity));
   PetscCall(MPMExactDestroy(&m->exact));
   PetscCall(MPMModulesDestroy(m));
+  PetscCall(PetscFree(m->wall_held));
   PetscCall(PetscFree2(m->output_times, m->output_count));
   PetscCall(PetscFree(m));
   *mpm = NULL;

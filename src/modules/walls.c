@@ -11,59 +11,85 @@
    compressive impulses alone would then exceed mu times the net normal force: measured on inputs/slide_2d.opts, the
    block stopped 2.7 times too soon). The symmetry planes act first, so that friction reads the tangential velocity
    they leave (an anvil's edge on a symmetry plane). Friction acts in the kick only (the MUSL remap's velocities come
-   from points that already felt it). Its work is what the step's energy loses: with m_I (v_I - v_I^n) = dt (f_I +
+   from points that already felt it), and the remap holds and frees the contact nodes as the kick did (MPMWallPass). Its work is what the step's energy loses: with m_I (v_I - v_I^n) = dt (f_I +
    f_fric), the conservative update's sum over the grid of m_I |v|^2 / 2 changes by f_fric . (v_I^n + v_I) / 2 dt more
    than the internal work, so the module tallies m_I (v* - v_t) . (v_I^n + v_t) / 2 per node (v* the tangential
    velocity before friction), which the report adds back (friction_work). */
 #include "../petmpmimpl.h"
 
+/* What one pass over the wall faces does at each node: the face's friction coefficient, the friction's work (NULL: no
+   friction), and the contact nodes' states, one per node in the order of the pass: held (the node moved into the wall
+   in the kick) or separated. The kick records them and the MUSL remap reads them, so that the remap holds the nodes the
+   kick held and frees those it freed (deciding again from the remapped velocity let a block at rest climb the wall). */
+typedef struct {
+  PetscReal  mu, *work;
+  PetscBool *held;
+  PetscInt   n;
+  PetscBool  remap;
+} MPMWallPass;
+
 /* Calls fn on every owned node in the plane of local index ik of direction k (side -1: the lower face, +1: the upper). */
-static void MPMWallPlaneEach(const MPMGrid *g, MPMNode *node, PetscInt k, PetscInt ik, PetscInt side, PetscReal mu, PetscReal *work, void (*fn)(MPMNode *, PetscInt, PetscInt, PetscInt, PetscReal, PetscReal *))
+static void MPMWallPlaneEach(const MPMGrid *g, MPMNode *node, PetscInt k, PetscInt ik, PetscInt side, MPMWallPass *pass, void (*fn)(MPMNode *, PetscInt, PetscInt, PetscInt, MPMWallPass *))
 {
   const PetscInt k1 = (k + 1) % 3, k2 = (k + 2) % 3;
   PetscInt       l[3];
 
   l[k] = ik;
   for (l[k2] = 0; l[k2] < g->xm[k2]; l[k2]++)
-    for (l[k1] = 0; l[k1] < g->xm[k1]; l[k1]++) fn(&node[(l[2] * g->xm[1] + l[1]) * g->xm[0] + l[0]], g->dim, k, side, mu, work);
+    for (l[k1] = 0; l[k1] < g->xm[k1]; l[k1]++) fn(&node[(l[2] * g->xm[1] + l[1]) * g->xm[0] + l[0]], g->dim, k, side, pass);
 }
 
 /* Calls fn on the nodes of every wall face this rank owns nodes of whose friction coefficient is (contact) or is not
-   (!contact) positive, with the coefficient. */
-static void MPMWallFacesEach(MPM mpm, MPMNode *node, PetscBool contact, PetscReal *work, void (*fn)(MPMNode *, PetscInt, PetscInt, PetscInt, PetscReal, PetscReal *))
+   (!contact) positive, with the coefficient in pass->mu; returns the number of nodes visited. */
+static PetscInt MPMWallFacesEach(MPM mpm, MPMNode *node, PetscBool contact, MPMWallPass *pass, void (*fn)(MPMNode *, PetscInt, PetscInt, PetscInt, MPMWallPass *))
 {
   const MPMGrid *g = &mpm->grid;
+  PetscInt       n = 0;
 
   for (PetscInt k = 0; k < g->dim; k++) {
-    if (mpm->bc_lo[k] == MPM_BC_WALL && g->xs[k] == 0 && (mpm->friction_lo[k] > 0.0) == contact) MPMWallPlaneEach(g, node, k, 0, -1, mpm->friction_lo[k], work, fn);
-    if (mpm->bc_hi[k] == MPM_BC_WALL && g->xs[k] + g->xm[k] == g->cells[k] + 1 && (mpm->friction_hi[k] > 0.0) == contact) MPMWallPlaneEach(g, node, k, g->xm[k] - 1, 1, mpm->friction_hi[k], work, fn);
+    const PetscInt plane = g->xm[(k + 1) % 3] * g->xm[(k + 2) % 3]; /* 1 beyond the grid's dimension, as MPMWallPlaneEach reads them */
+    if (mpm->bc_lo[k] == MPM_BC_WALL && g->xs[k] == 0 && (mpm->friction_lo[k] > 0.0) == contact) {
+      pass->mu = mpm->friction_lo[k];
+      if (fn) MPMWallPlaneEach(g, node, k, 0, -1, pass, fn);
+      n += plane;
+    }
+    if (mpm->bc_hi[k] == MPM_BC_WALL && g->xs[k] + g->xm[k] == g->cells[k] + 1 && (mpm->friction_hi[k] > 0.0) == contact) {
+      pass->mu = mpm->friction_hi[k];
+      if (fn) MPMWallPlaneEach(g, node, k, g->xm[k] - 1, 1, pass, fn);
+      n += plane;
+    }
   }
+  return n;
 }
 
 /* A frictionless wall (a symmetry plane): the normal velocity is zero, whichever way the node moves. */
-static void MPMWallNode(MPMNode *nd, PetscInt d, PetscInt k, PetscInt side, PetscReal mu, PetscReal *work)
+static void MPMWallNode(MPMNode *nd, PetscInt d, PetscInt k, PetscInt side, MPMWallPass *pass)
 {
   nd->p[k] = nd->f[k] = nd->v0[k] = 0.0;
 }
 
-/* A frictional wall: a contact. A node moving into it loses its normal velocity and, by friction, at most mu times that
-   of its tangential velocity (work: the energy friction took); a node moving away separates. */
-static void MPMWallContactNode(MPMNode *nd, PetscInt d, PetscInt k, PetscInt side, PetscReal mu, PetscReal *work)
+/* A frictional wall: a contact. In the kick a node moving into it is held: it loses its normal velocity and, by
+   friction, at most mu times that of its tangential velocity (pass->work: the energy friction took); a node moving away
+   separates. The MUSL remap holds and frees the nodes as the kick did, without friction. */
+static void MPMWallContactNode(MPMNode *nd, PetscInt d, PetscInt k, PetscInt side, MPMWallPass *pass)
 {
-  const PetscReal vn = side * nd->p[k]; /* > 0: into the wall */
-  PetscReal       vt = 0.0;
+  const PetscReal vn   = side * nd->p[k]; /* > 0: into the wall */
+  const PetscBool held = pass->remap ? pass->held[pass->n] : (PetscBool)(vn >= 0.0);
+  PetscReal       vt   = 0.0;
 
-  if (vn < 0.0) return;
+  if (!pass->remap) pass->held[pass->n] = held;
+  pass->n++;
+  if (!held) return;
   for (PetscInt j = 0; j < d; j++)
     if (j != k) vt += nd->p[j] * nd->p[j];
-  if (work && vt > 0.0 && nd->m > 0.0) {
-    const PetscReal lambda = PetscMin(1.0, mu * vn / PetscSqrtReal(vt)); /* the share of v_t friction takes */
+  if (!pass->remap && vt > 0.0 && nd->m > 0.0) {
+    const PetscReal lambda = PetscMin(1.0, pass->mu * vn / PetscSqrtReal(vt)); /* the share of v_t friction takes */
     for (PetscInt j = 0; j < d; j++) {
       if (j == k) continue;
       {
         const PetscReal vs = nd->p[j];
         nd->p[j]           = (1.0 - lambda) * vs;
-        *work += nd->m * (vs - nd->p[j]) * (nd->v0[j] + nd->p[j]) * 0.5;
+        *pass->work += nd->m * (vs - nd->p[j]) * (nd->v0[j] + nd->p[j]) * 0.5;
       }
     }
   }
@@ -72,8 +98,19 @@ static void MPMWallContactNode(MPMNode *nd, PetscInt d, PetscInt k, PetscInt sid
 
 PetscErrorCode MPMWallsApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *node)
 {
+  MPMWallPass    pass = {0.0, &mpm->diag.friction_work, NULL, 0, ctx->remap};
+  const PetscInt n    = MPMWallFacesEach(mpm, node, PETSC_TRUE, &pass, NULL); /* contact nodes on this rank */
+
   PetscFunctionBegin;
-  MPMWallFacesEach(mpm, node, PETSC_FALSE, NULL, MPMWallNode);                                               /* symmetry planes first: friction reads the velocity they leave */
-  MPMWallFacesEach(mpm, node, PETSC_TRUE, ctx->remap ? NULL : &mpm->diag.friction_work, MPMWallContactNode); /* friction acts in the kick only */
+  MPMWallFacesEach(mpm, node, PETSC_FALSE, &pass, MPMWallNode); /* symmetry planes first: friction reads the velocity they leave */
+  if (!n) PetscFunctionReturn(PETSC_SUCCESS);
+  if (n > mpm->nwall_held) { /* the kick sizes it (a rebalanced grid may own more wall nodes) */
+    PetscCheck(!ctx->remap, PETSC_COMM_SELF, PETSC_ERR_PLIB, "MUSL remap before the kick recorded the wall contacts");
+    PetscCall(PetscFree(mpm->wall_held));
+    PetscCall(PetscMalloc1(n, &mpm->wall_held));
+    mpm->nwall_held = n;
+  }
+  pass.held = mpm->wall_held;
+  MPMWallFacesEach(mpm, node, PETSC_TRUE, &pass, MPMWallContactNode); /* friction acts in the kick only */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
