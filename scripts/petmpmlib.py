@@ -95,10 +95,13 @@ def get(report, path, h=None):
     """A report value by dotted path: errors.density.L1, conservation.mass, conservation.momentum.1 (a component),
     checks.plateau_pressure.rel_error
     (checks are found by name), checks.shock_position.error_cells (|value - reference| / h, the cell size h given),
-    particles_per_cell (particles over the product of the cells), ns_per_point_step (the cost per point-step and rank)."""
+    particles_per_cell (particles over the product of the cells), ns_per_point_step (the cost per point-step and rank),
+    points_per_rank_mismatch (the sum of balance.points_per_rank less particles: 0 when every point is counted once)."""
     parts = path.split(".")
     if path == "particles_per_cell":  # derived: points over cells (a point lost or duplicated shows)
         return report["particles"] / math.prod(report["cells"])
+    if path == "points_per_rank_mismatch":
+        return sum(report["balance"]["points_per_rank"]) - report["particles"]
     if path == "ns_per_point_step":  # derived: the cost of a point-step [ns] on one rank
         return 1e9 * report["ranks"] / report["particle_steps_per_second"] if report["particle_steps_per_second"] > 0 else float("nan")
     if parts[0] == "checks":  # checks.NAME.FIELD, where NAME may hold dots (front_T2.98)

@@ -465,6 +465,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   PetscReal      imbalance;
   PetscReal      eisen, nisen, nsplit, nrefuse, nreflect, nreset, nspall, vfill, nfill, wfric, out[3] = {0, 0, 0};
   PetscBool      outflow = PETSC_FALSE, friction = PETSC_FALSE;
+  PetscInt      *perrank = NULL; /* points on each rank (rank 0, for the report) */
   PetscMPIInt    size, rank;
 
   PetscFunctionBegin;
@@ -599,7 +600,14 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     for (PetscInt c = 0; c < mpm->nchecks; c++)
       PetscCall(PetscPrintf(mpm->comm, "  check %-17s %.6g (exact %.6g, rel. error %.3e)\n", mpm->checks[c].name, (double)mpm->checks[c].value, (double)mpm->checks[c].reference, (double)MPMRelErr(mpm->checks[c].value, mpm->checks[c].reference)));
   }
-  if (!mpm->report[0] || rank) PetscFunctionReturn(PETSC_SUCCESS);
+  if (!mpm->report[0]) PetscFunctionReturn(PETSC_SUCCESS);
+  { /* the points on each rank, for the report's balance */
+    PetscInt nloc;
+    PetscCall(DMSwarmGetLocalSize(mpm->swarm, &nloc));
+    if (!rank) PetscCall(PetscMalloc1(size, &perrank));
+    PetscCallMPI(MPI_Gather(&nloc, 1, MPIU_INT, perrank, 1, MPIU_INT, 0, mpm->comm));
+  }
+  if (rank) PetscFunctionReturn(PETSC_SUCCESS);
   {
     char  tmp[PETSC_MAX_PATH_LEN + 8];
     FILE *fp;
@@ -629,7 +637,10 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     fprintf(fp, "  \"conservation\": {\"mass\": %.6e, \"total_energy\": %.6e, \"momentum\": [", (double)dmass, (double)denergy);
     for (PetscInt k = 0; k < g->dim; k++) fprintf(fp, "%s%.6e", k ? ", " : "", (double)(mom[k] - mpm->momentum0[k]));
     fprintf(fp, "]},\n  \"kinetic_energy_fraction\": %s,\n  \"rest_time\": %.10g,\n", MPMJSONReal(mpm->kinetic0 > 0 ? kinetic / mpm->kinetic0 : 0.0, "%.6e", num[0]), (double)mpm->rest_time);
-    fprintf(fp, "  \"balance\": {\"points_min\": %" PetscInt_FMT ", \"points_max\": %" PetscInt_FMT ", \"imbalance\": %.6f, \"rebalances\": %" PetscInt_FMT "},\n", nmin, nmax, (double)imbalance, mpm->diag.rebalances);
+    fprintf(fp, "  \"balance\": {\"points_min\": %" PetscInt_FMT ", \"points_max\": %" PetscInt_FMT ", \"imbalance\": %.6f, \"rebalances\": %" PetscInt_FMT ", \"points_per_rank\": [", nmin, nmax, (double)imbalance, mpm->diag.rebalances);
+    for (PetscMPIInt r = 0; r < size; r++) fprintf(fp, "%s%" PetscInt_FMT, r ? ", " : "", perrank[r]);
+    fprintf(fp, "]},\n");
+    PetscCall(PetscFree(perrank));
     if (mpm->has_gravity) fprintf(fp, "  \"gravity_budget\": {\"released\": %.6e, \"kinetic\": %.6e, \"internal_change\": %.6e, \"error\": %.6e},\n", (double)gb[0], (double)gb[1], (double)gb[2], (double)gb[3]);
     if (mpm->popping_interval > 0) {
       const PetscReal *x = mpm->diag.first_popped_x;
