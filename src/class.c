@@ -163,8 +163,8 @@ PetscErrorCode MPMObjectSetType(void *o, const char type[])
   PetscCall(MPMObjectTypeOption(obj, option, sizeof(option)));
   PetscCall(MPMClassSetType(*obj->cls->list, obj->cls->name, option, type, &create));
   if (obj->ops.destroy) PetscCall(obj->ops.destroy(obj));
+  PetscCall(PetscFree(obj->data));
   PetscCall(PetscMemzero(&obj->ops, obj->cls->opssize));
-  obj->data = NULL;
   if (obj->cls->reset) PetscCall(obj->cls->reset(obj));
   PetscCall(PetscStrncpy(obj->type_name, type, sizeof(obj->type_name)));
   PetscCall(create(obj));
@@ -278,6 +278,7 @@ PetscErrorCode MPMObjectDestroy(void *o)
   PetscFunctionBegin;
   if (!*obj) PetscFunctionReturn(PETSC_SUCCESS);
   if ((*obj)->ops.destroy) PetscCall((*obj)->ops.destroy(*obj));
+  PetscCall(PetscFree((*obj)->data));
   if ((*obj)->cls->destroy) PetscCall((*obj)->cls->destroy(*obj));
   PetscCall(PetscFree((*obj)->prefix));
   PetscCall(PetscFree(*obj));

@@ -29,7 +29,9 @@ typedef struct {
 } MPMClass;
 
 /* Generic class header, in the PETSc pattern: the class, a type name, an options prefix, the type's data and an ops
-   table that starts with MPM_CLASS_OPS, so that src/class.c can reach every object as an MPMObject. */
+   table that starts with MPM_CLASS_OPS, so that src/class.c can reach every object as an MPMObject. The type's data is
+   one allocation (PetscNew) that the class frees when the type changes or the object is destroyed; a type's
+   ops.destroy (may be NULL) frees only what its data points to. */
 #define MPM_CLASS_HEADER(Ops)              \
   MPI_Comm        comm;                    \
   const MPMClass *cls;                     \

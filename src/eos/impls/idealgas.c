@@ -62,13 +62,6 @@ static PetscErrorCode MPMEOSView_IdealGas(MPMEOS eos, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MPMEOSDestroy_IdealGas(MPMEOS eos)
-{
-  PetscFunctionBegin;
-  PetscCall(PetscFree(eos->data));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 /* The exact Riemann solver needs gamma and Cv: only ideal-gas materials have them. */
 PetscErrorCode MPMEOSIdealGasGetParameters(MPMEOS eos, PetscReal *gamma, PetscReal *cv)
 {
@@ -101,6 +94,5 @@ PetscErrorCode MPMEOSCreate_IdealGas(MPMEOS eos)
   eos->ops.energy         = MPMEOSEnergy_IdealGas;
   eos->ops.setfromoptions = MPMEOSSetFromOptions_IdealGas;
   eos->ops.view           = MPMEOSView_IdealGas;
-  eos->ops.destroy        = MPMEOSDestroy_IdealGas;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -179,13 +179,6 @@ static PetscErrorCode MPMEOSView_MG(MPMEOS eos, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MPMEOSDestroy_MG(MPMEOS eos)
-{
-  PetscFunctionBegin;
-  PetscCall(PetscFree(eos->data));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode MPMEOSCreate_MieGruneisen(MPMEOS eos)
 {
   EOS_MG *mg;
@@ -207,7 +200,6 @@ PetscErrorCode MPMEOSCreate_MieGruneisen(MPMEOS eos)
   eos->ops.energy         = MPMEOSEnergy_MG;
   eos->ops.setfromoptions = MPMEOSSetFromOptions_MG;
   eos->ops.view           = MPMEOSView_MG;
-  eos->ops.destroy        = MPMEOSDestroy_MG;
   PetscCall(MGSetUp(eos, mg));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -110,13 +110,6 @@ static PetscErrorCode MPMEOSView_Tait(MPMEOS eos, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MPMEOSDestroy_Tait(MPMEOS eos)
-{
-  PetscFunctionBegin;
-  PetscCall(PetscFree(eos->data));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode MPMEOSCreate_Tait(MPMEOS eos)
 {
   EOS_Tait *t;
@@ -139,6 +132,5 @@ PetscErrorCode MPMEOSCreate_Tait(MPMEOS eos)
   eos->ops.energy         = MPMEOSEnergy_Tait;
   eos->ops.setfromoptions = MPMEOSSetFromOptions_Tait;
   eos->ops.view           = MPMEOSView_Tait;
-  eos->ops.destroy        = MPMEOSDestroy_Tait;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -97,13 +97,6 @@ static PetscErrorCode MPMExactView_Anvil(MPMExact exact, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MPMExactDestroy_Anvil(MPMExact exact)
-{
-  PetscFunctionBegin;
-  PetscCall(PetscFree(exact->data));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode MPMExactCreate_Anvil(MPMExact exact)
 {
   Exact_Anvil *ea;
@@ -115,6 +108,5 @@ PetscErrorCode MPMExactCreate_Anvil(MPMExact exact)
   exact->ops.checks         = MPMExactChecks_Anvil;
   exact->ops.setfromoptions = MPMExactSetFromOptions_Anvil;
   exact->ops.view           = MPMExactView_Anvil;
-  exact->ops.destroy        = MPMExactDestroy_Anvil;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -110,13 +110,6 @@ static PetscErrorCode MPMExactView_DamBreak(MPMExact exact, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MPMExactDestroy_DamBreak(MPMExact exact)
-{
-  PetscFunctionBegin;
-  PetscCall(PetscFree(exact->data));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode MPMExactCreate_DamBreak(MPMExact exact)
 {
   Exact_DamBreak *ed;
@@ -129,6 +122,5 @@ PetscErrorCode MPMExactCreate_DamBreak(MPMExact exact)
   exact->ops.checks         = MPMExactChecks_DamBreak;
   exact->ops.setfromoptions = MPMExactSetFromOptions_DamBreak;
   exact->ops.view           = MPMExactView_DamBreak;
-  exact->ops.destroy        = MPMExactDestroy_DamBreak;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

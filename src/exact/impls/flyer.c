@@ -321,13 +321,6 @@ static PetscErrorCode MPMExactView_Flyer(MPMExact exact, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MPMExactDestroy_Flyer(MPMExact exact)
-{
-  PetscFunctionBegin;
-  PetscCall(PetscFree(exact->data));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode MPMExactCreate_Flyer(MPMExact exact)
 {
   Exact_Flyer *ef;
@@ -339,6 +332,5 @@ PetscErrorCode MPMExactCreate_Flyer(MPMExact exact)
   exact->ops.evaluate = MPMExactEvaluate_Flyer;
   exact->ops.checks   = MPMExactChecks_Flyer;
   exact->ops.view     = MPMExactView_Flyer;
-  exact->ops.destroy  = MPMExactDestroy_Flyer;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -95,13 +95,6 @@ static PetscErrorCode MPMExactView_Hydrostatic(MPMExact exact, PetscViewer viewe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MPMExactDestroy_Hydrostatic(MPMExact exact)
-{
-  PetscFunctionBegin;
-  PetscCall(PetscFree(exact->data));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode MPMExactCreate_Hydrostatic(MPMExact exact)
 {
   Exact_Hydrostatic *eh;
@@ -116,6 +109,5 @@ PetscErrorCode MPMExactCreate_Hydrostatic(MPMExact exact)
   exact->ops.checks         = MPMExactChecks_Hydrostatic;
   exact->ops.setfromoptions = MPMExactSetFromOptions_Hydrostatic;
   exact->ops.view           = MPMExactView_Hydrostatic;
-  exact->ops.destroy        = MPMExactDestroy_Hydrostatic;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

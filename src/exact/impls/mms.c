@@ -162,13 +162,6 @@ static PetscErrorCode MPMExactView_MMS(MPMExact exact, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MPMExactDestroy_MMS(MPMExact exact)
-{
-  PetscFunctionBegin;
-  PetscCall(PetscFree(exact->data));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode MPMExactCreate_MMS(MPMExact exact)
 {
   Exact_MMS *mm;
@@ -186,6 +179,5 @@ PetscErrorCode MPMExactCreate_MMS(MPMExact exact)
   exact->ops.displacement   = MPMExactDisplacement_MMS;
   exact->ops.setfromoptions = MPMExactSetFromOptions_MMS;
   exact->ops.view           = MPMExactView_MMS;
-  exact->ops.destroy        = MPMExactDestroy_MMS;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -125,13 +125,6 @@ static PetscErrorCode MPMExactView_Noh(MPMExact exact, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MPMExactDestroy_Noh(MPMExact exact)
-{
-  PetscFunctionBegin;
-  PetscCall(PetscFree(exact->data));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode MPMExactCreate_Noh(MPMExact exact)
 {
   Exact_Noh *en;
@@ -145,6 +138,5 @@ PetscErrorCode MPMExactCreate_Noh(MPMExact exact)
   exact->ops.checks         = MPMExactChecks_Noh;
   exact->ops.setfromoptions = MPMExactSetFromOptions_Noh;
   exact->ops.view           = MPMExactView_Noh;
-  exact->ops.destroy        = MPMExactDestroy_Noh;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

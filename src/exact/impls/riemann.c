@@ -154,13 +154,6 @@ static PetscErrorCode MPMExactView_Riemann(MPMExact exact, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MPMExactDestroy_Riemann(MPMExact exact)
-{
-  PetscFunctionBegin;
-  PetscCall(PetscFree(exact->data));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode MPMExactCreate_Riemann(MPMExact exact)
 {
   Exact_Riemann *er;
@@ -173,6 +166,5 @@ PetscErrorCode MPMExactCreate_Riemann(MPMExact exact)
   exact->ops.checks         = MPMExactChecks_Riemann;
   exact->ops.setfromoptions = MPMExactSetFromOptions_Riemann;
   exact->ops.view           = MPMExactView_Riemann;
-  exact->ops.destroy        = MPMExactDestroy_Riemann;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

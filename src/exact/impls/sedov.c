@@ -188,13 +188,6 @@ static PetscErrorCode MPMExactView_Sedov(MPMExact exact, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MPMExactDestroy_Sedov(MPMExact exact)
-{
-  PetscFunctionBegin;
-  PetscCall(PetscFree(exact->data));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode MPMExactCreate_Sedov(MPMExact exact)
 {
   Exact_Sedov *es;
@@ -207,6 +200,5 @@ PetscErrorCode MPMExactCreate_Sedov(MPMExact exact)
   exact->ops.checks         = MPMExactChecks_Sedov;
   exact->ops.setfromoptions = MPMExactSetFromOptions_Sedov;
   exact->ops.view           = MPMExactView_Sedov;
-  exact->ops.destroy        = MPMExactDestroy_Sedov;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

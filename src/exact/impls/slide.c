@@ -118,13 +118,6 @@ static PetscErrorCode MPMExactView_Slide(MPMExact exact, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MPMExactDestroy_Slide(MPMExact exact)
-{
-  PetscFunctionBegin;
-  PetscCall(PetscFree(exact->data));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode MPMExactCreate_Slide(MPMExact exact)
 {
   Exact_Slide *es;
@@ -136,6 +129,5 @@ PetscErrorCode MPMExactCreate_Slide(MPMExact exact)
   exact->ops.setup   = MPMExactSetUp_Slide;
   exact->ops.checks  = MPMExactChecks_Slide;
   exact->ops.view    = MPMExactView_Slide;
-  exact->ops.destroy = MPMExactDestroy_Slide;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -79,13 +79,6 @@ static PetscErrorCode MPMExactView_Spin(MPMExact exact, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MPMExactDestroy_Spin(MPMExact exact)
-{
-  PetscFunctionBegin;
-  PetscCall(PetscFree(exact->data));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode MPMExactCreate_Spin(MPMExact exact)
 {
   Exact_Spin *es;
@@ -99,6 +92,5 @@ PetscErrorCode MPMExactCreate_Spin(MPMExact exact)
   exact->ops.checks         = MPMExactChecks_Spin;
   exact->ops.setfromoptions = MPMExactSetFromOptions_Spin;
   exact->ops.view           = MPMExactView_Spin;
-  exact->ops.destroy        = MPMExactDestroy_Spin;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -274,13 +274,6 @@ static PetscErrorCode MPMShapeView_CPDI(MPMShape shape, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MPMShapeDestroy_CPDI(MPMShape shape)
-{
-  PetscFunctionBegin;
-  PetscCall(PetscFree(shape->data));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode MPMShapeCreate_CPDI(MPMShape shape)
 {
   Shape_CPDI *cp;
@@ -299,6 +292,5 @@ PetscErrorCode MPMShapeCreate_CPDI(MPMShape shape)
   shape->ops.setup          = MPMShapeSetUp_CPDI;
   shape->ops.setfromoptions = MPMShapeSetFromOptions_CPDI;
   shape->ops.view           = MPMShapeView_CPDI;
-  shape->ops.destroy        = MPMShapeDestroy_CPDI;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

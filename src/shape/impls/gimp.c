@@ -55,13 +55,6 @@ static PetscErrorCode MPMShapeView_GIMP(MPMShape shape, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MPMShapeDestroy_GIMP(MPMShape shape)
-{
-  PetscFunctionBegin;
-  PetscCall(PetscFree(shape->data));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode MPMShapeCreate_GIMP(MPMShape shape)
 {
   Shape_GIMP *gimp;
@@ -74,6 +67,5 @@ PetscErrorCode MPMShapeCreate_GIMP(MPMShape shape)
   shape->ops.basis1d = MPMShapeBasis1d_GIMP;
   shape->ops.setup   = MPMShapeSetUp_GIMP;
   shape->ops.view    = MPMShapeView_GIMP;
-  shape->ops.destroy = MPMShapeDestroy_GIMP;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -41,13 +41,6 @@ static PetscErrorCode MPMStrengthView_Elastic(MPMStrength str, PetscViewer viewe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MPMStrengthDestroy_Elastic(MPMStrength str)
-{
-  PetscFunctionBegin;
-  PetscCall(PetscFree(str->data));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode MPMStrengthCreate_Elastic(MPMStrength str)
 {
   Strength_Elastic *el;
@@ -61,6 +54,5 @@ PetscErrorCode MPMStrengthCreate_Elastic(MPMStrength str)
   str->ops.stress_n       = MPMStrengthStress_Elastic_n;
   str->ops.setfromoptions = MPMStrengthSetFromOptions_Elastic;
   str->ops.view           = MPMStrengthView_Elastic;
-  str->ops.destroy        = MPMStrengthDestroy_Elastic;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -155,13 +155,6 @@ static PetscErrorCode MPMStrengthView_JC(MPMStrength str, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MPMStrengthDestroy_JC(MPMStrength str)
-{
-  PetscFunctionBegin;
-  PetscCall(PetscFree(str->data));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode MPMStrengthCreate_JohnsonCook(MPMStrength str)
 {
   Strength_JC *jc;
@@ -184,6 +177,5 @@ PetscErrorCode MPMStrengthCreate_JohnsonCook(MPMStrength str)
   str->ops.flow           = MPMStrengthFlow_JC;
   str->ops.setfromoptions = MPMStrengthSetFromOptions_JC;
   str->ops.view           = MPMStrengthView_JC;
-  str->ops.destroy        = MPMStrengthDestroy_JC;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -68,13 +68,6 @@ static PetscErrorCode MPMStrengthView_NeoHookean(MPMStrength str, PetscViewer vi
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MPMStrengthDestroy_NeoHookean(MPMStrength str)
-{
-  PetscFunctionBegin;
-  PetscCall(PetscFree(str->data));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode MPMStrengthCreate_NeoHookean(MPMStrength str)
 {
   Strength_NeoHookean *nh;
@@ -92,7 +85,6 @@ PetscErrorCode MPMStrengthCreate_NeoHookean(MPMStrength str)
   str->ops.energy         = MPMStrengthEnergy_NeoHookean;
   str->ops.setfromoptions = MPMStrengthSetFromOptions_NeoHookean;
   str->ops.view           = MPMStrengthView_NeoHookean;
-  str->ops.destroy        = MPMStrengthDestroy_NeoHookean;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -48,13 +48,6 @@ static PetscErrorCode MPMStrengthView_Newtonian(MPMStrength str, PetscViewer vie
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MPMStrengthDestroy_Newtonian(MPMStrength str)
-{
-  PetscFunctionBegin;
-  PetscCall(PetscFree(str->data));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode MPMStrengthCreate_Newtonian(MPMStrength str)
 {
   Strength_Newtonian *nt;
@@ -68,6 +61,5 @@ PetscErrorCode MPMStrengthCreate_Newtonian(MPMStrength str)
   str->ops.stress_n       = MPMStrengthStress_Newtonian_n;
   str->ops.setfromoptions = MPMStrengthSetFromOptions_Newtonian;
   str->ops.view           = MPMStrengthView_Newtonian;
-  str->ops.destroy        = MPMStrengthDestroy_Newtonian;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

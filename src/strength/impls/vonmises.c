@@ -53,13 +53,6 @@ static PetscErrorCode MPMStrengthView_VonMises(MPMStrength str, PetscViewer view
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MPMStrengthDestroy_VonMises(MPMStrength str)
-{
-  PetscFunctionBegin;
-  PetscCall(PetscFree(str->data));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode MPMStrengthCreate_VonMises(MPMStrength str)
 {
   Strength_VonMises *vm;
@@ -75,6 +68,5 @@ PetscErrorCode MPMStrengthCreate_VonMises(MPMStrength str)
   str->ops.flow           = MPMStrengthFlow_VonMises;
   str->ops.setfromoptions = MPMStrengthSetFromOptions_VonMises;
   str->ops.view           = MPMStrengthView_VonMises;
-  str->ops.destroy        = MPMStrengthDestroy_VonMises;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

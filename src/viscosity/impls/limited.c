@@ -163,7 +163,6 @@ static PetscErrorCode MPMViscosityDestroy_Limited(MPMViscosity visc)
 
   PetscFunctionBegin;
   PetscCall(PetscFree2(lim->du, lim->ok));
-  PetscCall(PetscFree(visc->data));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -59,13 +59,6 @@ static PetscErrorCode MPMViscosityView_VNR(MPMViscosity visc, PetscViewer viewer
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MPMViscosityDestroy_VNR(MPMViscosity visc)
-{
-  PetscFunctionBegin;
-  PetscCall(PetscFree(visc->data));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode MPMViscosityCreate_VNR(MPMViscosity visc)
 {
   Visc_VNR *vnr;
@@ -78,6 +71,5 @@ PetscErrorCode MPMViscosityCreate_VNR(MPMViscosity visc)
   visc->ops.apply          = MPMViscosityApply_VNR;
   visc->ops.setfromoptions = MPMViscositySetFromOptions_VNR;
   visc->ops.view           = MPMViscosityView_VNR;
-  visc->ops.destroy        = MPMViscosityDestroy_VNR;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
