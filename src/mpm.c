@@ -456,7 +456,6 @@ PetscErrorCode MPMDestroy(MPM *mpm)
   PetscCall(MPMViscosityDestroy(&m->viscosity));
   PetscCall(MPMExactDestroy(&m->exact));
   PetscCall(MPMModulesDestroy(m));
-  PetscCall(PetscFree(m->wall_held));
   PetscCall(PetscFree2(m->output_times, m->output_count));
   PetscCall(PetscFree(m));
   *mpm = NULL;

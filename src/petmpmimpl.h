@@ -100,7 +100,7 @@ struct _p_MPMModule {
   MPMPhase      phase;
   PetscLogEvent event;
   PetscErrorCode (*apply)(MPMModule, MPM, const MPMStepContext *, MPMNode *); /* the owned nodes in grid phases, else NULL */
-  void     *ctx;
+  void     *ctx;                                                              /* the module's state: one allocation (PetscMalloc), freed with the list, or NULL */
   MPMModule next;
 };
 
@@ -173,8 +173,6 @@ struct _p_MPM {
   MPMBoundaryType      bc_lo[MPM_MAX_DIM], bc_hi[MPM_MAX_DIM];
   PetscReal            gravity[MPM_MAX_DIM];                               /* body acceleration g [cm/s^2]                      */
   PetscReal            friction_lo[MPM_MAX_DIM], friction_hi[MPM_MAX_DIM]; /* Coulomb friction coefficient of each wall face [-], 0: frictionless */
-  PetscBool           *wall_held;                                          /* the contact wall nodes the step's kick held (src/modules/walls.c) */
-  PetscInt             nwall_held;
   PetscBool            has_gravity;
   PetscBool            has_stress;    /* some material has a strength model: s_p enters the force            */
   PetscBool            track_F;       /* the shape functions or a strength model read the deformation gradient */

@@ -29,6 +29,7 @@ PetscErrorCode MPMModulesDestroy(MPM mpm)
     MPMModule mod = mpm->modules[ph];
     while (mod) {
       MPMModule next = mod->next;
+      PetscCall(PetscFree(mod->ctx)); /* a module's state: one allocation, or NULL */
       PetscCall(PetscFree(mod));
       mod = next;
     }

@@ -19,14 +19,21 @@
 
 /* What one pass over the wall faces does at each node: the face's friction coefficient, the friction's work (NULL: no
    friction), and the contact nodes' states, one per node in the order of the pass: held (the node moved into the wall
-   in the kick) or separated. The kick records them and the MUSL remap reads them, so that the remap holds the nodes the
-   kick held and frees those it freed (deciding again from the remapped velocity let a block at rest climb the wall). */
+   in the kick) or separated. The kick records them in the module's state (MPMWallsState) and the MUSL remap reads
+   them, so that the remap holds the nodes the kick held and frees those it freed (deciding again from the remapped
+   velocity let a block at rest climb the wall). */
 typedef struct {
   PetscReal  mu, *work;
   PetscBool *held;
   PetscInt   n;
   PetscBool  remap;
 } MPMWallPass;
+
+/* The module's state (its ctx, one allocation that the module list frees): room for n contact nodes' states. */
+typedef struct {
+  PetscInt  n;
+  PetscBool held[];
+} MPMWallsState;
 
 /* Calls fn on every owned node in the plane of local index ik of direction k (side -1: the lower face, +1: the upper). */
 static void MPMWallPlaneEach(const MPMGrid *g, MPMNode *node, PetscInt k, PetscInt ik, PetscInt side, MPMWallPass *pass, void (*fn)(MPMNode *, PetscInt, PetscInt, PetscInt, MPMWallPass *))
@@ -104,13 +111,15 @@ PetscErrorCode MPMWallsApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
   PetscFunctionBegin;
   MPMWallFacesEach(mpm, node, PETSC_FALSE, &pass, MPMWallNode); /* symmetry planes first: friction reads the velocity they leave */
   if (!n) PetscFunctionReturn(PETSC_SUCCESS);
-  if (n > mpm->nwall_held) { /* the kick sizes it (a rebalanced grid may own more wall nodes) */
+  if (!mod->ctx || n > ((MPMWallsState *)mod->ctx)->n) { /* the kick sizes it (a rebalanced grid may own more wall nodes) */
+    MPMWallsState *st;
     PetscCheck(!ctx->remap, PETSC_COMM_SELF, PETSC_ERR_PLIB, "MUSL remap before the kick recorded the wall contacts");
-    PetscCall(PetscFree(mpm->wall_held));
-    PetscCall(PetscMalloc1(n, &mpm->wall_held));
-    mpm->nwall_held = n;
+    PetscCall(PetscFree(mod->ctx));
+    PetscCall(PetscMalloc(sizeof(MPMWallsState) + (size_t)n * sizeof(PetscBool), &st));
+    st->n    = n;
+    mod->ctx = st;
   }
-  pass.held = mpm->wall_held;
+  pass.held = ((MPMWallsState *)mod->ctx)->held;
   MPMWallFacesEach(mpm, node, PETSC_TRUE, &pass, MPMWallContactNode); /* friction acts in the kick only */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
