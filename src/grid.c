@@ -51,11 +51,13 @@ static PetscErrorCode MPMCreateGridOwned(MPM mpm, PetscInt *own[], const PetscIn
       g->cs[k]     = 0;
       g->cm[k]     = 1;
       g->h[k]      = 1.0;
+      g->hinv[k]   = 1.0;
       g->nranks[k] = 1;
     } else {
-      g->h[k]  = (g->hi[k] - g->lo[k]) / g->cells[k];
-      g->cs[k] = g->xs[k];
-      g->cm[k] = PetscMin(g->xs[k] + g->xm[k], g->cells[k]) - g->xs[k];
+      g->h[k]    = (g->hi[k] - g->lo[k]) / g->cells[k];
+      g->hinv[k] = 1.0 / g->h[k];
+      g->cs[k]   = g->xs[k];
+      g->cm[k]   = PetscMin(g->xs[k] + g->xm[k], g->cells[k]) - g->xs[k];
       g->vcell *= g->h[k];
       g->hmin = PetscMin(g->hmin, g->h[k]);
     }

@@ -25,6 +25,7 @@ typedef struct {
   PetscReal lo[MPM_MAX_DIM];         /* lower corner of the domain [cm]                         */
   PetscReal hi[MPM_MAX_DIM];         /* upper corner of the domain [cm]                         */
   PetscReal h[MPM_MAX_DIM];          /* cell size [cm]                                          */
+  PetscReal hinv[MPM_MAX_DIM];       /* 1 / h, formed once: the transfers multiply by it [1/cm]  */
   PetscReal hmin;                    /* smallest cell size [cm]                                 */
   PetscReal vcell;                   /* cell volume h_x h_y h_z [cm^d]                          */
   PetscInt *rank_start[MPM_MAX_DIM]; /* first owned cell of each rank column, size p_d + 1    */
@@ -190,8 +191,8 @@ static inline void MPMGridCellBasis(const MPMGrid *g, const PetscInt ijk[], MPMS
     idx[k][0] = ijk[k];
     idx[k][1] = ijk[k] + 1;
     w[k][0] = w[k][1] = 0.5;
-    dw[k][0]          = -1.0 / g->h[k];
-    dw[k][1]          = 1.0 / g->h[k];
+    dw[k][0]          = -g->hinv[k];
+    dw[k][1]          = g->hinv[k];
     MPMShapeFold1d(g, k, 2, idx[k], sg[k]);
   }
   MPMShapeTensor(g, nn, idx, w, dw, sg, st);

@@ -36,7 +36,7 @@ static inline void MPMShapeEvaluate(MPMShape shape, const MPMGrid *g, const Pets
     return;
   }
   for (PetscInt k = 0; k < d; k++) {
-    const PetscReal hinv = 1.0 / g->h[k];
+    const PetscReal hinv = g->hinv[k];
     PetscInt        first;
     shape->ops.basis1d(shape->data, (x[k] - g->lo[k]) * hinv, &first, &nn[k], w[k], dw[k]);
     for (PetscInt a = 0; a < nn[k]; a++) {

@@ -30,7 +30,7 @@ MPM_KINLINE PetscBool MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(const MPMGrid 
   PetscBool mirror = PETSC_FALSE;
 
   for (PetscInt k = 0; k < MPM_KD; k++) {
-    const PetscReal hinv = 1.0 / g->h[k];
+    const PetscReal hinv = g->hinv[k];
     PetscInt        first, n;
     MPM_KBASIS((x[k] - g->lo[k]) * hinv, &first, &n, w[k], dw[k]);
     for (PetscInt a = 0; a < MPM_KNB; a++) {
@@ -93,31 +93,39 @@ MPM_KINLINE PetscBool MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(const MPMGrid 
 MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, MPMNode *nodes, PetscInt p, const PetscInt ns, const PetscInt node[MPM_KS], const PetscReal W[MPM_KS], const PetscReal DW[MPM_KS][MPM_KD],
                                                               const PetscReal SG[MPM_KS][MPM_KD], const int mode, const int mirror)
 {
-  const PetscInt   D = MPM_KD;
-  const PetscReal *v = A->v, *m = A->m, *V = A->V, *pr = A->pr, *q = A->q, *S = A->S;
+  const PetscInt D = MPM_KD;
+  /* the point's values in locals, read once: a store to a node may alias any double array, so the compiler would
+     otherwise load them again after every node update */
+  const PetscReal mp = A->m[p], Vp = A->V[p], P = (mode & MPM_P2G_PRESSURE) ? A->pr[p] + A->q[p] : 0.0;
+  PetscReal       vp[MPM_KD], Sp[MPM_KD * MPM_KD];
 
+  for (PetscInt k = 0; k < D; k++) vp[k] = A->v[p * D + k];
+  if (mode & MPM_P2G_STRESS)
+    for (PetscInt k = 0; k < D * D; k++) Sp[k] = A->S[p * D * D + k];
   for (PetscInt a = 0; a < ns; a++) {
     MPMNode        *nd = &nodes[node[a]];
-    const PetscReal wm = W[a] * m[p];
+    const PetscReal wm = W[a] * mp;
     nd->m += wm;
     nd->w2 += W[a] * W[a];
-    for (PetscInt k = 0; k < D; k++) nd->p[k] += (mirror ? SG[a][k] : 1.0) * wm * v[p * D + k];
-    if (mode & MPM_P2G_PRESSURE) {
-      const PetscReal P = pr[p] + q[p];
-      for (PetscInt k = 0; k < D; k++) nd->f[k] += (mirror ? SG[a][k] : 1.0) * V[p] * P * DW[a][k];
-    }
+    for (PetscInt k = 0; k < D; k++) nd->p[k] += (mirror ? SG[a][k] : 1.0) * wm * vp[k];
+    if (mode & MPM_P2G_PRESSURE)
+      for (PetscInt k = 0; k < D; k++) nd->f[k] += (mirror ? SG[a][k] : 1.0) * Vp * P * DW[a][k];
     if (mode & MPM_P2G_STRESS)
       for (PetscInt k = 0; k < D; k++) {
         PetscReal sgr = 0.0;
-        for (PetscInt j = 0; j < D; j++) sgr += S[p * D * D + k * D + j] * DW[a][j];
-        nd->f[k] -= (mirror ? SG[a][k] : 1.0) * V[p] * sgr;
+        for (PetscInt j = 0; j < D; j++) sgr += Sp[k * D + j] * DW[a][j];
+        nd->f[k] -= (mirror ? SG[a][k] : 1.0) * Vp * sgr;
       }
   }
 }
 
 /* m_I += N_I m_p, (mv)_I += N_I m_p v_p and, by mode, the point pressure force and the stress force. */
-MPM_KINLINE void MPM_KCAT(MPMKP2G, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const void *ctx, const MPMTransferArgs *A, MPMNode *nodes, const int mode)
+MPM_KINLINE void MPM_KCAT(MPMKP2G, MPM_KNAME, MPM_KD, d)(const MPMGrid *gin, const void *ctx, const MPMTransferArgs *Ain, MPMNode *nodes, const int mode)
 {
+  /* local copies: the grid's and the arguments' doubles (lo, h, dt, ...) stay in registers across the node updates */
+  const MPMGrid         gl = *gin, *g = &gl;
+  const MPMTransferArgs Al = *Ain, *A = &Al;
+
   for (PetscInt p = 0; p < A->n; p++) {
     PetscInt  node[MPM_KS], ns = MPM_KS;
     PetscReal W[MPM_KS], DW[MPM_KS][MPM_KD], SG[MPM_KS][MPM_KD];
@@ -187,8 +195,11 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, 
 }
 
 /* The grid velocity back to the points, by mode. */
-MPM_KINLINE void MPM_KCAT(MPMKG2P, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const void *ctx, const MPMTransferArgs *A, const MPMNode *nodes, const int mode)
+MPM_KINLINE void MPM_KCAT(MPMKG2P, MPM_KNAME, MPM_KD, d)(const MPMGrid *gin, const void *ctx, const MPMTransferArgs *Ain, const MPMNode *nodes, const int mode)
 {
+  const MPMGrid         gl = *gin, *g = &gl; /* local copies, as in the scatter */
+  const MPMTransferArgs Al = *Ain, *A = &Al;
+
   for (PetscInt p = 0; p < A->n; p++) {
     PetscInt  node[MPM_KS], ns = MPM_KS;
     PetscReal W[MPM_KS], DW[MPM_KS][MPM_KD], SG[MPM_KS][MPM_KD];

@@ -113,8 +113,8 @@ static inline PetscInt MPMCellBasisTable(const MPMGrid *g, PetscInt d, PetscInt 
   PetscReal dw[MPM_MAX_DIM][2];
 
   for (PetscInt k = 0; k < d; k++) {
-    dw[k][0] = -1.0 / g->h[k];
-    dw[k][1] = 1.0 / g->h[k];
+    dw[k][0] = -g->hinv[k];
+    dw[k][1] = g->hinv[k];
   }
   for (PetscInt s = 0; s < (1 << d); s++) {
     const PetscInt a = s & 1, b = (s >> 1) & 1, e = (s >> 2) & 1;
