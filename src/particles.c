@@ -392,27 +392,34 @@ static PetscErrorCode MPMReflectAtWalls(MPM mpm)
   for (PetscInt k = 0; k < d; k++) walls = (PetscBool)(walls || g->mirror_lo[k] || g->mirror_hi[k]);
   if (!walls) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(MPMPointsGetArrays(mpm, &pts));
-  for (PetscInt p = 0; p < pts.n; p++)
+  { /* the reflecting bounds in locals (a free face: none): the loop's test reads no grid field */
+    PetscReal lo[MPM_MAX_DIM], hi[MPM_MAX_DIM];
     for (PetscInt k = 0; k < d; k++) {
-      PetscReal *x = &pts.f[MPM_FIELD_POSITION][p * d], wall;
-      if (g->mirror_lo[k] && x[k] < g->lo[k])
-        wall = g->lo[k];
-      else if (g->mirror_hi[k] && x[k] > g->hi[k])
-        wall = g->hi[k];
-      else
-        continue;
-      x[k] = 2.0 * wall - x[k];
-      pts.f[MPM_FIELD_VELOCITY][p * d + k] *= -1.0;
-      if (pts.f[MPM_FIELD_REFPOSITION]) pts.f[MPM_FIELD_REFPOSITION][p * d + k] = 2.0 * wall - pts.f[MPM_FIELD_REFPOSITION][p * d + k];
-      for (PetscInt f = 0; f < mpm->nfields; f++) /* tensors: (R T R)_ij = -T_ij where exactly one of i, j is k */
-        if (pts.f[f] && mpm->field[f].bs == -1)
-          for (PetscInt i = 0; i < d; i++)
-            if (i != k) {
-              pts.f[f][p * d * d + i * d + k] *= -1.0;
-              pts.f[f][p * d * d + k * d + i] *= -1.0;
-            }
-      mpm->diag.wall_reflections++;
+      lo[k] = g->mirror_lo[k] ? g->lo[k] : PETSC_NINFINITY;
+      hi[k] = g->mirror_hi[k] ? g->hi[k] : PETSC_INFINITY;
     }
+    for (PetscInt p = 0; p < pts.n; p++)
+      for (PetscInt k = 0; k < d; k++) {
+        PetscReal *x = &pts.f[MPM_FIELD_POSITION][p * d], wall;
+        if (x[k] < lo[k])
+          wall = lo[k];
+        else if (x[k] > hi[k])
+          wall = hi[k];
+        else
+          continue;
+        x[k] = 2.0 * wall - x[k];
+        pts.f[MPM_FIELD_VELOCITY][p * d + k] *= -1.0;
+        if (pts.f[MPM_FIELD_REFPOSITION]) pts.f[MPM_FIELD_REFPOSITION][p * d + k] = 2.0 * wall - pts.f[MPM_FIELD_REFPOSITION][p * d + k];
+        for (PetscInt f = 0; f < mpm->nfields; f++) /* tensors: (R T R)_ij = -T_ij where exactly one of i, j is k */
+          if (pts.f[f] && mpm->field[f].bs == -1)
+            for (PetscInt i = 0; i < d; i++)
+              if (i != k) {
+                pts.f[f][p * d * d + i * d + k] *= -1.0;
+                pts.f[f][p * d * d + k * d + i] *= -1.0;
+              }
+        mpm->diag.wall_reflections++;
+      }
+  }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -480,13 +487,15 @@ static PetscErrorCode MPMRemoveOutflow(MPM mpm, PetscInt n, const PetscBool gone
    message: points are never lost silently. */
 PetscErrorCode MPMMigrate(MPM mpm)
 {
-  const MPMGrid *g = &mpm->grid;
-  PetscMPIInt    rank, size;
-  PetscInt       n, nmove = 0, nout = 0, ngone = 0, nwall = 0, ntotal;
-  PetscReal     *x, *id;
-  PetscInt      *owner = NULL;
-  PetscBool     *gone  = NULL;
-  MPMPoints      pts;
+  const MPMGrid  *g               = &mpm->grid;
+  const PetscInt  d               = g->dim;
+  const PetscReal lo[MPM_MAX_DIM] = {g->lo[0], g->lo[1], g->lo[2]}, hi[MPM_MAX_DIM] = {g->hi[0], g->hi[1], g->hi[2]};
+  PetscMPIInt     rank, size;
+  PetscInt        n, nmove = 0, nout = 0, ngone = 0, nwall = 0, ntotal;
+  PetscReal      *x, *id;
+  PetscInt       *owner = NULL;
+  PetscBool      *gone  = NULL;
+  MPMPoints       pts;
 
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(mpm->log.migrate, 0, 0, 0, 0));
@@ -499,9 +508,9 @@ PetscErrorCode MPMMigrate(MPM mpm)
   id = pts.f[MPM_FIELD_ID];
   if (size > 1) PetscCall(DMSwarmGetField(mpm->swarm, DMSwarmField_rank, NULL, NULL, (void **)&owner));
   for (PetscInt p = 0; p < n; p++) {
-    const PetscReal *xp = &x[p * g->dim];
+    const PetscReal *xp = &x[p * d];
     PetscBool        in = PETSC_TRUE;
-    for (PetscInt k = 0; k < g->dim; k++) in = (PetscBool)(in && xp[k] >= g->lo[k] && xp[k] <= g->hi[k]);
+    for (PetscInt k = 0; k < d; k++) in = (PetscBool)(in & (xp[k] >= lo[k]) & (xp[k] <= hi[k])); /* no branch per direction */
     if (!in && MPMThroughOutflow(mpm, xp)) {
       if (!gone) PetscCall(PetscCalloc1(n, &gone));
       gone[p] = PETSC_TRUE;

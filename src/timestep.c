@@ -2,6 +2,12 @@
 /* The time step: the smallest of the limits the state sets. */
 #include "petmpmimpl.h"
 
+/* The maxima of MPMComputeTimeStep take a term's square root or division only where it can raise the maximum so far: a term is
+   skipped where a product-only bound puts it below the maximum by a relative margin (1e-9) far above the bound's own
+   rounding (a few 1e-16), so the maxima, and dt, are the same bits as with every term evaluated. A NaN fails every
+   comparison and takes the full evaluation. */
+#define MPM_DT_SCREEN (1.0 - 1e-9)
+
 /* dt = min of
      sound:        C h_min / max_p (c_p + |v_p| + 2 nu_p / h_min + 2 d mu_p / (rho_p h_min)), nu_p = q_p / (rho_p |div v_p|)
                    the artificial viscosity's diffusivity and mu_p a Newtonian material's viscosity, so that their own
@@ -39,7 +45,10 @@ PetscErrorCode MPMComputeTimeStep(MPM mpm, PetscBool diagnose, PetscReal *dt)
       const MPMStrength str = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].strength;
       if (str && str->mu > 0.0) s += 2.0 * d * str->mu / (pts.f[MPM_FIELD_DENSITY][p] * h);
     }
-    if (q > 0.0 && divv != 0.0) s += 2.0 * q / (pts.f[MPM_FIELD_DENSITY][p] * PetscAbsReal(divv) * h);
+    if (q > 0.0 && divv != 0.0) { /* the division only where the term can raise the maximum (MPM_DT_SCREEN) */
+      const PetscReal r = pts.f[MPM_FIELD_DENSITY][p] * PetscAbsReal(divv) * h;
+      if (!(2.0 * q < (mx[0] - s) * r * MPM_DT_SCREEN)) s += 2.0 * q / r;
+    }
     if (!(s <= mx[0])) { /* also catches NaN */
       mx[0] = s;
       pmax  = p;
@@ -55,7 +64,8 @@ PetscErrorCode MPMComputeTimeStep(MPM mpm, PetscBool diagnose, PetscReal *dt)
       if (nd->m > 0.0) {
         PetscReal f2 = 0.0;
         for (PetscInt k = 0; k < d; k++) f2 += nd->f[k] * nd->f[k];
-        mx[2] = PetscMax(mx[2], PetscSqrtReal(f2 * PetscMin(1.0, nd->w2)) / nd->m);
+        f2 *= PetscMin(1.0, nd->w2);
+        if (!(f2 < PetscSqr(mx[2] * nd->m) * MPM_DT_SCREEN)) mx[2] = PetscMax(mx[2], PetscSqrtReal(f2) / nd->m); /* (MPM_DT_SCREEN) */
       }
     }
     PetscCall(VecRestoreArrayRead(mpm->nodes, (const PetscScalar **)&node));
