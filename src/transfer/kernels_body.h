@@ -102,15 +102,23 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
   for (PetscInt k = 0; k < D; k++) vp[k] = A->v[p * D + k];
   if (mode & MPM_P2G_STRESS)
     for (PetscInt k = 0; k < D * D; k++) Sp[k] = A->S[p * D * D + k];
+  if ((mode & MPM_P2G_PRESSURE) && (mode & MPM_P2G_STRESS)) /* -V sigma = V ((p + q) I - s), formed once (MPMStressForceMatrix) */
+    MPMStressForceMatrix(D, Vp, P, Sp);
   for (PetscInt a = 0; a < ns; a++) {
     MPMNode        *nd = &nodes[node[a]];
     const PetscReal wm = W[a] * mp;
     nd->m += wm;
     nd->w2 += W[a] * W[a];
     for (PetscInt k = 0; k < D; k++) nd->p[k] += (mirror ? SG[a][k] : 1.0) * wm * vp[k];
-    if (mode & MPM_P2G_PRESSURE)
+    if ((mode & MPM_P2G_PRESSURE) && (mode & MPM_P2G_STRESS))
+      for (PetscInt k = 0; k < D; k++) {
+        PetscReal sgr = 0.0;
+        for (PetscInt j = 0; j < D; j++) sgr += Sp[k * D + j] * DW[a][j];
+        nd->f[k] += (mirror ? SG[a][k] : 1.0) * sgr;
+      }
+    else if (mode & MPM_P2G_PRESSURE)
       for (PetscInt k = 0; k < D; k++) nd->f[k] += (mirror ? SG[a][k] : 1.0) * Vp * P * DW[a][k];
-    if (mode & MPM_P2G_STRESS)
+    else if (mode & MPM_P2G_STRESS)
       for (PetscInt k = 0; k < D; k++) {
         PetscReal sgr = 0.0;
         for (PetscInt j = 0; j < D; j++) sgr += Sp[k * D + j] * DW[a][j];

@@ -39,6 +39,16 @@ typedef struct {
   PetscReal threshold; /* relative expansion over the kick above which expand takes the pressure's work [-] */
 } MPMTransferArgs;
 
+/* The point's force matrix -V_p sigma_p = V_p ((p + q) I - s_p) (d x d, row major) in place of its deviatoric stress
+   s_p in Sig: point integration's internal force f_I = sum_p (-V_p sigma_p) grad N_I(x_p) then takes d^2 products per
+   stencil entry, where the pressure and the deviator apart took d^2 + 3 d. Shared by the generic and the specialised
+   scatters, so that the two give the same bits. */
+static inline void MPMStressForceMatrix(PetscInt d, PetscReal V, PetscReal P, PetscReal Sig[])
+{
+  for (PetscInt k = 0; k < d; k++)
+    for (PetscInt j = 0; j < d; j++) Sig[k * d + j] = V * ((k == j ? P : 0.0) - Sig[k * d + j]);
+}
+
 /* The conservative update's energy increment of point p, dt_kick (s : Lbar - (p + q) tr Lbar) / rho, shared by the generic
    and the specialised gathers. In an expansion eps = dt_kick tr Lbar beyond the threshold (-mpm_isentrope_threshold,
    as the compatible update's) the share of p and q is replaced by the change along the EOS isentrope (A->expand counts
