@@ -43,6 +43,7 @@ static PetscErrorCode CheckType(const char type[], PetscInt dim, PetscBool bound
     g.cells[k]     = 9 + k;
     g.lo[k]        = -1.0 + 0.5 * k;
     g.h[k]         = 0.3 + 0.1 * k;
+    g.hinv[k]      = 1.0 / g.h[k];
     g.gs[k]        = 0;
     g.gm[k]        = k < dim ? g.cells[k] + 1 : 1;
     g.mirror_lo[k] = boundary;
@@ -131,6 +132,7 @@ static PetscErrorCode CheckCPDIMerge(PetscInt dim, PetscInt *fails)
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
     g.cells[k] = 12;
     g.h[k]     = 0.25 + 0.05 * k;
+    g.hinv[k]  = 1.0 / g.h[k];
     g.gm[k]    = k < dim ? g.cells[k] + 1 : 1;
   }
   PetscCall(PetscRandomCreate(PETSC_COMM_SELF, &rnd));
