@@ -119,9 +119,15 @@ static inline __attribute__((always_inline)) PetscErrorCode MPMConstitutiveChunk
     MPMConstitutiveStore(n, pn, Tn, e1, rho1, c2, cs2, &m[c0], &pr[c0], &T[c0], &e[c0], &rho[c0], &V[c0], &c[c0]);
   else
     for (PetscInt i = 0; i < n; i++) MPM_CONSTITUTIVE_STORE(i, idx[i]);
-  for (PetscInt i = 0; i < n; i++)
-    if (!(rho1[i] > 0.0 && isnormal(rho1[i]) && isfinite(e1[i]) && isfinite(pn[i]) && c2[i] >= 0.0 && !MPMEOSPastSpinodal(E, rho1[i], pn[i], c2[i])) && (bad < 0 || MPM_CP(i) < bad))
-      bad = MPM_CP(i); /* C99 classification, inline (PETSc's are library calls) */
+  { /* C99 classification, inline (PETSc's are library calls): one pass free of branches says whether the chunk has a
+       non-physical point, and only then the loop that finds the first */
+    const PetscReal rsp = E->rho_spinodal;
+    int             any = 0;
+    for (PetscInt i = 0; i < n; i++) any |= !((rho1[i] > 0.0) & !!isnormal(rho1[i]) & !!isfinite(e1[i]) & !!isfinite(pn[i]) & (c2[i] >= 0.0) & !((rsp > 0.0) & (pn[i] < 0.0) & ((c2[i] < 0.0) | (rho1[i] < rsp))));
+    if (any)
+      for (PetscInt i = 0; i < n; i++)
+        if (!(rho1[i] > 0.0 && isnormal(rho1[i]) && isfinite(e1[i]) && isfinite(pn[i]) && c2[i] >= 0.0 && !MPMEOSPastSpinodal(E, rho1[i], pn[i], c2[i])) && (bad < 0 || MPM_CP(i) < bad)) bad = MPM_CP(i);
+  }
   *badp = bad;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -328,11 +328,17 @@ PetscErrorCode MPMGridZeroForScatter(MPM mpm, PetscInt n, const PetscReal x[], M
     lo[k] = PETSC_MAX_INT;
     hi[k] = -1;
   }
-  for (PetscInt p = 0; p < n; p++)
+  if (n > 0) /* the cell index is monotone in x: the cells of the smallest and the largest coordinate (no division per point) */
     for (PetscInt k = 0; k < g->dim; k++) {
-      const PetscInt c = MPMCellIndex(g, k, x[p * g->dim + k]);
-      lo[k]            = PetscMin(lo[k], c);
-      hi[k]            = PetscMax(hi[k], c);
+      const PetscInt d   = g->dim;
+      PetscReal      xlo = x[k], xhi = x[k];
+      for (PetscInt p = 1; p < n; p++) {
+        const PetscReal xp = x[p * d + k];
+        xlo                = xp < xlo ? xp : xlo;
+        xhi                = xp > xhi ? xp : xhi;
+      }
+      lo[k] = MPMCellIndex(g, k, xlo);
+      hi[k] = MPMCellIndex(g, k, xhi);
     }
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) { /* owned = ghosted box here: node indices 0 .. xm */
     if (k >= g->dim || hi[k] < 0) {
