@@ -44,7 +44,7 @@ CONFIGS = [
 ]
 # What stopped a run, from its diagnosis (src/constitutive.c, src/ts.c), first match wins.
 REASONS = [("holds little mass but this point", "light node"), ("spinodal", "spall"), ("-mpm_shape_cpdi_reach", "CPDI reach"),
-           ("collapsed", "dt collapse"), ("near vacuum", "vacuum"), ("emptied", "emptied cells"), ("left the domain through a free face", "left the domain")]
+           ("collapsed", "dt collapse"), ("-mpm_dt_min_ratio", "dt collapse"), ("near vacuum", "vacuum"), ("emptied", "emptied cells"), ("left the domain through a free face", "left the domain")]
 
 
 def classify(p, report):
@@ -119,7 +119,8 @@ def main():
              "EOS spinodal with `-mat_<m>_eos_spall_spinodal false`; `CPDI reach`: a domain stretched past "
              "`-mpm_shape_cpdi_reach`, without splitting; `past a wall`: a point moved farther in one step than a "
              "wall's reflection can bring back; `left the domain`: a point (a spalled or kicked fragment) left through a free face, "
-             "which the scene has not made an outflow; `dt collapse`; `vacuum`: density below `-mpm_vacuum_density`; "
+             "which the scene has not made an outflow; `dt collapse`: the step fell below `-mpm_dt_min_ratio` of the run's largest, "
+             "or to t + dt == t; `vacuum`: density below `-mpm_vacuum_density`; "
              "`emptied cells`; else the state the diagnosis names, `negative energy`, `negative density` or `non-finite state`); `refused`: an option the scene cannot take, refused before the run (the cell rule on "
              "the r-z grid, a grid too small for the rank count). A crash (any other exit, a hang, non-finite values) fails the script.", "",
              f"{counts['ok']} runs finished, {counts['stop']} stopped with a diagnosis, {counts['refused']} refused, "

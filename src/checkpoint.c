@@ -5,8 +5,8 @@
    write DIR/checkpoint-STEP.h5 (the last two are kept; SIGTERM and SIGINT write one too); -mpm_restart FILE continues
    the run from one, with the scene's options (the scene must be the one that wrote it: the same grid and fields).
    A checkpoint holds the whole state the next step reads: every point field the scene carries, in each rank's
-   order; the time, the step, the last step size (the leapfrog kick and the acceleration limit read it), the next
-   point id, the run's initial sums, the outputs so far, the checks, and each rank's diagnostics. The grid is not in
+   order; the time, the step, the last step size (the leapfrog kick and the acceleration limit read it) and the largest
+   (-mpm_dt_min_ratio reads it), the next point id, the run's initial sums, the outputs so far, the checks, and each rank's diagnostics. The grid is not in
    it: every step rebuilds it from the points.
      /points/<field>  (N bs)   the points of rank r at the offset of ranks < r
      /counts          (ranks)  points per rank
@@ -25,7 +25,7 @@
 #include "exact/exactimpl.h"
 #include <unistd.h>
 
-#define MPM_CKPT_NSTATE 28
+#define MPM_CKPT_NSTATE 29
 #define MPM_CKPT_OUTFLOW 30 /* the outflow tallies' place in the diagnostics, after the counters of MPMCkptDiag */
 #define MPM_CKPT_NDIAG (MPM_CKPT_OUTFLOW + MPM_OUTFLOW_N)
 
@@ -175,7 +175,8 @@ PetscErrorCode MPMCheckpointWrite(MPM mpm)
                                            0,
                                            0,
                                            0,
-                                           0};
+                                           0,
+                                           mpm->dt_peak};
     if (mpm->exact)
       for (PetscInt i = 0; i < 4; i++) st[24 + i] = mpm->exact->state[i];
     PetscReal dg[MPM_CKPT_NDIAG] = {0}, *out, *chk;
@@ -324,6 +325,7 @@ PetscErrorCode MPMRestartRead(MPM mpm)
   mpm->itout            = (PetscInt)st[16];
   mpm->last_output_step = (PetscInt)st[17];
   mpm->nchecks          = (PetscInt)st[18];
+  mpm->dt_peak          = st[28];
   if (mpm->exact)
     for (PetscInt i = 0; i < 4; i++) mpm->exact->state[i] = st[24 + i];
   PetscCheck(mpm->nchecks <= MPM_MAX_CHECKS, mpm->comm, PETSC_ERR_FILE_READ, "-mpm_restart %s: %" PetscInt_FMT " checks", mpm->restart, mpm->nchecks);

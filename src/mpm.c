@@ -30,6 +30,7 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   m->ppc                     = 1;
   m->cfl                     = 0.5;
   m->dtmin                   = 0.0;
+  m->dtmin_ratio             = 1e-3;
   m->dvol_max                = 0.2;
   m->accel_cfl               = 0.5;
   m->isentrope_threshold     = 0.25;
@@ -118,6 +119,8 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscCall(MPMOptionsCheckRange("-mpm_cfl", mpm->cfl, 0.0, 1.0, PETSC_TRUE, PETSC_FALSE));
   PetscCall(PetscOptionsReal("-mpm_dt_min", "Smallest time step [s], >= 0; a smaller CFL step stops the run", "", mpm->dtmin, &mpm->dtmin, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_dt_min", mpm->dtmin, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+  PetscCall(PetscOptionsReal("-mpm_dt_min_ratio", "Smallest time step as a fraction of the run's largest CFL step so far [-], in [0, 1) (0: none); a smaller step stops the run (a step collapse)", "", mpm->dtmin_ratio, &mpm->dtmin_ratio, NULL));
+  PetscCall(MPMOptionsCheckRange("-mpm_dt_min_ratio", mpm->dtmin_ratio, 0.0, 1.0, PETSC_FALSE, PETSC_TRUE));
   PetscCall(PetscOptionsReal("-mpm_dt_volume", "Largest relative volume change of a point in one step, |tr L| dt (time step limit) [-], > 0", "", mpm->dvol_max, &mpm->dvol_max, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_dt_volume", mpm->dvol_max, 0.0, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
   PetscCall(PetscOptionsReal("-mpm_dt_acceleration", "Courant number C_a of the grid acceleration limit dt (dt + dt_prev)/2 |a| <= C_a h [-], > 0", "", mpm->accel_cfl, &mpm->accel_cfl, NULL));

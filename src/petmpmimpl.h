@@ -145,6 +145,8 @@ struct _p_MPM {
   PetscInt             ppc;                            /* points per cell per direction                     */
   PetscReal            cfl;                            /* Courant number                                    */
   PetscReal            dtmin;                          /* smallest time step before the run is stopped [s]  */
+  PetscReal            dtmin_ratio;                    /* smallest time step as a fraction of dt_peak before the run is stopped [-] */
+  PetscReal            dt_peak;                        /* largest CFL step of the run so far (checkpointed) [s] */
   PetscReal            dvol_max;                       /* largest relative volume change of a point per step (time step limit) [-] */
   PetscReal            accel_cfl;                      /* Courant number of the grid acceleration limit [-]          */
   PetscReal            isentrope_threshold;            /* relative expansion per step above which e follows the isentrope [-] */

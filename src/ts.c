@@ -37,15 +37,21 @@ static PetscErrorCode MPMTSPreStep(TS ts)
   PetscCall(TSGetStepNumber(ts, &step));
   PetscCall(MPMStepForces(mpm, t)); /* the step's grid forces, which the acceleration limit reads */
   PetscCall(MPMComputeTimeStep(mpm, PETSC_FALSE, &dt));
-  if (dt < mpm->dtmin || !(t + dt > t)) { /* below -mpm_dt_min, or so small (or NaN) that t no longer advances: the post-step stops the loop without a step */
-    const PetscBool collapsed = (PetscBool) !(t + dt > t);
+  /* below -mpm_dt_min, below -mpm_dt_min_ratio of the run's largest step (a step that collapsed by that factor: the run
+     would crawl), or so small (or NaN) that t no longer advances: the post-step stops the loop without a step */
+  if (dt < mpm->dtmin || dt < mpm->dtmin_ratio * mpm->dt_peak || !(t + dt > t)) {
+    const PetscBool collapsed = (PetscBool) !(t + dt > t), absolute = (PetscBool)(dt < mpm->dtmin);
     PetscCall(MPMComputeTimeStep(mpm, PETSC_TRUE, &dt));
     if (collapsed)
       PetscCall(MPMSetFailure(mpm, "Step %" PetscInt_FMT ", t = %g s: the time step collapsed to %g s (t + dt == t: time no longer advances); the limit that set it is printed above", step, (double)t, (double)dt));
-    else
+    else if (absolute)
       PetscCall(MPMSetFailure(mpm, "Step %" PetscInt_FMT ", t = %g s: CFL time step %g s fell below -mpm_dt_min %g s", step, (double)t, (double)dt, (double)mpm->dtmin));
+    else
+      PetscCall(MPMSetFailure(mpm, "Step %" PetscInt_FMT ", t = %g s: CFL time step %g s fell below -mpm_dt_min_ratio %g of the run's largest step %g s (a step collapse; the limit that set it is printed above)", step, (double)t, (double)dt,
+                              (double)mpm->dtmin_ratio, (double)mpm->dt_peak));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
+  mpm->dt_peak = PetscMax(mpm->dt_peak, dt);
   if (t + dt * (1.0 + 1e-6) >= tmax) { /* land on the final time, never leave a sliver */
     dt            = tmax - t;
     mpm->dt_limit = MPM_DT_LANDING;

@@ -9,6 +9,7 @@ Prints PASSED/FAILED with the measured numbers; exits non-zero on failure.
 """
 import json
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -268,6 +269,7 @@ def test_bad_input():
             ([*SCENE_CTH, "-region_left_velocity", "nan", "-mpm_output", d], "-region_left_velocity"),
             ([*SCENE_CTH, "-mpm_lo", "nan", "-mpm_output", d], "-mpm_lo"),
             ([*SCENE_CTH, "-mpm_dt_min", "-1", "-mpm_output", d], "-mpm_dt_min"),
+            ([*SCENE_CTH, "-mpm_dt_min_ratio", "1", "-mpm_output", d], "-mpm_dt_min_ratio 1. is out of range: valid is [0., 1.)"),
             ([*SCENE_CTH, "-mat_gas_eos_pmin", "1e9", "-mpm_output", d], "-mat_gas_eos_pmin"),
             (["-options_file", HYDRO, "-mat_water_eos_tait_cavitation", "1.5", "-mpm_output", d], "-mat_water_eos_tait_cavitation 1.5 is out of range"),
             ([*SCENE_CTH, "-mpm_cell_volume", "half", "-mpm_output", d], "-mpm_cell_volume"),
@@ -422,11 +424,20 @@ def test_failure():
         p = run([*SCENE_CTH, "-mpm_cells", "64", "-mpm_dt_min", "1e-6", "-mpm_output", d], expect_ok=False)
         text = p.stdout + p.stderr
         check(p.returncode != 0 and "-mpm_dt_min" in text and "set by point" in text and "at x =" in text, f"time-step floor: exit {p.returncode}, names -mpm_dt_min and the point that sets dt")
-        # a time step that collapses with no -mpm_dt_min set (the full-cell rule with CPDI at one point per cell: cells counted
-        # full that hold a sliver of a point blow a point up until dt ~ 1e-22 s) stops once t + dt == t, instead of stepping forever
-        p = run([*SCENE_CTH, "-mpm_cells", "512", "-mpm_ppc", "1", "-mpm_shape_type", "cpdi", "-mpm_output", d], expect_ok=False)
+        # a time step that collapses (the full-cell rule with CPDI at one point per cell: cells counted full that hold a sliver
+        # of a point blow a point up until dt ~ 1e-22 s): by default it stops once the step is below -mpm_dt_min_ratio (1e-3)
+        # of the run's largest, naming the option and the point; with the ratio off, once t + dt == t, instead of stepping forever
+        collapse = [*SCENE_CTH, "-mpm_cells", "512", "-mpm_ppc", "1", "-mpm_shape_type", "cpdi", "-mpm_output", d]
+        p = run(collapse, expect_ok=False)
         text = p.stdout + p.stderr
-        check(p.returncode != 0 and "time step collapsed" in text and "set by point" in text, f"collapsed time step: exit {p.returncode}, says so and names the point that sets dt")
+        m = re.search(r"Step (\d+), t = \S+ s: CFL time step (\S+) s fell below -mpm_dt_min_ratio 0.001 of the run's largest step (\S+) s", text)
+        check(p.returncode == 91 and m is not None and float(m.group(2)) < 1e-3 * float(m.group(3)) and "set by point" in text,
+              f"a step collapse stops at -mpm_dt_min_ratio: exit {p.returncode}, {m.group(0) if m else 'no such message'}, names the point that sets dt")
+        p = run([*collapse, "-mpm_dt_min_ratio", "0"], expect_ok=False)
+        text = p.stdout + p.stderr
+        m2 = re.search(r"Step (\d+), t = \S+ s: the time step collapsed", text)
+        check(p.returncode == 91 and m2 is not None and "set by point" in text and (m is None or int(m2.group(1)) > int(m.group(1))),
+              f"with -mpm_dt_min_ratio 0 the same run steps on until t + dt == t: exit {p.returncode}, {m2.group(0) if m2 else 'no such message'}, later than the ratio's stop")
         # copper stretched past its Mie-Gruneisen spinodal (the 2D penetration with GIMP shapes) with the spall there switched
         # off: the diagnosis says so and names the options that let it spall (by default it spalls: scene_spall)
         pen = ["-options_file", os.path.join(SRC, "inputs", "penetration_2d.opts"), "-mpm_shape_type", "gimp", "-mat_copper_eos_spall_spinodal", "false", "-mpm_output", d]
