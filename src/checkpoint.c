@@ -55,7 +55,8 @@ static PetscErrorCode MPMCkptRead(hid_t file, const char name[], hsize_t offset,
   H5Sget_simple_extent_dims(space, &len, NULL);
   H5Sclose(space);
   if (N) *N = len;
-  PetscCheck(offset + n <= len, PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "-mpm_restart: %s of the checkpoint holds %llu values, not %llu", name, (unsigned long long)len, (unsigned long long)(offset + n));
+  PetscCheck(offset + n <= len, PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "-mpm_restart: %s of the checkpoint holds %llu values, not %llu: it was written by another version of petmpm or for another scene", name, (unsigned long long)len,
+             (unsigned long long)(offset + n));
   if (len) PetscCall(MPMH5Block(dset, PETSC_FALSE, &offset, &n, a, name));
   H5Dclose(dset);
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -226,6 +227,34 @@ PetscErrorCode MPMCheckpointWrite(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The checkpoint's /state, checked against the scene: its length (a checkpoint of another version has another) and
+   its grid. */
+static PetscErrorCode MPMCkptReadState(MPM mpm, hid_t f, PetscReal st[])
+{
+  const PetscInt d = mpm->grid.dim;
+
+  PetscFunctionBegin;
+  PetscCall(MPMCkptRead(f, "state", 0, MPM_CKPT_NSTATE, st, NULL));
+  PetscCheck((PetscInt)st[20] == d && (PetscInt)st[21] == mpm->grid.cells[0] && (PetscInt)st[22] == mpm->grid.cells[1] && (PetscInt)st[23] == mpm->grid.cells[2], mpm->comm, PETSC_ERR_USER_INPUT,
+             "-mpm_restart %s: the checkpoint is of a %dD grid of %d x %d x %d cells, the scene's is %" PetscInt_FMT "D, %" PetscInt_FMT " x %" PetscInt_FMT " x %" PetscInt_FMT, mpm->restart, (int)st[20], (int)st[21], (int)st[22], (int)st[23], d,
+             mpm->grid.cells[0], mpm->grid.cells[1], mpm->grid.cells[2]);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Before the output opens: the checkpoint can be read and fits the scene, so that a refused restart writes nothing. */
+PetscErrorCode MPMRestartCheck(MPM mpm)
+{
+  PetscReal st[MPM_CKPT_NSTATE];
+  hid_t     f;
+
+  PetscFunctionBegin;
+  f = MPMCkptOpen(mpm->comm, mpm->restart, PETSC_FALSE);
+  PetscCheck(f >= 0, mpm->comm, PETSC_ERR_FILE_OPEN, "-mpm_restart %s: cannot open the checkpoint", mpm->restart);
+  PetscCall(MPMCkptReadState(mpm, f, st));
+  H5Fclose(f);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* After the scene's set-up (points seeded, output open for appending): the checkpoint's points and state replace it. */
 PetscErrorCode MPMRestartRead(MPM mpm)
 {
@@ -242,11 +271,8 @@ PetscErrorCode MPMRestartRead(MPM mpm)
   PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
   f = MPMCkptOpen(mpm->comm, mpm->restart, PETSC_FALSE);
   PetscCheck(f >= 0, mpm->comm, PETSC_ERR_FILE_OPEN, "-mpm_restart %s: cannot open the checkpoint", mpm->restart);
-  PetscCall(MPMCkptRead(f, "state", 0, MPM_CKPT_NSTATE, st, NULL));
+  PetscCall(MPMCkptReadState(mpm, f, st));
   wsize = (PetscInt)st[19];
-  PetscCheck((PetscInt)st[20] == d && (PetscInt)st[21] == mpm->grid.cells[0] && (PetscInt)st[22] == mpm->grid.cells[1] && (PetscInt)st[23] == mpm->grid.cells[2], mpm->comm, PETSC_ERR_USER_INPUT,
-             "-mpm_restart %s: the checkpoint is of a %dD grid of %d x %d x %d cells, the scene's is %" PetscInt_FMT "D, %" PetscInt_FMT " x %" PetscInt_FMT " x %" PetscInt_FMT, mpm->restart, (int)st[20], (int)st[21], (int)st[22], (int)st[23], d,
-             mpm->grid.cells[0], mpm->grid.cells[1], mpm->grid.cells[2]);
   PetscCall(PetscMalloc1(wsize, &cnt));
   PetscCall(MPMCkptRead(f, "counts", 0, (hsize_t)wsize, cnt, NULL));
   N = 0;

@@ -398,6 +398,7 @@ PetscErrorCode MPMSetUp(MPM mpm)
   }
   PetscCall(MPMDiagnoseVacuum(mpm, NULL, NULL)); /* the baseline: gaps between bodies in the initial state */
   PetscCall(MPMCheckUnusedOptions(mpm));
+  if (mpm->restart[0]) PetscCall(MPMRestartCheck(mpm)); /* a checkpoint the restart would refuse: refused before the output opens */
   PetscCall(MPMOutputOpen(mpm));
   PetscCall(MPMGlobalSums(mpm, &mpm->mass0, &mpm->energy0, mpm->momentum0, &mpm->kinetic0));
   mpm->potential0 = mpm->potential;

@@ -364,6 +364,7 @@ PETSC_INTERN PetscErrorCode MPMOutputOpen(MPM);
 PETSC_INTERN PetscErrorCode MPMOutputWrite(MPM, PetscInt, PetscReal);
 PETSC_INTERN PetscErrorCode MPMOutputClose(MPM);
 PETSC_INTERN PetscErrorCode MPMCheckpointWrite(MPM);
+PETSC_INTERN PetscErrorCode MPMRestartCheck(MPM);
 PETSC_INTERN PetscErrorCode MPMRestartRead(MPM);
 PETSC_INTERN PetscErrorCode MPMGlobalSums(MPM, PetscReal *, PetscReal *, PetscReal[], PetscReal *);
 PETSC_INTERN PetscErrorCode MPMSceneSetFromOptions(MPM, PetscOptionItems *);

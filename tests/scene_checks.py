@@ -10,6 +10,7 @@ Prints PASSED/FAILED with the measured numbers; exits non-zero on failure.
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -572,6 +573,17 @@ def test_restart():
             r1, r2 = json.load(f1), json.load(f2)
         check(r2["outflow"] == r1["outflow"] and r2["outflow"]["points"] > 0 and r2["conservation"] == r1["conservation"] and not same_files(o, p),
               f"outflow: a restart after {r2['outflow']['points']} points left gives the uninterrupted tallies and conservation, bit for bit")
+        # a checkpoint of another version (its /state one value short, as before -mpm_dt_min_ratio's entry): refused, said why
+        old = os.path.join(d, "old-checkpoint.h5")
+        shutil.copy(os.path.join(p, "checkpoint-800.h5"), old)
+        with h5py.File(old, "r+") as h:
+            st = h["state"][...]
+            del h["state"]
+            h["state"] = st[:-1]
+        q = run([*flow, "-mpm_output", os.path.join(d, "q"), "-mpm_restart", old], expect_ok=False)
+        text = q.stdout + q.stderr
+        check(q.returncode != 0 and "-mpm_restart" in text and f"holds {st.size - 1} values, not {st.size}" in text and "another version of petmpm" in text
+              and not os.path.exists(os.path.join(d, "q", "petmpm.h5")), f"a checkpoint of another version: exit {q.returncode}, the message names -mpm_restart, the sizes and why; no output written")
 
 
 def flyer_fields(out):
