@@ -34,6 +34,13 @@ static inline void MPMConstitutiveStore(PetscInt n, const PetscReal *restrict pn
   for (PetscInt i = 0; i < n; i++) MPM_CONSTITUTIVE_STORE(i, i);
 }
 
+/* Whether a state is non-physical: a density not positive and normal, an energy or pressure not finite, a negative c^2,
+   or tension past the EOS's spinodal. C99 classification, inline (PETSc's are library calls), without branches. */
+static inline int MPMNonPhysical(MPMEOS E, PetscReal rho, PetscReal e, PetscReal p, PetscReal c2)
+{
+  return !((rho > 0.0) & !!isnormal(rho) & !!isfinite(e) & !!isfinite(p) & (c2 >= 0.0) & !MPMEOSPastSpinodal(E, rho, p, c2));
+}
+
 /* The update of one chunk of material im's points (c0 .. c0 + n of its index list), with the dimension d and ident (one
    material: the list is the identity, point c0 + i) compile-time constants where MPMConstitutive calls it, so that the
    loops over d unroll and the loops over the chunk read the fields directly; the same operations in the same order
@@ -119,14 +126,12 @@ static inline __attribute__((always_inline)) PetscErrorCode MPMConstitutiveChunk
     MPMConstitutiveStore(n, pn, Tn, e1, rho1, c2, cs2, &m[c0], &pr[c0], &T[c0], &e[c0], &rho[c0], &V[c0], &c[c0]);
   else
     for (PetscInt i = 0; i < n; i++) MPM_CONSTITUTIVE_STORE(i, idx[i]);
-  { /* C99 classification, inline (PETSc's are library calls): one pass free of branches says whether the chunk has a
-       non-physical point, and only then the loop that finds the first */
-    const PetscReal rsp = E->rho_spinodal;
-    int             any = 0;
-    for (PetscInt i = 0; i < n; i++) any |= !((rho1[i] > 0.0) & !!isnormal(rho1[i]) & !!isfinite(e1[i]) & !!isfinite(pn[i]) & (c2[i] >= 0.0) & !((rsp > 0.0) & (pn[i] < 0.0) & ((c2[i] < 0.0) | (rho1[i] < rsp))));
+  { /* one pass free of branches says whether the chunk has a non-physical point, and only then the loop that finds the first */
+    int any = 0;
+    for (PetscInt i = 0; i < n; i++) any |= MPMNonPhysical(E, rho1[i], e1[i], pn[i], c2[i]);
     if (any)
       for (PetscInt i = 0; i < n; i++)
-        if (!(rho1[i] > 0.0 && isnormal(rho1[i]) && isfinite(e1[i]) && isfinite(pn[i]) && c2[i] >= 0.0 && !MPMEOSPastSpinodal(E, rho1[i], pn[i], c2[i])) && (bad < 0 || MPM_CP(i) < bad)) bad = MPM_CP(i);
+        if (MPMNonPhysical(E, rho1[i], e1[i], pn[i], c2[i]) && (bad < 0 || MPM_CP(i) < bad)) bad = MPM_CP(i);
   }
   *badp = bad;
   PetscFunctionReturn(PETSC_SUCCESS);

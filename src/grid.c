@@ -330,10 +330,9 @@ PetscErrorCode MPMGridZeroForScatter(MPM mpm, PetscInt n, const PetscReal x[], M
   }
   if (n > 0) /* the cell index is monotone in x: the cells of the smallest and the largest coordinate (no division per point) */
     for (PetscInt k = 0; k < g->dim; k++) {
-      const PetscInt d   = g->dim;
-      PetscReal      xlo = x[k], xhi = x[k];
+      PetscReal xlo = x[k], xhi = x[k];
       for (PetscInt p = 1; p < n; p++) {
-        const PetscReal xp = x[p * d + k];
+        const PetscReal xp = x[p * g->dim + k];
         xlo                = xp < xlo ? xp : xlo;
         xhi                = xp > xhi ? xp : xhi;
       }

@@ -36,7 +36,7 @@ struct _p_MPMEOS {
    the Mie-Gruneisen form's expanded branch can give c^2 > 0 from its thermal part, but the cold curve has no state). */
 static inline PetscBool MPMEOSPastSpinodal(MPMEOS eos, PetscReal rho, PetscReal p, PetscReal c2)
 {
-  return (PetscBool)(eos->rho_spinodal > 0.0 && p < 0.0 && (c2 < 0.0 || rho < eos->rho_spinodal));
+  return (PetscBool)((eos->rho_spinodal > 0.0) & (p < 0.0) & ((c2 < 0.0) | (rho < eos->rho_spinodal))); /* no branch: loops over points vectorize */
 }
 
 /* Whether a solid at density rho has fractured (spall at the spinodal on, and stretched below its density): it carries no

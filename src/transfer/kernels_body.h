@@ -102,7 +102,7 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
   for (PetscInt k = 0; k < D; k++) vp[k] = A->v[p * D + k];
   if (mode & MPM_P2G_STRESS)
     for (PetscInt k = 0; k < D * D; k++) Sp[k] = A->S[p * D * D + k];
-  if ((mode & MPM_P2G_PRESSURE) && (mode & MPM_P2G_STRESS)) /* -V sigma = V ((p + q) I - s), formed once (MPMStressForceMatrix) */
+  if (mode & MPM_P2G_STRESS) /* -V sigma = V ((p + q) I - s), formed once (MPMStressForceMatrix; p + q = 0 where the cell rule takes it) */
     MPMStressForceMatrix(D, Vp, P, Sp);
   for (PetscInt a = 0; a < ns; a++) {
     MPMNode        *nd = &nodes[node[a]];
@@ -110,7 +110,7 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
     nd->m += wm;
     nd->w2 += W[a] * W[a];
     for (PetscInt k = 0; k < D; k++) nd->p[k] += (mirror ? SG[a][k] : 1.0) * wm * vp[k];
-    if ((mode & MPM_P2G_PRESSURE) && (mode & MPM_P2G_STRESS))
+    if (mode & MPM_P2G_STRESS)
       for (PetscInt k = 0; k < D; k++) {
         PetscReal sgr = 0.0;
         for (PetscInt j = 0; j < D; j++) sgr += Sp[k * D + j] * DW[a][j];
@@ -118,12 +118,6 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
       }
     else if (mode & MPM_P2G_PRESSURE)
       for (PetscInt k = 0; k < D; k++) nd->f[k] += (mirror ? SG[a][k] : 1.0) * Vp * P * DW[a][k];
-    else if (mode & MPM_P2G_STRESS)
-      for (PetscInt k = 0; k < D; k++) {
-        PetscReal sgr = 0.0;
-        for (PetscInt j = 0; j < D; j++) sgr += Sp[k * D + j] * DW[a][j];
-        nd->f[k] -= (mirror ? SG[a][k] : 1.0) * Vp * sgr;
-      }
   }
 }
 

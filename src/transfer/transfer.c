@@ -192,9 +192,9 @@ MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node,
   for (PetscInt p = 0; p < pts->n; p++) {
     const PetscReal P              = pr[p] + q[p];
     PetscReal       b[MPM_MAX_DIM] = {0, 0, 0}, Fs[MPM_MAX_DIM * MPM_MAX_DIM], hoop = 0.0, Sig[MPM_MAX_DIM * MPM_MAX_DIM] = {0};
-    if (force && !cellrule && stress) { /* -V sigma = V ((p + q) I - s), formed once (MPMStressForceMatrix) */
+    if (stress) { /* -V sigma = V ((p + q) I - s), formed once (MPMStressForceMatrix; p + q = 0 where the cell rule takes it) */
       for (PetscInt k = 0; k < d * d; k++) Sig[k] = S[p * d * d + k];
-      MPMStressForceMatrix(d, V[p], P, Sig);
+      MPMStressForceMatrix(d, V[p], cellrule ? 0.0 : P, Sig);
     }
     if (force && g->axisym) hoop = V[p] * (P + (stress ? S[p * d * d] + S[p * d * d + d + 1] : 0.0)) / x[p * d]; /* -sigma_tt V / r, sigma_tt = -P - (s_rr + s_zz) */
     if (body) mpm->exact->ops.bodyforce(mpm->exact->data, tn, &X[p * d], F ? &F[p * d * d] : NULL, b);
@@ -214,7 +214,7 @@ MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node,
         }
       } else
         for (PetscInt k = 0; k < d; k++) nd->p[k] += st.s[a][k] * wm * v[p * d + k];
-      if (force && !cellrule && stress)
+      if (stress)
         for (PetscInt k = 0; k < d; k++) {
           PetscReal sg = 0.0;
           for (PetscInt j = 0; j < d; j++) sg += Sig[k * d + j] * st.dw[a][j];
@@ -222,12 +222,6 @@ MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node,
         }
       else if (force && !cellrule)
         for (PetscInt k = 0; k < d; k++) nd->f[k] += st.s[a][k] * V[p] * P * st.dw[a][k];
-      else if (stress)
-        for (PetscInt k = 0; k < d; k++) {
-          PetscReal sg = 0.0;
-          for (PetscInt j = 0; j < d; j++) sg += S[p * d * d + k * d + j] * st.dw[a][j];
-          nd->f[k] -= st.s[a][k] * V[p] * sg;
-        }
       if (body)
         for (PetscInt k = 0; k < d; k++) nd->f[k] += st.s[a][k] * wm * b[k];
       if (hoop != 0.0) nd->f[0] += st.s[a][0] * hoop * st.w[a];

@@ -40,9 +40,10 @@ typedef struct {
 } MPMTransferArgs;
 
 /* The point's force matrix -V_p sigma_p = V_p ((p + q) I - s_p) (d x d, row major) in place of its deviatoric stress
-   s_p in Sig: point integration's internal force f_I = sum_p (-V_p sigma_p) grad N_I(x_p) then takes d^2 products per
-   stencil entry, where the pressure and the deviator apart took d^2 + 3 d. Shared by the generic and the specialised
-   scatters, so that the two give the same bits. */
+   s_p in Sig (P = p + q, or 0 where the cell rule takes the pressure): the internal force of a point with a strength
+   model, f_I = sum_p (-V_p sigma_p) grad N_I(x_p), then takes d^2 products per stencil entry, where the pressure and
+   the deviator apart took d^2 + 3 d. Shared by the generic and the specialised scatters, so that the two give the
+   same bits. */
 static inline void MPMStressForceMatrix(PetscInt d, PetscReal V, PetscReal P, PetscReal Sig[])
 {
   for (PetscInt k = 0; k < d; k++)
