@@ -17,6 +17,12 @@
 #else
 #  define MPM_KINLINE static inline
 #endif
+/* A tensor-product family's grid-to-points kernel takes MPM_KLANES points at once, one vector lane each (GCC and clang
+   vector extensions: the same IEEE operations per lane, no contraction with -ffp-contract=off, so the same bits). */
+#if defined(__GNUC__) && defined(PETSC_USE_REAL_DOUBLE) && !defined(MPM_KSTENCIL)
+#  define MPM_KLANES 2
+typedef PetscReal MPMKVec __attribute__((vector_size(MPM_KLANES * sizeof(PetscReal))));
+#endif
 #define MPM_KCAT_(a, b, c, d) a##_##b##_##c##d
 #define MPM_KCAT(a, b, c, d) MPM_KCAT_(a, b, c, d)
 
