@@ -13,6 +13,50 @@ static PetscInt MPMGridStencilWidth(MPM mpm)
   return sw + (mpm->viscosity ? mpm->viscosity->ghost : 0);
 }
 
+/* The ghost exchange of several ranks (MPM::ghost_sf): every ghost node of the ghosted local box is a leaf whose root is
+   the same node in its owner's ghosted local vector, so that the step's node loops work on the local vectors alone:
+   the ghosts' sums go to their owners (PetscSFReduce, MPMGridLocalToGlobal) and the owners' values back to the ghosts
+   (PetscSFBcast, MPMGridGlobalToLocal), with the ghost layers' traffic only. PETSc's local-to-global and
+   global-to-local maps of the DMDA also copied every owned node both ways, and the scatter zeroed both whole vectors:
+   four sweeps of the whole box per exchange, however little of it the body fills. The owner of a node and its ghosted
+   box follow from the ownership ranges (grid.rank_start) and the stencil width, as the DMDA (box stencil, no periodic
+   face) makes them. */
+static PetscErrorCode MPMGridGhostCreate(MPM mpm)
+{
+  const MPMGrid *g    = &mpm->grid;
+  const PetscInt nloc = g->gm[0] * g->gm[1] * g->gm[2], nghost = nloc - MPMNumOwnedNodes(g);
+  PetscSFNode   *remote;
+  PetscInt       n = 0, l[MPM_MAX_DIM];
+
+  PetscFunctionBegin;
+  PetscCall(PetscMalloc1(nghost + 1, &mpm->ghost));
+  PetscCall(PetscMalloc1(nghost + 1, &remote));
+  for (l[2] = g->gs[2]; l[2] < g->gs[2] + g->gm[2]; l[2]++)
+    for (l[1] = g->gs[1]; l[1] < g->gs[1] + g->gm[1]; l[1]++)
+      for (l[0] = g->gs[0]; l[0] < g->gs[0] + g->gm[0]; l[0]++) {
+        PetscInt r[MPM_MAX_DIM], os[MPM_MAX_DIM], om[MPM_MAX_DIM];
+        if (l[0] >= g->xs[0] && l[0] < g->xs[0] + g->xm[0] && l[1] >= g->xs[1] && l[1] < g->xs[1] + g->xm[1] && l[2] >= g->xs[2] && l[2] < g->xs[2] + g->xm[2]) continue; /* owned */
+        for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {                                                                                                                      /* the owner's column along k and its ghosted range */
+          const PetscInt M = k < g->dim ? g->cells[k] + 1 : 1;
+          for (r[k] = 0; r[k] < g->nranks[k] - 1 && l[k] >= g->rank_start[k][r[k] + 1]; r[k]++) {
+          }
+          os[k] = PetscMax(0, g->rank_start[k][r[k]] - (k < g->dim ? g->sw : 0));
+          om[k] = PetscMin(M, g->rank_start[k][r[k] + 1] + (k < g->dim ? g->sw : 0)) - os[k];
+        }
+        mpm->ghost[n]   = ((l[2] - g->gs[2]) * g->gm[1] + l[1] - g->gs[1]) * g->gm[0] + l[0] - g->gs[0];
+        remote[n].rank  = (r[2] * g->nranks[1] + r[1]) * g->nranks[0] + r[0];
+        remote[n].index = ((l[2] - os[2]) * om[1] + l[1] - os[1]) * om[0] + l[0] - os[0];
+        n++;
+      }
+  mpm->nghost = n;
+  PetscCall(PetscSFCreate(mpm->comm, &mpm->ghost_sf));
+  PetscCall(PetscSFSetGraph(mpm->ghost_sf, nloc, n, mpm->ghost, PETSC_COPY_VALUES, remote, PETSC_OWN_POINTER));
+  PetscCall(PetscSFSetUp(mpm->ghost_sf));
+  PetscCallMPI(MPI_Type_contiguous((PetscMPIInt)MPM_NODE_DOF, MPIU_REAL, &mpm->node_type));
+  PetscCallMPI(MPI_Type_commit(&mpm->node_type));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* The DMDA, its vectors and the per-cell arrays; own[k] gives the vertices each rank column owns along k, with the
    ranks per direction of the present grid, or (own NULL) ranks[k] the ranks per direction (PETSC_DECIDE: PETSc's
    split) and PETSc the ranges. */
@@ -80,10 +124,13 @@ static PetscErrorCode MPMCreateGridOwned(MPM mpm, PetscInt *own[], const PetscIn
     if (size == 1 && nbox == MPMNumOwnedNodes(g)) { /* one rank, no periodic ghosts: the ghosted box is the owned box, one vector serves as both */
       PetscCall(PetscObjectReference((PetscObject)mpm->nodes));
       mpm->lnodes = mpm->nodes;
-    } else
+    } else {
       PetscCall(DMCreateLocalVector(mpm->da, &mpm->lnodes));
+      PetscCall(MPMGridGhostCreate(mpm));
+    }
   }
-  PetscCall(PetscCalloc2(g->ncells, &mpm->cellV, g->ncells, &mpm->cellS)); /* the pressure relaxation's scratch */
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) mpm->box_lo[k] = mpm->box_hi[k] = mpm->lbox_lo[k] = mpm->lbox_hi[k] = 0; /* fresh vectors: zeros everywhere */
+  PetscCall(PetscCalloc2(g->ncells, &mpm->cellV, g->ncells, &mpm->cellS));                                            /* the pressure relaxation's scratch */
   g->nxcells = 1;
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) { /* the owned cells and one layer around, where the ghosted box has it (its cells' stencils stay in the box) */
     const PetscInt lo = k < g->dim ? PetscMax(g->gs[k], g->cs[k] - 1) : 0, hi = k < g->dim ? PetscMin(g->gs[k] + g->gm[k] - 1, g->cs[k] + g->cm[k] + 1) : 1;
@@ -101,6 +148,10 @@ PetscErrorCode MPMDestroyGrid(MPM mpm)
   PetscFunctionBegin;
   PetscCall(VecDestroy(&mpm->nodes));
   PetscCall(VecDestroy(&mpm->lnodes));
+  if (mpm->ghost_sf) PetscCallMPI(MPI_Type_free(&mpm->node_type));
+  PetscCall(PetscSFDestroy(&mpm->ghost_sf));
+  PetscCall(PetscFree(mpm->ghost));
+  mpm->nghost = 0;
   PetscCall(VecDestroy(&mpm->mean_l));
   PetscCall(VecDestroy(&mpm->mean_g));
   PetscCall(DMDestroy(&mpm->mean_da));
@@ -285,45 +336,113 @@ PetscMPIInt MPMOwnerRank(const MPMGrid *g, const PetscReal x[])
   return (PetscMPIInt)((r[2] * g->nranks[1] + r[1]) * g->nranks[0] + r[0]);
 }
 
-/* Sums the ghosted local nodal vector into the global one (ghost contributions added to their owners); nothing to do
-   when one vector serves as both (one rank). */
+/* Adds every ghost node's values of the ghosted local nodal vector to its owner's node (MPM::ghost_sf): then the owned
+   nodes hold the sums over all points. Nothing to do on one rank. */
 PetscErrorCode MPMGridLocalToGlobal(MPM mpm)
 {
+  PetscScalar *a;
+
   PetscFunctionBegin;
-  if (mpm->lnodes == mpm->nodes) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(VecZeroEntries(mpm->nodes));
-  PetscCall(DMLocalToGlobal(mpm->da, mpm->lnodes, ADD_VALUES, mpm->nodes));
+  if (!mpm->ghost_sf) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(VecGetArray(mpm->lnodes, &a));
+  PetscCall(PetscSFReduceBegin(mpm->ghost_sf, mpm->node_type, a, a, MPIU_SUM));
+  PetscCall(PetscSFReduceEnd(mpm->ghost_sf, mpm->node_type, a, a, MPIU_SUM));
+  PetscCall(VecRestoreArray(mpm->lnodes, &a));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Fills the ghosted local nodal vector from the global one. */
+/* Fills the ghost nodes of the ghosted local nodal vector from their owners. */
 PetscErrorCode MPMGridGlobalToLocal(MPM mpm)
 {
+  PetscScalar *a;
+
   PetscFunctionBegin;
-  if (mpm->lnodes == mpm->nodes) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(DMGlobalToLocal(mpm->da, mpm->nodes, INSERT_VALUES, mpm->lnodes));
+  if (!mpm->ghost_sf) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(VecGetArray(mpm->lnodes, &a));
+  PetscCall(PetscSFBcastBegin(mpm->ghost_sf, mpm->node_type, a, a, MPI_REPLACE));
+  PetscCall(PetscSFBcastEnd(mpm->ghost_sf, mpm->node_type, a, a, MPI_REPLACE));
+  PetscCall(VecRestoreArray(mpm->lnodes, &a));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The owned nodes of the local vector into the global one (the grid fields' output); one vector on one rank. */
+PetscErrorCode MPMGridOwnedToGlobal(MPM mpm)
+{
+  PetscFunctionBegin;
+  if (mpm->lnodes != mpm->nodes) PetscCall(DMLocalToGlobal(mpm->da, mpm->lnodes, INSERT_VALUES, mpm->nodes));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Zeroes the nodes [lo, hi) (indices of the box whose rows are n0 nodes long and n1 rows deep) of node. */
+static PetscErrorCode MPMZeroBox(MPMNode *node, const PetscInt lo[], const PetscInt hi[], PetscInt n0, PetscInt n1)
+{
+  PetscFunctionBegin;
+  if (lo[0] < hi[0])
+    for (PetscInt k2 = lo[2]; k2 < hi[2]; k2++)
+      for (PetscInt k1 = lo[1]; k1 < hi[1]; k1++) PetscCall(PetscArrayzero(&node[(k2 * n1 + k1) * n0 + lo[0]], hi[0] - lo[0]));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* MPMGridZeroForScatter on several ranks, from the cells lo .. hi (global indices; hi < 0: no point) of this rank's points. */
+static PetscErrorCode MPMGridZeroForScatterRanks(MPM mpm, const PetscInt lo[], const PetscInt hi[], MPMNode *node)
+{
+  const MPMGrid *g = &mpm->grid;
+  PetscInt       t[2 * MPM_MAX_DIM], *all, blo[MPM_MAX_DIM], bhi[MPM_MAX_DIM];
+  PetscMPIInt    size;
+  PetscBool      any = PETSC_FALSE, tne = PETSC_TRUE; /* some rank's touched box reaches the owned nodes; this rank's is not empty */
+
+  PetscFunctionBegin;
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) { /* the touched box, global node indices [t_k, t_{3+k}) */
+    t[k]               = k >= g->dim ? 0 : (hi[k] < 0 ? 0 : PetscMax(g->gs[k], lo[k] - g->sw));
+    t[MPM_MAX_DIM + k] = k >= g->dim ? 1 : (hi[k] < 0 ? 0 : PetscMin(g->gs[k] + g->gm[k], hi[k] + 2 + g->sw));
+    blo[k]             = PETSC_MAX_INT;
+    bhi[k]             = -1;
+  }
+  PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
+  PetscCall(PetscMalloc1(2 * MPM_MAX_DIM * size, &all));
+  PetscCallMPI(MPI_Allgather(t, 2 * MPM_MAX_DIM, MPIU_INT, all, 2 * MPM_MAX_DIM, MPIU_INT, mpm->comm));
+  for (PetscMPIInt r = 0; r < size; r++) { /* its part in the owned nodes, as owned-box indices */
+    PetscInt  clo[MPM_MAX_DIM], chi[MPM_MAX_DIM];
+    PetscBool in = PETSC_TRUE;
+    for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
+      clo[k] = PetscMax(all[2 * MPM_MAX_DIM * r + k], g->xs[k]) - g->xs[k];
+      chi[k] = PetscMin(all[2 * MPM_MAX_DIM * r + MPM_MAX_DIM + k], g->xs[k] + g->xm[k]) - g->xs[k];
+      in     = (PetscBool)(in && clo[k] < chi[k]);
+    }
+    for (PetscInt k = 0; in && k < MPM_MAX_DIM; k++) {
+      blo[k] = PetscMin(blo[k], clo[k]);
+      bhi[k] = PetscMax(bhi[k], chi[k]);
+    }
+    any = (PetscBool)(any || in);
+  }
+  PetscCall(PetscFree(all));
+  PetscCall(MPMZeroBox(node, mpm->lbox_lo, mpm->lbox_hi, g->gm[0], g->gm[1]));
+  for (PetscInt i = 0; i < mpm->nghost; i++) PetscCall(PetscArrayzero(&node[mpm->ghost[i]], 1));
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) tne = (PetscBool)(tne && t[k] < t[MPM_MAX_DIM + k]);
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) { /* the sweep box, and what this step may fill: the touched and swept boxes, ghosted-box indices */
+    const PetscInt tl = t[k] - g->gs[k], th = t[MPM_MAX_DIM + k] - g->gs[k], sl = blo[k] + g->xs[k] - g->gs[k], sh = bhi[k] + g->xs[k] - g->gs[k];
+    mpm->box_lo[k]  = any ? blo[k] : 0;
+    mpm->box_hi[k]  = any ? bhi[k] : 0;
+    mpm->lbox_lo[k] = tne && any ? PetscMin(tl, sl) : (tne ? tl : (any ? sl : 0));
+    mpm->lbox_hi[k] = tne && any ? PetscMax(th, sh) : (tne ? th : (any ? sh : 0));
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* Zeroes the local nodal vector before a scatter from the n points at x, and sets the box of nodes the step's node
-   loops sweep (MPM::box_lo, box_hi, in owned-node indices). With one vector for global and ghosted nodes (one rank)
-   that box is the points' cells widened by the ghost width, and only it and the box of the previous scatter are
-   zeroed: the grid work follows the body, not the domain, and every node outside holds zeros, as after a zeroing
-   of the whole vector. With several ranks the whole box is zeroed and swept (the ghost exchange sweeps it anyway). */
+   loops sweep (MPM::box_lo, box_hi, in owned-node indices): the grid work follows the body, not the domain, and every
+   node outside holds zeros, as after a zeroing of the whole vector. A rank's points touch the nodes of their cells
+   widened by the ghost width (its touched box). One rank: the box is the touched box, and only it and the box of the
+   previous scatter are zeroed. Several ranks: every rank's touched box is known to all (one MPI_Allgather of 6
+   integers), the box is the bounding box of their parts in this rank's owned nodes (where the ghost sums can land), and
+   what was zeroed is what the last step may have filled: MPM::lbox (the last touched and swept boxes) and the ghost
+   nodes. */
 PetscErrorCode MPMGridZeroForScatter(MPM mpm, PetscInt n, const PetscReal x[], MPMNode *node)
 {
   MPMGrid *g = &mpm->grid;
   PetscInt lo[MPM_MAX_DIM], hi[MPM_MAX_DIM];
 
   PetscFunctionBegin;
-  if (mpm->lnodes != mpm->nodes) {
-    PetscCall(PetscArrayzero(node, g->gm[0] * g->gm[1] * g->gm[2]));
-    for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
-      mpm->box_lo[k] = 0;
-      mpm->box_hi[k] = g->xm[k];
-    }
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
     lo[k] = PETSC_MAX_INT;
     hi[k] = -1;
@@ -339,6 +458,8 @@ PetscErrorCode MPMGridZeroForScatter(MPM mpm, PetscInt n, const PetscReal x[], M
       lo[k] = MPMCellIndex(g, k, xlo);
       hi[k] = MPMCellIndex(g, k, xhi);
     }
+  if (mpm->ghost_sf) PetscCall(MPMGridZeroForScatterRanks(mpm, lo, hi, node));
+  if (mpm->ghost_sf) PetscFunctionReturn(PETSC_SUCCESS);
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) { /* owned = ghosted box here: node indices 0 .. xm */
     if (k >= g->dim || hi[k] < 0) {
       lo[k] = 0;
@@ -349,9 +470,7 @@ PetscErrorCode MPMGridZeroForScatter(MPM mpm, PetscInt n, const PetscReal x[], M
     hi[k] = PetscMin(g->xm[k], hi[k] + 2 + g->sw - g->xs[k]);
   }
   /* the new box, then what of the previous box (it may hold values) lies outside it: each node is zeroed once */
-  if (lo[0] < hi[0])
-    for (PetscInt k2 = lo[2]; k2 < hi[2]; k2++)
-      for (PetscInt k1 = lo[1]; k1 < hi[1]; k1++) PetscCall(PetscArrayzero(&node[(k2 * g->xm[1] + k1) * g->xm[0] + lo[0]], hi[0] - lo[0]));
+  PetscCall(MPMZeroBox(node, lo, hi, g->xm[0], g->xm[1]));
   if (mpm->box_lo[0] < mpm->box_hi[0]) {
     const PetscInt *a = mpm->box_lo, *b = mpm->box_hi;
     for (PetscInt k2 = a[2]; k2 < b[2]; k2++)

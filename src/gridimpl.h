@@ -58,6 +58,12 @@ typedef struct {
 
 PETSC_INTERN PetscMPIInt MPMOwnerRank(const MPMGrid *, const PetscReal[]);
 
+/* The index in the ghosted local nodal vector of the owned node (i0, i1, i2), counted from the first owned node (0 .. xm). */
+static inline PetscInt MPMOwnedToLocal(const MPMGrid *g, PetscInt i0, PetscInt i1, PetscInt i2)
+{
+  return ((i2 + g->xs[2] - g->gs[2]) * g->gm[1] + i1 + g->xs[1] - g->gs[1]) * g->gm[0] + i0 + g->xs[0] - g->gs[0];
+}
+
 /* Owned nodes of the global nodal vector (the box xs .. xs + xm; unused directions have xm = 1). */
 static inline PetscInt MPMNumOwnedNodes(const MPMGrid *g)
 {

@@ -11,6 +11,7 @@
 #include "viscosity/viscosityimpl.h"
 #include "sceneimpl.h"
 #include "exact/exactimpl.h"
+#include <petscsf.h>
 
 /* ------------------------------------------------------------------ particles */
 /* Every particle field once: name (also the HDF5 dataset name), block size, unit, meaning. */
@@ -198,20 +199,24 @@ struct _p_MPM {
   } retired[MPM_MAX_MATERIALS + 2]; /* the objects of none types that set-up destroyed (MPMRetireObject), for the unused-options check */
   PetscInt nretired;
   /* discretization */
-  DM           da;                       /* background grid, dof = MPM_NODE_DOF                       */
-  DM           swarm;                    /* material points, DMSWARM_BASIC                            */
-  MPMPoints    pts;                      /* the fields' arrays while held (MPMPointsGetArrays)        */
-  PetscBool    pts_held;                 /* the swarm's fields are out; MPMPointsRelease returns them  */
-  Vec          nodes;                    /* global nodal vector                                       */
-  Vec          lnodes;                   /* ghosted local nodal vector                                */
-  MPMFieldInfo field[MPM_MAX_FIELDS];    /* the point fields: MPMFieldTable, then the registered ones  */
-  PetscBool    field_on[MPM_MAX_FIELDS]; /* carried by this scene's points                            */
+  DM           da;                                         /* background grid, dof = MPM_NODE_DOF                       */
+  DM           swarm;                                      /* material points, DMSWARM_BASIC                            */
+  MPMPoints    pts;                                        /* the fields' arrays while held (MPMPointsGetArrays)        */
+  PetscBool    pts_held;                                   /* the swarm's fields are out; MPMPointsRelease returns them  */
+  Vec          nodes;                                      /* global nodal vector: the grid fields' output (MPMProjectToGrid) */
+  Vec          lnodes;                                     /* ghosted local nodal vector: the step's nodes, owned and ghost */
+  PetscSF      ghost_sf;                                   /* several ranks: each ghost node (leaf) to its owner's node in the owner's local vector (root) */
+  MPI_Datatype node_type;                                  /* one MPMNode, MPM_NODE_DOF reals: the unit of ghost_sf */
+  PetscInt     nghost, *ghost;                             /* the ghost nodes' local indices (ghost_sf's leaves) */
+  PetscInt     lbox_lo[MPM_MAX_DIM], lbox_hi[MPM_MAX_DIM]; /* several ranks: ghosted-box indices outside which (ghost nodes apart) the local nodes hold zeros */
+  MPMFieldInfo field[MPM_MAX_FIELDS];                      /* the point fields: MPMFieldTable, then the registered ones  */
+  PetscBool    field_on[MPM_MAX_FIELDS];                   /* carried by this scene's points                            */
   PetscInt     nfields;
   PetscInt     nwork;                                    /* capacity of the constitutive workspace [points]         */
   PetscInt    *widx;                                     /* the local points of each material, material by material  */
   PetscReal   *wL;                                       /* axisymmetric: L_p - L_tt,p I, what the strength models see */
   PetscReal   *work;                                     /* 8 values per point of a chunk of MPM_CHUNK points        */
-  PetscInt     box_lo[MPM_MAX_DIM], box_hi[MPM_MAX_DIM]; /* owned nodes the node loops sweep (MPMGridZeroForScatter) */
+  PetscInt     box_lo[MPM_MAX_DIM], box_hi[MPM_MAX_DIM]; /* owned nodes the node loops sweep, owned-box indices (MPMGridZeroForScatter) */
   PetscReal   *cellV, *cellS;                            /* per local cell: the pressure relaxation's scratch sums                  */
   PetscReal   *xcell;                                    /* the cell rule, per extended cell (grid.xcs, xcm): the volume V_c and V_c P_c its points lend it; in the gather, its work per unit P V */
   PetscReal   *fill_ref;                                 /* the volume-fill module's reference nodal volumes V_I^0 (ghosted local nodes; fill.c) */
@@ -300,12 +305,12 @@ static inline PetscBool MPMPointInShock(MPM mpm, const MPMPoints *pts, PetscInt 
   return (PetscBool)(PetscAbsReal(MPMPointDivergence(pts, mpm->grid.dim, p)) * mpm->grid.hmin > mach * PetscSqrtReal(c2));
 }
 
-/* Loops c over the owned nodes (their index in the global nodal vector) of the box the step's node loops sweep:
-   outside it every node holds zeros (MPMGridZeroForScatter). */
+/* Loops c over the owned nodes of the box the step's node loops sweep, as indices into the ghosted local nodal vector
+   (lnodes; on one rank it is the global one): outside the box every node holds zeros (MPMGridZeroForScatter). */
 #define MPM_FOR_BOX_NODES(mpm, c)                                        \
   for (PetscInt k2_ = (mpm)->box_lo[2]; k2_ < (mpm)->box_hi[2]; k2_++)   \
     for (PetscInt k1_ = (mpm)->box_lo[1]; k1_ < (mpm)->box_hi[1]; k1_++) \
-      for (PetscInt c = (k2_ * (mpm)->grid.xm[1] + k1_) * (mpm)->grid.xm[0] + (mpm)->box_lo[0], c##end_ = c - (mpm)->box_lo[0] + (mpm)->box_hi[0]; c < c##end_; c++)
+      for (PetscInt c = MPMOwnedToLocal(&(mpm)->grid, (mpm)->box_lo[0], k1_, k2_), c##end_ = c - (mpm)->box_lo[0] + (mpm)->box_hi[0]; c < c##end_; c++)
 
 /* Internal API */
 PETSC_INTERN PetscClassId   MPM_CLASSID; /* log events of petmpm (src/init.c) */
@@ -313,6 +318,7 @@ PETSC_INTERN PetscErrorCode MPMLogRegister(MPM);
 PETSC_INTERN PetscInt       MPMFieldBlockSize(PetscInt, PetscInt);
 PETSC_INTERN PetscErrorCode MPMCreateGrid(MPM);
 PETSC_INTERN PetscErrorCode MPMGridLocalToGlobal(MPM);
+PETSC_INTERN PetscErrorCode MPMGridOwnedToGlobal(MPM);
 PETSC_INTERN PetscErrorCode MPMRebalance(MPM);
 PETSC_INTERN PetscErrorCode MPMGridSetOwnership(MPM, PetscInt *[]);
 PETSC_INTERN PetscErrorCode MPMDestroyGrid(MPM);

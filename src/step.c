@@ -38,8 +38,8 @@ PetscErrorCode MPMModulesDestroy(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Runs the modules of one phase in the order they were added; grid-phase modules get the owned nodes of the global
-   nodal vector. */
+/* Runs the modules of one phase in the order they were added; grid-phase modules get the ghosted local nodal vector,
+   whose owned nodes (MPM_FOR_BOX_NODES, MPMOwnedToLocal) they update. */
 PetscErrorCode MPMModulesApply(MPM mpm, MPMPhase phase, const MPMStepContext *ctx)
 {
   const PetscBool grid = (PetscBool)(phase == MPM_PHASE_GRID_FORCE || phase == MPM_PHASE_GRID_VELOCITY);
@@ -47,13 +47,13 @@ PetscErrorCode MPMModulesApply(MPM mpm, MPMPhase phase, const MPMStepContext *ct
 
   PetscFunctionBegin;
   if (!mpm->modules[phase]) PetscFunctionReturn(PETSC_SUCCESS);
-  if (grid) PetscCall(VecGetArray(mpm->nodes, (PetscScalar **)&node));
+  if (grid) PetscCall(VecGetArray(mpm->lnodes, (PetscScalar **)&node));
   for (MPMModule mod = mpm->modules[phase]; mod; mod = mod->next) {
     PetscCall(PetscLogEventBegin(mod->event, 0, 0, 0, 0));
     PetscCall(mod->apply(mod, mpm, ctx, node));
     PetscCall(PetscLogEventEnd(mod->event, 0, 0, 0, 0));
   }
-  if (grid) PetscCall(VecRestoreArray(mpm->nodes, (PetscScalar **)&node));
+  if (grid) PetscCall(VecRestoreArray(mpm->lnodes, (PetscScalar **)&node));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -70,7 +70,7 @@ static PetscErrorCode MPMGridAdvance(MPM mpm, const MPMStepContext *ctx)
 
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(mpm->log.advance, 0, 0, 0, 0));
-  PetscCall(VecGetArray(mpm->nodes, (PetscScalar **)&node));
+  PetscCall(VecGetArray(mpm->lnodes, (PetscScalar **)&node));
   MPM_FOR_BOX_NODES(mpm, c)
   {
     MPMNode *nd = &node[c];
@@ -84,7 +84,7 @@ static PetscErrorCode MPMGridAdvance(MPM mpm, const MPMStepContext *ctx)
       for (PetscInt k = 0; k < d; k++) nd->v0[k] = nd->p[k] = 0.0;
     }
   }
-  PetscCall(VecRestoreArray(mpm->nodes, (PetscScalar **)&node));
+  PetscCall(VecRestoreArray(mpm->lnodes, (PetscScalar **)&node));
   PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_VELOCITY, ctx));
   PetscCall(MPMGridGlobalToLocal(mpm));
   PetscCall(PetscLogEventEnd(mpm->log.advance, 0, 0, 0, 0));

@@ -57,7 +57,7 @@ PetscErrorCode MPMComputeTimeStep(MPM mpm, PetscBool diagnose, PetscReal *dt)
   }
   {
     const MPMNode *node;
-    PetscCall(VecGetArrayRead(mpm->nodes, (const PetscScalar **)&node));
+    PetscCall(VecGetArrayRead(mpm->lnodes, (const PetscScalar **)&node));
     MPM_FOR_BOX_NODES(mpm, c)
     {
       const MPMNode *nd = &node[c];
@@ -68,7 +68,7 @@ PetscErrorCode MPMComputeTimeStep(MPM mpm, PetscBool diagnose, PetscReal *dt)
         if (!(f2 < PetscSqr(mx[2] * nd->m) * MPM_DT_SCREEN)) mx[2] = PetscMax(mx[2], PetscSqrtReal(f2) / nd->m); /* (MPM_DT_SCREEN) */
       }
     }
-    PetscCall(VecRestoreArrayRead(mpm->nodes, (const PetscScalar **)&node));
+    PetscCall(VecRestoreArrayRead(mpm->lnodes, (const PetscScalar **)&node));
   }
   lmax = mx[0];
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, mx, 3, MPIU_REAL, MPIU_MAX, mpm->comm));

@@ -8,7 +8,9 @@ PetscErrorCode MPMGravityApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx
   const PetscInt d = mpm->grid.dim;
 
   PetscFunctionBegin;
-  for (PetscInt c = 0; c < MPMNumOwnedNodes(&mpm->grid); c++)
+  MPM_FOR_BOX_NODES(mpm, c) /* outside the box m_I = 0 */
+  {
     for (PetscInt k = 0; k < d; k++) node[c].f[k] += node[c].m * mpm->gravity[k];
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

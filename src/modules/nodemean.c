@@ -20,17 +20,22 @@ PetscErrorCode MPMNodalMeanSetUp(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The local nodal sums W (the array of mean_l, gotten) added over the ranks that share each node, back in W: nothing to
-   do on one rank, where the local array is the global one. */
+/* The local nodal sums W (the array of mean_l, gotten, 2 values per node) added over the ranks that share each node, back
+   in W: the grid's ghost exchange (MPM::ghost_sf, the same DMDA layout) with a unit of 2 reals, ghosts to owners and
+   back. Nothing to do on one rank, where the local array is the global one. */
 PetscErrorCode MPMNodalMeanSum(MPM mpm, PetscReal **W)
 {
+  MPI_Datatype two;
+
   PetscFunctionBegin;
-  if (!mpm->mean_g) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(VecRestoreArray(mpm->mean_l, W));
-  PetscCall(VecZeroEntries(mpm->mean_g));
-  PetscCall(DMLocalToGlobal(mpm->mean_da, mpm->mean_l, ADD_VALUES, mpm->mean_g));
-  PetscCall(DMGlobalToLocal(mpm->mean_da, mpm->mean_g, INSERT_VALUES, mpm->mean_l));
-  PetscCall(VecGetArray(mpm->mean_l, W));
+  if (!mpm->ghost_sf) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCallMPI(MPI_Type_contiguous(2, MPIU_REAL, &two));
+  PetscCallMPI(MPI_Type_commit(&two));
+  PetscCall(PetscSFReduceBegin(mpm->ghost_sf, two, *W, *W, MPIU_SUM));
+  PetscCall(PetscSFReduceEnd(mpm->ghost_sf, two, *W, *W, MPIU_SUM));
+  PetscCall(PetscSFBcastBegin(mpm->ghost_sf, two, *W, *W, MPI_REPLACE));
+  PetscCall(PetscSFBcastEnd(mpm->ghost_sf, two, *W, *W, MPI_REPLACE));
+  PetscCallMPI(MPI_Type_free(&two));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

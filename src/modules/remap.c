@@ -11,13 +11,13 @@ PetscErrorCode MPMRemapApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
 
   PetscFunctionBegin;
   PetscCall(MPMScatter(mpm, PETSC_FALSE, ctx->tn));
-  PetscCall(VecGetArray(mpm->nodes, (PetscScalar **)&node));
+  PetscCall(VecGetArray(mpm->lnodes, (PetscScalar **)&node));
   MPM_FOR_BOX_NODES(mpm, c)
   {
     const PetscReal minv = node[c].m > 0.0 ? 1.0 / node[c].m : 0.0;
     for (PetscInt k = 0; k < d; k++) node[c].p[k] *= minv;
   }
-  PetscCall(VecRestoreArray(mpm->nodes, (PetscScalar **)&node));
+  PetscCall(VecRestoreArray(mpm->lnodes, (PetscScalar **)&node));
   {
     MPMStepContext rctx = *ctx;
     rctx.remap          = PETSC_TRUE;

@@ -43,7 +43,7 @@ static void MPMWallPlaneEach(const MPMGrid *g, MPMNode *node, PetscInt k, PetscI
 
   l[k] = ik;
   for (l[k2] = 0; l[k2] < g->xm[k2]; l[k2]++)
-    for (l[k1] = 0; l[k1] < g->xm[k1]; l[k1]++) fn(&node[(l[2] * g->xm[1] + l[1]) * g->xm[0] + l[0]], g->dim, k, side, pass);
+    for (l[k1] = 0; l[k1] < g->xm[k1]; l[k1]++) fn(&node[MPMOwnedToLocal(g, l[0], l[1], l[2])], g->dim, k, side, pass);
 }
 
 /* Calls fn on the nodes of every wall face this rank owns nodes of whose friction coefficient is (contact) or is not

@@ -533,9 +533,12 @@ PetscErrorCode MPMProjectToGrid(MPM mpm)
 
   PetscFunctionBegin;
   PetscCall(MPMScatter(mpm, PETSC_FALSE, 0.0));
-  PetscCall(VecGetArray(mpm->nodes, (PetscScalar **)&node));
-  for (PetscInt c = 0; c < MPMNumOwnedNodes(&mpm->grid); c++)
+  PetscCall(VecGetArray(mpm->lnodes, (PetscScalar **)&node));
+  MPM_FOR_BOX_NODES(mpm, c) /* outside the box m_I = 0 and (mv)_I = 0 */
+  {
     for (PetscInt k = 0; k < d; k++) node[c].p[k] = node[c].m > 0.0 ? node[c].p[k] / node[c].m : 0.0;
-  PetscCall(VecRestoreArray(mpm->nodes, (PetscScalar **)&node));
+  }
+  PetscCall(VecRestoreArray(mpm->lnodes, (PetscScalar **)&node));
+  PetscCall(MPMGridOwnedToGlobal(mpm));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
