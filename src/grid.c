@@ -54,6 +54,8 @@ static PetscErrorCode MPMGridGhostCreate(MPM mpm)
   PetscCall(PetscSFSetUp(mpm->ghost_sf));
   PetscCallMPI(MPI_Type_contiguous((PetscMPIInt)MPM_NODE_DOF, MPIU_REAL, &mpm->node_type));
   PetscCallMPI(MPI_Type_commit(&mpm->node_type));
+  PetscCallMPI(MPI_Type_contiguous(2, MPIU_REAL, &mpm->mean_type));
+  PetscCallMPI(MPI_Type_commit(&mpm->mean_type));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -149,11 +151,11 @@ PetscErrorCode MPMDestroyGrid(MPM mpm)
   PetscCall(VecDestroy(&mpm->nodes));
   PetscCall(VecDestroy(&mpm->lnodes));
   if (mpm->ghost_sf) PetscCallMPI(MPI_Type_free(&mpm->node_type));
+  if (mpm->ghost_sf) PetscCallMPI(MPI_Type_free(&mpm->mean_type));
   PetscCall(PetscSFDestroy(&mpm->ghost_sf));
   PetscCall(PetscFree(mpm->ghost));
   mpm->nghost = 0;
   PetscCall(VecDestroy(&mpm->mean_l));
-  PetscCall(VecDestroy(&mpm->mean_g));
   PetscCall(DMDestroy(&mpm->mean_da));
   PetscCall(PetscFree(mpm->fill_ref)); /* on the new grid's nodes, made anew */
   PetscCall(DMDestroy(&mpm->da));
@@ -336,32 +338,47 @@ PetscMPIInt MPMOwnerRank(const MPMGrid *g, const PetscReal x[])
   return (PetscMPIInt)((r[2] * g->nranks[1] + r[1]) * g->nranks[0] + r[0]);
 }
 
-/* Adds every ghost node's values of the ghosted local nodal vector to its owner's node (MPM::ghost_sf): then the owned
-   nodes hold the sums over all points. Nothing to do on one rank. */
-PetscErrorCode MPMGridLocalToGlobal(MPM mpm)
+/* The ghost exchange (MPM::ghost_sf) of an array a of the ghosted local layout whose nodes hold one unit t each: with
+   reduce, every ghost node's values added to its owner's node; with bcast, then the owners' values copied to their
+   ghosts. Nothing to do on one rank. */
+PetscErrorCode MPMGhostExchange(MPM mpm, MPI_Datatype t, PetscScalar *a, PetscBool reduce, PetscBool bcast)
+{
+  PetscFunctionBegin;
+  if (!mpm->ghost_sf) PetscFunctionReturn(PETSC_SUCCESS);
+  if (reduce) PetscCall(PetscSFReduceBegin(mpm->ghost_sf, t, a, a, MPIU_SUM));
+  if (reduce) PetscCall(PetscSFReduceEnd(mpm->ghost_sf, t, a, a, MPIU_SUM));
+  if (bcast) PetscCall(PetscSFBcastBegin(mpm->ghost_sf, t, a, a, MPI_REPLACE));
+  if (bcast) PetscCall(PetscSFBcastEnd(mpm->ghost_sf, t, a, a, MPI_REPLACE));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The nodal vector's exchange: the ghosts' sums to their owners (reduce), or the owners' values to the ghosts. */
+static PetscErrorCode MPMGridExchange(MPM mpm, PetscBool reduce)
 {
   PetscScalar *a;
 
   PetscFunctionBegin;
   if (!mpm->ghost_sf) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(VecGetArray(mpm->lnodes, &a));
-  PetscCall(PetscSFReduceBegin(mpm->ghost_sf, mpm->node_type, a, a, MPIU_SUM));
-  PetscCall(PetscSFReduceEnd(mpm->ghost_sf, mpm->node_type, a, a, MPIU_SUM));
+  PetscCall(MPMGhostExchange(mpm, mpm->node_type, a, reduce, (PetscBool)!reduce));
   PetscCall(VecRestoreArray(mpm->lnodes, &a));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Adds every ghost node's values of the ghosted local nodal vector to its owner's node: then the owned nodes hold the
+   sums over all points. */
+PetscErrorCode MPMGridLocalToGlobal(MPM mpm)
+{
+  PetscFunctionBegin;
+  PetscCall(MPMGridExchange(mpm, PETSC_TRUE));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* Fills the ghost nodes of the ghosted local nodal vector from their owners. */
 PetscErrorCode MPMGridGlobalToLocal(MPM mpm)
 {
-  PetscScalar *a;
-
   PetscFunctionBegin;
-  if (!mpm->ghost_sf) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(VecGetArray(mpm->lnodes, &a));
-  PetscCall(PetscSFBcastBegin(mpm->ghost_sf, mpm->node_type, a, a, MPI_REPLACE));
-  PetscCall(PetscSFBcastEnd(mpm->ghost_sf, mpm->node_type, a, a, MPI_REPLACE));
-  PetscCall(VecRestoreArray(mpm->lnodes, &a));
+  PetscCall(MPMGridExchange(mpm, PETSC_FALSE));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -206,7 +206,7 @@ struct _p_MPM {
   Vec          nodes;                                      /* global nodal vector: the grid fields' output (MPMProjectToGrid) */
   Vec          lnodes;                                     /* ghosted local nodal vector: the step's nodes, owned and ghost */
   PetscSF      ghost_sf;                                   /* several ranks: each ghost node (leaf) to its owner's node in the owner's local vector (root) */
-  MPI_Datatype node_type;                                  /* one MPMNode, MPM_NODE_DOF reals: the unit of ghost_sf */
+  MPI_Datatype node_type, mean_type;                       /* ghost_sf's units: one MPMNode (MPM_NODE_DOF reals); 2 reals (the nodal-mean vector mean_l) */
   PetscInt     nghost, *ghost;                             /* the ghost nodes' local indices (ghost_sf's leaves) */
   PetscInt     lbox_lo[MPM_MAX_DIM], lbox_hi[MPM_MAX_DIM]; /* several ranks: ghosted-box indices outside which (ghost nodes apart) the local nodes hold zeros */
   MPMFieldInfo field[MPM_MAX_FIELDS];                      /* the point fields: MPMFieldTable, then the registered ones  */
@@ -221,7 +221,7 @@ struct _p_MPM {
   PetscReal   *xcell;                                    /* the cell rule, per extended cell (grid.xcs, xcm): the volume V_c and V_c P_c its points lend it; in the gather, its work per unit P V */
   PetscReal   *fill_ref;                                 /* the volume-fill module's reference nodal volumes V_I^0 (ghosted local nodes; fill.c) */
   DM           mean_da;                                  /* the point-exchange modules' nodal sums sum N w, sum N w q (nodemean.c) */
-  Vec          mean_l, mean_g;                           /* its ghosted local and global vectors (mean_g: several ranks) */
+  Vec          mean_l;                                   /* its ghosted local vector (several ranks: summed by ghost_sf with mean_type) */
   TS           ts;
   Vec          tsu; /* the TS state: empty; the MPM state lives in the grid and swarm */
   /* output */
@@ -319,6 +319,7 @@ PETSC_INTERN PetscInt       MPMFieldBlockSize(PetscInt, PetscInt);
 PETSC_INTERN PetscErrorCode MPMCreateGrid(MPM);
 PETSC_INTERN PetscErrorCode MPMGridLocalToGlobal(MPM);
 PETSC_INTERN PetscErrorCode MPMGridOwnedToGlobal(MPM);
+PETSC_INTERN PetscErrorCode MPMGhostExchange(MPM, MPI_Datatype, PetscScalar *, PetscBool, PetscBool);
 PETSC_INTERN PetscErrorCode MPMRebalance(MPM);
 PETSC_INTERN PetscErrorCode MPMGridSetOwnership(MPM, PetscInt *[]);
 PETSC_INTERN PetscErrorCode MPMDestroyGrid(MPM);

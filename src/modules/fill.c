@@ -100,12 +100,7 @@ static PetscErrorCode MPMFillExcess(MPM mpm, PetscReal **W)
       }
   for (PetscInt i = 0; i < nloc; i++) (*W)[2 * i] = E[i];
   PetscCall(PetscFree(E));
-  if (mpm->mean_g) { /* the owned nodes' excess to the other ranks' ghosts */
-    PetscCall(VecRestoreArray(mpm->mean_l, W));
-    PetscCall(DMLocalToGlobal(mpm->mean_da, mpm->mean_l, INSERT_VALUES, mpm->mean_g));
-    PetscCall(DMGlobalToLocal(mpm->mean_da, mpm->mean_g, INSERT_VALUES, mpm->mean_l));
-    PetscCall(VecGetArray(mpm->mean_l, W));
-  }
+  PetscCall(MPMGhostExchange(mpm, mpm->mean_type, *W, PETSC_FALSE, PETSC_TRUE)); /* the owned nodes' excess to the other ranks' ghosts */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -15,7 +15,6 @@ PetscErrorCode MPMNodalMeanSetUp(MPM mpm)
   if (mpm->mean_da) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(DMDACreateCompatibleDMDA(mpm->da, 2, &mpm->mean_da));
   PetscCall(DMCreateLocalVector(mpm->mean_da, &mpm->mean_l));
-  if (mpm->lnodes != mpm->nodes) PetscCall(DMCreateGlobalVector(mpm->mean_da, &mpm->mean_g));
   PetscCall(VecZeroEntries(mpm->mean_l));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -25,17 +24,8 @@ PetscErrorCode MPMNodalMeanSetUp(MPM mpm)
    back. Nothing to do on one rank, where the local array is the global one. */
 PetscErrorCode MPMNodalMeanSum(MPM mpm, PetscReal **W)
 {
-  MPI_Datatype two;
-
   PetscFunctionBegin;
-  if (!mpm->ghost_sf) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCallMPI(MPI_Type_contiguous(2, MPIU_REAL, &two));
-  PetscCallMPI(MPI_Type_commit(&two));
-  PetscCall(PetscSFReduceBegin(mpm->ghost_sf, two, *W, *W, MPIU_SUM));
-  PetscCall(PetscSFReduceEnd(mpm->ghost_sf, two, *W, *W, MPIU_SUM));
-  PetscCall(PetscSFBcastBegin(mpm->ghost_sf, two, *W, *W, MPI_REPLACE));
-  PetscCall(PetscSFBcastEnd(mpm->ghost_sf, two, *W, *W, MPI_REPLACE));
-  PetscCallMPI(MPI_Type_free(&two));
+  PetscCall(MPMGhostExchange(mpm, mpm->mean_type, *W, PETSC_TRUE, PETSC_TRUE));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
