@@ -280,16 +280,17 @@ static inline PetscReal MPMLatticeHalfWidth(const MPM mpm, PetscInt k)
   return 0.5 * mpm->grid.h[k] / mpm->ppc;
 }
 
-/* div v_p = tr L_p, plus the hoop rate v_r / r on an axisymmetric grid. */
-/* Point p's stencil: the transfers' shape functions with its domain (the point-exchange modules' nodal sums). */
+/* Point p's stencil nodes and weights (st->n, node, w): the transfers' shape functions with its domain (the point-exchange
+   modules' nodal sums). */
 static inline void MPMNodalMeanStencilOf(MPM mpm, const MPMPoints *pts, PetscInt p, MPMStencil *st)
 {
   const PetscInt d = mpm->grid.dim;
   PetscReal      Fs[MPM_MAX_DIM * MPM_MAX_DIM];
 
-  MPMShapeEvaluate(mpm->shape, &mpm->grid, &pts->f[MPM_FIELD_POSITION][p * d], MPMPointDomain(d, pts->f[MPM_FIELD_DEFGRAD], pts->f[MPM_FIELD_DOMAINSCALE], p, Fs), st);
+  MPMShapeWeights(mpm->shape, &mpm->grid, &pts->f[MPM_FIELD_POSITION][p * d], MPMPointDomain(d, pts->f[MPM_FIELD_DEFGRAD], pts->f[MPM_FIELD_DOMAINSCALE], p, Fs), st);
 }
 
+/* div v_p = tr L_p, plus the hoop rate v_r / r on an axisymmetric grid. */
 static inline PetscReal MPMPointDivergence(const MPMPoints *pts, PetscInt d, PetscInt p)
 {
   PetscReal div = pts->f[MPM_FIELD_HOOPRATE] ? pts->f[MPM_FIELD_HOOPRATE][p] : 0.0;

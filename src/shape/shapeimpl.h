@@ -10,6 +10,7 @@ typedef struct {
   PetscInt (*support)(void *);                                                                   /* ghost width the type needs [cells] */
   void (*basis1d)(void *, PetscReal, PetscInt *, PetscInt *, PetscReal[], PetscReal[]);          /* xi = (x-lo)/h -> first node (may lie outside the grid), count, N, dN/dxi */
   void (*evaluate)(void *, const MPMGrid *, const PetscReal[], const PetscReal[], MPMStencil *); /* (x, F) -> stencil, for types that are not tensor products */
+  void (*weights)(void *, const MPMGrid *, const PetscReal[], const PetscReal[], MPMStencil *);  /* (x, F) -> the stencil's nodes and weights alone (MPMShapeWeights), NULL: evaluate */
   PetscBool (*admissible)(void *, const MPMGrid *, const PetscReal[]);                           /* can the type evaluate a point with deformation gradient F? */
   PetscErrorCode (*setup)(MPMShape, const MPMGrid *, PetscInt);                                  /* grid and points per cell per direction */
 } MPMShapeOps;
@@ -49,3 +50,13 @@ static inline void MPMShapeEvaluate(MPMShape shape, const MPMGrid *g, const Pets
 }
 
 PETSC_INTERN PetscErrorCode MPMShapeSetUp(MPMShape, const MPMGrid *, PetscInt);
+
+/* The nodes and weights N_I(x_p) of MPMShapeEvaluate alone (st->n, node, w; the same bits), for the point-exchange
+   modules' nodal means: a type with a cheaper way (CPDI, without its gradients) gives it, the others evaluate. */
+static inline void MPMShapeWeights(MPMShape shape, const MPMGrid *g, const PetscReal x[], const PetscReal F[], MPMStencil *st)
+{
+  if (shape->ops.weights)
+    shape->ops.weights(shape->data, g, x, F, st);
+  else
+    MPMShapeEvaluate(shape, g, x, F, st);
+}

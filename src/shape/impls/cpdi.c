@@ -32,13 +32,14 @@ static void MPMShapeBasis1d_CPDI(void *ctx, PetscReal xi, PetscInt *first, Petsc
 #  define MPM_CPDI_INLINE static inline
 #endif
 
-/* R = F diag(l0) (F NULL: the identity) and R^-1. */
+/* R = F diag(l0) (F NULL: the identity) and R^-1 (Ri NULL: R alone). */
 MPM_CPDI_INLINE void CPDIDomain(const Shape_CPDI *cp, PetscInt d, const PetscReal F[], PetscReal R[], PetscReal Ri[])
 {
   PetscReal det;
 
   for (PetscInt i = 0; i < d; i++)
     for (PetscInt k = 0; k < d; k++) R[i * d + k] = (F ? F[i * d + k] : (i == k ? 1.0 : 0.0)) * cp->l0[k];
+  if (!Ri) return; /* the weights alone need no inverse */
   det = MPMDeterminant(d, R);
   if (d == 1)
     Ri[0] = 1.0 / R[0];
@@ -60,14 +61,14 @@ MPM_CPDI_INLINE void CPDIDomain(const Shape_CPDI *cp, PetscInt d, const PetscRea
   }
 }
 
-/* Corner c of the domain x + R s_c: the gradient factor gs = R^-T s_c and, per direction, the first of the two nodes of
-   the linear basis at the corner (a global index, not yet folded onto the grid) and their weights. */
+/* Corner c of the domain x + R s_c: the gradient factor gs = R^-T s_c (Ri NULL: not formed) and, per direction, the first
+   of the two nodes of the linear basis at the corner (a global index, not yet folded onto the grid) and their weights. */
 MPM_CPDI_INLINE void CPDICorner(const MPMGrid *g, const PetscReal x[], const PetscReal R[], const PetscReal Ri[], PetscInt c, PetscReal gs[], PetscInt first[], PetscReal w[][2], const PetscInt d)
 {
   PetscReal s[MPM_MAX_DIM], xc[MPM_MAX_DIM];
 
   for (PetscInt k = 0; k < d; k++) s[k] = (c >> k) & 1 ? 1.0 : -1.0;
-  for (PetscInt j = 0; j < d; j++) {
+  for (PetscInt j = 0; Ri && j < d; j++) {
     gs[j] = 0.0;
     for (PetscInt k = 0; k < d; k++) gs[j] += Ri[k * d + j] * s[k]; /* (R^-T s)_j */
   }
@@ -87,8 +88,10 @@ MPM_CPDI_INLINE void CPDICorner(const MPMGrid *g, const PetscReal x[], const Pet
    against the 4^d of the corners taken one by one. A point whose box is larger keeps the corners' 4^d entries, each
    corner folded on its own. Fills node[], W[], DW (d values per entry, stride ds) and, when a mirror sign is -1
    (*mirror), SG (stride ds); returns the number of entries, at most 4^d. The generic stencil (CPDIEvaluate) and the
-   specialised kernels' (CPDIKernelStencil) are both this function, so the two paths agree bit for bit. */
-MPM_CPDI_INLINE PetscInt CPDIStencil(const Shape_CPDI *cp, const MPMGrid *g, const PetscReal x[], const PetscReal F[], PetscInt node[], PetscReal W[], PetscReal DW[], PetscReal SG[], PetscInt ds, PetscBool *mirror, const PetscInt d)
+   specialised kernels' (CPDIKernelStencil) are both this function, so the two paths agree bit for bit. Without grad (a
+   constant) it fills node[] and W[] alone, with the same bits (the point-exchange modules' nodal means). */
+MPM_CPDI_INLINE PetscInt CPDIStencil(const Shape_CPDI *cp, const MPMGrid *g, const PetscReal x[], const PetscReal F[], PetscInt node[], PetscReal W[], PetscReal DW[], PetscReal SG[], PetscInt ds, PetscBool *mirror, const PetscInt d,
+                                     const PetscBool grad)
 {
   const PetscInt  nc    = 1 << d;
   const PetscReal scale = 1.0 / nc;
@@ -96,8 +99,8 @@ MPM_CPDI_INLINE PetscInt CPDIStencil(const Shape_CPDI *cp, const MPMGrid *g, con
   PetscInt        first[8][MPM_MAX_DIM], lo[MPM_MAX_DIM], n[MPM_MAX_DIM], stride[MPM_MAX_DIM], nb = 1;
   PetscBool       merge = PETSC_TRUE;
 
-  CPDIDomain(cp, d, F, R, Ri);
-  for (PetscInt c = 0; c < nc; c++) CPDICorner(g, x, R, Ri, c, gs[c], first[c], w[c], d);
+  CPDIDomain(cp, d, F, R, grad ? Ri : NULL);
+  for (PetscInt c = 0; c < nc; c++) CPDICorner(g, x, R, grad ? Ri : NULL, c, gs[c], first[c], w[c], d);
   for (PetscInt i = 0; i < d; i++) {
     PetscInt hi = first[0][i];
     lo[i]       = first[0][i];
@@ -117,7 +120,7 @@ MPM_CPDI_INLINE PetscInt CPDIStencil(const Shape_CPDI *cp, const MPMGrid *g, con
 
     for (PetscInt e = 0; e < nb; e++) {
       W[e] = 0.0;
-      for (PetscInt j = 0; j < d; j++) DW[e * ds + j] = 0.0;
+      for (PetscInt j = 0; grad && j < d; j++) DW[e * ds + j] = 0.0;
     }
     for (PetscInt c = 0; c < nc; c++) { /* N = 2^-d N_2 N_1 N_0 (the directions beyond d: weight 1, offset 0) */
       const PetscInt n2 = d > 2 ? 2 : 1, n1 = d > 1 ? 2 : 1;
@@ -136,7 +139,7 @@ MPM_CPDI_INLINE PetscInt CPDIStencil(const Shape_CPDI *cp, const MPMGrid *g, con
             const PetscReal N = N1 * wt[0][b0];
             const PetscInt  e = off[2][b2] + off[1][b1] + off[0][b0];
             W[e] += N;
-            for (PetscInt j = 0; j < d; j++) DW[e * ds + j] += N * gs[c][j];
+            for (PetscInt j = 0; grad && j < d; j++) DW[e * ds + j] += N * gs[c][j];
           }
         }
       }
@@ -152,7 +155,7 @@ MPM_CPDI_INLINE PetscInt CPDIStencil(const Shape_CPDI *cp, const MPMGrid *g, con
         PetscInt nd = 0;
         for (PetscInt i = d - 1; i >= 0; i--) nd = nd * g->gm[i] + idx[i][a[i]];
         node[e] = nd;
-        if (*mirror)
+        if (*mirror && grad)
           for (PetscInt i = 0; i < d; i++) SG[e * ds + i] = sg[i][a[i]];
         for (PetscInt i = 0; i < d; i++) {
           if (++a[i] < n[i]) break;
@@ -176,13 +179,13 @@ MPM_CPDI_INLINE PetscInt CPDIStencil(const Shape_CPDI *cp, const MPMGrid *g, con
       for (PetscInt i = d - 1; i >= 0; i--) {
         const PetscInt b = (a >> i) & 1;
         N *= w[c][i][b];
-        nd             = nd * g->gm[i] + idx[i][b];
-        SG[e * ds + i] = sg[i][b];
-        *mirror        = (PetscBool)(*mirror || sg[i][b] < 0.0);
+        nd = nd * g->gm[i] + idx[i][b];
+        if (grad) SG[e * ds + i] = sg[i][b];
+        *mirror = (PetscBool)(*mirror || sg[i][b] < 0.0);
       }
       node[e] = nd;
       W[e]    = N;
-      for (PetscInt j = 0; j < d; j++) DW[e * ds + j] = N * gs[c][j];
+      for (PetscInt j = 0; grad && j < d; j++) DW[e * ds + j] = N * gs[c][j];
     }
   }
   return nc * nc;
@@ -194,7 +197,7 @@ MPM_CPDI_INLINE void CPDIEvaluate(const Shape_CPDI *cp, const MPMGrid *g, const 
 {
   PetscBool mirror;
 
-  st->n = CPDIStencil(cp, g, x, F, st->node, st->w, &st->dw[0][0], &st->s[0][0], MPM_MAX_DIM, &mirror, d);
+  st->n = CPDIStencil(cp, g, x, F, st->node, st->w, &st->dw[0][0], &st->s[0][0], MPM_MAX_DIM, &mirror, d, PETSC_TRUE);
   if (!mirror)
     for (PetscInt e = 0; e < st->n; e++)
       for (PetscInt i = 0; i < d; i++) st->s[e][i] = 1.0;
@@ -207,7 +210,7 @@ MPM_CPDI_INLINE PetscBool CPDIKernelStencil(const void *ctx, const MPMGrid *g, c
   PetscReal Fs[MPM_MAX_DIM * MPM_MAX_DIM];
   PetscBool mirror;
 
-  *ns = CPDIStencil((const Shape_CPDI *)ctx, g, &A->x[p * d], MPMPointDomain(d, A->F, A->ds, p, Fs), node, W, DW, SG, d, &mirror, d);
+  *ns = CPDIStencil((const Shape_CPDI *)ctx, g, &A->x[p * d], MPMPointDomain(d, A->F, A->ds, p, Fs), node, W, DW, SG, d, &mirror, d, PETSC_TRUE);
   return mirror;
 }
 
@@ -226,6 +229,20 @@ static void MPMShapeEvaluate_CPDI(void *ctx, const MPMGrid *g, const PetscReal x
     CPDIEvaluate(cp, g, x, F, st, 2);
   else
     CPDIEvaluate(cp, g, x, F, st, 1);
+}
+
+/* MPMShapeWeights for CPDI: node[] and w[] of MPMShapeEvaluate_CPDI, the same bits, without the gradients and signs. */
+static void MPMShapeWeights_CPDI(void *ctx, const MPMGrid *g, const PetscReal x[], const PetscReal F[], MPMStencil *st)
+{
+  const Shape_CPDI *cp = (const Shape_CPDI *)ctx;
+  PetscBool         mirror;
+
+  if (g->dim == 3)
+    st->n = CPDIStencil(cp, g, x, F, st->node, st->w, NULL, NULL, MPM_MAX_DIM, &mirror, 3, PETSC_FALSE);
+  else if (g->dim == 2)
+    st->n = CPDIStencil(cp, g, x, F, st->node, st->w, NULL, NULL, MPM_MAX_DIM, &mirror, 2, PETSC_FALSE);
+  else
+    st->n = CPDIStencil(cp, g, x, F, st->node, st->w, NULL, NULL, MPM_MAX_DIM, &mirror, 1, PETSC_FALSE);
 }
 
 /* The domain's corners stay within reach cells of its centre, and it is not inverted. */
@@ -288,6 +305,7 @@ PetscErrorCode MPMShapeCreate_CPDI(MPMShape shape)
   shape->ops.support        = MPMShapeSupport_CPDI;
   shape->ops.basis1d        = MPMShapeBasis1d_CPDI;
   shape->ops.evaluate       = MPMShapeEvaluate_CPDI;
+  shape->ops.weights        = MPMShapeWeights_CPDI;
   shape->ops.admissible     = MPMShapeAdmissible_CPDI;
   shape->ops.setup          = MPMShapeSetUp_CPDI;
   shape->ops.setfromoptions = MPMShapeSetFromOptions_CPDI;
