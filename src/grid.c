@@ -15,8 +15,8 @@ static PetscInt MPMGridStencilWidth(MPM mpm)
 
 /* The ghost exchange of several ranks (MPM::ghost_sf): every ghost node of the ghosted local box is a leaf whose root is
    the same node in its owner's ghosted local vector, so that the step's node loops work on the local vectors alone:
-   the ghosts' sums go to their owners (PetscSFReduce, MPMGridLocalToGlobal) and the owners' values back to the ghosts
-   (PetscSFBcast, MPMGridGlobalToLocal), with the ghost layers' traffic only. PETSc's local-to-global and
+   the ghosts' sums go to their owners (PetscSFReduce, MPMGridGhostSum) and the owners' values back to the ghosts
+   (PetscSFBcast, MPMGridGhostFill), with the ghost layers' traffic only. PETSc's local-to-global and
    global-to-local maps of the DMDA also copied every owned node both ways, and the scatter zeroed both whole vectors:
    four sweeps of the whole box per exchange, however little of it the body fills. The owner of a node and its ghosted
    box follow from the ownership ranges (grid.rank_start) and the stencil width, as the DMDA (box stencil, no periodic
@@ -38,8 +38,8 @@ static PetscErrorCode MPMGridGhostCreate(MPM mpm)
         if (l[0] >= g->xs[0] && l[0] < g->xs[0] + g->xm[0] && l[1] >= g->xs[1] && l[1] < g->xs[1] + g->xm[1] && l[2] >= g->xs[2] && l[2] < g->xs[2] + g->xm[2]) continue; /* owned */
         for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {                                                                                                                      /* the owner's column along k and its ghosted range */
           const PetscInt M = k < g->dim ? g->cells[k] + 1 : 1;
-          for (r[k] = 0; r[k] < g->nranks[k] - 1 && l[k] >= g->rank_start[k][r[k] + 1]; r[k]++) {
-          }
+          r[k]             = 0;
+          while (r[k] < g->nranks[k] - 1 && l[k] >= g->rank_start[k][r[k] + 1]) r[k]++;
           os[k] = PetscMax(0, g->rank_start[k][r[k]] - (k < g->dim ? g->sw : 0));
           om[k] = PetscMin(M, g->rank_start[k][r[k] + 1] + (k < g->dim ? g->sw : 0)) - os[k];
         }
@@ -367,7 +367,7 @@ static PetscErrorCode MPMGridExchange(MPM mpm, PetscBool reduce)
 
 /* Adds every ghost node's values of the ghosted local nodal vector to its owner's node: then the owned nodes hold the
    sums over all points. */
-PetscErrorCode MPMGridLocalToGlobal(MPM mpm)
+PetscErrorCode MPMGridGhostSum(MPM mpm)
 {
   PetscFunctionBegin;
   PetscCall(MPMGridExchange(mpm, PETSC_TRUE));
@@ -375,7 +375,7 @@ PetscErrorCode MPMGridLocalToGlobal(MPM mpm)
 }
 
 /* Fills the ghost nodes of the ghosted local nodal vector from their owners. */
-PetscErrorCode MPMGridGlobalToLocal(MPM mpm)
+PetscErrorCode MPMGridGhostFill(MPM mpm)
 {
   PetscFunctionBegin;
   PetscCall(MPMGridExchange(mpm, PETSC_FALSE));

@@ -318,14 +318,14 @@ PETSC_INTERN PetscClassId   MPM_CLASSID; /* log events of petmpm (src/init.c) */
 PETSC_INTERN PetscErrorCode MPMLogRegister(MPM);
 PETSC_INTERN PetscInt       MPMFieldBlockSize(PetscInt, PetscInt);
 PETSC_INTERN PetscErrorCode MPMCreateGrid(MPM);
-PETSC_INTERN PetscErrorCode MPMGridLocalToGlobal(MPM);
+PETSC_INTERN PetscErrorCode MPMGridGhostSum(MPM);
 PETSC_INTERN PetscErrorCode MPMGridOwnedToGlobal(MPM);
 PETSC_INTERN PetscErrorCode MPMGhostExchange(MPM, MPI_Datatype, PetscScalar *, PetscBool, PetscBool);
 PETSC_INTERN PetscErrorCode MPMRebalance(MPM);
 PETSC_INTERN PetscErrorCode MPMGridSetOwnership(MPM, PetscInt *[]);
 PETSC_INTERN PetscErrorCode MPMDestroyGrid(MPM);
 PETSC_INTERN PetscErrorCode MPMPointBalance(MPM, PetscReal *, PetscInt *, PetscInt *);
-PETSC_INTERN PetscErrorCode MPMGridGlobalToLocal(MPM);
+PETSC_INTERN PetscErrorCode MPMGridGhostFill(MPM);
 PETSC_INTERN PetscErrorCode MPMGridZeroForScatter(MPM, PetscInt, const PetscReal[], MPMNode *);
 PETSC_INTERN PetscErrorCode MPMCreatePoints(MPM);
 PETSC_INTERN void           MPMSiteAt(const MPMGrid *, PetscInt, PetscInt, PetscReal[], PetscReal *);

@@ -86,7 +86,7 @@ static PetscErrorCode MPMGridAdvance(MPM mpm, const MPMStepContext *ctx)
   }
   PetscCall(VecRestoreArray(mpm->lnodes, (PetscScalar **)&node));
   PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_VELOCITY, ctx));
-  PetscCall(MPMGridGlobalToLocal(mpm));
+  PetscCall(MPMGridGhostFill(mpm));
   PetscCall(PetscLogEventEnd(mpm->log.advance, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -23,7 +23,7 @@ PetscErrorCode MPMRemapApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
     rctx.remap          = PETSC_TRUE;
     PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_VELOCITY, &rctx));
   }
-  PetscCall(MPMGridGlobalToLocal(mpm));
+  PetscCall(MPMGridGhostFill(mpm));
   PetscCall(MPMGather(mpm, ctx->dt, ctx->dt, PETSC_FALSE, PETSC_TRUE));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -286,7 +286,7 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
       MPMCellRuleForce(mpm, node, full, 3);
   }
   PetscCall(VecRestoreArray(mpm->lnodes, (PetscScalar **)&node));
-  PetscCall(MPMGridLocalToGlobal(mpm));
+  PetscCall(MPMGridGhostSum(mpm));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
