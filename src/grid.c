@@ -56,6 +56,11 @@ static PetscErrorCode MPMGridGhostCreate(MPM mpm)
   PetscCallMPI(MPI_Type_commit(&mpm->node_type));
   PetscCallMPI(MPI_Type_contiguous(2, MPIU_REAL, &mpm->mean_type));
   PetscCallMPI(MPI_Type_commit(&mpm->mean_type));
+  {
+    PetscMPIInt size;
+    PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
+    PetscCall(PetscMalloc1(2 * MPM_MAX_DIM * size, &mpm->touched)); /* every rank's touched box, gathered at each scatter */
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -154,6 +159,7 @@ PetscErrorCode MPMDestroyGrid(MPM mpm)
   if (mpm->ghost_sf) PetscCallMPI(MPI_Type_free(&mpm->mean_type));
   PetscCall(PetscSFDestroy(&mpm->ghost_sf));
   PetscCall(PetscFree(mpm->ghost));
+  PetscCall(PetscFree(mpm->touched));
   mpm->nghost = 0;
   PetscCall(VecDestroy(&mpm->mean_l));
   PetscCall(DMDestroy(&mpm->mean_da));
@@ -404,7 +410,7 @@ static PetscErrorCode MPMZeroBox(MPMNode *node, const PetscInt lo[], const Petsc
 static PetscErrorCode MPMGridZeroForScatterRanks(MPM mpm, const PetscInt lo[], const PetscInt hi[], MPMNode *node)
 {
   const MPMGrid *g = &mpm->grid;
-  PetscInt       t[2 * MPM_MAX_DIM], *all, blo[MPM_MAX_DIM], bhi[MPM_MAX_DIM];
+  PetscInt       t[2 * MPM_MAX_DIM], *all = mpm->touched, blo[MPM_MAX_DIM], bhi[MPM_MAX_DIM];
   PetscMPIInt    size;
   PetscBool      any = PETSC_FALSE, tne = PETSC_TRUE; /* some rank's touched box reaches the owned nodes; this rank's is not empty */
 
@@ -416,7 +422,6 @@ static PetscErrorCode MPMGridZeroForScatterRanks(MPM mpm, const PetscInt lo[], c
     bhi[k]             = -1;
   }
   PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
-  PetscCall(PetscMalloc1(2 * MPM_MAX_DIM * size, &all));
   PetscCallMPI(MPI_Allgather(t, 2 * MPM_MAX_DIM, MPIU_INT, all, 2 * MPM_MAX_DIM, MPIU_INT, mpm->comm));
   for (PetscMPIInt r = 0; r < size; r++) { /* its part in the owned nodes, as owned-box indices */
     PetscInt  clo[MPM_MAX_DIM], chi[MPM_MAX_DIM];
@@ -432,16 +437,15 @@ static PetscErrorCode MPMGridZeroForScatterRanks(MPM mpm, const PetscInt lo[], c
     }
     any = (PetscBool)(any || in);
   }
-  PetscCall(PetscFree(all));
   PetscCall(MPMZeroBox(node, mpm->lbox_lo, mpm->lbox_hi, g->gm[0], g->gm[1]));
   for (PetscInt i = 0; i < mpm->nghost; i++) PetscCall(PetscArrayzero(&node[mpm->ghost[i]], 1));
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) tne = (PetscBool)(tne && t[k] < t[MPM_MAX_DIM + k]);
-  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) { /* the sweep box, and what this step may fill: the touched and swept boxes, ghosted-box indices */
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) { /* the sweep box, and what this step may fill: the touched and swept boxes, ghosted-box indices (a touched box holds owned cells, so tne implies any) */
     const PetscInt tl = t[k] - g->gs[k], th = t[MPM_MAX_DIM + k] - g->gs[k], sl = blo[k] + g->xs[k] - g->gs[k], sh = bhi[k] + g->xs[k] - g->gs[k];
     mpm->box_lo[k]  = any ? blo[k] : 0;
     mpm->box_hi[k]  = any ? bhi[k] : 0;
-    mpm->lbox_lo[k] = tne && any ? PetscMin(tl, sl) : (tne ? tl : (any ? sl : 0));
-    mpm->lbox_hi[k] = tne && any ? PetscMax(th, sh) : (tne ? th : (any ? sh : 0));
+    mpm->lbox_lo[k] = !any ? 0 : (tne ? PetscMin(tl, sl) : sl);
+    mpm->lbox_hi[k] = !any ? 0 : (tne ? PetscMax(th, sh) : sh);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -475,8 +479,10 @@ PetscErrorCode MPMGridZeroForScatter(MPM mpm, PetscInt n, const PetscReal x[], M
       lo[k] = MPMCellIndex(g, k, xlo);
       hi[k] = MPMCellIndex(g, k, xhi);
     }
-  if (mpm->ghost_sf) PetscCall(MPMGridZeroForScatterRanks(mpm, lo, hi, node));
-  if (mpm->ghost_sf) PetscFunctionReturn(PETSC_SUCCESS);
+  if (mpm->ghost_sf) {
+    PetscCall(MPMGridZeroForScatterRanks(mpm, lo, hi, node));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) { /* owned = ghosted box here: node indices 0 .. xm */
     if (k >= g->dim || hi[k] < 0) {
       lo[k] = 0;

@@ -208,6 +208,7 @@ struct _p_MPM {
   PetscSF      ghost_sf;                                   /* several ranks: each ghost node (leaf) to its owner's node in the owner's local vector (root) */
   MPI_Datatype node_type, mean_type;                       /* ghost_sf's units: one MPMNode (MPM_NODE_DOF reals); 2 reals (the nodal-mean vector mean_l) */
   PetscInt     nghost, *ghost;                             /* the ghost nodes' local indices (ghost_sf's leaves) */
+  PetscInt    *touched;                                    /* several ranks: every rank's touched box, 6 integers each (MPMGridZeroForScatter) */
   PetscInt     lbox_lo[MPM_MAX_DIM], lbox_hi[MPM_MAX_DIM]; /* several ranks: ghosted-box indices outside which (ghost nodes apart) the local nodes hold zeros */
   MPMFieldInfo field[MPM_MAX_FIELDS];                      /* the point fields: MPMFieldTable, then the registered ones  */
   PetscBool    field_on[MPM_MAX_FIELDS];                   /* carried by this scene's points                            */
