@@ -376,6 +376,25 @@ PetscErrorCode MPMCreatePoints(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Whether some of the n points x (d per point) lies outside [lo, hi] in some direction (nan: or has a NaN coordinate),
+   in one pass free of branches with d a constant (the loops unroll and vectorize): the loops that act on such points
+   run only when there is one. */
+static inline __attribute__((always_inline)) int MPMAnyOutsideD(PetscInt n, const PetscInt d, const PetscReal *restrict x, const PetscReal lo[], const PetscReal hi[], const PetscBool nan)
+{
+  int out = 0;
+
+  for (PetscInt p = 0; p < n; p++)
+    for (PetscInt k = 0; k < d; k++) out |= nan ? !((x[p * d + k] >= lo[k]) & (x[p * d + k] <= hi[k])) : (x[p * d + k] < lo[k]) | (x[p * d + k] > hi[k]);
+  return out;
+}
+
+static int MPMAnyOutside(PetscInt n, PetscInt d, const PetscReal *x, const PetscReal lo[], const PetscReal hi[], PetscBool nan)
+{
+  if (d == 1) return nan ? MPMAnyOutsideD(n, 1, x, lo, hi, PETSC_TRUE) : MPMAnyOutsideD(n, 1, x, lo, hi, PETSC_FALSE);
+  if (d == 2) return nan ? MPMAnyOutsideD(n, 2, x, lo, hi, PETSC_TRUE) : MPMAnyOutsideD(n, 2, x, lo, hi, PETSC_FALSE);
+  return nan ? MPMAnyOutsideD(n, 3, x, lo, hi, PETSC_TRUE) : MPMAnyOutsideD(n, 3, x, lo, hi, PETSC_FALSE);
+}
+
 /* A point that the step carried across a wall is put back as its mirror image: at a symmetry plane the image is the
    point that crossed in its place. Position, velocity and reference position reflect across the wall, a tensor
    field T (F, L, the stress) becomes R T R with R the reflection, so mass, energy and the tangential momentum are
@@ -397,6 +416,10 @@ static PetscErrorCode MPMReflectAtWalls(MPM mpm)
     for (PetscInt k = 0; k < d; k++) {
       lo[k] = g->mirror_lo[k] ? g->lo[k] : PETSC_NINFINITY;
       hi[k] = g->mirror_hi[k] ? g->hi[k] : PETSC_INFINITY;
+    }
+    if (!MPMAnyOutside(pts.n, d, pts.f[MPM_FIELD_POSITION], lo, hi, PETSC_FALSE)) { /* the usual step: no point crossed a wall */
+      PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+      PetscFunctionReturn(PETSC_SUCCESS);
     }
     for (PetscInt p = 0; p < pts.n; p++)
       for (PetscInt k = 0; k < d; k++) {
@@ -507,7 +530,8 @@ PetscErrorCode MPMMigrate(MPM mpm)
   x  = pts.f[MPM_FIELD_POSITION];
   id = pts.f[MPM_FIELD_ID];
   if (size > 1) PetscCall(DMSwarmGetField(mpm->swarm, DMSwarmField_rank, NULL, NULL, (void **)&owner));
-  for (PetscInt p = 0; p < n; p++) {
+  /* on one rank with every point inside there is nothing to do per point */
+  for (PetscInt p = 0, nscan = size == 1 && !MPMAnyOutside(n, d, x, lo, hi, PETSC_TRUE) ? 0 : n; p < nscan; p++) {
     const PetscReal *xp = &x[p * d];
     PetscBool        in = PETSC_TRUE;
     for (PetscInt k = 0; k < d; k++) in = (PetscBool)(in & (xp[k] >= lo[k]) & (xp[k] <= hi[k])); /* no branch per direction */

@@ -2,10 +2,10 @@
 /* The time step: the smallest of the limits the state sets. */
 #include "petmpmimpl.h"
 
-/* The maxima of MPMComputeTimeStep take a term's square root or division only where it can raise the maximum so far: a term is
-   skipped where a product-only bound puts it below the maximum by a relative margin (1e-9) far above the bound's own
-   rounding (a few 1e-16), so the maxima, and dt, are the same bits as with every term evaluated. A NaN fails every
-   comparison and takes the full evaluation. */
+/* The nodal maximum of MPMComputeTimeStep takes a node's square root and division only where it can raise the maximum so
+   far: a node is skipped where a product-only bound puts it below the maximum by a relative margin (1e-9) far above the
+   bound's own rounding (a few 1e-16), so the maximum, and dt, are the same bits as with every term evaluated. A NaN
+   fails every comparison and takes the full evaluation. (The points' maxima evaluate every term, in vector lanes.) */
 #define MPM_DT_SCREEN (1.0 - 1e-9)
 
 /* dt = min of
@@ -24,37 +24,104 @@
    The grid's forces of the step (MPMStepForces) must be in the nodal vector. Records which limit set dt
    (mpm->dt_limit). With diagnose, the rank holding the point that sets the sound-speed limit prints it (for a run
    stopped by -mpm_dt_min). */
+/* The signal speed of point p (c_p + |v_p| and the diffusive terms of MPMComputeTimeStep), with the dimension D, whether
+   a material may be viscous (VISC: mu, the materials' viscosities) and whether the hoop rate enters div v (HOOP)
+   compile-time constants where the loops call it. The viscosity's term is taken wherever q_p > 0 and div v_p != 0 (the
+   screened loop of earlier versions skipped it only where it could not raise the maximum: the same bits). */
+static inline __attribute__((always_inline)) PetscReal MPMSignalSpeed(const MPMPoints *pts, PetscInt p, const PetscInt D, const PetscBool VISC, const PetscBool HOOP, const PetscReal mu[], PetscReal h, PetscReal *divv)
+{
+  const PetscReal *v = &pts->f[MPM_FIELD_VELOCITY][p * D], *L = &pts->f[MPM_FIELD_GRADV][p * D * D], q = pts->f[MPM_FIELD_VISCOSITY][p], rho = pts->f[MPM_FIELD_DENSITY][p];
+  PetscReal        v2 = 0.0, div = HOOP ? pts->f[MPM_FIELD_HOOPRATE][p] : 0.0, s;
+
+  for (PetscInt k = 0; k < D; k++) v2 += v[k] * v[k];
+  for (PetscInt k = 0; k < D; k++) div += L[k * D + k];
+  s = pts->f[MPM_FIELD_SOUNDSPEED][p] + PetscSqrtReal(v2);
+  if (VISC) { /* a viscous material's diffusion limit dt <= h^2 / (2 d nu) */
+    const PetscReal m = mu[(PetscInt)pts->f[MPM_FIELD_MATERIAL][p]];
+    if (m > 0.0) s += 2.0 * D * m / (rho * h);
+  }
+  {
+    const PetscReal t = 2.0 * q / (rho * PetscAbsReal(div) * h);
+    s += (q > 0.0 && div != 0.0) ? t : 0.0;
+  }
+  *divv = div;
+  return s;
+}
+
+/* max_p s_p and max_p |div v_p| over the local points (the first in mx[0], the second in mx[1]), in chunks: the speeds in
+   a loop that vectorizes (the square root and the division in vector lanes), then the maxima in four independent
+   chains. A NaN speed makes the maximum NaN. */
+#define MPM_DT_CHUNK 256
+static inline __attribute__((always_inline)) void MPMSignalMaxima(const MPMPoints *pts, const PetscInt D, const PetscBool VISC, const PetscBool HOOP, const PetscReal mu[], PetscReal h, PetscReal mx[])
+{
+  PetscReal m0[4] = {0.0, 0.0, 0.0, 0.0}, m1[4] = {0.0, 0.0, 0.0, 0.0};
+  int       nan = 0;
+
+  for (PetscInt c0 = 0; c0 < pts->n; c0 += MPM_DT_CHUNK) {
+    const PetscInt n = PetscMin(MPM_DT_CHUNK, pts->n - c0);
+    PetscReal      s[MPM_DT_CHUNK], div[MPM_DT_CHUNK];
+    PetscInt       i;
+
+    for (i = 0; i < n; i++) s[i] = MPMSignalSpeed(pts, c0 + i, D, VISC, HOOP, mu, h, &div[i]);
+    for (i = 0; i < n; i++) nan |= s[i] != s[i];
+    for (i = 0; i + 4 <= n; i += 4)
+      for (PetscInt l = 0; l < 4; l++) {
+        m0[l] = PetscMax(m0[l], s[i + l]);
+        m1[l] = PetscMax(m1[l], PetscAbsReal(div[i + l]));
+      }
+    for (; i < n; i++) {
+      m0[0] = PetscMax(m0[0], s[i]);
+      m1[0] = PetscMax(m1[0], PetscAbsReal(div[i]));
+    }
+  }
+  mx[0] = nan ? (PetscReal)NAN : PetscMax(PetscMax(m0[0], m0[1]), PetscMax(m0[2], m0[3]));
+  mx[1] = PetscMax(PetscMax(m1[0], m1[1]), PetscMax(m1[2], m1[3]));
+}
+
+/* MPMSignalMaxima with the dimension D and the run's visc and hoop as constants. */
+#define MPM_SIGNAL_MAXIMA(D)                                         \
+  do {                                                               \
+    if (visc && hoop)                                                \
+      MPMSignalMaxima(&pts, D, PETSC_TRUE, PETSC_TRUE, mu, h, mx);   \
+    else if (visc)                                                   \
+      MPMSignalMaxima(&pts, D, PETSC_TRUE, PETSC_FALSE, mu, h, mx);  \
+    else if (hoop)                                                   \
+      MPMSignalMaxima(&pts, D, PETSC_FALSE, PETSC_TRUE, mu, h, mx);  \
+    else                                                             \
+      MPMSignalMaxima(&pts, D, PETSC_FALSE, PETSC_FALSE, mu, h, mx); \
+  } while (0)
+
 PetscErrorCode MPMComputeTimeStep(MPM mpm, PetscBool diagnose, PetscReal *dt)
 {
   const MPMGrid  *g     = &mpm->grid;
   const PetscInt  d     = g->dim;
   const PetscReal h     = g->hmin;
-  PetscReal       mx[3] = {0.0, 0.0, 0.0}, lmax, dts[MPM_NUM_DT_LIMITS]; /* max signal speed, max |div v|, max wbar |a| */
+  PetscReal       mx[4] = {0.0, 0.0, 0.0, 0.0}, lmax, dts[MPM_NUM_DT_LIMITS], mu[MPM_MAX_MATERIALS]; /* max signal speed, max |div v|, max wbar |a|, a NaN speed */
+  PetscBool       visc  = PETSC_FALSE, hoop;
   PetscInt        pmax  = -1;
   MPMPoints       pts;
 
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(mpm->log.timestep, 0, 0, 0, 0));
   PetscCall(MPMPointsGetArrays(mpm, &pts));
-  for (PetscInt p = 0; p < pts.n; p++) {
-    const PetscReal *v = &pts.f[MPM_FIELD_VELOCITY][p * d], q = pts.f[MPM_FIELD_VISCOSITY][p], divv = MPMPointDivergence(&pts, d, p);
-    PetscReal        v2 = 0.0, s;
-    for (PetscInt k = 0; k < d; k++) v2 += v[k] * v[k];
-    s = pts.f[MPM_FIELD_SOUNDSPEED][p] + PetscSqrtReal(v2);
-    if (mpm->has_stress) { /* a viscous material's diffusion limit dt <= h^2 / (2 d nu) */
-      const MPMStrength str = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].strength;
-      if (str && str->mu > 0.0) s += 2.0 * d * str->mu / (pts.f[MPM_FIELD_DENSITY][p] * h);
-    }
-    if (q > 0.0 && divv != 0.0) { /* the division only where the term can raise the maximum (MPM_DT_SCREEN) */
-      const PetscReal r = pts.f[MPM_FIELD_DENSITY][p] * PetscAbsReal(divv) * h;
-      if (!(2.0 * q < (mx[0] - s) * r * MPM_DT_SCREEN)) s += 2.0 * q / r;
-    }
-    if (!(s <= mx[0])) { /* also catches NaN */
-      mx[0] = s;
-      pmax  = p;
-    }
-    mx[1] = PetscMax(mx[1], PetscAbsReal(divv));
+  for (PetscInt i = 0; i < mpm->nmat; i++) {
+    const MPMStrength str = mpm->has_stress ? mpm->mat[i].strength : NULL;
+    mu[i]                 = str ? str->mu : 0.0;
+    visc                  = (PetscBool)(visc || mu[i] > 0.0);
   }
+  hoop = (PetscBool)(pts.f[MPM_FIELD_HOOPRATE] != NULL);
+  if (d == 1)
+    MPM_SIGNAL_MAXIMA(1);
+  else if (d == 2)
+    MPM_SIGNAL_MAXIMA(2);
+  else
+    MPM_SIGNAL_MAXIMA(3);
+  if (diagnose) /* the point that sets the maximum: the first whose speed equals it (or is NaN) */
+    for (PetscInt p = 0; p < pts.n && pmax < 0; p++) {
+      PetscReal       div;
+      const PetscReal s = MPMSignalSpeed(&pts, p, d, PETSC_TRUE, hoop, mu, h, &div);
+      if (s == mx[0] || s != s) pmax = p;
+    }
   {
     const MPMNode *node;
     PetscCall(VecGetArrayRead(mpm->lnodes, (const PetscScalar **)&node));
@@ -71,8 +138,12 @@ PetscErrorCode MPMComputeTimeStep(MPM mpm, PetscBool diagnose, PetscReal *dt)
     PetscCall(VecRestoreArrayRead(mpm->lnodes, (const PetscScalar **)&node));
   }
   lmax = mx[0];
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, mx, 3, MPIU_REAL, MPIU_MAX, mpm->comm));
-  dts[MPM_DT_SOUND]        = mx[0] > 0.0 ? mpm->cfl * h / mx[0] : PETSC_MAX_REAL;
+  if (mx[0] != mx[0]) { /* a NaN speed makes the step NaN on every rank (MPI's maximum of a NaN is undefined): the time loop stops with the diagnosis */
+    mx[0] = 0.0;
+    mx[3] = 1.0;
+  }
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, mx, 4, MPIU_REAL, MPIU_MAX, mpm->comm));
+  dts[MPM_DT_SOUND]        = mx[3] > 0.0 ? (PetscReal)NAN : mx[0] > 0.0 ? mpm->cfl * h / mx[0] : PETSC_MAX_REAL;
   dts[MPM_DT_VOLUME]       = mx[1] > 0.0 ? mpm->dvol_max / mx[1] : PETSC_MAX_REAL;
   dts[MPM_DT_ACCELERATION] = mx[2] > 0.0 ? 0.5 * (PetscSqrtReal(mpm->dt * mpm->dt + 8.0 * mpm->accel_cfl * h / mx[2]) - mpm->dt) : PETSC_MAX_REAL; /* dt (dt + dt_prev)/2 a = C_a h */
   mpm->dt_limit            = MPM_DT_SOUND;
