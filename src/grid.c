@@ -470,14 +470,26 @@ PetscErrorCode MPMGridZeroForScatter(MPM mpm, PetscInt n, const PetscReal x[], M
   }
   if (n > 0) /* the cell index is monotone in x: the cells of the smallest and the largest coordinate (no division per point) */
     for (PetscInt k = 0; k < g->dim; k++) {
-      PetscReal xlo = x[k], xhi = x[k];
-      for (PetscInt p = 1; p < n; p++) {
-        const PetscReal xp = x[p * g->dim + k];
-        xlo                = xp < xlo ? xp : xlo;
-        xhi                = xp > xhi ? xp : xhi;
+      const PetscInt d      = g->dim;
+      PetscReal      xlo[4] = {x[k], x[k], x[k], x[k]}, xhi[4] = {x[k], x[k], x[k], x[k]}; /* four independent chains */
+      PetscInt       p;
+      for (p = 1; p + 4 <= n; p += 4)
+        for (PetscInt l = 0; l < 4; l++) {
+          const PetscReal xp = x[(p + l) * d + k];
+          xlo[l]             = xp < xlo[l] ? xp : xlo[l];
+          xhi[l]             = xp > xhi[l] ? xp : xhi[l];
+        }
+      for (; p < n; p++) {
+        const PetscReal xp = x[p * d + k];
+        xlo[0]             = xp < xlo[0] ? xp : xlo[0];
+        xhi[0]             = xp > xhi[0] ? xp : xhi[0];
       }
-      lo[k] = MPMCellIndex(g, k, xlo);
-      hi[k] = MPMCellIndex(g, k, xhi);
+      for (PetscInt l = 1; l < 4; l++) {
+        xlo[0] = xlo[l] < xlo[0] ? xlo[l] : xlo[0];
+        xhi[0] = xhi[l] > xhi[0] ? xhi[l] : xhi[0];
+      }
+      lo[k] = MPMCellIndex(g, k, xlo[0]);
+      hi[k] = MPMCellIndex(g, k, xhi[0]);
     }
   if (mpm->ghost_sf) {
     PetscCall(MPMGridZeroForScatterRanks(mpm, lo, hi, node));
