@@ -95,14 +95,18 @@ static inline __attribute__((always_inline)) PetscErrorCode MPMConstitutiveChunk
         e1[i] += ws[i];
       }
     }
-  if (!conservative && !midpoint) /* compatible: an expansion beyond the threshold follows the EOS isentrope (exact), not the linear work of p^n */
-    for (PetscInt i = 0; i < n; i++) {
+  if (!conservative && !midpoint) { /* compatible: an expansion beyond the threshold follows the EOS isentrope (exact), not the linear work of p^n */
+    const PetscReal thr = mpm->isentrope_threshold;
+    int             any = 0;
+    for (PetscInt i = 0; i < n; i++) any |= dvol[i] * rho[MPM_CP(i)] > thr; /* one pass free of branches: the loop below only where a point expands that much */
+    for (PetscInt i = 0; any && i < n; i++) {
       const PetscInt p = MPM_CP(i);
       if (dvol[i] * rho[p] > mpm->isentrope_threshold) {
         const PetscReal delin = -pr[p] * dvol[i]; /* the linear update's pressure work, already in e1 */
         e1[i] += MPMIsentropeWork(mpm, E, m[p], rho[p], e[p], rho1[i], delin) - delin;
       }
     }
+  }
   if (Str) { /* s^{n+1}, eps_p; the plastic work sum m sigma_eq d eps_p / rho for the report's energy budget */
     PetscReal *epsp = pts->f[MPM_FIELD_PLASTICSTRAIN], eps0[MPM_CHUNK];
     for (PetscInt i = 0; i < n; i++) eps0[i] = epsp[MPM_CP(i)];
@@ -170,6 +174,8 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
     PetscCall(PetscFree3(mpm->widx, mpm->work, mpm->wL));
     mpm->nwork = pts.n + pts.n / 4;
     PetscCall(PetscMalloc3(mpm->nwork, &mpm->widx, 8 * MPM_CHUNK, &mpm->work, mpm->grid.axisym ? mpm->nwork * d * d : 0, &mpm->wL));
+    if (mpm->nmat == 1) /* one material: the index list is the identity, set once */
+      for (PetscInt p = 0; p < mpm->nwork; p++) mpm->widx[p] = p;
   }
   if (mpm->grid.axisym) { /* the hoop rate L_tt: the volume change gets (1 + dt L_tt), and the strength models the in-plane block
                              L - L_tt I, whose deviatoric rates and work s : (L - L_tt I) are those of the 3D L with L_tt (docs/algorithm.md) */
@@ -177,10 +183,9 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
     for (PetscInt p = 0; p < pts.n; p++)
       for (PetscInt i = 0; i < d * d; i++) Lsh[p * d * d + i] = pts.f[MPM_FIELD_GRADV][p * d * d + i] - (i % (d + 1) == 0 ? pts.f[MPM_FIELD_HOOPRATE][p] : 0.0);
   }
-  if (mpm->nmat == 1) { /* one material: every point in order */
+  if (mpm->nmat == 1) /* one material: every point in order (the identity list, set with the workspace) */
     start[1] = pts.n;
-    for (PetscInt p = 0; p < pts.n; p++) mpm->widx[p] = p;
-  } else { /* each material's points, in point order: a counting sort on the material field */
+  else { /* each material's points, in point order: a counting sort on the material field */
     const PetscReal *mat = pts.f[MPM_FIELD_MATERIAL];
     PetscInt         next[MPM_MAX_MATERIALS];
     for (PetscInt p = 0; p < pts.n; p++) start[(PetscInt)mat[p] + 1]++;

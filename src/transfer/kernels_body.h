@@ -18,12 +18,14 @@
 #  define MPM_KEVAL(g, ctx, A, p, node, W, DW, SG, ns) MPM_KSTENCIL(ctx, g, A, p, node, W, &(DW)[0][0], &(SG)[0][0], &(ns), MPM_KD)
 #else
 /* A tensor-product family: always MPM_KS entries (ns keeps that constant, so the loops over entries unroll). */
-#  define MPM_KEVAL(g, ctx, A, p, node, W, DW, SG, ns) MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(g, &(A)->x[(p)*MPM_KD], node, W, DW, SG)
+#  define MPM_KEVAL(g, ctx, A, p, node, W, DW, SG, ns) MPM_KCAT(MPMKStencilStrided, MPM_KNAME, MPM_KD, d)(g, &(A)->x[(p)*MPM_KD], node, W, &(DW)[0][0], SG, 1)
 
 /* N_I(x_p), grad N_I(x_p) and, for a point whose stencil reaches across a wall, the mirror signs of one point:
    MPMShapeEvaluate for this family and dimension. Returns whether a sign is -1 (SG filled); otherwise every sign is
-   1, SG is left alone and the callers take their sign-free path (x * 1 = x: the same numbers). */
-MPM_KINLINE PetscBool MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const PetscReal *x, PetscInt node[MPM_KS], PetscReal W[MPM_KS], PetscReal DW[MPM_KS][MPM_KD], PetscReal SG[MPM_KS][MPM_KD])
+   1, SG is left alone and the callers take their sign-free path (x * 1 = x: the same numbers). Entry a's node,
+   weight and gradient component k go to node[a ls], W[a ls] and DW[(a d + k) ls] (ls = 1: one point's arrays; ls =
+   MPM_KLANES: one lane of a group's, each entry's lanes side by side, so the lanes kernel loads them as vectors). */
+MPM_KINLINE PetscBool MPM_KCAT(MPMKStencilStrided, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const PetscReal *x, PetscInt *node, PetscReal *W, PetscReal *DW, PetscReal SG[MPM_KS][MPM_KD], const PetscInt ls)
 {
   PetscInt  idx[MPM_KD][MPM_KNB];
   PetscReal w[MPM_KD][MPM_KNB], dw[MPM_KD][MPM_KNB], sg[MPM_KD][MPM_KNB];
@@ -42,27 +44,27 @@ MPM_KINLINE PetscBool MPM_KCAT(MPMKStencil, MPM_KNAME, MPM_KD, d)(const MPMGrid 
   }
 #  if MPM_KD == 1
   for (PetscInt a = 0; a < MPM_KNB; a++) {
-    node[a]  = idx[0][a];
-    W[a]     = w[0][a];
-    DW[a][0] = dw[0][a];
+    node[a * ls] = idx[0][a];
+    W[a * ls]    = w[0][a];
+    DW[a * ls]   = dw[0][a];
   }
 #  elif MPM_KD == 2
   for (PetscInt b = 0, s = 0; b < MPM_KNB; b++)
     for (PetscInt a = 0; a < MPM_KNB; a++, s++) {
-      node[s]  = idx[1][b] * g->gm[0] + idx[0][a];
-      W[s]     = w[0][a] * w[1][b];
-      DW[s][0] = dw[0][a] * w[1][b];
-      DW[s][1] = w[0][a] * dw[1][b];
+      node[s * ls]         = idx[1][b] * g->gm[0] + idx[0][a];
+      W[s * ls]            = w[0][a] * w[1][b];
+      DW[(2 * s) * ls]     = dw[0][a] * w[1][b];
+      DW[(2 * s + 1) * ls] = w[0][a] * dw[1][b];
     }
 #  else
   for (PetscInt c = 0, s = 0; c < MPM_KNB; c++)
     for (PetscInt b = 0; b < MPM_KNB; b++)
       for (PetscInt a = 0; a < MPM_KNB; a++, s++) {
-        node[s]  = (idx[2][c] * g->gm[1] + idx[1][b]) * g->gm[0] + idx[0][a];
-        W[s]     = w[0][a] * w[1][b] * w[2][c];
-        DW[s][0] = dw[0][a] * w[1][b] * w[2][c];
-        DW[s][1] = w[0][a] * dw[1][b] * w[2][c];
-        DW[s][2] = w[0][a] * w[1][b] * dw[2][c];
+        node[s * ls]         = (idx[2][c] * g->gm[1] + idx[1][b]) * g->gm[0] + idx[0][a];
+        W[s * ls]            = w[0][a] * w[1][b] * w[2][c];
+        DW[(3 * s) * ls]     = dw[0][a] * w[1][b] * w[2][c];
+        DW[(3 * s + 1) * ls] = w[0][a] * dw[1][b] * w[2][c];
+        DW[(3 * s + 2) * ls] = w[0][a] * w[1][b] * dw[2][c];
       }
 #  endif
   if (mirror) {
@@ -203,7 +205,7 @@ MPM_KINLINE MPMKVec MPM_KCAT(MPMKLanes, MPM_KNAME, MPM_KD, d)(const PetscReal *x
 
 /* MPM_KLANES points at once, none with a mirrored entry: the stencil sums of MPMKG2PPoint with one vector lane per point
    (the same operations in the same order in every lane, so the same bits as point by point), then each point's finish. */
-MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, const MPMNode *nodes, PetscInt p0, const PetscInt node[MPM_KLANES][MPM_KS], const PetscReal W[MPM_KLANES][MPM_KS], const PetscReal DW[MPM_KLANES][MPM_KS][MPM_KD],
+MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, const MPMNode *nodes, PetscInt p0, const PetscInt node[MPM_KS][MPM_KLANES], const PetscReal W[MPM_KS][MPM_KLANES], const PetscReal DW[MPM_KS][MPM_KD][MPM_KLANES],
                                                               const int mode)
 {
   const PetscInt  D        = MPM_KD;
@@ -212,14 +214,14 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
 
   for (PetscInt i = 0; i < D; i++) vp[i] = MPM_KLANE(&A->v[p0 * D + i], D);
   for (PetscInt a = 0; a < MPM_KS; a++) {
-    const MPMKVec w = MPM_KLANE(&W[0][a], MPM_KS);
+    const MPMKVec w = MPM_KLANE(W[a], 1);
     MPMKVec       dw[MPM_KD];
-    for (PetscInt j = 0; j < D; j++) dw[j] = MPM_KLANE(&DW[0][a][j], MPM_KS * MPM_KD);
+    for (PetscInt j = 0; j < D; j++) dw[j] = MPM_KLANE(DW[a][j], 1);
     for (PetscInt i = 0; i < D; i++) {
       PetscReal vl[MPM_KLANES], v0l[MPM_KLANES];
       for (PetscInt l = 0; l < MPM_KLANES; l++) {
-        vl[l]  = nodes[node[l][a]].p[i];
-        v0l[l] = nodes[node[l][a]].v0[i];
+        vl[l]  = nodes[node[a][l]].p[i];
+        v0l[l] = nodes[node[a][l]].v0[i];
       }
       const MPMKVec vI = MPM_KLANE(vl, 1), v0I = MPM_KLANE(v0l, 1);
       vpic[i] += w * vI;
@@ -284,21 +286,28 @@ MPM_KINLINE void MPM_KCAT(MPMKLoop, MPM_KNAME, MPM_KD, d)(const MPMGrid *gin, co
 #if defined(MPM_KLANES)
   if (g2p)
     for (; p + MPM_KLANES <= A->n; p += MPM_KLANES) {
-      PetscInt  node[MPM_KLANES][MPM_KS];
-      PetscReal W[MPM_KLANES][MPM_KS], DW[MPM_KLANES][MPM_KS][MPM_KD], SG[MPM_KLANES][MPM_KS][MPM_KD];
+      PetscInt  node[MPM_KS][MPM_KLANES]; /* each entry's lanes side by side (MPMKStencilStrided) */
+      PetscReal W[MPM_KS][MPM_KLANES], DW[MPM_KS][MPM_KD][MPM_KLANES], SG[MPM_KLANES][MPM_KS][MPM_KD];
       PetscBool mirror[MPM_KLANES], any = PETSC_FALSE;
       for (PetscInt l = 0; l < MPM_KLANES; l++) {
-        mirror[l] = MPM_KEVAL(g, ctx, A, p + l, node[l], W[l], DW[l], SG[l], MPM_KS); /* a tensor-product family: always MPM_KS entries */
+        mirror[l] = MPM_KCAT(MPMKStencilStrided, MPM_KNAME, MPM_KD, d)(g, &A->x[(p + l) * MPM_KD], &node[0][l], &W[0][l], &DW[0][0][l], SG[l], MPM_KLANES);
         any       = (PetscBool)(any || mirror[l]);
       }
       if (!any)
         MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(A, nodes, p, node, W, DW, mode);
-      else /* a wall beside the group: each point on its own, with the stencil already evaluated */
+      else /* a wall beside the group: each point on its own, with the stencil already evaluated (its lane copied out) */
         for (PetscInt l = 0; l < MPM_KLANES; l++) {
+          PetscInt  nodel[MPM_KS];
+          PetscReal Wl[MPM_KS], DWl[MPM_KS][MPM_KD];
+          for (PetscInt a = 0; a < MPM_KS; a++) {
+            nodel[a] = node[a][l];
+            Wl[a]    = W[a][l];
+            for (PetscInt k = 0; k < MPM_KD; k++) DWl[a][k] = DW[a][k][l];
+          }
           if (mirror[l])
-            MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS, node[l], W[l], DW[l], SG[l], mode, 1);
+            MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS, nodel, Wl, DWl, SG[l], mode, 1);
           else
-            MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS, node[l], W[l], DW[l], SG[l], mode, 0);
+            MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS, nodel, Wl, DWl, SG[l], mode, 0);
         }
     }
 #endif
