@@ -18,14 +18,15 @@
 #  define MPM_KEVAL(g, ctx, A, p, node, W, DW, SG, ns) MPM_KSTENCIL(ctx, g, A, p, node, W, &(DW)[0][0], &(SG)[0][0], &(ns), MPM_KD)
 #else
 /* A tensor-product family: always MPM_KS entries (ns keeps that constant, so the loops over entries unroll). */
-#  define MPM_KEVAL(g, ctx, A, p, node, W, DW, SG, ns) MPM_KCAT(MPMKStencilStrided, MPM_KNAME, MPM_KD, d)(g, &(A)->x[(p)*MPM_KD], node, W, &(DW)[0][0], SG, 1)
+#  define MPM_KEVAL(g, ctx, A, p, node, W, DW, SG, ns) MPM_KCAT(MPMKStencilStrided, MPM_KNAME, MPM_KD, d)(g, &(A)->x[(p)*MPM_KD], node, W, &(DW)[0][0], SG, 1, MPM_KD, 1)
 
 /* N_I(x_p), grad N_I(x_p) and, for a point whose stencil reaches across a wall, the mirror signs of one point:
    MPMShapeEvaluate for this family and dimension. Returns whether a sign is -1 (SG filled); otherwise every sign is
    1, SG is left alone and the callers take their sign-free path (x * 1 = x: the same numbers). Entry a's node,
-   weight and gradient component k go to node[a ls], W[a ls] and DW[(a d + k) ls] (ls = 1: one point's arrays; ls =
-   MPM_KLANES: one lane of a group's, each entry's lanes side by side, so the lanes kernel loads them as vectors). */
-MPM_KINLINE PetscBool MPM_KCAT(MPMKStencilStrided, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const PetscReal *x, PetscInt *node, PetscReal *W, PetscReal *DW, PetscReal SG[MPM_KS][MPM_KD], const PetscInt ls)
+   weight and gradient component k go to node[a ls], W[a ls] and DW[a sa + k sk]: one point's arrays (ls = 1, sa =
+   d, sk = 1); one lane of a group's, each entry's lanes side by side, so the lanes kernel loads them as vectors (ls =
+   MPM_KLANES, sa = d ls, sk = ls); or one point's gradients component by component (ls = 1, sa = 1, sk = MPM_KS). */
+MPM_KINLINE PetscBool MPM_KCAT(MPMKStencilStrided, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const PetscReal *x, PetscInt *node, PetscReal *W, PetscReal *DW, PetscReal SG[MPM_KS][MPM_KD], const PetscInt ls, const PetscInt sa, const PetscInt sk)
 {
   PetscInt  idx[MPM_KD][MPM_KNB];
   PetscReal w[MPM_KD][MPM_KNB], dw[MPM_KD][MPM_KNB], sg[MPM_KD][MPM_KNB];
@@ -46,25 +47,25 @@ MPM_KINLINE PetscBool MPM_KCAT(MPMKStencilStrided, MPM_KNAME, MPM_KD, d)(const M
   for (PetscInt a = 0; a < MPM_KNB; a++) {
     node[a * ls] = idx[0][a];
     W[a * ls]    = w[0][a];
-    DW[a * ls]   = dw[0][a];
+    DW[a * sa]   = dw[0][a];
   }
 #  elif MPM_KD == 2
   for (PetscInt b = 0, s = 0; b < MPM_KNB; b++)
     for (PetscInt a = 0; a < MPM_KNB; a++, s++) {
-      node[s * ls]         = idx[1][b] * g->gm[0] + idx[0][a];
-      W[s * ls]            = w[0][a] * w[1][b];
-      DW[(2 * s) * ls]     = dw[0][a] * w[1][b];
-      DW[(2 * s + 1) * ls] = w[0][a] * dw[1][b];
+      node[s * ls]    = idx[1][b] * g->gm[0] + idx[0][a];
+      W[s * ls]       = w[0][a] * w[1][b];
+      DW[s * sa]      = dw[0][a] * w[1][b];
+      DW[s * sa + sk] = w[0][a] * dw[1][b];
     }
 #  else
   for (PetscInt c = 0, s = 0; c < MPM_KNB; c++)
     for (PetscInt b = 0; b < MPM_KNB; b++)
       for (PetscInt a = 0; a < MPM_KNB; a++, s++) {
-        node[s * ls]         = (idx[2][c] * g->gm[1] + idx[1][b]) * g->gm[0] + idx[0][a];
-        W[s * ls]            = w[0][a] * w[1][b] * w[2][c];
-        DW[(3 * s) * ls]     = dw[0][a] * w[1][b] * w[2][c];
-        DW[(3 * s + 1) * ls] = w[0][a] * dw[1][b] * w[2][c];
-        DW[(3 * s + 2) * ls] = w[0][a] * w[1][b] * dw[2][c];
+        node[s * ls]        = (idx[2][c] * g->gm[1] + idx[1][b]) * g->gm[0] + idx[0][a];
+        W[s * ls]           = w[0][a] * w[1][b] * w[2][c];
+        DW[s * sa]          = dw[0][a] * w[1][b] * w[2][c];
+        DW[s * sa + sk]     = w[0][a] * dw[1][b] * w[2][c];
+        DW[s * sa + 2 * sk] = w[0][a] * w[1][b] * dw[2][c];
       }
 #  endif
   if (mirror) {
@@ -272,6 +273,88 @@ MPM_KINLINE void MPM_KCAT(MPMKOne, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const
     MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 0);
 }
 
+#if !defined(MPM_KSTENCIL) && defined(__GNUC__) && defined(PETSC_USE_REAL_DOUBLE) && (MPM_KS & (MPM_KS - 1)) == 0
+#  define MPM_KRUNS
+/* One vector of a value per stencil entry (MPM_KS a power of two: the linear family's 2, 4 and 8 entries). */
+typedef PetscReal MPM_KCAT(MPMKRow, MPM_KNAME, MPM_KD, d) __attribute__((vector_size(MPM_KS * sizeof(PetscReal))));
+#  define MPM_KROW MPM_KCAT(MPMKRow, MPM_KNAME, MPM_KD, d)
+
+/* Points to grid by runs: consecutive points with the same stencil nodes (sorted points: a cell's points) sum into the
+   nodes' values held in registers, one vector per field with a lane per stencil entry, loaded at the run's start and
+   stored at its end. Each node gets the same additions in the same order as point by point (MPMKP2GPoint: the same
+   bits) without a load and a store per point and node. A point with a mirrored or a clamped entry (at a wall, at a
+   free face) ends the run and goes point by point (MPMKOne). */
+MPM_KINLINE void MPM_KCAT(MPMKP2GRuns, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const MPMTransferArgs *A, MPMNode *nodes, const int mode)
+{
+  const PetscInt  D     = MPM_KD;
+  const PetscBool force = (PetscBool)(mode & (MPM_P2G_STRESS | MPM_P2G_PRESSURE));
+  /* the span node[MPM_KS - 1] - node[0] of a stencil whose every direction has MPM_KNB distinct nodes */
+  const PetscInt span = (MPM_KNB - 1) * (1 + (D > 1 ? g->gm[0] : 0) + (D > 2 ? g->gm[0] * g->gm[1] : 0));
+  PetscInt       run[MPM_KS], open = 0;
+  MPM_KROW       am = {0}, aw = {0}, ap[MPM_KD] = {{0}}, af[MPM_KD] = {{0}};
+
+#  define MPM_KRUN_FLUSH()                                             \
+    do {                                                               \
+      for (PetscInt a = 0; open && a < MPM_KS; a++) {                  \
+        MPMNode *nd = &nodes[run[a]];                                  \
+        nd->m       = am[a];                                           \
+        nd->w2      = aw[a];                                           \
+        for (PetscInt k = 0; k < D; k++) nd->p[k] = ap[k][a];          \
+        for (PetscInt k = 0; force && k < D; k++) nd->f[k] = af[k][a]; \
+      }                                                                \
+      open = 0;                                                        \
+    } while (0)
+  for (PetscInt p = 0; p < A->n; p++) {
+    PetscInt  node[MPM_KS];
+    PetscReal W[MPM_KS], DW[MPM_KD][MPM_KS], SG[MPM_KS][MPM_KD];
+    const int mirror = MPM_KCAT(MPMKStencilStrided, MPM_KNAME, MPM_KD, d)(g, &A->x[p * D], node, W, &DW[0][0], SG, 1, 1, MPM_KS);
+    if (mirror || node[MPM_KS - 1] - node[0] != span) { /* a rare point: its stencil again, point by point */
+      MPM_KRUN_FLUSH();
+      MPM_KCAT(MPMKOne, MPM_KNAME, MPM_KD, d)(g, NULL, A, nodes, p, mode, 0);
+      continue;
+    }
+    if (!open || node[0] != run[0]) {
+      MPM_KRUN_FLUSH();
+      for (PetscInt a = 0; a < MPM_KS; a++) {
+        const MPMNode *nd = &nodes[node[a]];
+        run[a]            = node[a];
+        am[a]             = nd->m;
+        aw[a]             = nd->w2;
+        for (PetscInt k = 0; k < D; k++) ap[k][a] = nd->p[k];
+        for (PetscInt k = 0; force && k < D; k++) af[k][a] = nd->f[k];
+      }
+      open = 1;
+    }
+    { /* the operations of MPMKP2GPoint on every entry at once (sign 1) */
+      const PetscReal mp = A->m[p], Vp = A->V[p], P = (mode & MPM_P2G_PRESSURE) ? A->pr[p] + A->q[p] : 0.0;
+      PetscReal       vp[MPM_KD], Sp[MPM_KD * MPM_KD];
+      MPM_KROW        w, wm, dw[MPM_KD];
+      __builtin_memcpy(&w, W, sizeof(w));
+      for (PetscInt k = 0; k < D; k++) __builtin_memcpy(&dw[k], DW[k], sizeof(w));
+      for (PetscInt k = 0; k < D; k++) vp[k] = A->v[p * D + k];
+      if (mode & MPM_P2G_STRESS) {
+        for (PetscInt k = 0; k < D * D; k++) Sp[k] = A->S[p * D * D + k];
+        MPMStressForceMatrix(D, Vp, P, Sp);
+      }
+      wm = w * mp;
+      am += wm;
+      aw += w * w;
+      for (PetscInt k = 0; k < D; k++) ap[k] += 1.0 * wm * vp[k];
+      if (mode & MPM_P2G_STRESS)
+        for (PetscInt k = 0; k < D; k++) {
+          MPM_KROW sgr = {0};
+          for (PetscInt j = 0; j < D; j++) sgr += Sp[k * D + j] * dw[j];
+          af[k] += 1.0 * sgr;
+        }
+      else if (mode & MPM_P2G_PRESSURE)
+        for (PetscInt k = 0; k < D; k++) af[k] += 1.0 * Vp * P * dw[k];
+    }
+  }
+  MPM_KRUN_FLUSH();
+#  undef MPM_KRUN_FLUSH
+}
+#endif
+
 /* A kernel's loop over the points (g2p as in MPMKOne; no branch on it is left in the loop). Grid to points takes
    MPM_KLANES points at a time where none has a mirrored entry (a tensor-product family), else point by point (a group
    with a mirrored entry, at a wall, with the stencils it evaluated). Points to grid goes point by
@@ -283,6 +366,12 @@ MPM_KINLINE void MPM_KCAT(MPMKLoop, MPM_KNAME, MPM_KD, d)(const MPMGrid *gin, co
   const MPMTransferArgs Al = *Ain, *A = &Al;
   PetscInt              p = 0;
 
+#if defined(MPM_KRUNS)
+  if (!g2p && A->runs) { /* runs pay where a cell holds several points; with one they only add the loads and stores of a run's start and end */
+    MPM_KCAT(MPMKP2GRuns, MPM_KNAME, MPM_KD, d)(g, A, nodes, mode);
+    return;
+  }
+#endif
 #if defined(MPM_KLANES)
   if (g2p)
     for (; p + MPM_KLANES <= A->n; p += MPM_KLANES) {
@@ -290,7 +379,7 @@ MPM_KINLINE void MPM_KCAT(MPMKLoop, MPM_KNAME, MPM_KD, d)(const MPMGrid *gin, co
       PetscReal W[MPM_KS][MPM_KLANES], DW[MPM_KS][MPM_KD][MPM_KLANES], SG[MPM_KLANES][MPM_KS][MPM_KD];
       PetscBool mirror[MPM_KLANES], any = PETSC_FALSE;
       for (PetscInt l = 0; l < MPM_KLANES; l++) {
-        mirror[l] = MPM_KCAT(MPMKStencilStrided, MPM_KNAME, MPM_KD, d)(g, &A->x[(p + l) * MPM_KD], &node[0][l], &W[0][l], &DW[0][0][l], SG[l], MPM_KLANES);
+        mirror[l] = MPM_KCAT(MPMKStencilStrided, MPM_KNAME, MPM_KD, d)(g, &A->x[(p + l) * MPM_KD], &node[0][l], &W[0][l], &DW[0][0][l], SG[l], MPM_KLANES, MPM_KD * MPM_KLANES, MPM_KLANES);
         any       = (PetscBool)(any || mirror[l]);
       }
       if (!any)
@@ -341,3 +430,5 @@ MPM_KG2P(7)
 #undef MPM_KS
 #undef MPM_KEVAL
 #undef MPM_KLANE
+#undef MPM_KRUNS
+#undef MPM_KROW

@@ -274,7 +274,17 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
     const PetscReal *S = pts.f[MPM_FIELD_STRESS];
 
     if (mpm->kern && !body) { /* the specialised kernel, then the cell sums of the cell rule */
-      const MPMTransferArgs A = {.n = pts.n, .x = (PetscReal *)x, .v = (PetscReal *)v, .m = m, .V = V, .pr = pr, .q = q, .S = S, .F = mpm->track_F ? pts.f[MPM_FIELD_DEFGRAD] : NULL, .ds = mpm->shape->needs_F ? pts.f[MPM_FIELD_DOMAINSCALE] : NULL};
+      const MPMTransferArgs A = {.n    = pts.n,
+                                 .x    = (PetscReal *)x,
+                                 .v    = (PetscReal *)v,
+                                 .m    = m,
+                                 .V    = V,
+                                 .pr   = pr,
+                                 .q    = q,
+                                 .S    = S,
+                                 .F    = mpm->track_F ? pts.f[MPM_FIELD_DEFGRAD] : NULL,
+                                 .ds   = mpm->shape->needs_F ? pts.f[MPM_FIELD_DOMAINSCALE] : NULL,
+                                 .runs = (PetscBool)(mpm->ppc > 1)};
       mpm->kern->p2g[(force && !cellrule ? MPM_P2G_PRESSURE : 0) | (stress ? MPM_P2G_STRESS : 0)](g, mpm->shape->data, &A, node);
       if (cellrule && mpm->cell_volume != MPM_CELL_VOLUME_FULL)
         for (PetscInt p = 0; p < pts.n; p++) MPMCellRuleAdd(mpm, &x[p * d], V[p], pr[p] + q[p]);

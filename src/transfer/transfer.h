@@ -37,6 +37,7 @@ typedef struct {
   PetscReal (*expand)(void *, PetscInt, PetscReal, PetscReal, PetscReal); /* (ctx, p, e_p, eps, linear work) -> the pressure's work along the isentrope; NULL: always linear */
   void     *ectx;
   PetscReal threshold; /* relative expansion over the kick above which expand takes the pressure's work [-] */
+  PetscBool runs;      /* points to grid by runs of same-cell points (seeded with several points per cell) */
 } MPMTransferArgs;
 
 /* The point's force matrix -V_p sigma_p = V_p ((p + q) I - s_p) (d x d, row major) in place of its deviatoric stress
