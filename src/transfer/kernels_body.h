@@ -13,6 +13,18 @@
 #  define MPM_KS (MPM_KNB * MPM_KNB * MPM_KNB)
 #endif
 
+#if defined(MPM_KVECTOR) /* this dimension's lanes and their vector type (kernels.h) */
+#  if MPM_KD == 1
+#    define MPM_KLANES MPM_KLANES_1
+#  elif MPM_KD == 2
+#    define MPM_KLANES MPM_KLANES_2
+#  else
+#    define MPM_KLANES MPM_KLANES_3
+#  endif
+typedef PetscReal MPM_KCAT(MPMKVec, MPM_KNAME, MPM_KD, d) __attribute__((vector_size(MPM_KLANES * sizeof(PetscReal))));
+#  define MPM_KVEC MPM_KCAT(MPMKVec, MPM_KNAME, MPM_KD, d)
+#endif
+
 #if defined(MPM_KSTENCIL)
 /* The family's own stencil of point p (kernels.h): ns <= MPM_KS entries, the mirror signs SG filled only when one is -1. */
 #  define MPM_KEVAL(g, ctx, A, p, node, W, DW, SG, ns) MPM_KSTENCIL(ctx, g, A, p, node, W, &(DW)[0][0], &(SG)[0][0], &(ns), MPM_KD)
@@ -193,10 +205,10 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
 
 #if defined(MPM_KLANES)
 /* The vector whose lane l is x[l * stride]. */
-MPM_KINLINE MPMKVec MPM_KCAT(MPMKLanes, MPM_KNAME, MPM_KD, d)(const PetscReal *x, PetscInt stride)
+MPM_KINLINE MPM_KVEC MPM_KCAT(MPMKLanes, MPM_KNAME, MPM_KD, d)(const PetscReal *x, PetscInt stride)
 {
   PetscReal t[MPM_KLANES];
-  MPMKVec   v;
+  MPM_KVEC  v;
 
   for (PetscInt l = 0; l < MPM_KLANES; l++) t[l] = x[l * stride];
   __builtin_memcpy(&v, t, sizeof(v));
@@ -211,12 +223,12 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
 {
   const PetscInt  D        = MPM_KD;
   const PetscBool velocity = (PetscBool)(mode & MPM_G2P_VELOCITY), kinematics = (PetscBool)(mode & MPM_G2P_KINEMATICS), work = (PetscBool)(mode & MPM_G2P_WORK);
-  MPMKVec         vpic[MPM_KD] = {0}, dv[MPM_KD] = {0}, Lp[MPM_KD * MPM_KD] = {0}, Lb[MPM_KD * MPM_KD] = {0}, dv2 = {0}, R = {0}, vp[MPM_KD];
+  MPM_KVEC        vpic[MPM_KD] = {0}, dv[MPM_KD] = {0}, Lp[MPM_KD * MPM_KD] = {0}, Lb[MPM_KD * MPM_KD] = {0}, dv2 = {0}, R = {0}, vp[MPM_KD];
 
   for (PetscInt i = 0; i < D; i++) vp[i] = MPM_KLANE(&A->v[p0 * D + i], D);
   for (PetscInt a = 0; a < MPM_KS; a++) {
-    const MPMKVec w = MPM_KLANE(W[a], 1);
-    MPMKVec       dw[MPM_KD];
+    const MPM_KVEC w = MPM_KLANE(W[a], 1);
+    MPM_KVEC       dw[MPM_KD];
     for (PetscInt j = 0; j < D; j++) dw[j] = MPM_KLANE(DW[a][j], 1);
     for (PetscInt i = 0; i < D; i++) {
       PetscReal vl[MPM_KLANES], v0l[MPM_KLANES];
@@ -224,10 +236,10 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
         vl[l]  = nodes[node[a][l]].p[i];
         v0l[l] = nodes[node[a][l]].v0[i];
       }
-      const MPMKVec vI = MPM_KLANE(vl, 1), v0I = MPM_KLANE(v0l, 1);
+      const MPM_KVEC vI = MPM_KLANE(vl, 1), v0I = MPM_KLANE(v0l, 1);
       vpic[i] += w * vI;
       if (velocity || work) {
-        const MPMKVec dvI = vI - v0I;
+        const MPM_KVEC dvI = vI - v0I;
         if (velocity) {
           dv[i] += w * dvI;
           dv2 += w * dvI * dvI;
@@ -430,5 +442,7 @@ MPM_KG2P(7)
 #undef MPM_KS
 #undef MPM_KEVAL
 #undef MPM_KLANE
+#undef MPM_KLANES
+#undef MPM_KVEC
 #undef MPM_KRUNS
 #undef MPM_KROW
