@@ -216,6 +216,67 @@ MPM_KINLINE MPM_KVEC MPM_KCAT(MPMKLanes, MPM_KNAME, MPM_KD, d)(const PetscReal *
 }
 #  define MPM_KLANE(x, stride) MPM_KCAT(MPMKLanes, MPM_KNAME, MPM_KD, d)(x, stride)
 
+#  if defined(MPM_KBASIS_TENT)
+#    define MPM_KTENT
+/* The tent stencils (MPMShapeLinear1d) of the MPM_KLANES points p0, p0 + 1, ... in the lane-interleaved layout of
+   MPMKStencilStrided, in vector lanes: the same operations per lane (floor(xi) is the truncation for 0 <= xi), so the
+   same bits. Returns 0, the arrays partly filled, where some lane's xi is outside [0, cells) in a direction (a stencil
+   that reaches beyond the grid, which MPMKStencilStrided folds; or NaN). */
+typedef PetscInt MPM_KCAT(MPMKIVec, MPM_KNAME, MPM_KD, d) __attribute__((vector_size(MPM_KLANES * sizeof(PetscInt))));
+MPM_KINLINE int  MPM_KCAT(MPMKStencilTent, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const PetscReal *x, PetscInt p0, PetscInt node[MPM_KS][MPM_KLANES], PetscReal W[MPM_KS][MPM_KLANES], PetscReal DW[MPM_KS][MPM_KD][MPM_KLANES])
+{
+  typedef MPM_KCAT(MPMKIVec, MPM_KNAME, MPM_KD, d) ivec;
+  MPM_KVEC w[MPM_KD][2], dw[MPM_KD][2];
+  ivec     idx[MPM_KD][2];
+  int      out = 0;
+
+  for (PetscInt k = 0; k < MPM_KD; k++) {
+    const PetscReal hinv = g->hinv[k], nc = (PetscReal)g->cells[k];
+    const MPM_KVEC  xi = (MPM_KLANE(&x[p0 * MPM_KD + k], MPM_KD) - g->lo[k]) * hinv;
+    const ivec      i  = __builtin_convertvector(xi, ivec);
+    const MPM_KVEC  t  = xi - __builtin_convertvector(i, MPM_KVEC);
+    for (PetscInt l = 0; l < MPM_KLANES; l++) out |= !((xi[l] >= 0.0) & (xi[l] < nc));
+    w[k][0]   = 1.0 - t;
+    w[k][1]   = t;
+    dw[k][0]  = (MPM_KVEC){0} + (-1.0 * hinv);
+    dw[k][1]  = (MPM_KVEC){0} + (1.0 * hinv);
+    idx[k][0] = i - g->gs[k];
+    idx[k][1] = i + 1 - g->gs[k];
+  }
+  if (out) return 0;
+#    if MPM_KD == 1
+  for (PetscInt a = 0; a < 2; a++) {
+    __builtin_memcpy(node[a], &idx[0][a], sizeof(ivec));
+    __builtin_memcpy(W[a], &w[0][a], sizeof(MPM_KVEC));
+    __builtin_memcpy(DW[a][0], &dw[0][a], sizeof(MPM_KVEC));
+  }
+#    elif MPM_KD == 2
+  for (PetscInt b = 0, s = 0; b < 2; b++)
+    for (PetscInt a = 0; a < 2; a++, s++) {
+      const ivec     nd = idx[1][b] * g->gm[0] + idx[0][a];
+      const MPM_KVEC ws = w[0][a] * w[1][b], d0 = dw[0][a] * w[1][b], d1 = w[0][a] * dw[1][b];
+      __builtin_memcpy(node[s], &nd, sizeof(ivec));
+      __builtin_memcpy(W[s], &ws, sizeof(MPM_KVEC));
+      __builtin_memcpy(DW[s][0], &d0, sizeof(MPM_KVEC));
+      __builtin_memcpy(DW[s][1], &d1, sizeof(MPM_KVEC));
+    }
+#    else
+  for (PetscInt c = 0, s = 0; c < 2; c++)
+    for (PetscInt b = 0; b < 2; b++)
+      for (PetscInt a = 0; a < 2; a++, s++) {
+        const ivec     nd = (idx[2][c] * g->gm[1] + idx[1][b]) * g->gm[0] + idx[0][a];
+        const MPM_KVEC ws = w[0][a] * w[1][b] * w[2][c], d0 = dw[0][a] * w[1][b] * w[2][c], d1 = w[0][a] * dw[1][b] * w[2][c], d2 = w[0][a] * w[1][b] * dw[2][c];
+        __builtin_memcpy(node[s], &nd, sizeof(ivec));
+        __builtin_memcpy(W[s], &ws, sizeof(MPM_KVEC));
+        __builtin_memcpy(DW[s][0], &d0, sizeof(MPM_KVEC));
+        __builtin_memcpy(DW[s][1], &d1, sizeof(MPM_KVEC));
+        __builtin_memcpy(DW[s][2], &d2, sizeof(MPM_KVEC));
+      }
+#    endif
+  return 1;
+}
+#  endif
+
 /* MPM_KLANES points at once, none with a mirrored entry: the stencil sums of MPMKG2PPoint with one vector lane per point
    (the same operations in the same order in every lane, so the same bits as point by point), then each point's finish. */
 MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, const MPMNode *nodes, PetscInt p0, const PetscInt node[MPM_KS][MPM_KLANES], const PetscReal W[MPM_KS][MPM_KLANES], const PetscReal DW[MPM_KS][MPM_KD][MPM_KLANES],
@@ -316,10 +377,27 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GRuns, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, c
       }                                                                \
       open = 0;                                                        \
     } while (0)
+#  if defined(MPM_KTENT)
+  PetscInt  nodeg[MPM_KS][MPM_KLANES]; /* a group of MPM_KLANES points' tent stencils, evaluated in vector lanes */
+  PetscReal Wg[MPM_KS][MPM_KLANES], DWg[MPM_KS][MPM_KD][MPM_KLANES];
+  int       tent = 0;
+#  endif
   for (PetscInt p = 0; p < A->n; p++) {
     PetscInt  node[MPM_KS];
     PetscReal W[MPM_KS], DW[MPM_KD][MPM_KS], SG[MPM_KS][MPM_KD];
-    const int mirror = MPM_KCAT(MPMKStencilStrided, MPM_KNAME, MPM_KD, d)(g, &A->x[p * D], node, W, &DW[0][0], SG, 1, 1, MPM_KS);
+    int       mirror = 0;
+#  if defined(MPM_KTENT)
+    const PetscInt l = p % MPM_KLANES;
+    if (!l) tent = p + MPM_KLANES <= A->n && MPM_KCAT(MPMKStencilTent, MPM_KNAME, MPM_KD, d)(g, A->x, p, nodeg, Wg, DWg);
+    if (tent) /* the point's entries out of its lane: the same numbers */
+      for (PetscInt a = 0; a < MPM_KS; a++) {
+        node[a] = nodeg[a][l];
+        W[a]    = Wg[a][l];
+        for (PetscInt k = 0; k < D; k++) DW[k][a] = DWg[a][k][l];
+      }
+    else
+#  endif
+      mirror = MPM_KCAT(MPMKStencilStrided, MPM_KNAME, MPM_KD, d)(g, &A->x[p * D], node, W, &DW[0][0], SG, 1, 1, MPM_KS);
     if (mirror || node[MPM_KS - 1] - node[0] != span) { /* a rare point: its stencil again, point by point */
       MPM_KRUN_FLUSH();
       MPM_KCAT(MPMKOne, MPM_KNAME, MPM_KD, d)(g, NULL, A, nodes, p, mode, 0);
@@ -390,10 +468,13 @@ MPM_KINLINE void MPM_KCAT(MPMKLoop, MPM_KNAME, MPM_KD, d)(const MPMGrid *gin, co
       PetscInt  node[MPM_KS][MPM_KLANES]; /* each entry's lanes side by side (MPMKStencilStrided) */
       PetscReal W[MPM_KS][MPM_KLANES], DW[MPM_KS][MPM_KD][MPM_KLANES], SG[MPM_KLANES][MPM_KS][MPM_KD];
       PetscBool mirror[MPM_KLANES], any = PETSC_FALSE;
-      for (PetscInt l = 0; l < MPM_KLANES; l++) {
-        mirror[l] = MPM_KCAT(MPMKStencilStrided, MPM_KNAME, MPM_KD, d)(g, &A->x[(p + l) * MPM_KD], &node[0][l], &W[0][l], &DW[0][0][l], SG[l], MPM_KLANES, MPM_KD * MPM_KLANES, MPM_KLANES);
-        any       = (PetscBool)(any || mirror[l]);
-      }
+#  if defined(MPM_KTENT)
+      if (!MPM_KCAT(MPMKStencilTent, MPM_KNAME, MPM_KD, d)(g, A->x, p, node, W, DW)) /* near a wall or a free face: lane by lane, folded */
+#  endif
+        for (PetscInt l = 0; l < MPM_KLANES; l++) {
+          mirror[l] = MPM_KCAT(MPMKStencilStrided, MPM_KNAME, MPM_KD, d)(g, &A->x[(p + l) * MPM_KD], &node[0][l], &W[0][l], &DW[0][0][l], SG[l], MPM_KLANES, MPM_KD * MPM_KLANES, MPM_KLANES);
+          any       = (PetscBool)(any || mirror[l]);
+        }
       if (!any)
         MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(A, nodes, p, node, W, DW, mode);
       else /* a wall beside the group: each point on its own, with the stencil already evaluated (its lane copied out) */
@@ -442,6 +523,7 @@ MPM_KG2P(7)
 #undef MPM_KS
 #undef MPM_KEVAL
 #undef MPM_KLANE
+#undef MPM_KTENT
 #undef MPM_KLANES
 #undef MPM_KVEC
 #undef MPM_KRUNS

@@ -18,6 +18,7 @@ static void MPMShapeBasis1d_Linear(void *ctx, PetscReal xi, PetscInt *first, Pet
 #define MPM_KNAME Linear
 #define MPM_KNB 2
 #define MPM_KBASIS MPMShapeLinear1d
+#define MPM_KBASIS_TENT /* the kernels may evaluate it in vector lanes */
 #include "../../transfer/kernels.h"
 
 PetscErrorCode MPMShapeCreate_Linear(MPMShape shape)
