@@ -19,16 +19,21 @@
 #endif
 /* A tensor-product family's grid-to-points kernel takes MPM_KLANES points at once, one vector lane each (GCC and clang
    vector extensions: the same IEEE operations per lane, no contraction with -ffp-contract=off, so the same bits).
-   The lanes per dimension, MPM_KLANES_<d>: where the target has 32 vector registers (AVX-512), eight in 1D (its 6
-   accumulators fit in eight-double registers; 1.23 times faster than four on weak Sod) and four in 2D and 3D (eight
-   ran slower on the 2D bar and the 3D B-spline block: the 26 accumulators of a 3D point fill the registers), else
-   two (16 registers: four lanes spill, measured slower). */
+   The lanes per dimension, MPM_KLANES_<d>, measured: where the target has 32 vector registers (AVX-512), eight in 1D
+   (1.2 times faster than four on weak Sod), four in 2D (eight ran 0.91 times as fast on the 2D bar), and in 3D eight
+   for the tent family (its stencils in vector lanes, MPM_KBASIS_TENT: 1.05 on the 3D block) and four for the others
+   (eight: 0.95 on the B-spline block, whose 27-entry stencils are evaluated lane by lane); else two (16 registers:
+   four lanes spill, measured slower). */
 #if defined(__GNUC__) && defined(PETSC_USE_REAL_DOUBLE) && !defined(MPM_KSTENCIL)
 #  define MPM_KVECTOR
 #  if defined(__AVX512VL__)
 #    define MPM_KLANES_1 8
 #    define MPM_KLANES_2 4
-#    define MPM_KLANES_3 4
+#    if defined(MPM_KBASIS_TENT)
+#      define MPM_KLANES_3 8
+#    else
+#      define MPM_KLANES_3 4
+#    endif
 #  else
 #    define MPM_KLANES_1 2
 #    define MPM_KLANES_2 2
