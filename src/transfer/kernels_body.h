@@ -277,6 +277,17 @@ MPM_KINLINE int  MPM_KCAT(MPMKStencilTent, MPM_KNAME, MPM_KD, d)(const MPMGrid *
 }
 #  endif
 
+/* Lane l of a group's lane-interleaved stencil as one point's arrays. */
+MPM_KINLINE void MPM_KCAT(MPMKLaneOut, MPM_KNAME, MPM_KD, d)(PetscInt l, const PetscInt node[MPM_KS][MPM_KLANES], const PetscReal W[MPM_KS][MPM_KLANES], const PetscReal DW[MPM_KS][MPM_KD][MPM_KLANES], PetscInt nodel[MPM_KS], PetscReal Wl[MPM_KS],
+                                                             PetscReal DWl[MPM_KS][MPM_KD])
+{
+  for (PetscInt a = 0; a < MPM_KS; a++) {
+    nodel[a] = node[a][l];
+    Wl[a]    = W[a][l];
+    for (PetscInt k = 0; k < MPM_KD; k++) DWl[a][k] = DW[a][k][l];
+  }
+}
+
 /* MPM_KLANES points at once, none with a mirrored entry: the stencil sums of MPMKG2PPoint with one vector lane per point
    (the same operations in the same order in every lane, so the same bits as point by point), then each point's finish. */
 MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, const MPMNode *nodes, PetscInt p0, const PetscInt node[MPM_KS][MPM_KLANES], const PetscReal W[MPM_KS][MPM_KLANES], const PetscReal DW[MPM_KS][MPM_KD][MPM_KLANES],
@@ -462,6 +473,23 @@ MPM_KINLINE void MPM_KCAT(MPMKLoop, MPM_KNAME, MPM_KD, d)(const MPMGrid *gin, co
     return;
   }
 #endif
+#if defined(MPM_KTENT)
+  if (!g2p) /* point by point, each group's tent stencils in vector lanes */
+    for (; p + MPM_KLANES <= A->n; p += MPM_KLANES) {
+      PetscInt  node[MPM_KS][MPM_KLANES];
+      PetscReal W[MPM_KS][MPM_KLANES], DW[MPM_KS][MPM_KD][MPM_KLANES];
+      if (!MPM_KCAT(MPMKStencilTent, MPM_KNAME, MPM_KD, d)(g, A->x, p, node, W, DW)) {
+        for (PetscInt l = 0; l < MPM_KLANES; l++) MPM_KCAT(MPMKOne, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, p + l, mode, 0);
+        continue;
+      }
+      for (PetscInt l = 0; l < MPM_KLANES; l++) {
+        PetscInt  nodel[MPM_KS];
+        PetscReal Wl[MPM_KS], DWl[MPM_KS][MPM_KD];
+        MPM_KCAT(MPMKLaneOut, MPM_KNAME, MPM_KD, d)(l, node, W, DW, nodel, Wl, DWl);
+        MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS, nodel, Wl, DWl, NULL, mode, 0);
+      }
+    }
+#endif
 #if defined(MPM_KLANES)
   if (g2p)
     for (; p + MPM_KLANES <= A->n; p += MPM_KLANES) {
@@ -481,11 +509,7 @@ MPM_KINLINE void MPM_KCAT(MPMKLoop, MPM_KNAME, MPM_KD, d)(const MPMGrid *gin, co
         for (PetscInt l = 0; l < MPM_KLANES; l++) {
           PetscInt  nodel[MPM_KS];
           PetscReal Wl[MPM_KS], DWl[MPM_KS][MPM_KD];
-          for (PetscInt a = 0; a < MPM_KS; a++) {
-            nodel[a] = node[a][l];
-            Wl[a]    = W[a][l];
-            for (PetscInt k = 0; k < MPM_KD; k++) DWl[a][k] = DW[a][k][l];
-          }
+          MPM_KCAT(MPMKLaneOut, MPM_KNAME, MPM_KD, d)(l, node, W, DW, nodel, Wl, DWl);
           if (mirror[l])
             MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS, nodel, Wl, DWl, SG[l], mode, 1);
           else
