@@ -457,9 +457,11 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GRuns, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, c
 #endif
 
 /* A kernel's loop over the points (g2p as in MPMKOne; no branch on it is left in the loop). Grid to points takes
-   MPM_KLANES points at a time where none has a mirrored entry (a tensor-product family), else point by point (a group
-   with a mirrored entry, at a wall, with the stencils it evaluated). Points to grid goes point by
-   point: the same in lanes (the products in lanes, the node sums in point order) ran 1.2 times slower in 3D. */
+   MPM_KLANES points at a time where none has a mirrored entry (a tensor-product family; the linear family's stencils
+   in vector lanes, MPMKStencilTent), else point by point (a group with a mirrored entry, at a wall, with the stencils
+   it evaluated). Points to grid goes by runs of same-cell points where the scene seeds several per cell (MPMKP2GRuns),
+   else point by point (the linear family's stencils of a group in lanes): its node sums stay in point order (the
+   products in lanes with the sums in point order ran 1.2 times slower in 3D). */
 MPM_KINLINE void MPM_KCAT(MPMKLoop, MPM_KNAME, MPM_KD, d)(const MPMGrid *gin, const void *ctx, const MPMTransferArgs *Ain, MPMNode *nodes, const int mode, const int g2p)
 {
   /* local copies: the grid's and the arguments' doubles (lo, h, dt, ...) stay in registers across the node updates */
