@@ -61,23 +61,31 @@ MPM_CPDI_INLINE void CPDIDomain(const Shape_CPDI *cp, PetscInt d, const PetscRea
   }
 }
 
-/* Corner c of the domain x + R s_c: the gradient factor gs = R^-T s_c (Ri NULL: not formed) and, per direction, the first
-   of the two nodes of the linear basis at the corner (a global index, not yet folded onto the grid) and their weights. */
-MPM_CPDI_INLINE void CPDICorner(const MPMGrid *g, const PetscReal x[], const PetscReal R[], const PetscReal Ri[], PetscInt c, PetscReal gs[], PetscInt first[], PetscReal w[][2], const PetscInt d)
+/* The corners c of the domain x + R s_c: the gradient factors gs[c] = R^-T s_c (Ri NULL: not formed) and, per direction,
+   the first of the two nodes of the linear basis at each corner (a global index, not yet folded onto the grid) and their
+   weights. Direction by direction over the corners, so that the corners' divisions by h go in vector lanes (the same
+   operations per corner, the same bits). */
+MPM_CPDI_INLINE void CPDICorners(const MPMGrid *g, const PetscReal x[], const PetscReal R[], const PetscReal Ri[], PetscReal gs[][MPM_MAX_DIM], PetscInt first[][MPM_MAX_DIM], PetscReal w[][MPM_MAX_DIM][2], const PetscInt d)
 {
-  PetscReal s[MPM_MAX_DIM], xc[MPM_MAX_DIM];
+  const PetscInt nc = 1 << d;
 
-  for (PetscInt k = 0; k < d; k++) s[k] = (c >> k) & 1 ? 1.0 : -1.0;
-  for (PetscInt j = 0; Ri && j < d; j++) {
-    gs[j] = 0.0;
-    for (PetscInt k = 0; k < d; k++) gs[j] += Ri[k * d + j] * s[k]; /* (R^-T s)_j */
-  }
+  for (PetscInt c = 0; Ri && c < nc; c++)
+    for (PetscInt j = 0; j < d; j++) {
+      gs[c][j] = 0.0;
+      for (PetscInt k = 0; k < d; k++) gs[c][j] += Ri[k * d + j] * ((c >> k) & 1 ? 1.0 : -1.0); /* (R^-T s)_j */
+    }
   for (PetscInt i = 0; i < d; i++) {
-    PetscInt  n;
-    PetscReal dw[2];
-    xc[i] = x[i];
-    for (PetscInt k = 0; k < d; k++) xc[i] += R[i * d + k] * s[k];
-    MPMShapeLinear1d((xc[i] - g->lo[i]) / g->h[i], &first[i], &n, w[i], dw);
+    PetscReal xi[8];
+    for (PetscInt c = 0; c < nc; c++) {
+      PetscReal xc = x[i];
+      for (PetscInt k = 0; k < d; k++) xc += R[i * d + k] * ((c >> k) & 1 ? 1.0 : -1.0);
+      xi[c] = (xc - g->lo[i]) / g->h[i];
+    }
+    for (PetscInt c = 0; c < nc; c++) {
+      PetscInt  n;
+      PetscReal dw[2];
+      MPMShapeLinear1d(xi[c], &first[c][i], &n, w[c][i], dw);
+    }
   }
 }
 
@@ -100,7 +108,7 @@ MPM_CPDI_INLINE PetscInt CPDIStencil(const Shape_CPDI *cp, const MPMGrid *g, con
   PetscBool       merge = PETSC_TRUE;
 
   CPDIDomain(cp, d, F, R, grad ? Ri : NULL);
-  for (PetscInt c = 0; c < nc; c++) CPDICorner(g, x, R, grad ? Ri : NULL, c, gs[c], first[c], w[c], d);
+  CPDICorners(g, x, R, grad ? Ri : NULL, gs, first, w, d);
   for (PetscInt i = 0; i < d; i++) {
     PetscInt hi = first[0][i];
     lo[i]       = first[0][i];
