@@ -123,8 +123,8 @@ MPM_CPDI_INLINE PetscInt CPDIStencil(const Shape_CPDI *cp, const MPMGrid *g, con
   }
   *mirror = PETSC_FALSE;
   if (merge) {
-    PetscInt  idx[MPM_MAX_DIM][4];
-    PetscReal sg[MPM_MAX_DIM][4];
+    PetscInt  idx[MPM_MAX_DIM][4] = {{0}}; /* the directions beyond d read as 0 (GCC cannot tell that they are not read) */
+    PetscReal sg[MPM_MAX_DIM][4]  = {{0}};
 
     for (PetscInt e = 0; e < nb; e++) {
       W[e] = 0.0;
@@ -157,17 +157,19 @@ MPM_CPDI_INLINE PetscInt CPDIStencil(const Shape_CPDI *cp, const MPMGrid *g, con
       MPMShapeFold1d(g, i, n[i], idx[i], sg[i]);
       for (PetscInt a = 0; a < n[i]; a++) *mirror = (PetscBool)(*mirror || sg[i][a] < 0.0);
     }
-    {
-      PetscInt a[MPM_MAX_DIM] = {0, 0, 0}; /* entry e's position in the box, the first direction fastest */
-      for (PetscInt e = 0; e < nb; e++) {
-        PetscInt nd = 0;
-        for (PetscInt i = d - 1; i >= 0; i--) nd = nd * g->gm[i] + idx[i][a[i]];
-        node[e] = nd;
-        if (*mirror && grad)
-          for (PetscInt i = 0; i < d; i++) SG[e * ds + i] = sg[i][a[i]];
-        for (PetscInt i = 0; i < d; i++) {
-          if (++a[i] < n[i]) break;
-          a[i] = 0;
+    { /* entry e = (a_0, a_1, a_2), the first direction fastest; the directions beyond d: one position, offset 0 */
+      const PetscInt n1 = d > 1 ? n[1] : 1, n2 = d > 2 ? n[2] : 1;
+      PetscInt       e = 0;
+      for (PetscInt a2 = 0; a2 < n2; a2++) {
+        const PetscInt o2 = d > 2 ? idx[2][a2] : 0;
+        for (PetscInt a1 = 0; a1 < n1; a1++) {
+          const PetscInt o1 = (d > 1 ? o2 * g->gm[1] + idx[1][a1] : 0) * g->gm[0];
+          for (PetscInt a0 = 0; a0 < n[0]; a0++, e++) {
+            const PetscInt a[MPM_MAX_DIM] = {a0, a1, a2};
+            node[e]                       = o1 + idx[0][a0];
+            if (*mirror && grad)
+              for (PetscInt i = 0; i < d; i++) SG[e * ds + i] = sg[i][a[i]];
+          }
         }
       }
     }
