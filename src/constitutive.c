@@ -101,7 +101,7 @@ static inline __attribute__((always_inline)) PetscErrorCode MPMConstitutiveChunk
     for (PetscInt i = 0; i < n; i++) any |= dvol[i] * rho[MPM_CP(i)] > thr; /* one pass free of branches: the loop below only where a point expands that much */
     for (PetscInt i = 0; any && i < n; i++) {
       const PetscInt p = MPM_CP(i);
-      if (dvol[i] * rho[p] > mpm->isentrope_threshold) {
+      if (dvol[i] * rho[p] > thr) {
         const PetscReal delin = -pr[p] * dvol[i]; /* the linear update's pressure work, already in e1 */
         e1[i] += MPMIsentropeWork(mpm, E, m[p], rho[p], e[p], rho1[i], delin) - delin;
       }

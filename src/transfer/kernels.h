@@ -19,11 +19,13 @@
 #endif
 /* A tensor-product family's grid-to-points kernel takes MPM_KLANES points at once, one vector lane each (GCC and clang
    vector extensions: the same IEEE operations per lane, no contraction with -ffp-contract=off, so the same bits).
-   The lanes per dimension, MPM_KLANES_<d>, measured: where the target has 32 vector registers (AVX-512), eight in 1D
-   (1.2 times faster than four on weak Sod), four in 2D (eight ran 0.91 times as fast on the 2D bar), and in 3D eight
-   for the tent family (its stencils in vector lanes, MPM_KBASIS_TENT: 1.05 on the 3D block) and four for the others
-   (eight: 0.95 on the B-spline block, whose 27-entry stencils are evaluated lane by lane); else two (16 registers:
-   four lanes spill, measured slower). */
+   The lanes per dimension, MPM_KLANES_<d>, measured where the target has 32 vector registers (AVX-512):
+     1D  eight (1.2 times faster than four on weak Sod);
+     2D  four (eight: 0.91 on the 2D bar, 1.03 on 2D gas problems with linear shapes; the larger loss decides);
+     3D  eight for the tent family (its stencils in vector lanes, MPM_KBASIS_TENT: 1.05 on the 3D block, 1.01 to 1.04
+         on a linear 3D Sedov blast and anvil, not tuned on), four for the others (eight: 0.95 on the B-spline block,
+         whose 27-entry stencils are evaluated lane by lane).
+   Elsewhere two (16 registers: four lanes spill, measured slower). */
 #if defined(__GNUC__) && defined(PETSC_USE_REAL_DOUBLE) && !defined(MPM_KSTENCIL)
 #  define MPM_KVECTOR
 #  if defined(__AVX512VL__)
