@@ -380,6 +380,27 @@ PetscErrorCode MPMGridGhostSum(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The ghost sum of f_I alone (the MUSL remap's momentum, fused into grid to points): every other value of the ghost
+   nodes is zeroed first, so that the owners' m_I, v_I, v_I^n gain zeros, then the ghost sum. The ghosts hold their
+   owners' values again after the next MPMGridGhostFill. */
+PetscErrorCode MPMGridGhostSumForce(MPM mpm)
+{
+  MPMNode *node;
+
+  PetscFunctionBegin;
+  if (!mpm->ghost_sf) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(VecGetArray(mpm->lnodes, (PetscScalar **)&node));
+  for (PetscInt i = 0; i < mpm->nghost; i++) {
+    MPMNode *nd = &node[mpm->ghost[i]];
+    MPMNode  f  = {0};
+    for (PetscInt k = 0; k < 3; k++) f.f[k] = nd->f[k];
+    *nd = f;
+  }
+  PetscCall(VecRestoreArray(mpm->lnodes, (PetscScalar **)&node));
+  PetscCall(MPMGridGhostSum(mpm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Fills the ghost nodes of the ghosted local nodal vector from their owners. */
 PetscErrorCode MPMGridGhostFill(MPM mpm)
 {
@@ -447,6 +468,25 @@ static PetscErrorCode MPMGridZeroForScatterRanks(MPM mpm, const PetscInt lo[], c
     mpm->lbox_lo[k] = !any ? 0 : (tne ? PetscMin(tl, sl) : sl);
     mpm->lbox_hi[k] = !any ? 0 : (tne ? PetscMax(th, sh) : sh);
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Zeroes f_I where a scatter from the points of the last MPMGridZeroForScatter (which have not moved since) can reach,
+   and at every ghost node: f_I then takes a sum over the points (MPMGridGhostSumForce). One rank: the box; several: the
+   local box MPM::lbox and the ghost nodes. */
+PetscErrorCode MPMGridZeroForce(MPM mpm, MPMNode *node)
+{
+  const MPMGrid  *g  = &mpm->grid;
+  const PetscBool r  = (PetscBool)(mpm->ghost_sf != NULL);
+  const PetscInt *lo = r ? mpm->lbox_lo : mpm->box_lo, *hi = r ? mpm->lbox_hi : mpm->box_hi, n0 = r ? g->gm[0] : g->xm[0], n1 = r ? g->gm[1] : g->xm[1];
+
+  PetscFunctionBegin;
+  for (PetscInt k2 = lo[2]; k2 < hi[2]; k2++)
+    for (PetscInt k1 = lo[1]; k1 < hi[1]; k1++)
+      for (PetscInt k0 = lo[0]; k0 < hi[0]; k0++)
+        for (PetscInt k = 0; k < 3; k++) node[(k2 * n1 + k1) * n0 + k0].f[k] = 0.0;
+  for (PetscInt i = 0; i < mpm->nghost; i++)
+    for (PetscInt k = 0; k < 3; k++) node[mpm->ghost[i]].f[k] = 0.0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

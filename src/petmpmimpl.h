@@ -188,6 +188,7 @@ struct _p_MPM {
   MPMShape                  shape;
   MPMTransferKernel         transfer_kernel; /* -mpm_transfer_kernel                                  */
   const MPMTransferKernels *kern;            /* the shape's specialised kernels for d, or NULL: generic */
+  PetscBool                 remap_fused;     /* MUSL with kern: grid to points scatters the remap's momentum into f (g2p_remap) */
   MPMUpdateType             update;          /* -mpm_update_type                                                  */
   PetscReal                 alpha;           /* FLIP fraction: v_p <- alpha (v_p + dv) + (1 - alpha) v_pic [-]     */
   PetscInt                  affine;          /* -mpm_update_type apic: the point field of C_p, else -1             */
@@ -320,6 +321,8 @@ PETSC_INTERN PetscErrorCode MPMLogRegister(MPM);
 PETSC_INTERN PetscInt       MPMFieldBlockSize(PetscInt, PetscInt);
 PETSC_INTERN PetscErrorCode MPMCreateGrid(MPM);
 PETSC_INTERN PetscErrorCode MPMGridGhostSum(MPM);
+PETSC_INTERN PetscErrorCode MPMGridGhostSumForce(MPM);
+PETSC_INTERN PetscErrorCode MPMGridZeroForce(MPM, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMGridOwnedToGlobal(MPM);
 PETSC_INTERN PetscErrorCode MPMGhostExchange(MPM, MPI_Datatype, PetscScalar *, PetscBool, PetscBool);
 PETSC_INTERN PetscErrorCode MPMRebalance(MPM);
@@ -360,7 +363,7 @@ PETSC_INTERN void           MPMPointEOSUpdate(MPM, MPMPoints *, PetscInt, PetscR
 PETSC_INTERN void           MPMPointChangeVolume(MPM, MPMPoints *, PetscInt, PetscReal, PetscReal);
 PETSC_INTERN PetscErrorCode MPMViscosityModuleApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMScatter(MPM, PetscBool, PetscReal);
-PETSC_INTERN PetscErrorCode MPMGather(MPM, PetscReal, PetscReal, PetscBool, PetscBool);
+PETSC_INTERN PetscErrorCode MPMGather(MPM, PetscReal, PetscReal, PetscBool, PetscBool, PetscBool);
 PETSC_INTERN PetscErrorCode MPMParticlesToGrid(MPM, const MPMStepContext *);
 PETSC_INTERN PetscErrorCode MPMGridToParticles(MPM, const MPMStepContext *);
 PETSC_INTERN PetscErrorCode MPMConstitutive(MPM, PetscReal);

@@ -1,7 +1,10 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* MUSL remap module (point phase MPM_PHASE_POINT_KINEMATICS; -mpm_scheme musl, Sulsky et al. 1994, Nairn 2003):
    map the updated point momenta back to the grid, v_I = sum_p N_I m_p v_p / m_I, apply the nodal velocity modules
-   (walls), and move the points and compute L_p with that velocity. */
+   (walls), and move the points and compute L_p with that velocity. With the specialised kernels the momenta are summed
+   in grid to points, each point's as soon as its new velocity is formed (MPM::remap_fused: one pass over the points and
+   their stencils instead of two, and m_I is kept), into f_I, which the kick has used; the same sums in the same order
+   as the scatter here, so the same bits. */
 #include "../petmpmimpl.h"
 
 PetscErrorCode MPMRemapApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
@@ -10,12 +13,22 @@ PetscErrorCode MPMRemapApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
   MPMNode       *node;
 
   PetscFunctionBegin;
-  PetscCall(MPMScatter(mpm, PETSC_FALSE, ctx->tn));
-  PetscCall(VecGetArray(mpm->lnodes, (PetscScalar **)&node));
-  MPM_FOR_BOX_NODES(mpm, c)
-  {
-    const PetscReal minv = node[c].m > 0.0 ? 1.0 / node[c].m : 0.0;
-    for (PetscInt k = 0; k < d; k++) node[c].p[k] *= minv;
+  if (mpm->remap_fused) { /* grid to points has summed the momenta into f_I; m_I is the force phase's (the points have not moved) */
+    PetscCall(MPMGridGhostSumForce(mpm));
+    PetscCall(VecGetArray(mpm->lnodes, (PetscScalar **)&node));
+    MPM_FOR_BOX_NODES(mpm, c)
+    {
+      const PetscReal minv = node[c].m > 0.0 ? 1.0 / node[c].m : 0.0;
+      for (PetscInt k = 0; k < d; k++) node[c].p[k] = node[c].f[k] * minv;
+    }
+  } else {
+    PetscCall(MPMScatter(mpm, PETSC_FALSE, ctx->tn));
+    PetscCall(VecGetArray(mpm->lnodes, (PetscScalar **)&node));
+    MPM_FOR_BOX_NODES(mpm, c)
+    {
+      const PetscReal minv = node[c].m > 0.0 ? 1.0 / node[c].m : 0.0;
+      for (PetscInt k = 0; k < d; k++) node[c].p[k] *= minv;
+    }
   }
   PetscCall(VecRestoreArray(mpm->lnodes, (PetscScalar **)&node));
   {
@@ -24,6 +37,6 @@ PetscErrorCode MPMRemapApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
     PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_VELOCITY, &rctx));
   }
   PetscCall(MPMGridGhostFill(mpm));
-  PetscCall(MPMGather(mpm, ctx->dt, ctx->dt, PETSC_FALSE, PETSC_TRUE));
+  PetscCall(MPMGather(mpm, ctx->dt, ctx->dt, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

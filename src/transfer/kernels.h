@@ -55,13 +55,14 @@
 #include "kernels_body.h"
 #undef MPM_KD
 
-#define MPM_KTABLE(D)                                                                                                                                                                                                         \
-  {                                                                                                                                                                                                                           \
-    {MPM_KCAT(MPMP2G, MPM_KNAME, D, _0), MPM_KCAT(MPMP2G, MPM_KNAME, D, _1), MPM_KCAT(MPMP2G, MPM_KNAME, D, _2), MPM_KCAT(MPMP2G, MPM_KNAME, D, _3)},                                                                         \
-    {                                                                                                                                                                                                                         \
-      MPM_KCAT(MPMG2P, MPM_KNAME, D, _0), MPM_KCAT(MPMG2P, MPM_KNAME, D, _1), MPM_KCAT(MPMG2P, MPM_KNAME, D, _2), MPM_KCAT(MPMG2P, MPM_KNAME, D, _3), MPM_KCAT(MPMG2P, MPM_KNAME, D, _4), MPM_KCAT(MPMG2P, MPM_KNAME, D, _5), \
-        MPM_KCAT(MPMG2P, MPM_KNAME, D, _6), MPM_KCAT(MPMG2P, MPM_KNAME, D, _7)                                                                                                                                                \
-    }                                                                                                                                                                                                                         \
+#define MPM_KTABLE(D)                                                                                                                                   \
+  {                                                                                                                                                     \
+    {MPM_KCAT(MPMP2G, MPM_KNAME, D, _0), MPM_KCAT(MPMP2G, MPM_KNAME, D, _1), MPM_KCAT(MPMP2G, MPM_KNAME, D, _2), MPM_KCAT(MPMP2G, MPM_KNAME, D, _3)},   \
+      {MPM_KCAT(MPMG2P, MPM_KNAME, D, _0), MPM_KCAT(MPMG2P, MPM_KNAME, D, _1), MPM_KCAT(MPMG2P, MPM_KNAME, D, _2), MPM_KCAT(MPMG2P, MPM_KNAME, D, _3),  \
+       MPM_KCAT(MPMG2P, MPM_KNAME, D, _4), MPM_KCAT(MPMG2P, MPM_KNAME, D, _5), MPM_KCAT(MPMG2P, MPM_KNAME, D, _6), MPM_KCAT(MPMG2P, MPM_KNAME, D, _7)}, \
+    {                                                                                                                                                   \
+      MPM_KCAT(MPMG2P, MPM_KNAME, D, _9), MPM_KCAT(MPMG2P, MPM_KNAME, D, _13)                                                                           \
+    }                                                                                                                                                   \
   }
 #define MPM_KTABLES_(name) static const MPMTransferKernels MPMTransferKernels_##name[3] = {MPM_KTABLE(1), MPM_KTABLE(2), MPM_KTABLE(3)};
 #define MPM_KTABLES(name) MPM_KTABLES_(name)

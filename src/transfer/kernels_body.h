@@ -136,6 +136,25 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
   }
 }
 
+/* The MUSL remap's momentum of point p fused into grid to points (mode MPM_G2P_REMAP), after its finish: f_I += N_I m_p v_p
+   with its new velocity, MPMKP2GPoint's (mv)_I products in point order (the same bits as the remap's own scatter). Entry
+   a's node and weight are node[a ls] and W[a ls] (one point's arrays, ls = 1, or one lane of a group's); SG is read only
+   when mirror is set. */
+MPM_KINLINE void MPM_KCAT(MPMKRemapPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, MPMNode *nodes, PetscInt p, const PetscInt ns, const PetscInt *node, const PetscReal *W, const PetscReal SG[MPM_KS][MPM_KD], const int mirror,
+                                                                const PetscInt ls)
+{
+  const PetscInt  D  = MPM_KD;
+  const PetscReal mp = A->m[p];
+  PetscReal       vp[MPM_KD];
+
+  for (PetscInt k = 0; k < D; k++) vp[k] = A->v[p * D + k];
+  for (PetscInt a = 0; a < ns; a++) {
+    MPMNode        *nd = &nodes[node[a * ls]];
+    const PetscReal wm = W[a * ls] * mp;
+    for (PetscInt k = 0; k < D; k++) nd->f[k] += (mirror ? SG[a][k] : 1.0) * wm * vp[k];
+  }
+}
+
 /* The grid velocity back to one point, by mode (see MPMGather for the formulas): the finish, from the point's stencil sums
    (vpic = sum N v_I, dv = sum N dv_I, dv2 = sum N |dv_I|^2, R, Lp = sum v_I (x) grad N, Lb = sum (2 v_I - dv_I) (x) grad N). */
 MPM_KINLINE void MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, PetscInt p, const PetscReal vpic[MPM_KD], const PetscReal dv[MPM_KD], PetscReal dv2, PetscReal R, const PetscReal Lp[MPM_KD * MPM_KD],
@@ -201,6 +220,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
     }
   }
   MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p, vpic, dv, dv2, R, Lp, Lb, mode);
+  if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKRemapPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p, ns, node, W, SG, mirror, 1);
 }
 
 #if defined(MPM_KLANES)
@@ -335,6 +355,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
       Lbl[i] = Lb[i][l];
     }
     MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p0 + l, vpicl, dvl, dv2[l], R[l], Lpl, Lbl, mode);
+    if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKRemapPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p0 + l, MPM_KS, &node[0][l], &W[0][l], NULL, 0, MPM_KLANES);
   }
 }
 #endif
@@ -544,6 +565,14 @@ MPM_KG2P(4)
 MPM_KG2P(5)
 MPM_KG2P(6)
 MPM_KG2P(7)
+#define MPM_KG2PREMAP(M) /* velocity (and work) with the remap's momentum: g2p_remap */                                              \
+  static void MPM_KCAT(MPMG2P, MPM_KNAME, MPM_KD, _##M)(const MPMGrid *g, const void *ctx, const MPMTransferArgs *A, MPMNode *nodes) \
+  {                                                                                                                                  \
+    MPM_KCAT(MPMKLoop, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, M, 1);                                                                \
+  }
+MPM_KG2PREMAP(9)
+MPM_KG2PREMAP(13)
+#undef MPM_KG2PREMAP
 #undef MPM_KP2G
 #undef MPM_KG2P
 #undef MPM_KS

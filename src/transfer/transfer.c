@@ -448,6 +448,8 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
 /* Gathers the grid velocity (stored in MPMNode::p after the advance) to the points:
    velocity:   v_p <- alpha (v_p + sum N_I (v_I - v_I^n)) + (1 - alpha) sum N_I v_I,
    kinematics: x_p += dt sum N_I v_I,  L_p = sum v_I (x) grad N_I.
+   remap (MUSL, with velocity, a specialised kernel): f_I = sum_p N_I m_p v_p with the new v_p, the remap's momentum
+   (MPMRemapApply), in the same pass.
    Kinetic energy fix (-mpm_ke_fix): the grid gains sum_I m_I (v_I^n . dv_I + |dv_I|^2 / 2), dv_I = v_I - v_I^n,
    which is sum_p m_p sum_I N_I (v_p . dv_I + |dv_I|^2 / 2) since m_I v_I^n = sum_p N_I m_p v_p. The point's share
    minus the kinetic energy it actually gains is what the map discards (for FLIP (sum N |dv|^2 - |sum N dv|^2)/2 >= 0,
@@ -461,7 +463,7 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
    of that force is per cell, so the point takes its share P_p V_p / sum_{p in c} V_p of its cell's work
    V_c P_c tr Lbar_c: tr Lbar_p is replaced by (V_c / sum_{p in c} V_p) tr Lbar_c. Either way sum_p m_p de_p is
    the grid's kinetic energy loss to round-off. */
-PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool velocity, PetscBool kinematics)
+PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool velocity, PetscBool kinematics, PetscBool remap)
 {
   const MPMGrid  *g     = &mpm->grid;
   const PetscInt  d     = g->dim;
@@ -472,6 +474,7 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
   PetscReal      *pointwork = NULL;
 
   PetscFunctionBegin;
+  PetscCheck(!remap || (mpm->kern && velocity && !kinematics), mpm->comm, PETSC_ERR_PLIB, "The remap's momentum is fused only into a specialised velocity gather");
   PetscCall(VecGetArrayRead(mpm->lnodes, (const PetscScalar **)&node));
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   {
@@ -510,6 +513,7 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
     const MPMTransferArgs A  = {.n         = pts.n,
                                 .x         = x,
                                 .v         = v,
+                                .m         = pts.f[MPM_FIELD_MASS],
                                 .L         = L,
                                 .e         = e,
                                 .pr        = pr,
@@ -527,7 +531,10 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
                                 .expand    = MPMExpansionWork,
                                 .ectx      = &ex,
                                 .threshold = mpm->isentrope_threshold};
-    if (mpm->kern) {
+    if (remap) { /* f_I is free after the kick: it takes the remap's momentum (MPMRemapApply) */
+      PetscCall(MPMGridZeroForce(mpm, (MPMNode *)node));
+      mpm->kern->g2p_remap[work ? 1 : 0](g, mpm->shape->data, &A, (MPMNode *)node);
+    } else if (mpm->kern) {
       mpm->kern->g2p[(velocity ? MPM_G2P_VELOCITY : 0) | (kinematics ? MPM_G2P_KINEMATICS : 0) | (work ? MPM_G2P_WORK : 0)](g, mpm->shape->data, &A, node);
     } else if (d == 3)
       MPMGatherGeneric(mpm, &A, &pts, node, velocity, kinematics, work, 3);
@@ -546,7 +553,7 @@ PetscErrorCode MPMGridToParticles(MPM mpm, const MPMStepContext *ctx)
 {
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(mpm->log.g2p, 0, 0, 0, 0));
-  PetscCall(MPMGather(mpm, ctx->dt, ctx->kick, PETSC_TRUE, (PetscBool)(mpm->scheme == MPM_SCHEME_USL)));
+  PetscCall(MPMGather(mpm, ctx->dt, ctx->kick, PETSC_TRUE, (PetscBool)(mpm->scheme == MPM_SCHEME_USL), mpm->remap_fused));
   PetscCall(PetscLogEventEnd(mpm->log.g2p, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -20,7 +20,8 @@ enum {
   MPM_G2P_VELOCITY   = 1, /* v_p (FLIP/PIC blend) and the kinetic-energy fix                   */
   MPM_G2P_KINEMATICS = 2, /* x_p += dt v_pic, L_p = sum v_I (x) grad N_I                        */
   MPM_G2P_WORK       = 4, /* conservative energy update: e_p += the work of the grid's forces   */
-  MPM_G2P_NMODES     = 8
+  MPM_G2P_NMODES     = 8,
+  MPM_G2P_REMAP      = 8 /* with velocity: f_I += N_I m_p v_p^{n+1}, the MUSL remap's momentum (g2p_remap)  */
 };
 
 /* The point arrays a kernel reads and writes; entries a mode does not use may be NULL. */
@@ -66,7 +67,11 @@ static inline PetscReal MPMWorkIncrement(const MPMTransferArgs *A, PetscInt p, P
 typedef void (*MPMP2GKernel)(const MPMGrid *, const void *, const MPMTransferArgs *, MPMNode *);
 typedef void (*MPMG2PKernel)(const MPMGrid *, const void *, const MPMTransferArgs *, const MPMNode *);
 
+/* g2p_remap[w]: the MUSL step's grid to points (MPM_G2P_VELOCITY, with MPM_G2P_WORK where w = 1) fused with its remap's
+   momentum scatter: each point, its new velocity formed, adds N_I m_p v_p to f_I, which the kick has used (the products
+   and the point order of the remap's own scatter: the same bits; src/modules/remap.c). */
 struct _MPMTransferKernels {
   MPMP2GKernel p2g[MPM_P2G_NMODES];
   MPMG2PKernel g2p[MPM_G2P_NMODES];
+  MPMP2GKernel g2p_remap[2];
 };
