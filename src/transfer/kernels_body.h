@@ -173,7 +173,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(const MPMTransfer
       gain += 0.5 * (vn * vn - v[p * D + i] * v[p * D + i]);
       v[p * D + i] = vn;
     }
-    if (A->kefix) e[p] += share - gain + (1.0 - alpha) * R;
+    if (A->kefix) e[p] += share - gain + ((mode & MPM_G2P_FLIP) ? 0.0 : (1.0 - alpha) * R); /* pure FLIP: 0 R = 0, R not summed */
     if (work) {
       PetscReal sL = 0.0, div = 0.0;
       if (A->pointwork)
@@ -210,7 +210,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
         if (velocity) {
           dv[i] += W[a] * dvI;
           dv2 += W[a] * dvI * dvI;
-          R += W[a] * (vI - dvI - v[p * D + i]) * vI;
+          if (!(mode & MPM_G2P_FLIP)) R += W[a] * (vI - dvI - v[p * D + i]) * vI;
         }
         if (work)
           for (PetscInt j = 0; j < D; j++) Lb[i * D + j] += (2.0 * vI - dvI) * DW[a][j];
@@ -335,7 +335,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
         if (velocity) {
           dv[i] += w * dvI;
           dv2 += w * dvI * dvI;
-          R += w * (vI - dvI - vp[i]) * vI;
+          if (!(mode & MPM_G2P_FLIP)) R += w * (vI - dvI - vp[i]) * vI;
         }
         if (work)
           for (PetscInt j = 0; j < D; j++) Lb[i * D + j] += (2.0 * vI - dvI) * dw[j];
@@ -483,7 +483,7 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GRuns, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, c
    it evaluated). Points to grid goes by runs of same-cell points where the scene seeds several per cell (MPMKP2GRuns),
    else point by point (the linear family's stencils of a group in lanes): its node sums stay in point order (the
    products in lanes with the sums in point order ran 1.2 times slower in 3D). */
-MPM_KINLINE void MPM_KCAT(MPMKLoop, MPM_KNAME, MPM_KD, d)(const MPMGrid *gin, const void *ctx, const MPMTransferArgs *Ain, MPMNode *nodes, const int mode, const int g2p)
+MPM_KINLINE void MPM_KCAT(MPMKLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *gin, const void *ctx, const MPMTransferArgs *Ain, MPMNode *nodes, const int mode, const int g2p)
 {
   /* local copies: the grid's and the arguments' doubles (lo, h, dt, ...) stay in registers across the node updates */
   const MPMGrid         gl = *gin, *g = &gl;
@@ -541,6 +541,16 @@ MPM_KINLINE void MPM_KCAT(MPMKLoop, MPM_KNAME, MPM_KD, d)(const MPMGrid *gin, co
     }
 #endif
   for (; p < A->n; p++) MPM_KCAT(MPMKOne, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, p, mode, g2p);
+}
+
+/* The loop, with pure FLIP (alpha = 1, the default update) a mode of its own (MPM_G2P_FLIP): its kinetic-energy fix
+   drops the PIC term (1 - alpha) R_p, 0 R_p = 0, so R_p's stencil sum is not formed. */
+MPM_KINLINE void MPM_KCAT(MPMKLoop, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const void *ctx, const MPMTransferArgs *A, MPMNode *nodes, const int mode, const int g2p)
+{
+  if (g2p && (mode & MPM_G2P_VELOCITY) && A->alpha == 1.0)
+    MPM_KCAT(MPMKLoopMode, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, mode | MPM_G2P_FLIP, g2p);
+  else
+    MPM_KCAT(MPMKLoopMode, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, mode, g2p);
 }
 
 #define MPM_KP2G(M)                                                                                                                  \

@@ -21,7 +21,8 @@ enum {
   MPM_G2P_KINEMATICS = 2, /* x_p += dt v_pic, L_p = sum v_I (x) grad N_I                        */
   MPM_G2P_WORK       = 4, /* conservative energy update: e_p += the work of the grid's forces   */
   MPM_G2P_NMODES     = 8,
-  MPM_G2P_REMAP      = 8 /* with velocity: f_I += N_I m_p v_p^{n+1}, the MUSL remap's momentum (g2p_remap)  */
+  MPM_G2P_REMAP      = 8, /* with velocity: f_I += N_I m_p v_p^{n+1}, the MUSL remap's momentum (g2p_remap)  */
+  MPM_G2P_FLIP       = 16 /* within a kernel, with velocity: alpha = 1 (pure FLIP), whose fix has no PIC term R  */
 };
 
 /* The point arrays a kernel reads and writes; entries a mode does not use may be NULL. */
