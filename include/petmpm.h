@@ -142,6 +142,7 @@ PETSC_EXTERN PetscErrorCode MPMViscositySetOptionsPrefix(MPMViscosity, const cha
 PETSC_EXTERN PetscErrorCode MPMViscositySetFromOptions(MPMViscosity);
 PETSC_EXTERN PetscErrorCode MPMViscosityView(MPMViscosity, PetscViewer);
 PETSC_EXTERN PetscErrorCode MPMViscosityIsActive(MPMViscosity, PetscBool *);
+PETSC_EXTERN PetscErrorCode MPMViscosityIsPointwise(MPMViscosity, PetscBool *);
 PETSC_EXTERN PetscErrorCode MPMViscosityDestroy(MPMViscosity *);
 
 /* Exact solutions for self-checks */

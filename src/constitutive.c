@@ -160,11 +160,24 @@ static inline __attribute__((always_inline)) PetscErrorCode MPMConstitutiveChunk
    (MPMSetFailure): the time loop stops and MPMSolve writes the last state. */
 PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
 {
+  PetscInt nbad = 0;
+
+  PetscFunctionBegin;
+  PetscCall(MPMConstitutivePoints(mpm, dt, &nbad));
+  PetscCall(MPMConstitutiveFailure(mpm, nbad));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The update of the points MPMPointsGetArrays shows (all, or a window of them: MPMStep). Where one is non-physical it
+   prints the diagnosis of the first and sets *nbad to 1, unless *nbad is 1 already (a window before it on this rank
+   had one: one diagnosis per rank); otherwise *nbad is left as it is. */
+PetscErrorCode MPMConstitutivePoints(MPM mpm, PetscReal dt, PetscInt *nbad)
+{
   const PetscInt  d = mpm->grid.dim;
   MPMPoints       pts;
   const PetscBool trackF = mpm->track_F;
   MPMShape        shape  = mpm->shape;
-  PetscInt        bad = -1, nbad, start[MPM_MAX_MATERIALS + 1] = {0};
+  PetscInt        bad = -1, start[MPM_MAX_MATERIALS + 1] = {0};
   PetscReal      *Lsh = NULL; /* axisymmetric: L - L_tt I, what the strength models see */
 
   PetscFunctionBegin;
@@ -209,7 +222,7 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
       else
         PetscCall(MPMConstitutiveChunk(mpm, &pts, im, c0, n, dt, Lsh, &bad, 3, PETSC_FALSE));
     }
-  if (bad >= 0) {
+  if (bad >= 0 && !*nbad) {
     const PetscReal *rho = pts.f[MPM_FIELD_DENSITY], *e = pts.f[MPM_FIELD_ENERGY], *pr = pts.f[MPM_FIELD_PRESSURE], *c = pts.f[MPM_FIELD_SOUNDSPEED], *L = pts.f[MPM_FIELD_GRADV], *F = pts.f[MPM_FIELD_DEFGRAD];
     const PetscReal  J    = MPMDetIPlusDtL(d, dt, &L[bad * d * d]);
     const char      *hint = "";
@@ -249,9 +262,17 @@ PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   PetscCall(PetscLogFlops(30.0 * pts.n));
-  nbad = bad >= 0 ? 1 : 0;
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &nbad, 1, MPIU_INT, MPI_SUM, mpm->comm));
+  if (bad >= 0) *nbad = 1;
   PetscCall(PetscLogEventEnd(mpm->log.constitutive, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* After the update of every point: nbad, 1 where this rank had a non-physical point (MPMConstitutivePoints), summed over
+   the ranks; where any had one, the run's failure is set. */
+PetscErrorCode MPMConstitutiveFailure(MPM mpm, PetscInt nbad)
+{
+  PetscFunctionBegin;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &nbad, 1, MPIU_INT, MPI_SUM, mpm->comm));
   if (nbad) PetscCall(MPMSetFailure(mpm, "Step %" PetscInt_FMT ": non-physical state (negative or non-finite density, energy or pressure) on %" PetscInt_FMT " rank(s), diagnosis above", mpm->steps, nbad));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -52,6 +52,8 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   m->energy_update           = MPM_ENERGY_COMPATIBLE; /* with the cell rule; point integration sets conservative */
   m->cell_volume             = MPM_CELL_VOLUME_POINTS;
   m->ke_fix                  = PETSC_TRUE;
+  m->point_window            = 2048;
+  m->win_n                   = -1;
   m->update                  = MPM_UPDATE_BLEND;
   m->affine                  = -1;
   m->alpha                   = 0.99;
@@ -221,6 +223,10 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
     PetscCheck(mpm->friction_lo[0] == 0.0, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_wall_friction_lo %g in x: with -mpm_axisymmetric that face is the axis r = 0, a symmetry line; valid is 0", (double)mpm->friction_lo[0]);
   }
   PetscCall(PetscOptionsString("-mpm_output", "Output directory DIR (DIR/petmpm.h5, DIR/petmpm.xmf)", "", mpm->outdir, mpm->outdir, sizeof(mpm->outdir), NULL));
+  PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-mpm_point_window",
+                               "Points per window of a step's point phases: grid to points, the point modules and the constitutive update run window by window where every one of them updates a point from its own fields and the grid (the same "
+                               "numbers; a window's fields stay in cache) [-], >= 0 (0: each phase over all points)",
+                               &mpm->point_window, 0, PETSC_MAX_INT));
   PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-mpm_sort_interval", "Steps between sorts of the points by cell (transfers then find their nodes in cache) [-], >= 0 (0: never)", &mpm->sort_interval, 0, PETSC_MAX_INT));
   PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-mpm_output_interval", "Steps between outputs [-], >= 0 (0: first and last state only)", &mpm->output_interval, 0, PETSC_MAX_INT));
   mpm->ntout = MPM_MAX_OUTPUT_TIMES;
@@ -348,34 +354,40 @@ static PetscErrorCode MPMCheckUnusedOptions(MPM mpm)
 
 PetscErrorCode MPMSetUp(MPM mpm)
 {
-  PetscBool active;
+  PetscBool active, pointwise = PETSC_FALSE;
   PetscReal t0 = MPI_Wtime();
 
   PetscFunctionBegin;
   PetscCall(MPMViscosityIsActive(mpm->viscosity, &active));
   if (!active) PetscCall(MPMRetireObject(mpm, &mpm->viscosity)); /* none: the module is not in the step */
+  if (mpm->viscosity) PetscCall(MPMViscosityIsPointwise(mpm->viscosity, &pointwise));
   PetscCall(MPMLogRegister(mpm));
   PetscCall(PetscLogStagePush(mpm->log.setup));
   { /* the step's modules, in the order they run within each phase */
     PetscBool walls = PETSC_FALSE;
     for (PetscInt k = 0; k < mpm->grid.dim; k++) walls = (PetscBool)(walls || mpm->bc_lo[k] == MPM_BC_WALL || mpm->bc_hi[k] == MPM_BC_WALL);
-    if (mpm->has_gravity) PetscCall(MPMModuleAdd(mpm, "MPMGravity", MPM_PHASE_GRID_FORCE, MPMGravityApply, NULL));
-    if (walls) PetscCall(MPMModuleAdd(mpm, "MPMWalls", MPM_PHASE_GRID_VELOCITY, MPMWallsApply, NULL));
-    if (mpm->scheme == MPM_SCHEME_MUSL) PetscCall(MPMModuleAdd(mpm, "MPMRemapMomentum", MPM_PHASE_POINT_KINEMATICS, MPMRemapApply, NULL));
-    if (mpm->viscosity) PetscCall(MPMModuleAdd(mpm, "MPMViscosity", MPM_PHASE_POINT_STATE, MPMViscosityModuleApply, NULL));
-    if (mpm->conduction > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMConduction", MPM_PHASE_POINT_END, MPMConductionApply, NULL));
-    if (mpm->pressure_relax > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMRelax", MPM_PHASE_POINT_END, MPMRelaxApply, NULL));
-    if (mpm->fill_rate > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMVolumeFill", MPM_PHASE_POINT_END, MPMFillApply, NULL));
-    if (mpm->popping_interval > 0) PetscCall(MPMModuleAdd(mpm, "MPMPopping", MPM_PHASE_POINT_END, MPMPoppingApply, NULL));
-    if ((mpm->shape->needs_F || mpm->split) && mpm->grid.dim > 1 && mpm->domain_skew > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMDomain", MPM_PHASE_POINT_ADAPT, MPMDomainApply, NULL));
-    if (mpm->split) PetscCall(MPMModuleAdd(mpm, "MPMSplit", MPM_PHASE_POINT_ADAPT, MPMSplitApply, NULL));
+    if (mpm->has_gravity) PetscCall(MPMModuleAdd(mpm, "MPMGravity", MPM_PHASE_GRID_FORCE, MPMGravityApply, NULL, PETSC_FALSE));
+    if (walls) PetscCall(MPMModuleAdd(mpm, "MPMWalls", MPM_PHASE_GRID_VELOCITY, MPMWallsApply, NULL, PETSC_FALSE));
+    if (mpm->scheme == MPM_SCHEME_MUSL) PetscCall(MPMModuleAdd(mpm, "MPMRemapMomentum", MPM_PHASE_POINT_KINEMATICS, MPMRemapApply, NULL, PETSC_FALSE));
+    if (mpm->viscosity) PetscCall(MPMModuleAdd(mpm, "MPMViscosity", MPM_PHASE_POINT_STATE, MPMViscosityModuleApply, NULL, pointwise));
+    if (mpm->conduction > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMConduction", MPM_PHASE_POINT_END, MPMConductionApply, NULL, PETSC_FALSE));
+    if (mpm->pressure_relax > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMRelax", MPM_PHASE_POINT_END, MPMRelaxApply, NULL, PETSC_FALSE));
+    if (mpm->fill_rate > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMVolumeFill", MPM_PHASE_POINT_END, MPMFillApply, NULL, PETSC_FALSE));
+    if (mpm->popping_interval > 0) PetscCall(MPMModuleAdd(mpm, "MPMPopping", MPM_PHASE_POINT_END, MPMPoppingApply, NULL, PETSC_FALSE));
+    if ((mpm->shape->needs_F || mpm->split) && mpm->grid.dim > 1 && mpm->domain_skew > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMDomain", MPM_PHASE_POINT_ADAPT, MPMDomainApply, NULL, PETSC_FALSE));
+    if (mpm->split) PetscCall(MPMModuleAdd(mpm, "MPMSplit", MPM_PHASE_POINT_ADAPT, MPMSplitApply, NULL, PETSC_FALSE));
   }
 
   PetscCall(MPMCreateGrid(mpm));
   PetscCall(MPMShapeSetUp(mpm->shape, &mpm->grid, mpm->ppc));
   mpm->kern =
     mpm->transfer_kernel == MPM_TRANSFER_SPECIALISED && mpm->shape->kernels && !mpm->grid.axisym && mpm->update != MPM_UPDATE_APIC ? &mpm->shape->kernels[mpm->grid.dim - 1] : NULL; /* the specialised kernels have no hoop terms and no affine part */
-  mpm->remap_fused = (PetscBool)(mpm->scheme == MPM_SCHEME_MUSL && mpm->kern); /* the remap is the only point-kinematics module: nothing changes v_p between the two */
+  mpm->remap_fused = (PetscBool)(mpm->scheme == MPM_SCHEME_MUSL && mpm->kern);
+  { /* the point phases window by window: every point module pointwise, and grid to points per point (the conservative update with the cell rule shares each cell's work among its points first) */
+    mpm->windowed = (PetscBool)(mpm->point_window > 0 && !(mpm->energy_update == MPM_ENERGY_CONSERVATIVE && mpm->stress_integration == MPM_STRESS_CELL));
+    for (PetscInt ph = MPM_PHASE_POINT_KINEMATICS; ph <= MPM_PHASE_POINT_STATE; ph++)
+      for (MPMModule mod = mpm->modules[ph]; mod; mod = mod->next) mpm->windowed = (PetscBool)(mpm->windowed && mod->pointwise);
+  } /* the remap is the only point-kinematics module: nothing changes v_p between the two */
   for (PetscInt i = 0; i < mpm->nmat; i++)
     PetscCheck(!mpm->grid.axisym || !mpm->mat[i].strength || !mpm->mat[i].strength->needs_F, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_axisymmetric: material %s's strength model reads F, which has no hoop component here; use a hypoelastic type",
                mpm->mat[i].name);
@@ -426,7 +438,8 @@ PetscErrorCode MPMView(MPM mpm, PetscViewer viewer)
                                    MPMStressIntegrations[mpm->stress_integration]));
   if (mpm->stress_integration == MPM_STRESS_CELL) PetscCall(PetscViewerASCIIPrintf(viewer, "cell rule volume: %s\n", MPMCellVolumes[mpm->cell_volume]));
   PetscCall(PetscViewerASCIIPrintf(viewer, "energy update %s, kinetic energy fix %s\n", MPMEnergyUpdates[mpm->energy_update], mpm->ke_fix ? "on" : "off"));
-  PetscCall(PetscViewerASCIIPrintf(viewer, "transfer kernels: %s\n", mpm->kern ? "specialised" : "generic"));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "transfer kernels: %s%s; point phases: %s %" PetscInt_FMT "\n", mpm->kern ? "specialised" : "generic", mpm->remap_fused ? " (the MUSL remap's momentum summed in grid to points)" : "",
+                                   mpm->windowed ? "in windows of points," : "each over all points,", mpm->windowed ? mpm->point_window : mpm->npoints0));
   if (mpm->has_gravity) PetscCall(PetscViewerASCIIPrintf(viewer, "gravity (%g, %g, %g) cm/s^2\n", (double)mpm->gravity[0], (double)mpm->gravity[1], (double)mpm->gravity[2]));
   PetscCall(MPMShapeView(mpm->shape, viewer));
   PetscCall(PetscViewerASCIIPrintf(viewer, "particle update %s (FLIP fraction %g)\n", MPMUpdateTypes[mpm->update], (double)mpm->alpha));

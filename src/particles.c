@@ -72,6 +72,21 @@ PetscErrorCode MPMPointsGetArrays(MPM mpm, MPMPoints *pts)
   }
   PetscCall(DMSwarmGetLocalSize(mpm->swarm, &mpm->pts.n));
   *pts = mpm->pts;
+  if (mpm->win_n >= 0) { /* a window: every field from point win_p0 on, win_n points */
+    for (PetscInt f = 0; f < mpm->nfields; f++)
+      if (pts->f[f]) pts->f[f] += mpm->win_p0 * MPMFieldBlockSize(mpm->field[f].bs, mpm->grid.dim);
+    pts->n = mpm->win_n;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Makes MPMPointsGetArrays show the n points from point p0 on, as if they were all (n < 0: all points again): the step's
+   point phases run window by window (MPMStep). Nothing that adds, removes or moves points runs inside a window. */
+PetscErrorCode MPMPointsSetWindow(MPM mpm, PetscInt p0, PetscInt n)
+{
+  PetscFunctionBegin;
+  mpm->win_p0 = n < 0 ? 0 : p0;
+  mpm->win_n  = n;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -91,6 +106,7 @@ PetscErrorCode MPMPointsRestoreArrays(MPM mpm, MPMPoints *pts)
 PetscErrorCode MPMPointsRelease(MPM mpm)
 {
   PetscFunctionBegin;
+  PetscCheck(mpm->win_n < 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "The swarm changes inside a window of the points");
   if (!mpm->pts_held) PetscFunctionReturn(PETSC_SUCCESS);
   for (PetscInt f = 0; f < mpm->nfields; f++)
     if (mpm->field_on[f]) PetscCall(DMSwarmRestoreField(mpm->swarm, mpm->field[f].name, NULL, NULL, (void **)&mpm->pts.f[f]));

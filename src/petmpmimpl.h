@@ -100,6 +100,7 @@ struct _p_MPMModule {
   char          name[MPM_MAX_NAME]; /* its -log_view event                 */
   MPMPhase      phase;
   PetscLogEvent event;
+  PetscBool     pointwise;                                                    /* a point phase's module whose update of a point reads only that point and the grid: it can run on a window of the points (MPMStep) */
   PetscErrorCode (*apply)(MPMModule, MPM, const MPMStepContext *, MPMNode *); /* the owned nodes in grid phases, else NULL */
   void     *ctx;                                                              /* the module's state: one allocation (PetscMalloc), freed with the list, or NULL */
   MPMModule next;
@@ -165,6 +166,8 @@ struct _p_MPM {
   PetscReal            split_min_scale;                /* smallest domain scale a split may leave: 2^-max_level [-] */
   PetscReal            next_id;                        /* the next unused point id (splitting)                  */
   PetscInt             sort_interval;                  /* steps between sorts of the points by cell, 0: never  */
+  PetscInt             point_window;                   /* -mpm_point_window: points per window of the step's point phases, 0: each phase over all points */
+  PetscBool            windowed;                       /* the step runs grid to points, the point-kinematics and point-state modules and the constitutive update window by window */
   PetscInt             output_interval;                /* steps between outputs, 0: start and end only      */
   PetscReal            tout[MPM_MAX_OUTPUT_TIMES];     /* -mpm_output_times: steps land on them [s] */
   PetscInt             ntout, itout;                   /* their number, the next one                */
@@ -203,6 +206,7 @@ struct _p_MPM {
   DM           da;                                         /* background grid, dof = MPM_NODE_DOF                       */
   DM           swarm;                                      /* material points, DMSWARM_BASIC                            */
   MPMPoints    pts;                                        /* the fields' arrays while held (MPMPointsGetArrays)        */
+  PetscInt     win_p0, win_n;                              /* the window of points MPMPointsGetArrays shows, from point win_p0; win_n < 0: all (MPMPointsSetWindow) */
   PetscBool    pts_held;                                   /* the swarm's fields are out; MPMPointsRelease returns them  */
   Vec          nodes;                                      /* global nodal vector: the grid fields' output (MPMProjectToGrid) */
   Vec          lnodes;                                     /* ghosted local nodal vector: the step's nodes, owned and ghost */
@@ -338,13 +342,14 @@ PETSC_INTERN PetscErrorCode MPMPointsSelectFields(MPM);
 PETSC_INTERN PetscErrorCode MPMPointsRegisterField(MPM, const char[], PetscInt, const char[], const char[], PetscBool, PetscInt *);
 PETSC_INTERN PetscErrorCode MPMPointsRestoreArrays(MPM, MPMPoints *);
 PETSC_INTERN PetscErrorCode MPMPointsRelease(MPM);
+PETSC_INTERN PetscErrorCode MPMPointsSetWindow(MPM, PetscInt, PetscInt);
 PETSC_INTERN PetscErrorCode MPMMigrate(MPM);
 PETSC_INTERN PetscErrorCode MPMSortPoints(MPM);
 PETSC_INTERN PetscErrorCode MPMStepForces(MPM, PetscReal);
 PETSC_INTERN PetscErrorCode MPMDiagnoseVacuum(MPM, PetscInt *, PetscInt *);
 PETSC_INTERN PetscErrorCode MPMStep(MPM, PetscReal, PetscReal);
 PETSC_INTERN PetscErrorCode MPMSetFailure(MPM, const char[], ...);
-PETSC_INTERN PetscErrorCode MPMModuleAdd(MPM, const char[], MPMPhase, PetscErrorCode (*)(MPMModule, MPM, const MPMStepContext *, MPMNode *), void *);
+PETSC_INTERN PetscErrorCode MPMModuleAdd(MPM, const char[], MPMPhase, PetscErrorCode (*)(MPMModule, MPM, const MPMStepContext *, MPMNode *), void *, PetscBool);
 PETSC_INTERN PetscErrorCode MPMModulesApply(MPM, MPMPhase, const MPMStepContext *);
 PETSC_INTERN PetscErrorCode MPMModulesDestroy(MPM);
 PETSC_INTERN PetscErrorCode MPMWallsApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
@@ -367,6 +372,8 @@ PETSC_INTERN PetscErrorCode MPMGather(MPM, PetscReal, PetscReal, PetscBool, Pets
 PETSC_INTERN PetscErrorCode MPMParticlesToGrid(MPM, const MPMStepContext *);
 PETSC_INTERN PetscErrorCode MPMGridToParticles(MPM, const MPMStepContext *);
 PETSC_INTERN PetscErrorCode MPMConstitutive(MPM, PetscReal);
+PETSC_INTERN PetscErrorCode MPMConstitutivePoints(MPM, PetscReal, PetscInt *);
+PETSC_INTERN PetscErrorCode MPMConstitutiveFailure(MPM, PetscInt);
 PETSC_INTERN PetscErrorCode MPMProjectToGrid(MPM);
 PETSC_INTERN PetscErrorCode MPMOutputWriteExact(MPM);
 PETSC_INTERN PetscErrorCode MPMConstitutiveInitialize(MPM);

@@ -5,17 +5,18 @@
    the scene did not ask for is not in the list, so it costs nothing and has no -log_view row. */
 #include "petmpmimpl.h"
 
-/* Appends a module to its phase's list, with its own log event. */
-PetscErrorCode MPMModuleAdd(MPM mpm, const char name[], MPMPhase phase, PetscErrorCode (*apply)(MPMModule, MPM, const MPMStepContext *, MPMNode *), void *ctx)
+/* Appends a module to its phase's list, with its own log event; pointwise: see MPMModule. */
+PetscErrorCode MPMModuleAdd(MPM mpm, const char name[], MPMPhase phase, PetscErrorCode (*apply)(MPMModule, MPM, const MPMStepContext *, MPMNode *), void *ctx, PetscBool pointwise)
 {
   MPMModule mod, *last = &mpm->modules[phase];
 
   PetscFunctionBegin;
   PetscCall(PetscNew(&mod));
   PetscCall(PetscStrncpy(mod->name, name, sizeof(mod->name)));
-  mod->phase = phase;
-  mod->apply = apply;
-  mod->ctx   = ctx;
+  mod->phase     = phase;
+  mod->pointwise = pointwise;
+  mod->apply     = apply;
+  mod->ctx       = ctx;
   PetscCall(PetscLogEventRegister(name, MPM_CLASSID, &mod->event));
   while (*last) last = &(*last)->next;
   *last = mod;
@@ -128,11 +129,25 @@ PetscErrorCode MPMStep(MPM mpm, PetscReal t, PetscReal dt)
   PetscFunctionBegin;
   mpm->dt = dt;
   mpm->point_steps += mpm->npoints;
-  PetscCall(MPMGridAdvance(mpm, &ctx));                                                          /* (mv)_I += dt_kick f_I; walls      */
-  PetscCall(MPMGridToParticles(mpm, &ctx));                                                      /* v_p; USL: x_p, L_p                */
-  PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_KINEMATICS, &ctx));                             /* MUSL: v_I from v_p; x_p, L_p */
-  PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_STATE, &ctx));                                  /* q_p: artificial viscosity          */
-  PetscCall(MPMConstitutive(mpm, dt));                                                           /* rho_p, e_p, p_p, c_p, T_p, s_p    */
+  PetscCall(MPMGridAdvance(mpm, &ctx)); /* (mv)_I += dt_kick f_I; walls      */
+  if (mpm->windowed) {                  /* the point phases window by window: a window's fields stay in cache from grid to points to the constitutive update */
+    PetscInt n, nbad = 0;
+    PetscCall(DMSwarmGetLocalSize(mpm->swarm, &n));
+    for (PetscInt p0 = 0; p0 < n; p0 += mpm->point_window) {
+      PetscCall(MPMPointsSetWindow(mpm, p0, PetscMin(mpm->point_window, n - p0)));
+      PetscCall(MPMGridToParticles(mpm, &ctx));
+      PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_KINEMATICS, &ctx));
+      PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_STATE, &ctx));
+      PetscCall(MPMConstitutivePoints(mpm, dt, &nbad));
+    }
+    PetscCall(MPMPointsSetWindow(mpm, 0, -1));
+    PetscCall(MPMConstitutiveFailure(mpm, nbad));
+  } else {
+    PetscCall(MPMGridToParticles(mpm, &ctx));                          /* v_p; USL: x_p, L_p                */
+    PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_KINEMATICS, &ctx)); /* MUSL: v_I from v_p; x_p, L_p      */
+    PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_STATE, &ctx));      /* q_p: artificial viscosity         */
+    PetscCall(MPMConstitutive(mpm, dt));                               /* rho_p, e_p, p_p, c_p, T_p, s_p    */
+  }
   if (mpm->failed) PetscFunctionReturn(PETSC_SUCCESS);                                           /* the time loop stops               */
   PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_ADAPT, &ctx));                                  /* point splitting                   */
   PetscCall(MPMMigrate(mpm));                                                                    /* points follow their cells         */

@@ -35,6 +35,16 @@ PetscErrorCode MPMViscosityIsActive(MPMViscosity visc, PetscBool *active)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Whether the type's q_p reads only point p's own fields (von Neumann-Richtmyer), not the grid's or other points' state
+   that a type computes over all the points at once (limited: the cells' velocity jumps): then the viscosity module can run
+   on a window of the points (MPMStep). */
+PetscErrorCode MPMViscosityIsPointwise(MPMViscosity visc, PetscBool *pointwise)
+{
+  PetscFunctionBegin;
+  *pointwise = visc->pointwise;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* q_p of the points of a step (the viscosity module, src/modules/viscosity.c, fills the context). */
 PetscErrorCode MPMViscosityApply(MPMViscosity visc, const MPMViscosityContext *ctx)
 {

@@ -23,5 +23,6 @@ typedef struct {
 } MPMViscosityOps;
 struct _p_MPMViscosity {
   MPM_CLASS_HEADER(MPMViscosityOps);
-  PetscInt ghost; /* grid ghost cells the type reads beyond the shape support [cells] */
+  PetscInt  ghost;     /* grid ghost cells the type reads beyond the shape support [cells] */
+  PetscBool pointwise; /* q_p reads only point p's fields: the type can run on a window of the points (MPMStep) */
 };

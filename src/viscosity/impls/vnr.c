@@ -85,6 +85,7 @@ PetscErrorCode MPMViscosityCreate_VNR(MPMViscosity visc)
   vnr->cq                  = 2.0;
   vnr->cl                  = 0.2;
   visc->data               = vnr;
+  visc->pointwise          = PETSC_TRUE;
   visc->ops.apply          = MPMViscosityApply_VNR;
   visc->ops.setfromoptions = MPMViscositySetFromOptions_VNR;
   visc->ops.view           = MPMViscosityView_VNR;
