@@ -382,12 +382,15 @@ PetscErrorCode MPMSetUp(MPM mpm)
   PetscCall(MPMShapeSetUp(mpm->shape, &mpm->grid, mpm->ppc));
   mpm->kern =
     mpm->transfer_kernel == MPM_TRANSFER_SPECIALISED && mpm->shape->kernels && !mpm->grid.axisym && mpm->update != MPM_UPDATE_APIC ? &mpm->shape->kernels[mpm->grid.dim - 1] : NULL; /* the specialised kernels have no hoop terms and no affine part */
+  /* MUSL: the remap is the only point-kinematics module, so nothing changes v_p between grid to points and the remap */
   mpm->remap_fused = (PetscBool)(mpm->scheme == MPM_SCHEME_MUSL && mpm->kern);
-  { /* the point phases window by window: every point module pointwise, and grid to points per point (the conservative update with the cell rule shares each cell's work among its points first) */
-    mpm->windowed = (PetscBool)(mpm->point_window > 0 && !(mpm->energy_update == MPM_ENERGY_CONSERVATIVE && mpm->stress_integration == MPM_STRESS_CELL));
-    for (PetscInt ph = MPM_PHASE_POINT_KINEMATICS; ph <= MPM_PHASE_POINT_STATE; ph++)
+  { /* the point phases of MPMStepPoints window by window: the modules among them pointwise, and a grid to points that updates
+       each point on its own (USL's with the conservative update and the cell rule shares each cell's work among its points first) */
+    const PetscBool usl = (PetscBool)(mpm->scheme == MPM_SCHEME_USL);
+    mpm->windowed       = (PetscBool)(mpm->point_window > 0 && !(usl && mpm->energy_update == MPM_ENERGY_CONSERVATIVE && mpm->stress_integration == MPM_STRESS_CELL));
+    for (PetscInt ph = usl ? MPM_PHASE_POINT_KINEMATICS : MPM_PHASE_POINT_STATE; ph <= MPM_PHASE_POINT_STATE; ph++)
       for (MPMModule mod = mpm->modules[ph]; mod; mod = mod->next) mpm->windowed = (PetscBool)(mpm->windowed && mod->pointwise);
-  } /* the remap is the only point-kinematics module: nothing changes v_p between the two */
+  }
   for (PetscInt i = 0; i < mpm->nmat; i++)
     PetscCheck(!mpm->grid.axisym || !mpm->mat[i].strength || !mpm->mat[i].strength->needs_F, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_axisymmetric: material %s's strength model reads F, which has no hoop component here; use a hypoelastic type",
                mpm->mat[i].name);

@@ -77,7 +77,7 @@ typedef struct {
 typedef enum {
   MPM_PHASE_GRID_FORCE,       /* after points to grid: external nodal forces (gravity)                           */
   MPM_PHASE_GRID_VELOCITY,    /* wherever nodal velocities are formed (advance, MUSL remap): walls, later rigid bodies and contact */
-  MPM_PHASE_POINT_KINEMATICS, /* after grid to points: the MUSL remap                                            */
+  MPM_PHASE_POINT_KINEMATICS, /* after grid to points (MUSL: after its velocity gather, over all points): the MUSL remap */
   MPM_PHASE_POINT_STATE,      /* before the constitutive update: artificial viscosity                            */
   MPM_PHASE_POINT_ADAPT,      /* after the constitutive update: point splitting                                  */
   MPM_PHASE_POINT_END,        /* after migration, each point on the rank that owns its cell: heat conduction, pressure relaxation */
@@ -370,7 +370,7 @@ PETSC_INTERN PetscErrorCode MPMViscosityModuleApply(MPMModule, MPM, const MPMSte
 PETSC_INTERN PetscErrorCode MPMScatter(MPM, PetscBool, PetscReal);
 PETSC_INTERN PetscErrorCode MPMGather(MPM, PetscReal, PetscReal, PetscBool, PetscBool, PetscBool);
 PETSC_INTERN PetscErrorCode MPMParticlesToGrid(MPM, const MPMStepContext *);
-PETSC_INTERN PetscErrorCode MPMGridToParticles(MPM, const MPMStepContext *);
+PETSC_INTERN PetscErrorCode MPMGridToParticles(MPM, const MPMStepContext *, PetscBool, PetscBool);
 PETSC_INTERN PetscErrorCode MPMConstitutive(MPM, PetscReal);
 PETSC_INTERN PetscErrorCode MPMConstitutivePoints(MPM, PetscReal, PetscInt *);
 PETSC_INTERN PetscErrorCode MPMConstitutiveFailure(MPM, PetscInt);

@@ -120,34 +120,48 @@ PetscErrorCode MPMStepForces(MPM mpm, PetscReal tn)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The point phases from grid to points to the constitutive update, on the points MPMPointsGetArrays shows (all, or a
+   window of them). USL: v_p, x_p, L_p from the advanced grid velocity, then the point-kinematics modules; MUSL: x_p and
+   L_p from the remap's (v_p and the remap came before). Then the point-state modules and the constitutive update. */
+static PetscErrorCode MPMStepPoints(MPM mpm, const MPMStepContext *ctx, PetscInt *nbad)
+{
+  const PetscBool usl = (PetscBool)(mpm->scheme == MPM_SCHEME_USL);
+
+  PetscFunctionBegin;
+  PetscCall(MPMGridToParticles(mpm, ctx, usl, PETSC_TRUE));                  /* USL: v_p; x_p, L_p          */
+  if (usl) PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_KINEMATICS, ctx)); /*                              */
+  PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_STATE, ctx));               /* q_p: artificial viscosity    */
+  PetscCall(MPMConstitutivePoints(mpm, ctx->dt, nbad));                      /* rho_p, e_p, p_p, c_p, T_p, s_p */
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* The rest of the explicit MPM step from t^n to t^{n+1} = t, after MPMStepForces(t^n). -log_view shows a row per
-   phase and per module. */
+   phase and per module. The point phases of MPMStepPoints run window by window where they can (MPM::windowed): a
+   window's fields stay in cache from grid to points to the constitutive update. */
 PetscErrorCode MPMStep(MPM mpm, PetscReal t, PetscReal dt)
 {
-  const MPMStepContext ctx = {.tn = t - dt, .dt = dt, .kick = 0.5 * (mpm->dt + dt)}; /* mpm->dt: the previous step, 0 before the first */
+  const MPMStepContext ctx  = {.tn = t - dt, .dt = dt, .kick = 0.5 * (mpm->dt + dt)}; /* mpm->dt: the previous step, 0 before the first */
+  PetscInt             nbad = 0;
 
   PetscFunctionBegin;
   mpm->dt = dt;
   mpm->point_steps += mpm->npoints;
-  PetscCall(MPMGridAdvance(mpm, &ctx)); /* (mv)_I += dt_kick f_I; walls      */
-  if (mpm->windowed) {                  /* the point phases window by window: a window's fields stay in cache from grid to points to the constitutive update */
-    PetscInt n, nbad = 0;
+  PetscCall(MPMGridAdvance(mpm, &ctx)); /* (mv)_I += dt_kick f_I; walls */
+  if (mpm->scheme == MPM_SCHEME_MUSL) {
+    PetscCall(MPMGridToParticles(mpm, &ctx, PETSC_TRUE, PETSC_FALSE)); /* v_p (and the remap's momenta, MPM::remap_fused) */
+    PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_KINEMATICS, &ctx)); /* the remap: v_I from the points' momenta; walls */
+  }
+  if (mpm->windowed) {
+    PetscInt n;
     PetscCall(DMSwarmGetLocalSize(mpm->swarm, &n));
     for (PetscInt p0 = 0; p0 < n; p0 += mpm->point_window) {
       PetscCall(MPMPointsSetWindow(mpm, p0, PetscMin(mpm->point_window, n - p0)));
-      PetscCall(MPMGridToParticles(mpm, &ctx));
-      PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_KINEMATICS, &ctx));
-      PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_STATE, &ctx));
-      PetscCall(MPMConstitutivePoints(mpm, dt, &nbad));
+      PetscCall(MPMStepPoints(mpm, &ctx, &nbad));
     }
     PetscCall(MPMPointsSetWindow(mpm, 0, -1));
-    PetscCall(MPMConstitutiveFailure(mpm, nbad));
-  } else {
-    PetscCall(MPMGridToParticles(mpm, &ctx));                          /* v_p; USL: x_p, L_p                */
-    PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_KINEMATICS, &ctx)); /* MUSL: v_I from v_p; x_p, L_p      */
-    PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_STATE, &ctx));      /* q_p: artificial viscosity         */
-    PetscCall(MPMConstitutive(mpm, dt));                               /* rho_p, e_p, p_p, c_p, T_p, s_p    */
-  }
+  } else
+    PetscCall(MPMStepPoints(mpm, &ctx, &nbad));
+  PetscCall(MPMConstitutiveFailure(mpm, nbad));
   if (mpm->failed) PetscFunctionReturn(PETSC_SUCCESS);                                           /* the time loop stops               */
   PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_ADAPT, &ctx));                                  /* point splitting                   */
   PetscCall(MPMMigrate(mpm));                                                                    /* points follow their cells         */

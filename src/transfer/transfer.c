@@ -549,11 +549,13 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode MPMGridToParticles(MPM mpm, const MPMStepContext *ctx)
+/* The step's grid to points (MPMGather): USL velocity and kinematics in one pass; MUSL velocity (with the remap's
+   momenta, MPM::remap_fused), then after the remap kinematics. */
+PetscErrorCode MPMGridToParticles(MPM mpm, const MPMStepContext *ctx, PetscBool velocity, PetscBool kinematics)
 {
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(mpm->log.g2p, 0, 0, 0, 0));
-  PetscCall(MPMGather(mpm, ctx->dt, ctx->kick, PETSC_TRUE, (PetscBool)(mpm->scheme == MPM_SCHEME_USL), mpm->remap_fused));
+  PetscCall(MPMGather(mpm, ctx->dt, velocity ? ctx->kick : ctx->dt, velocity, kinematics, (PetscBool)(velocity && !kinematics && mpm->remap_fused)));
   PetscCall(PetscLogEventEnd(mpm->log.g2p, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
