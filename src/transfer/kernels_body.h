@@ -435,7 +435,34 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GRuns, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, c
       MPM_KCAT(MPMKOne, MPM_KNAME, MPM_KD, d)(g, NULL, A, nodes, p, mode, 0);
       continue;
     }
-    if (!open || node[0] != run[0]) {
+#  if MPM_KNB == 2
+    if (open && node[0] == run[0] + 1) { /* the next cell along x (a row of cells, one point each): its first layer of
+                                            nodes is the run's second, whose sums stay in the registers; the run's first
+                                            layer is stored and the point's second loaded */
+      for (PetscInt a = 0; a < MPM_KS; a += 2) {
+        MPMNode *nd = &nodes[run[a]], *ne = &nodes[node[a + 1]];
+        nd->m  = am[a];
+        nd->w2 = aw[a];
+        for (PetscInt k = 0; k < D; k++) nd->p[k] = ap[k][a];
+        for (PetscInt k = 0; force && k < D; k++) nd->f[k] = af[k][a];
+        run[a]     = run[a + 1];
+        am[a]      = am[a + 1];
+        aw[a]      = aw[a + 1];
+        run[a + 1] = node[a + 1];
+        am[a + 1]  = ne->m;
+        aw[a + 1]  = ne->w2;
+        for (PetscInt k = 0; k < D; k++) {
+          ap[k][a]     = ap[k][a + 1];
+          ap[k][a + 1] = ne->p[k];
+        }
+        for (PetscInt k = 0; force && k < D; k++) {
+          af[k][a]     = af[k][a + 1];
+          af[k][a + 1] = ne->f[k];
+        }
+      }
+    } else
+#  endif
+      if (!open || node[0] != run[0]) {
       MPM_KRUN_FLUSH();
       for (PetscInt a = 0; a < MPM_KS; a++) {
         const MPMNode *nd = &nodes[node[a]];
