@@ -272,7 +272,9 @@ PetscErrorCode MPMConstitutivePoints(MPM mpm, PetscReal dt, PetscInt *nbad)
 PetscErrorCode MPMConstitutiveFailure(MPM mpm, PetscInt nbad)
 {
   PetscFunctionBegin;
+  PetscCall(PetscLogEventBegin(mpm->log.constitutive, 0, 0, 0, 0));
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &nbad, 1, MPIU_INT, MPI_SUM, mpm->comm));
+  PetscCall(PetscLogEventEnd(mpm->log.constitutive, 0, 0, 0, 0));
   if (nbad) PetscCall(MPMSetFailure(mpm, "Step %" PetscInt_FMT ": non-physical state (negative or non-finite density, energy or pressure) on %" PetscInt_FMT " rank(s), diagnosis above", mpm->steps, nbad));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -128,10 +128,10 @@ static PetscErrorCode MPMStepPoints(MPM mpm, const MPMStepContext *ctx, PetscInt
   const PetscBool usl = (PetscBool)(mpm->scheme == MPM_SCHEME_USL);
 
   PetscFunctionBegin;
-  PetscCall(MPMGridToParticles(mpm, ctx, usl, PETSC_TRUE));                  /* USL: v_p; x_p, L_p          */
-  if (usl) PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_KINEMATICS, ctx)); /*                              */
-  PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_STATE, ctx));               /* q_p: artificial viscosity    */
-  PetscCall(MPMConstitutivePoints(mpm, ctx->dt, nbad));                      /* rho_p, e_p, p_p, c_p, T_p, s_p */
+  PetscCall(MPMGridToParticles(mpm, ctx, usl, PETSC_TRUE)); /* USL: v_p; x_p, L_p          */
+  if (usl) PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_KINEMATICS, ctx));
+  PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_STATE, ctx)); /* q_p: artificial viscosity    */
+  PetscCall(MPMConstitutivePoints(mpm, ctx->dt, nbad));        /* rho_p, e_p, p_p, c_p, T_p, s_p */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -1,10 +1,10 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* MUSL remap module (point phase MPM_PHASE_POINT_KINEMATICS; -mpm_scheme musl, Sulsky et al. 1994, Nairn 2003):
    map the updated point momenta back to the grid, v_I = sum_p N_I m_p v_p / m_I, and apply the nodal velocity modules
-   (walls); the step's kinematics gather then moves the points and computes L_p with that velocity (MPMStepPoints). With the specialised kernels the momenta are summed
-   in grid to points, each point's as soon as its new velocity is formed (MPM::remap_fused: one pass over the points and
-   their stencils instead of two, and m_I is kept), into f_I, which the kick has used; the same sums in the same order
-   as the scatter here, so the same bits. */
+   (walls); the step's kinematics gather then moves the points and computes L_p with that velocity (MPMStepPoints).
+   With the specialised kernels the momenta are summed in grid to points, each point's as soon as its new velocity is
+   formed (MPM::remap_fused: one pass over the points and their stencils instead of two, and m_I is kept), into f_I,
+   which the kick has used; the same sums in the same order as the scatter here, so the same bits. */
 #include "../petmpmimpl.h"
 
 PetscErrorCode MPMRemapApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
