@@ -471,25 +471,6 @@ static PetscErrorCode MPMGridZeroForScatterRanks(MPM mpm, const PetscInt lo[], c
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Zeroes f_I where a scatter from the points of the last MPMGridZeroForScatter (which have not moved since) can reach,
-   and at every ghost node: f_I then takes a sum over the points (MPMGridGhostSumForce). One rank: the box; several: the
-   local box MPM::lbox and the ghost nodes. */
-PetscErrorCode MPMGridZeroForce(MPM mpm, MPMNode *node)
-{
-  const MPMGrid  *g  = &mpm->grid;
-  const PetscBool r  = (PetscBool)(mpm->ghost_sf != NULL);
-  const PetscInt *lo = r ? mpm->lbox_lo : mpm->box_lo, *hi = r ? mpm->lbox_hi : mpm->box_hi, n0 = r ? g->gm[0] : g->xm[0], n1 = r ? g->gm[1] : g->xm[1];
-
-  PetscFunctionBegin;
-  for (PetscInt k2 = lo[2]; k2 < hi[2]; k2++)
-    for (PetscInt k1 = lo[1]; k1 < hi[1]; k1++)
-      for (PetscInt k0 = lo[0]; k0 < hi[0]; k0++)
-        for (PetscInt k = 0; k < 3; k++) node[(k2 * n1 + k1) * n0 + k0].f[k] = 0.0;
-  for (PetscInt i = 0; i < mpm->nghost; i++)
-    for (PetscInt k = 0; k < 3; k++) node[mpm->ghost[i]].f[k] = 0.0;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 /* Zeroes the local nodal vector before a scatter from the n points at x, and sets the box of nodes the step's node
    loops sweep (MPM::box_lo, box_hi, in owned-node indices): the grid work follows the body, not the domain, and every
    node outside holds zeros, as after a zeroing of the whole vector. A rank's points touch the nodes of their cells

@@ -326,7 +326,6 @@ PETSC_INTERN PetscInt       MPMFieldBlockSize(PetscInt, PetscInt);
 PETSC_INTERN PetscErrorCode MPMCreateGrid(MPM);
 PETSC_INTERN PetscErrorCode MPMGridGhostSum(MPM);
 PETSC_INTERN PetscErrorCode MPMGridGhostSumForce(MPM);
-PETSC_INTERN PetscErrorCode MPMGridZeroForce(MPM, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMGridOwnedToGlobal(MPM);
 PETSC_INTERN PetscErrorCode MPMGhostExchange(MPM, MPI_Datatype, PetscScalar *, PetscBool, PetscBool);
 PETSC_INTERN PetscErrorCode MPMRebalance(MPM);

@@ -58,8 +58,8 @@ PetscErrorCode MPMModulesApply(MPM mpm, MPMPhase phase, const MPMStepContext *ct
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* v_I^n = (mv)_I / m_I, (mv)_I += dt_kick f_I, v_I^{n+1} = (mv)_I / m_I, then the nodal velocity modules (walls) and
-   the ghost update. The new velocity is stored in p (as velocity) for the gather; v0 keeps v_I^n for the FLIP
+/* v_I^n = (mv)_I / m_I, (mv)_I += dt_kick f_I, v_I^{n+1} = (mv)_I / m_I, f_I = 0 (free from here on: MUSL's gather sums
+   the remap's momenta in it, MPMGather), then the nodal velocity modules (walls) and the ghost update. The new velocity is stored in p (as velocity) for the gather; v0 keeps v_I^n for the FLIP
    increment. The velocities live at half steps (leapfrog: the force at t^n kicks v^{n-1/2} to v^{n+1/2}, which then
    moves the points from t^n to t^{n+1}), so the kick spans dt_kick = (dt_{n-1} + dt_n)/2, dt_n/2 on the first step
    (v^{1/2} from v^0). With the plain dt_n a varying CFL step makes the scheme first order in time. */
@@ -80,9 +80,10 @@ static PetscErrorCode MPMGridAdvance(MPM mpm, const MPMStepContext *ctx)
       for (PetscInt k = 0; k < d; k++) {
         nd->v0[k] = nd->p[k] * minv;
         nd->p[k]  = (nd->p[k] + dt * nd->f[k]) * minv;
+        nd->f[k]  = 0.0;
       }
     } else {
-      for (PetscInt k = 0; k < d; k++) nd->v0[k] = nd->p[k] = 0.0;
+      for (PetscInt k = 0; k < d; k++) nd->v0[k] = nd->p[k] = nd->f[k] = 0.0;
     }
   }
   PetscCall(VecRestoreArray(mpm->lnodes, (PetscScalar **)&node));
