@@ -278,6 +278,7 @@ def test_bad_input():
             ([*SCENE_CTH, "-mpm_bc_lo", "wal", "-mpm_output", d], "-mpm_bc_lo: 'wal' is not one of wall, free, outflow"),
             ([*SCENE_CTH, "-mpm_exact_type", "foo", "-mpm_output", d], "-mpm_exact_type"),
             ([*SCENE_CTH, "-mpm_popping_interval", "-1", "-mpm_output", d], "-mpm_popping_interval"),
+            ([*SCENE_CTH, "-mpm_point_window", "-1", "-mpm_output", d], "-mpm_point_window -1 is out of range: valid is >= 0"),
             (["-options_file", HYDRO, "-mpm_gravity", "0,0", "-mpm_output", d], "-region_col_hydrostatic"),
             ([*SCENE_CTH, "-mat_gas_eos_idealgas_gama", "1.4", "-mpm_output", d], "-mat_gas_eos_idealgas_gama"),
             ([*SCENE_CTH, "-mat_gas_strength_johnsoncok_A", "1", "-mpm_output", d], "-mat_gas_strength_johnsoncok_A"),
