@@ -42,7 +42,7 @@ static inline int MPMNonPhysical(MPMEOS E, PetscReal rho, PetscReal e, PetscReal
 }
 
 /* The update of one chunk of material im's points (c0 .. c0 + n of its index list), with the dimension d and ident (one
-   material: the list is the identity, point c0 + i) compile-time constants where MPMConstitutive calls it, so that the
+   material: the list is the identity, point c0 + i) compile-time constants where MPMConstitutivePoints calls it, so that the
    loops over d unroll and the loops over the chunk read the fields directly; the same operations in the same order
    for every instantiation (the same numbers). bad: the first non-physical point so far (in/out). */
 #define MPM_CP(i) (ident ? c0 + (i) : idx[i])
@@ -156,21 +156,11 @@ static inline __attribute__((always_inline)) PetscErrorCode MPMConstitutiveChunk
    the model gives s^{n+1} from F^{n+1} = (I + dt L) F^n (tracked only when a model or the shape functions
    read it). The update runs per material, over each material's points (a counting sort on the material field
    every step, so migration needs no bookkeeping), with the batched EOS and strength operations (one call per
-   material and phase, not per point). A non-physical state (or a CPDI domain the grid cannot hold) prints its diagnosis and sets the run's failure
-   (MPMSetFailure): the time loop stops and MPMSolve writes the last state. */
-PetscErrorCode MPMConstitutive(MPM mpm, PetscReal dt)
-{
-  PetscInt nbad = 0;
-
-  PetscFunctionBegin;
-  PetscCall(MPMConstitutivePoints(mpm, dt, &nbad));
-  PetscCall(MPMConstitutiveFailure(mpm, nbad));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* The update of the points MPMPointsGetArrays shows (all, or a window of them: MPMStep). Where one is non-physical it
-   prints the diagnosis of the first and sets *nbad to 1, unless *nbad is 1 already (a window before it on this rank
-   had one: one diagnosis per rank); otherwise *nbad is left as it is. */
+   material and phase, not per point). It updates the points MPMPointsGetArrays shows (all, or a window of them:
+   MPMStep). A non-physical state (or a CPDI domain the grid cannot hold) prints the diagnosis of the first such point
+   and sets *nbad to 1, unless *nbad is 1 already (a window before it on this rank had one: one diagnosis per rank);
+   MPMConstitutiveFailure then sets the run's failure (MPMSetFailure): the time loop stops and MPMSolve writes the last
+   state. */
 PetscErrorCode MPMConstitutivePoints(MPM mpm, PetscReal dt, PetscInt *nbad)
 {
   const PetscInt  d = mpm->grid.dim;

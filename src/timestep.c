@@ -8,22 +8,6 @@
    fails every comparison and takes the full evaluation. (The points' maxima evaluate every term, in vector lanes.) */
 #define MPM_DT_SCREEN (1.0 - 1e-9)
 
-/* dt = min of
-     sound:        C h_min / max_p (c_p + |v_p| + 2 nu_p / h_min + 2 d mu_p / (rho_p h_min)), nu_p = q_p / (rho_p |div v_p|)
-                   the artificial viscosity's diffusivity and mu_p a Newtonian material's viscosity, so that their own
-                   (diffusive) limits are respected;
-     volume:       dV_max / max_p |tr L_p|: no point's volume changes by more than the fraction dV_max
-                   (-mpm_dt_volume) in a step at the rate of its last step (a point that would grow 7-fold in one
-                   step at the sound-speed step, as where a dense gas expands into a light one, cannot take the
-                   work of its pressure over that step and goes negative in energy);
-     acceleration: the grid's own acceleration this step, a_I = f_I / m_I, read by the points with their mean
-                   weight wbar_I = sum N_I^2 m_p / m_I, moves no node by more than C_a h (-mpm_dt_acceleration):
-                   dt (dt + dt_prev)/2 wbar_I |a_I| <= C_a h_min. It is what a cold or light material feels before
-                   its own state knows (a shock driven into a gas 1000 times lighter); the weight keeps the
-                   nodes that a point barely reaches (its small-mass stencil corners) from setting the step.
-   The grid's forces of the step (MPMStepForces) must be in the nodal vector. Records which limit set dt
-   (mpm->dt_limit). With diagnose, the rank holding the point that sets the sound-speed limit prints it (for a run
-   stopped by -mpm_dt_min). */
 /* The signal speed of point p (c_p + |v_p| and the diffusive terms of MPMComputeTimeStep), with the dimension D, whether
    a material may be viscous (VISC: mu, the materials' viscosities) and whether the hoop rate enters div v (HOOP)
    compile-time constants where the loops call it (MPMPointDivergence tests for the hoop rate per point: that loop did not
@@ -92,6 +76,22 @@ static inline __attribute__((always_inline)) void MPMSignalMaxima(const MPMPoint
       MPMSignalMaxima(&pts, D, PETSC_FALSE, PETSC_FALSE, mu, h, mx); \
   } while (0)
 
+/* dt = min of
+     sound:        C h_min / max_p (c_p + |v_p| + 2 nu_p / h_min + 2 d mu_p / (rho_p h_min)), nu_p = q_p / (rho_p |div v_p|)
+                   the artificial viscosity's diffusivity and mu_p a Newtonian material's viscosity, so that their own
+                   (diffusive) limits are respected;
+     volume:       dV_max / max_p |tr L_p|: no point's volume changes by more than the fraction dV_max
+                   (-mpm_dt_volume) in a step at the rate of its last step (a point that would grow 7-fold in one
+                   step at the sound-speed step, as where a dense gas expands into a light one, cannot take the
+                   work of its pressure over that step and goes negative in energy);
+     acceleration: the grid's own acceleration this step, a_I = f_I / m_I, read by the points with their mean
+                   weight wbar_I = sum N_I^2 m_p / m_I, moves no node by more than C_a h (-mpm_dt_acceleration):
+                   dt (dt + dt_prev)/2 wbar_I |a_I| <= C_a h_min. It is what a cold or light material feels before
+                   its own state knows (a shock driven into a gas 1000 times lighter); the weight keeps the
+                   nodes that a point barely reaches (its small-mass stencil corners) from setting the step.
+   The grid's forces of the step (MPMStepForces) must be in the nodal vector. Records which limit set dt
+   (mpm->dt_limit). With diagnose, the rank holding the point that sets the sound-speed limit prints it (for a run
+   stopped by -mpm_dt_min). */
 PetscErrorCode MPMComputeTimeStep(MPM mpm, PetscBool diagnose, PetscReal *dt)
 {
   const MPMGrid  *g     = &mpm->grid;

@@ -13,22 +13,16 @@ PetscErrorCode MPMRemapApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
   MPMNode       *node;
 
   PetscFunctionBegin;
-  if (mpm->remap_fused) { /* grid to points has summed the momenta into f_I; m_I is the force phase's (the points have not moved) */
-    PetscCall(MPMGridGhostSumForce(mpm));
-    PetscCall(VecGetArray(mpm->lnodes, (PetscScalar **)&node));
-    MPM_FOR_BOX_NODES(mpm, c)
-    {
-      const PetscReal minv = node[c].m > 0.0 ? 1.0 / node[c].m : 0.0;
-      for (PetscInt k = 0; k < d; k++) node[c].p[k] = node[c].f[k] * minv;
-    }
-  } else {
-    PetscCall(MPMScatter(mpm, PETSC_FALSE, ctx->tn));
-    PetscCall(VecGetArray(mpm->lnodes, (PetscScalar **)&node));
-    MPM_FOR_BOX_NODES(mpm, c)
-    {
-      const PetscReal minv = node[c].m > 0.0 ? 1.0 / node[c].m : 0.0;
-      for (PetscInt k = 0; k < d; k++) node[c].p[k] *= minv;
-    }
+  if (mpm->remap_fused)
+    PetscCall(MPMGridGhostSumForce(mpm)); /* grid to points has summed the momenta into f_I; m_I is the force phase's (the points have not moved) */
+  else
+    PetscCall(MPMScatter(mpm, PETSC_FALSE, ctx->tn)); /* the momenta into p_I */
+  PetscCall(VecGetArray(mpm->lnodes, (PetscScalar **)&node));
+  MPM_FOR_BOX_NODES(mpm, c)
+  {
+    const PetscReal  minv = node[c].m > 0.0 ? 1.0 / node[c].m : 0.0;
+    const PetscReal *mv   = mpm->remap_fused ? node[c].f : node[c].p;
+    for (PetscInt k = 0; k < d; k++) node[c].p[k] = mv[k] * minv;
   }
   PetscCall(VecRestoreArray(mpm->lnodes, (PetscScalar **)&node));
   {

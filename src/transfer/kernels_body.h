@@ -398,15 +398,35 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GRuns, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, c
   PetscInt       run[MPM_KS], open = 0;
   MPM_KROW       am = {0}, aw = {0}, ap[MPM_KD] = {{0}}, af[MPM_KD] = {{0}};
 
+  /* lane a of the run's sums stored to its node; node i's values loaded into lane a; lane b's moved to lane a */
+#  define MPM_KRUN_STORE(a)                                           \
+    do {                                                              \
+      MPMNode *nd_ = &nodes[run[a]];                                  \
+      nd_->m       = am[a];                                           \
+      nd_->w2      = aw[a];                                           \
+      for (PetscInt k = 0; k < D; k++) nd_->p[k] = ap[k][a];          \
+      for (PetscInt k = 0; force && k < D; k++) nd_->f[k] = af[k][a]; \
+    } while (0)
+#  define MPM_KRUN_LOAD(a, i)                                         \
+    do {                                                              \
+      const MPMNode *nd_ = &nodes[i];                                 \
+      run[a]             = (i);                                       \
+      am[a]              = nd_->m;                                    \
+      aw[a]              = nd_->w2;                                   \
+      for (PetscInt k = 0; k < D; k++) ap[k][a] = nd_->p[k];          \
+      for (PetscInt k = 0; force && k < D; k++) af[k][a] = nd_->f[k]; \
+    } while (0)
+#  define MPM_KRUN_MOVE(a, b)                                        \
+    do {                                                             \
+      run[a] = run[b];                                               \
+      am[a]  = am[b];                                                \
+      aw[a]  = aw[b];                                                \
+      for (PetscInt k = 0; k < D; k++) ap[k][a] = ap[k][b];          \
+      for (PetscInt k = 0; force && k < D; k++) af[k][a] = af[k][b]; \
+    } while (0)
 #  define MPM_KRUN_FLUSH()                                             \
     do {                                                               \
-      for (PetscInt a = 0; open && a < MPM_KS; a++) {                  \
-        MPMNode *nd = &nodes[run[a]];                                  \
-        nd->m       = am[a];                                           \
-        nd->w2      = aw[a];                                           \
-        for (PetscInt k = 0; k < D; k++) nd->p[k] = ap[k][a];          \
-        for (PetscInt k = 0; force && k < D; k++) nd->f[k] = af[k][a]; \
-      }                                                                \
+      for (PetscInt a = 0; open && a < MPM_KS; a++) MPM_KRUN_STORE(a); \
       open = 0;                                                        \
     } while (0)
 #  if defined(MPM_KTENT)
@@ -440,38 +460,15 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GRuns, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, c
                                             nodes is the run's second, whose sums stay in the registers; the run's first
                                             layer is stored and the point's second loaded */
       for (PetscInt a = 0; a < MPM_KS; a += 2) {
-        MPMNode *nd = &nodes[run[a]], *ne = &nodes[node[a + 1]];
-        nd->m  = am[a];
-        nd->w2 = aw[a];
-        for (PetscInt k = 0; k < D; k++) nd->p[k] = ap[k][a];
-        for (PetscInt k = 0; force && k < D; k++) nd->f[k] = af[k][a];
-        run[a]     = run[a + 1];
-        am[a]      = am[a + 1];
-        aw[a]      = aw[a + 1];
-        run[a + 1] = node[a + 1];
-        am[a + 1]  = ne->m;
-        aw[a + 1]  = ne->w2;
-        for (PetscInt k = 0; k < D; k++) {
-          ap[k][a]     = ap[k][a + 1];
-          ap[k][a + 1] = ne->p[k];
-        }
-        for (PetscInt k = 0; force && k < D; k++) {
-          af[k][a]     = af[k][a + 1];
-          af[k][a + 1] = ne->f[k];
-        }
+        MPM_KRUN_STORE(a);
+        MPM_KRUN_MOVE(a, a + 1);
+        MPM_KRUN_LOAD(a + 1, node[a + 1]);
       }
     } else
 #  endif
       if (!open || node[0] != run[0]) {
       MPM_KRUN_FLUSH();
-      for (PetscInt a = 0; a < MPM_KS; a++) {
-        const MPMNode *nd = &nodes[node[a]];
-        run[a]            = node[a];
-        am[a]             = nd->m;
-        aw[a]             = nd->w2;
-        for (PetscInt k = 0; k < D; k++) ap[k][a] = nd->p[k];
-        for (PetscInt k = 0; force && k < D; k++) af[k][a] = nd->f[k];
-      }
+      for (PetscInt a = 0; a < MPM_KS; a++) MPM_KRUN_LOAD(a, node[a]);
       open = 1;
     }
     { /* the operations of MPMKP2GPoint on every entry at once (sign 1) */
@@ -501,6 +498,9 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GRuns, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, c
   }
   MPM_KRUN_FLUSH();
 #  undef MPM_KRUN_FLUSH
+#  undef MPM_KRUN_STORE
+#  undef MPM_KRUN_LOAD
+#  undef MPM_KRUN_MOVE
 }
 #endif
 

@@ -554,7 +554,7 @@ PetscErrorCode MPMGridToParticles(MPM mpm, const MPMStepContext *ctx, PetscBool 
 {
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(mpm->log.g2p, 0, 0, 0, 0));
-  PetscCall(MPMGather(mpm, ctx->dt, velocity ? ctx->kick : ctx->dt, velocity, kinematics, (PetscBool)(velocity && !kinematics && mpm->remap_fused)));
+  PetscCall(MPMGather(mpm, ctx->dt, ctx->kick, velocity, kinematics, (PetscBool)(velocity && !kinematics && mpm->remap_fused)));
   PetscCall(PetscLogEventEnd(mpm->log.g2p, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
