@@ -385,9 +385,9 @@ PetscErrorCode MPMSetUp(MPM mpm)
   /* MUSL: the remap is the only point-kinematics module, so nothing changes v_p between grid to points and the remap */
   mpm->remap_fused = (PetscBool)(mpm->scheme == MPM_SCHEME_MUSL && mpm->kern);
   { /* the point phases of MPMStepPoints window by window: the modules among them pointwise, and a grid to points that updates
-       each point on its own (USL's with the conservative update and the cell rule shares each cell's work among its points first) */
+       each point on its own */
     const PetscBool usl = (PetscBool)(mpm->scheme == MPM_SCHEME_USL);
-    mpm->windowed       = (PetscBool)(mpm->point_window > 0 && !(usl && mpm->energy_update == MPM_ENERGY_CONSERVATIVE && mpm->stress_integration == MPM_STRESS_CELL));
+    mpm->windowed       = (PetscBool)(mpm->point_window > 0 && MPMGridToParticlesIsPointwise(mpm));
     for (PetscInt ph = usl ? MPM_PHASE_POINT_KINEMATICS : MPM_PHASE_POINT_STATE; ph <= MPM_PHASE_POINT_STATE; ph++)
       for (MPMModule mod = mpm->modules[ph]; mod; mod = mod->next) mpm->windowed = (PetscBool)(mpm->windowed && mod->pointwise);
   }

@@ -370,6 +370,7 @@ PETSC_INTERN PetscErrorCode MPMScatter(MPM, PetscBool, PetscReal);
 PETSC_INTERN PetscErrorCode MPMGather(MPM, PetscReal, PetscReal, PetscBool, PetscBool, PetscBool);
 PETSC_INTERN PetscErrorCode MPMParticlesToGrid(MPM, const MPMStepContext *);
 PETSC_INTERN PetscErrorCode MPMGridToParticles(MPM, const MPMStepContext *, PetscBool, PetscBool);
+PETSC_INTERN PetscBool      MPMGridToParticlesIsPointwise(MPM);
 PETSC_INTERN PetscErrorCode MPMConstitutivePoints(MPM, PetscReal, PetscInt *);
 PETSC_INTERN PetscErrorCode MPMConstitutiveFailure(MPM, PetscInt);
 PETSC_INTERN PetscErrorCode MPMProjectToGrid(MPM);

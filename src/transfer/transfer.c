@@ -470,12 +470,15 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
   const PetscReal alpha = mpm->alpha;
   const PetscBool kefix = mpm->ke_fix;
   MPMPoints       pts;
-  const MPMNode  *node;
+  MPMNode        *node; /* read, and with remap f_I written */
   PetscReal      *pointwork = NULL;
 
   PetscFunctionBegin;
   PetscCheck(!remap || (mpm->kern && velocity && !kinematics), mpm->comm, PETSC_ERR_PLIB, "The remap's momentum is fused only into a specialised velocity gather");
-  PetscCall(VecGetArrayRead(mpm->lnodes, (const PetscScalar **)&node));
+  if (remap)
+    PetscCall(VecGetArray(mpm->lnodes, (PetscScalar **)&node));
+  else
+    PetscCall(VecGetArrayRead(mpm->lnodes, (const PetscScalar **)&node));
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   {
     PetscReal       *x = pts.f[MPM_FIELD_POSITION], *v = pts.f[MPM_FIELD_VELOCITY], *L = pts.f[MPM_FIELD_GRADV], *e = pts.f[MPM_FIELD_ENERGY];
@@ -532,7 +535,7 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
                                 .ectx      = &ex,
                                 .threshold = mpm->isentrope_threshold};
     if (remap) { /* f_I, zeroed by the kick (MPMGridAdvance, and the ghosts from their owners), takes the remap's momenta (MPMRemapApply) */
-      mpm->kern->g2p_remap[work ? 1 : 0](g, mpm->shape->data, &A, (MPMNode *)node);
+      mpm->kern->g2p_remap[work ? 1 : 0](g, mpm->shape->data, &A, node);
     } else if (mpm->kern) {
       mpm->kern->g2p[(velocity ? MPM_G2P_VELOCITY : 0) | (kinematics ? MPM_G2P_KINEMATICS : 0) | (work ? MPM_G2P_WORK : 0)](g, mpm->shape->data, &A, node);
     } else if (d == 3)
@@ -544,8 +547,20 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
   }
   PetscCall(PetscFree(pointwork));
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-  PetscCall(VecRestoreArrayRead(mpm->lnodes, (const PetscScalar **)&node));
+  if (remap)
+    PetscCall(VecRestoreArray(mpm->lnodes, (PetscScalar **)&node));
+  else
+    PetscCall(VecRestoreArrayRead(mpm->lnodes, (const PetscScalar **)&node));
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Whether the step's grid to points (MPMStepPoints: USL's whole gather, MUSL's kinematics gather) updates each point
+   from its own fields and the grid alone, so that it can run on a window of the points: not where MPMGather's
+   conservative work goes by cells (USL with the cell rule: each cell's work is formed over all the extended cells first,
+   then shared among its points). */
+PetscBool MPMGridToParticlesIsPointwise(MPM mpm)
+{
+  return (PetscBool) !(mpm->scheme == MPM_SCHEME_USL && mpm->energy_update == MPM_ENERGY_CONSERVATIVE && mpm->stress_integration == MPM_STRESS_CELL);
 }
 
 /* The step's grid to points (MPMGather): USL velocity and kinematics in one pass; MUSL velocity (with the remap's
