@@ -8,12 +8,13 @@
    order; the time, the step, the last step size (the leapfrog kick and the acceleration limit read it) and the largest
    (-mpm_dt_min_ratio reads it), the next point id, the run's initial sums, the outputs so far, the checks, and each rank's diagnostics. The grid is not in
    it: every step rebuilds it from the points.
-     /points/<field>  (N bs)   the points of rank r at the offset of ranks < r
-     /counts          (ranks)  points per rank
-     /state           (MPM_CKPT_NSTATE)
-     /diagnostics     (ranks x MPM_CKPT_NDIAG)
-     /outputs         (outputs x 2: time, points);  /checks (checks x 2: value, reference), /check_names (checks x MPM_MAX_NAME)
-     /ownership       (sum of the ranks per direction)  the grid's nodes per rank column along each direction
+     /points/<field>       (N bs)         the points of rank r at the offset of ranks < r
+     /counts               (ranks)        points per rank
+     /state                (MPM_CKPT_NSTATE)
+     /diagnostics/<name>   (ranks x n)    the core's counters and sums, each rank's row (MPMCkptDiagnostics)
+     /modules/<module>/<name> (ranks x n) the state each module in the step writes (its checkpoint op)
+     /outputs              (outputs x 2: time, points);  /checks (checks x 2: value, reference), /check_names (checks x MPM_MAX_NAME)
+     /ownership            (sum of the ranks per direction)  the grid's nodes per rank column along each direction
    On the rank count that wrote it, each rank takes back its own points in their order, so the run continues bit for
    bit as if never interrupted; on another rank count the points are dealt out evenly and migrated to the ranks that
    own their cells (the same answer to round-off: sums run in another order). With -mpm_balance the checkpoint's
@@ -26,8 +27,6 @@
 #include <unistd.h>
 
 #define MPM_CKPT_NSTATE 29
-#define MPM_CKPT_OUTFLOW 30 /* the outflow tallies' place in the diagnostics, after the counters of MPMCkptDiag */
-#define MPM_CKPT_NDIAG (MPM_CKPT_OUTFLOW + MPM_OUTFLOW_N)
 
 /* A 1D dataset of N doubles of which this rank writes n at offset. */
 static PetscErrorCode MPMCkptWrite(hid_t file, const char name[], hsize_t N, hsize_t offset, hsize_t n, const PetscReal *a)
@@ -72,51 +71,101 @@ static hid_t MPMCkptOpen(MPI_Comm comm, const char file[], PetscBool create)
   return f;
 }
 
-/* The diagnostics as doubles (the sums of this rank and the global counters alike). */
-static void MPMCkptDiag(MPMDiagnostics *dg, PetscReal a[], PetscBool store)
-{
-  PetscReal     *v[MPM_CKPT_NDIAG] = {&dg->isentrope_energy, &dg->plastic_work, &dg->popped_sum, &dg->first_popped_time, &dg->first_popped_x[0], &dg->first_popped_x[1], &dg->first_popped_x[2]};
-  PetscInt      *w[]               = {&dg->isentrope_points, &dg->dt_limit[0],  &dg->dt_limit[1],   &dg->dt_limit[2],      &dg->dt_limit[3],   &dg->vacuum_points_max, &dg->empty_cells_max, &dg->empty_cells0, &dg->first_vacuum_step,
-                                      &dg->first_empty_step, &dg->points_split, &dg->split_refused, &dg->wall_reflections, &dg->domain_resets, &dg->popping_checks,    &dg->popped_max,      &dg->spalled,      &dg->rebalances};
-  const PetscInt nv = 7, nw = (PetscInt)(sizeof(w) / sizeof(w[0]));
-  PetscReal     *t = &a[MPM_CKPT_OUTFLOW];
+/* A checkpoint being written or read: values are stored by name, a row per rank, under the current group. */
+struct _p_MPMCheckpoint {
+  hid_t       file;
+  PetscBool   write;
+  PetscMPIInt rank, size;
+  PetscInt    wsize;                   /* the ranks of the run that wrote it */
+  char        group[2 * MPM_MAX_NAME]; /* where the values go: "diagnostics", "modules/<module>" */
+};
 
-  _Static_assert(7 + sizeof(w) / sizeof(w[0]) + 5 <= MPM_CKPT_OUTFLOW, "MPMCkptDiag: the counters run into the outflow tallies");
-  for (PetscInt i = 0; i < nv; i++) {
-    if (store)
-      a[i] = *v[i];
-    else
-      *v[i] = a[i];
+/* The group names below stores under (created when writing). */
+static PetscErrorCode MPMCheckpointSetGroup(MPMCheckpoint ck, const char group[])
+{
+  PetscFunctionBegin;
+  PetscCall(PetscStrncpy(ck->group, group, sizeof(ck->group)));
+  if (ck->write && H5Lexists(ck->file, group, H5P_DEFAULT) <= 0) {
+    hid_t grp = H5Gcreate2(ck->file, group, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    PetscCheck(grp >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot create the group %s in the checkpoint", group);
+    H5Gclose(grp);
   }
-  for (PetscInt i = 0; i < nw; i++) {
-    if (store)
-      a[nv + i] = (PetscReal)*w[i];
-    else
-      *w[i] = (PetscInt)a[nv + i];
-  }
-  if (store) { /* the volume fill (global), after the counters, then the volume-fill module's and the wall friction's sums (this rank's) */
-    a[nv + nw]     = dg->volume_fill_max;
-    a[nv + nw + 1] = (PetscReal)dg->first_overlap_step;
-    a[nv + nw + 2] = dg->fill_volume;
-    a[nv + nw + 3] = dg->fill_point_steps;
-    a[nv + nw + 4] = dg->friction_work;
-  } else {
-    dg->volume_fill_max    = a[nv + nw];
-    dg->first_overlap_step = (PetscInt)a[nv + nw + 1];
-    dg->fill_volume        = a[nv + nw + 2];
-    dg->fill_point_steps   = a[nv + nw + 3];
-    dg->friction_work      = a[nv + nw + 4];
-  }
-  for (PetscInt i = 0; i < MPM_OUTFLOW_N; i++) {
-    if (store)
-      t[i] = dg->outflow[i];
-    else
-      dg->outflow[i] = t[i];
-  }
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The counters that are this rank's sums (the report adds them over ranks): their indices in MPMCkptDiag's order. */
-static const PetscInt MPMCkptDiagSums[] = {0, 1, 7, 17, 18, 19, 20, 23, 27, 28, 29}; /* and the outflow tallies from MPM_CKPT_OUTFLOW */
+/* Writes this rank's n values as its row of the dataset group/name (ranks x n), or reads them back: on the writer's
+   rank count each rank its own row; on another, a global value from row 0, and the rows of a rank sum added into
+   rank 0 (0 on the others). */
+PetscErrorCode MPMCheckpointReals(MPMCheckpoint ck, const char name[], PetscInt n, PetscReal v[], MPMCheckpointMerge merge)
+{
+  char       path[4 * MPM_MAX_NAME];
+  PetscReal *all;
+
+  PetscFunctionBegin;
+  PetscCall(PetscSNPrintf(path, sizeof(path), "%s/%s", ck->group, name));
+  if (ck->write) {
+    PetscCall(MPMCkptWrite(ck->file, path, (hsize_t)(ck->size * n), (hsize_t)(ck->rank * n), (hsize_t)n, v));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(PetscMalloc1(ck->wsize * n, &all));
+  PetscCall(MPMCkptRead(ck->file, path, 0, (hsize_t)(ck->wsize * n), all, NULL));
+  for (PetscInt i = 0; i < n; i++) {
+    if (ck->wsize == ck->size) v[i] = all[ck->rank * n + i];
+    else if (merge == MPM_CKPT_GLOBAL) v[i] = all[i];
+    else {
+      v[i] = all[i];
+      for (PetscInt r = 1; r < ck->wsize; r++) v[i] += all[r * n + i];
+      if (ck->rank) v[i] = 0.0;
+    }
+  }
+  PetscCall(PetscFree(all));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMCheckpointInts(MPMCheckpoint ck, const char name[], PetscInt n, PetscInt v[], MPMCheckpointMerge merge)
+{
+  PetscReal a[MPM_MAX_DIM + 2];
+
+  PetscFunctionBegin;
+  PetscCheck(n <= (PetscInt)PETSC_STATIC_ARRAY_LENGTH(a), PETSC_COMM_SELF, PETSC_ERR_SUP, "Checkpoint %s: at most %d integers", name, (int)PETSC_STATIC_ARRAY_LENGTH(a));
+  for (PetscInt i = 0; i < n; i++) a[i] = (PetscReal)v[i];
+  PetscCall(MPMCheckpointReals(ck, name, n, a, merge));
+  for (PetscInt i = 0; i < n; i++) v[i] = (PetscInt)a[i];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The core's diagnostics (each rank's sums, and the counters that are global), then each module's state. */
+static PetscErrorCode MPMCkptDiagnostics(MPM mpm, MPMCheckpoint ck)
+{
+  MPMDiagnostics *dg = &mpm->diag;
+
+  PetscFunctionBegin;
+  PetscCall(MPMCheckpointSetGroup(ck, "diagnostics"));
+  PetscCall(MPMCheckpointReals(ck, "isentrope_energy", 1, &dg->isentrope_energy, MPM_CKPT_RANK_SUM));
+  PetscCall(MPMCheckpointInts(ck, "isentrope_points", 1, &dg->isentrope_points, MPM_CKPT_RANK_SUM));
+  PetscCall(MPMCheckpointReals(ck, "plastic_work", 1, &dg->plastic_work, MPM_CKPT_RANK_SUM));
+  PetscCall(MPMCheckpointInts(ck, "wall_reflections", 1, &dg->wall_reflections, MPM_CKPT_RANK_SUM));
+  PetscCall(MPMCheckpointInts(ck, "spalled", 1, &dg->spalled, MPM_CKPT_RANK_SUM));
+  PetscCall(MPMCheckpointReals(ck, "outflow", MPM_OUTFLOW_N, dg->outflow, MPM_CKPT_RANK_SUM));
+  PetscCall(MPMCheckpointInts(ck, "dt_limit", MPM_NUM_DT_LIMITS, dg->dt_limit, MPM_CKPT_GLOBAL));
+  PetscCall(MPMCheckpointInts(ck, "vacuum_points_max", 1, &dg->vacuum_points_max, MPM_CKPT_GLOBAL));
+  PetscCall(MPMCheckpointInts(ck, "empty_cells_max", 1, &dg->empty_cells_max, MPM_CKPT_GLOBAL));
+  PetscCall(MPMCheckpointInts(ck, "empty_cells0", 1, &dg->empty_cells0, MPM_CKPT_GLOBAL));
+  PetscCall(MPMCheckpointInts(ck, "first_vacuum_step", 1, &dg->first_vacuum_step, MPM_CKPT_GLOBAL));
+  PetscCall(MPMCheckpointInts(ck, "first_empty_step", 1, &dg->first_empty_step, MPM_CKPT_GLOBAL));
+  PetscCall(MPMCheckpointInts(ck, "rebalances", 1, &dg->rebalances, MPM_CKPT_GLOBAL));
+  PetscCall(MPMCheckpointReals(ck, "volume_fill_max", 1, &dg->volume_fill_max, MPM_CKPT_GLOBAL));
+  PetscCall(MPMCheckpointInts(ck, "first_overlap_step", 1, &dg->first_overlap_step, MPM_CKPT_GLOBAL));
+  PetscCall(MPMCheckpointSetGroup(ck, "modules"));
+  for (PetscInt i = 0; i < mpm->nmods; i++) {
+    char group[2 * MPM_MAX_NAME];
+    if (!mpm->mods[i]->active || !mpm->mods[i]->ops.checkpoint) continue;
+    PetscCall(PetscSNPrintf(group, sizeof(group), "modules/%s", mpm->mods[i]->name));
+    PetscCall(MPMCheckpointSetGroup(ck, group));
+    PetscCall(mpm->mods[i]->ops.checkpoint(mpm->mods[i], mpm, ck));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
 PetscErrorCode MPMCheckpointWrite(MPM mpm)
 {
@@ -180,11 +229,11 @@ PetscErrorCode MPMCheckpointWrite(MPM mpm)
                                            mpm->dt_peak};
     if (mpm->exact)
       for (PetscInt i = 0; i < 4; i++) st[24 + i] = mpm->exact->state[i];
-    PetscReal dg[MPM_CKPT_NDIAG] = {0}, *out, *chk;
+    struct _p_MPMCheckpoint ck = {f, PETSC_TRUE, rank, size, size, ""};
+    PetscReal              *out, *chk;
     PetscCall(MPMCkptWrite(f, "counts", (hsize_t)size, (hsize_t)rank, 1, &cnt));
     PetscCall(MPMCkptWrite(f, "state", MPM_CKPT_NSTATE, 0, rank ? 0 : MPM_CKPT_NSTATE, st));
-    MPMCkptDiag(&mpm->diag, dg, PETSC_TRUE);
-    PetscCall(MPMCkptWrite(f, "diagnostics", (hsize_t)size * MPM_CKPT_NDIAG, (hsize_t)rank * MPM_CKPT_NDIAG, MPM_CKPT_NDIAG, dg));
+    PetscCall(MPMCkptDiagnostics(mpm, &ck));
     PetscCall(PetscMalloc2(2 * mpm->noutputs + 1, &out, 2 * mpm->nchecks + 1, &chk));
     for (PetscInt s = 0; s < mpm->noutputs; s++) {
       out[2 * s]     = mpm->output_times[s];
@@ -316,21 +365,9 @@ PetscErrorCode MPMRestartRead(MPM mpm)
     PetscCheck(len == (hsize_t)(N * bs), mpm->comm, PETSC_ERR_FILE_READ, "-mpm_restart %s: field %s holds %llu values for %" PetscInt_FMT " points", mpm->restart, mpm->field[k].name, (unsigned long long)len, N);
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-  { /* diagnostics: each rank its own; on another rank count rank 0 takes the sums, every rank the global counters */
-    PetscReal *dg;
-    PetscCall(PetscMalloc1(wsize * MPM_CKPT_NDIAG, &dg));
-    PetscCall(MPMCkptRead(f, "diagnostics", 0, (hsize_t)(wsize * MPM_CKPT_NDIAG), dg, NULL));
-    if (wsize == size)
-      MPMCkptDiag(&mpm->diag, &dg[rank * MPM_CKPT_NDIAG], PETSC_FALSE);
-    else {
-      for (size_t i = 0; i < PETSC_STATIC_ARRAY_LENGTH(MPMCkptDiagSums) + MPM_OUTFLOW_N; i++) {
-        const PetscInt j = i < PETSC_STATIC_ARRAY_LENGTH(MPMCkptDiagSums) ? MPMCkptDiagSums[i] : MPM_CKPT_OUTFLOW + (PetscInt)(i - PETSC_STATIC_ARRAY_LENGTH(MPMCkptDiagSums));
-        for (PetscInt r = 1; r < wsize; r++) dg[j] += dg[r * MPM_CKPT_NDIAG + j];
-        if (rank) dg[j] = 0.0;
-      }
-      MPMCkptDiag(&mpm->diag, dg, PETSC_FALSE);
-    }
-    PetscCall(PetscFree(dg));
+  { /* diagnostics and the modules' state: each rank its own; on another rank count rank 0 takes the sums, every rank the global values */
+    struct _p_MPMCheckpoint ck = {f, PETSC_FALSE, rank, size, wsize, ""};
+    PetscCall(MPMCkptDiagnostics(mpm, &ck));
   }
   mpm->time             = st[0];
   mpm->steps            = (PetscInt)st[1];

@@ -137,7 +137,7 @@ static PetscErrorCode MPMCreateGridOwned(MPM mpm, PetscInt *own[], const PetscIn
     }
   }
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) mpm->box_lo[k] = mpm->box_hi[k] = mpm->lbox_lo[k] = mpm->lbox_hi[k] = 0; /* fresh vectors: zeros everywhere */
-  PetscCall(PetscCalloc2(g->ncells, &mpm->cellV, g->ncells, &mpm->cellS));                                            /* the pressure relaxation's scratch */
+  g->id++;
   g->nxcells = 1;
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) { /* the owned cells and one layer around, where the ghosted box has it (its cells' stencils stay in the box) */
     const PetscInt lo = k < g->dim ? PetscMax(g->gs[k], g->cs[k] - 1) : 0, hi = k < g->dim ? PetscMin(g->gs[k] + g->gm[k] - 1, g->cs[k] + g->cm[k] + 1) : 1;
@@ -163,9 +163,7 @@ PetscErrorCode MPMDestroyGrid(MPM mpm)
   mpm->nghost = 0;
   PetscCall(VecDestroy(&mpm->mean_l));
   PetscCall(DMDestroy(&mpm->mean_da));
-  PetscCall(PetscFree(mpm->fill_ref)); /* on the new grid's nodes, made anew */
   PetscCall(DMDestroy(&mpm->da));
-  PetscCall(PetscFree2(mpm->cellV, mpm->cellS));
   PetscCall(PetscFree(mpm->xcell));
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) PetscCall(PetscFree(mpm->grid.rank_start[k]));
   PetscFunctionReturn(PETSC_SUCCESS);

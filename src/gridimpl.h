@@ -33,7 +33,16 @@ typedef struct {
   PetscBool mirror_lo[MPM_MAX_DIM];  /* lower face is a wall: shape functions fold onto it by reflection */
   PetscBool mirror_hi[MPM_MAX_DIM];  /* upper face is a wall                                    */
   PetscBool axisym;                  /* -mpm_axisymmetric: 2D, x = r >= 0, y = z; volumes per radian, V = r dA */
+  PetscInt  id;                      /* grids built so far (a rebalance builds a new one): state sized to the grid is stale when its id differs */
 } MPMGrid;
+
+/* The domain's volume [cm^d] (r-z: per radian, int r dr dz). */
+static inline PetscReal MPMGridDomainVolume(const MPMGrid *g)
+{
+  PetscReal v = g->axisym ? 0.5 * (g->hi[0] * g->hi[0] - g->lo[0] * g->lo[0]) : g->hi[0] - g->lo[0];
+  for (PetscInt k = 1; k < g->dim; k++) v *= g->hi[k] - g->lo[k];
+  return v;
+}
 
 /* Nodal data: a struct overlay on the DMDA vector (dof = sizeof(MPMNode)/sizeof(PetscScalar)). */
 typedef struct {

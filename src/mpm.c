@@ -39,7 +39,6 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   m->diag.first_overlap_step = -1;
   m->diag.volume_fill        = 1.0;
   m->diag.volume_fill_max    = 0.0;
-  m->diag.first_popped_time  = -1.0;
   m->progress                = 10.0;
   m->balance                 = PETSC_TRUE;
   m->balance_threshold       = 1.2;
@@ -57,15 +56,7 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   m->update                  = MPM_UPDATE_BLEND;
   m->affine                  = -1;
   m->alpha                   = 0.99;
-  m->split                   = PETSC_TRUE;
-  m->conduction              = 2.0;
-  m->pressure_relax          = 0.25;
-  m->fill_rate               = 0.0;
-  m->fill_tol                = 0.05;
-  m->fill_mach               = 0.05;
   m->rest_time               = -1.0;
-  m->pressure_relax_mach     = 0.005;
-  m->domain_skew             = 0.5;
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
     m->grid.cells[k] = 1;
     m->grid.lo[k]    = 0.0;
@@ -83,6 +74,7 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   PetscCall(MPMShapeCreate(comm, &m->shape));
   PetscCall(MPMViscosityCreate(comm, &m->viscosity));
   PetscCall(MPMExactCreate(comm, &m->exact));
+  PetscCall(MPMModulesCreate(m));
   *mpm = m;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -132,45 +124,6 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscCall(MPMOptionsCheckRange("-mpm_isentrope_threshold", mpm->isentrope_threshold, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
   PetscCall(PetscOptionsReal("-mpm_vacuum_density", "Density, as a fraction of the lightest initial density of the point's material, below which the report counts it as vacuum [-], in (0, 1)", "", mpm->vacuum_density, &mpm->vacuum_density, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_vacuum_density", mpm->vacuum_density, 0.0, 1.0, PETSC_TRUE, PETSC_TRUE));
-  PetscCall(PetscOptionsReal("-mpm_conduction", "Artificial heat conduction C_h: a point the step compressed exchanges heat, by temperature, with the points on its nodes at the rate C_h |div v| [-], >= 0 (0: off)", "", mpm->conduction,
-                             &mpm->conduction, NULL));
-  PetscCall(MPMOptionsCheckRange("-mpm_conduction", mpm->conduction, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
-  PetscCall(
-    PetscOptionsReal("-mpm_pressure_relax", "Sub-cell pressure relaxation K_r: fluid points of a cell exchange volume towards a common pressure at the acoustic rate K_r c / h [-], >= 0 (0: off)", "", mpm->pressure_relax, &mpm->pressure_relax, NULL));
-  PetscCall(MPMOptionsCheckRange("-mpm_pressure_relax", mpm->pressure_relax, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
-  PetscCall(PetscOptionsReal("-mpm_volume_fill",
-                             "Volume consistency theta: fluid points on a node whose points' volumes exceed (1 + -mpm_volume_fill_tol) of its undeformed fill give back this fraction of the excess each step [-], in [0, 1] (0: off)", "",
-                             mpm->fill_rate, &mpm->fill_rate, NULL));
-  PetscCall(MPMOptionsCheckRange("-mpm_volume_fill", mpm->fill_rate, 0.0, 1.0, PETSC_FALSE, PETSC_FALSE));
-  if (mpm->fill_rate > 0.0) {
-    PetscCall(PetscOptionsReal("-mpm_volume_fill_tol", "Overfill of a node's volume the volume consistency leaves alone [-], >= 0", "", mpm->fill_tol, &mpm->fill_tol, NULL));
-    PetscCall(MPMOptionsCheckRange("-mpm_volume_fill_tol", mpm->fill_tol, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
-    PetscCall(PetscOptionsReal("-mpm_volume_fill_mach", "A point whose velocity jump across a cell |div v| h exceeds this fraction of its sound speed (a shock, a fast expansion) keeps its volume [-], > 0", "", mpm->fill_mach, &mpm->fill_mach, NULL));
-    PetscCall(MPMOptionsCheckRange("-mpm_volume_fill_mach", mpm->fill_mach, 0.0, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
-  }
-  if (mpm->pressure_relax > 0.0) {
-    PetscCall(PetscOptionsReal("-mpm_pressure_relax_mach", "A point whose velocity jump across a cell |div v| h exceeds this fraction of its sound speed (a shock, a fast expansion) does not relax [-], > 0", "", mpm->pressure_relax_mach,
-                               &mpm->pressure_relax_mach, NULL));
-    PetscCall(MPMOptionsCheckRange("-mpm_pressure_relax_mach", mpm->pressure_relax_mach, 0.0, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
-  }
-  PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-mpm_popping_interval", "Steps between checks for popped points (a point with no other point in the cells around its own, or faster than -mpm_popping_speed) [-], >= 0 (0: off)",
-                               &mpm->popping_interval, 0, PETSC_MAX_INT));
-  if (mpm->popping_interval > 0) {
-    PetscCall(PetscOptionsReal("-mpm_popping_speed", "A point faster than this has popped [cm/s], >= 0 (0: no speed criterion)", "", mpm->popping_speed, &mpm->popping_speed, NULL));
-    PetscCall(MPMOptionsCheckRange("-mpm_popping_speed", mpm->popping_speed, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
-  }
-  PetscCall(PetscOptionsReal("-mpm_domain_skew", "A CPDI domain whose skewness |det R| / prod |R e_k| (1 for a box) falls below this is reset to the cube of the same volume, for materials that do not read F [-], in [0, 1) (0: never)", "",
-                             mpm->domain_skew, &mpm->domain_skew, NULL));
-  PetscCall(MPMOptionsCheckRange("-mpm_domain_skew", mpm->domain_skew, 0.0, 1.0, PETSC_FALSE, PETSC_TRUE));
-  PetscCall(PetscOptionsBool("-mpm_split", "Split a point whose domain stretches beyond -mpm_split_length cells along an axis into two (mass, momentum, energy, volume and first moment conserved)", "", mpm->split, &mpm->split, NULL));
-  if (mpm->split) {
-    PetscInt level    = 30;
-    mpm->split_length = PetscMax(1.0, 1.5 / mpm->ppc);
-    PetscCall(PetscOptionsReal("-mpm_split_length", "Length of a point's domain along an axis above which it splits [cells], default max(1, 1.5 / ppc), >= 1 / ppc (the lattice spacing)", "", mpm->split_length, &mpm->split_length, NULL));
-    PetscCall(MPMOptionsCheckRange("-mpm_split_length", mpm->split_length, 1.0 / mpm->ppc, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
-    PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-mpm_split_max_level", "Most times a point's domain may be halved along one axis [-], 1 to 40", &level, 1, 40));
-    mpm->split_min_scale = PetscPowReal(0.5, (PetscReal)level - 1) * (1.0 - 1e-12);
-  }
   PetscCall(PetscOptionsEnum("-mpm_scheme", "Stress update order", "", MPMSchemes, (PetscEnum)mpm->scheme, (PetscEnum *)&mpm->scheme, NULL));
   PetscCall(PetscOptionsEnum("-mpm_stress_integration", "Internal force quadrature: cell-averaged stress or point by point", "", MPMStressIntegrations, (PetscEnum)mpm->stress_integration, (PetscEnum *)&mpm->stress_integration, NULL));
   PetscCall(PetscOptionsEnum("-mpm_cell_volume",
@@ -263,6 +216,7 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   PetscCall(MPMOptionsCheckRange("-mpm_stop_at_rest", mpm->rest_fraction, 0.0, 1.0, PETSC_FALSE, PETSC_TRUE));
   PetscCall(MPMSceneSetFromOptions(mpm, PetscOptionsObject));
   PetscOptionsEnd();
+  PetscCall(MPMModulesSetFromOptions(mpm));
   PetscCall(MPMShapeSetFromOptions(mpm->shape));
   PetscCall(MPMViscositySetFromOptions(mpm->viscosity));
   PetscCall(MPMExactSetFromOptions(mpm->exact));
@@ -363,20 +317,7 @@ PetscErrorCode MPMSetUp(MPM mpm)
   if (mpm->viscosity) PetscCall(MPMViscosityIsPointwise(mpm->viscosity, &pointwise));
   PetscCall(MPMLogRegister(mpm));
   PetscCall(PetscLogStagePush(mpm->log.setup));
-  { /* the step's modules, in the order they run within each phase */
-    PetscBool walls = PETSC_FALSE;
-    for (PetscInt k = 0; k < mpm->grid.dim; k++) walls = (PetscBool)(walls || mpm->bc_lo[k] == MPM_BC_WALL || mpm->bc_hi[k] == MPM_BC_WALL);
-    if (mpm->has_gravity) PetscCall(MPMModuleAdd(mpm, "MPMGravity", MPM_PHASE_GRID_FORCE, MPMGravityApply, NULL, PETSC_FALSE));
-    if (walls) PetscCall(MPMModuleAdd(mpm, "MPMWalls", MPM_PHASE_GRID_VELOCITY, MPMWallsApply, NULL, PETSC_FALSE));
-    if (mpm->scheme == MPM_SCHEME_MUSL) PetscCall(MPMModuleAdd(mpm, "MPMRemapMomentum", MPM_PHASE_POINT_KINEMATICS, MPMRemapApply, NULL, PETSC_FALSE));
-    if (mpm->viscosity) PetscCall(MPMModuleAdd(mpm, "MPMViscosity", MPM_PHASE_POINT_STATE, MPMViscosityModuleApply, NULL, pointwise));
-    if (mpm->conduction > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMConduction", MPM_PHASE_POINT_END, MPMConductionApply, NULL, PETSC_FALSE));
-    if (mpm->pressure_relax > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMRelax", MPM_PHASE_POINT_END, MPMRelaxApply, NULL, PETSC_FALSE));
-    if (mpm->fill_rate > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMVolumeFill", MPM_PHASE_POINT_END, MPMFillApply, NULL, PETSC_FALSE));
-    if (mpm->popping_interval > 0) PetscCall(MPMModuleAdd(mpm, "MPMPopping", MPM_PHASE_POINT_END, MPMPoppingApply, NULL, PETSC_FALSE));
-    if ((mpm->shape->needs_F || mpm->split) && mpm->grid.dim > 1 && mpm->domain_skew > 0.0) PetscCall(MPMModuleAdd(mpm, "MPMDomain", MPM_PHASE_POINT_ADAPT, MPMDomainApply, NULL, PETSC_FALSE));
-    if (mpm->split) PetscCall(MPMModuleAdd(mpm, "MPMSplit", MPM_PHASE_POINT_ADAPT, MPMSplitApply, NULL, PETSC_FALSE));
-  }
+  PetscCall(MPMModulesSetUp(mpm)); /* the step's modules: those the scene needs, in their phases */
 
   PetscCall(MPMCreateGrid(mpm));
   PetscCall(MPMShapeSetUp(mpm->shape, &mpm->grid, mpm->ppc));
@@ -387,14 +328,12 @@ PetscErrorCode MPMSetUp(MPM mpm)
   { /* the point phases of MPMStepPoints window by window: the modules among them pointwise, and a grid to points that updates
        each point on its own */
     const PetscBool usl = (PetscBool)(mpm->scheme == MPM_SCHEME_USL);
-    mpm->windowed       = (PetscBool)(mpm->point_window > 0 && MPMGridToParticlesIsPointwise(mpm));
-    for (PetscInt ph = usl ? MPM_PHASE_POINT_KINEMATICS : MPM_PHASE_POINT_STATE; ph <= MPM_PHASE_POINT_STATE; ph++)
-      for (MPMModule mod = mpm->modules[ph]; mod; mod = mod->next) mpm->windowed = (PetscBool)(mpm->windowed && mod->pointwise);
+    mpm->windowed       = (PetscBool)(mpm->point_window > 0 && MPMGridToParticlesIsPointwise(mpm) && MPMModulesPointwise(mpm, usl ? MPM_PHASE_POINT_KINEMATICS : MPM_PHASE_POINT_STATE, MPM_PHASE_POINT_STATE));
   }
   for (PetscInt i = 0; i < mpm->nmat; i++)
     PetscCheck(!mpm->grid.axisym || !mpm->mat[i].strength || !mpm->mat[i].strength->needs_F, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_axisymmetric: material %s's strength model reads F, which has no hoop component here; use a hypoelastic type",
                mpm->mat[i].name);
-  if (mpm->shape->needs_F || mpm->split || (mpm->exact && mpm->exact->ops.initial)) mpm->track_F = PETSC_TRUE; /* the points carry F */
+  if (mpm->shape->needs_F || MPMPointsFieldRequired(mpm, MPM_FIELD_DEFGRAD) || (mpm->exact && mpm->exact->ops.initial)) mpm->track_F = PETSC_TRUE; /* the points carry F */
   if (!mpm->exact->ops.evaluate && !mpm->exact->ops.checks) PetscCall(MPMRetireObject(mpm, &mpm->exact));      /* none */
   PetscCall(MPMPointsSelectFields(mpm));
   if (mpm->update == MPM_UPDATE_APIC) PetscCall(MPMPointsRegisterField(mpm, "affine", -1, "1/s", "APIC affine velocity C_p = B_p D_p^-1 (v(x) = v_p + C_p (x - x_p) about the point)", PETSC_TRUE, &mpm->affine));
@@ -443,13 +382,13 @@ PetscErrorCode MPMView(MPM mpm, PetscViewer viewer)
   PetscCall(PetscViewerASCIIPrintf(viewer, "energy update %s, kinetic energy fix %s\n", MPMEnergyUpdates[mpm->energy_update], mpm->ke_fix ? "on" : "off"));
   PetscCall(PetscViewerASCIIPrintf(viewer, "transfer kernels: %s%s; point phases: %s %" PetscInt_FMT "\n", mpm->kern ? "specialised" : "generic", mpm->remap_fused ? " (the MUSL remap's momentum summed in grid to points)" : "",
                                    mpm->windowed ? "in windows of points," : "each over all points,", mpm->windowed ? mpm->point_window : mpm->npoints0));
-  if (mpm->has_gravity) PetscCall(PetscViewerASCIIPrintf(viewer, "gravity (%g, %g, %g) cm/s^2\n", (double)mpm->gravity[0], (double)mpm->gravity[1], (double)mpm->gravity[2]));
   PetscCall(MPMShapeView(mpm->shape, viewer));
   PetscCall(PetscViewerASCIIPrintf(viewer, "particle update %s (FLIP fraction %g)\n", MPMUpdateTypes[mpm->update], (double)mpm->alpha));
   if (mpm->viscosity)
     PetscCall(MPMViscosityView(mpm->viscosity, viewer));
   else
     PetscCall(PetscViewerASCIIPrintf(viewer, "Artificial viscosity: none\n"));
+  PetscCall(MPMModulesView(mpm, viewer));
   PetscCall(MPMSceneView(mpm, viewer));
   if (mpm->exact) PetscCall(MPMExactView(mpm->exact, viewer));
   PetscCall(PetscViewerASCIIPopTab(viewer));

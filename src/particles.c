@@ -45,6 +45,20 @@ PetscErrorCode MPMPointsRegisterField(MPM mpm, const char name[], PetscInt bs, c
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* A module needs one of the core fields only some scenes carry (splitting: the domain scale s_p and F); before set-up. */
+PetscErrorCode MPMPointsRequireField(MPM mpm, MPMField f)
+{
+  PetscFunctionBegin;
+  PetscCheck(!mpm->swarm, mpm->comm, PETSC_ERR_ARG_WRONGSTATE, "Point field %s: fields are required before the points are created", MPMFieldTable[f].name);
+  mpm->field_req[f] = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscBool MPMPointsFieldRequired(MPM mpm, MPMField f)
+{
+  return mpm->field_req[f];
+}
+
 /* The core fields (MPMFieldTable) that every scene carries, and those only some need: F where the shape functions,
    a strength model or the exact solution read it, s and eps_p where a material has strength, X where an exact
    solution is evaluated at it. A fluid scene carries 26 values per point in 3D instead of 47. */
@@ -55,7 +69,7 @@ PetscErrorCode MPMPointsSelectFields(MPM mpm)
   mpm->field_on[MPM_FIELD_STRESS]        = mpm->has_stress;
   mpm->field_on[MPM_FIELD_PLASTICSTRAIN] = mpm->has_stress;
   mpm->field_on[MPM_FIELD_REFPOSITION]   = (PetscBool)(mpm->exact != NULL);
-  mpm->field_on[MPM_FIELD_DOMAINSCALE]   = mpm->split;
+  mpm->field_on[MPM_FIELD_DOMAINSCALE]   = mpm->field_req[MPM_FIELD_DOMAINSCALE];
   mpm->field_on[MPM_FIELD_HOOPRATE]      = mpm->grid.axisym;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -11,6 +11,7 @@
 #include "viscosity/viscosityimpl.h"
 #include "sceneimpl.h"
 #include "exact/exactimpl.h"
+#include "modules/module.h"
 #include <petscsf.h>
 
 /* ------------------------------------------------------------------ particles */
@@ -72,39 +73,10 @@ typedef struct {
   PetscLogStage setup, loop, io;
 } MPMLog;
 
-/* ------------------------------------------------------------------ the step: phases and modules */
-/* Where in the step a module runs. Grid phases get the owned nodes of the global nodal vector. */
-typedef enum {
-  MPM_PHASE_GRID_FORCE,       /* after points to grid: external nodal forces (gravity)                           */
-  MPM_PHASE_GRID_VELOCITY,    /* wherever nodal velocities are formed (advance, MUSL remap): walls, later rigid bodies and contact */
-  MPM_PHASE_POINT_KINEMATICS, /* after grid to points (MUSL: after its velocity gather, over all points): the MUSL remap */
-  MPM_PHASE_POINT_STATE,      /* before the constitutive update: artificial viscosity                            */
-  MPM_PHASE_POINT_ADAPT,      /* after the constitutive update: point splitting                                  */
-  MPM_PHASE_POINT_END,        /* after migration, each point on the rank that owns its cell: heat conduction, pressure relaxation */
-  MPM_NUM_PHASES
-} MPMPhase;
-
 /* What sets a step's size (src/timestep.c): the sound-speed CFL, the grid acceleration, the volume change of a
    point, or the final or output time the step lands on. */
 typedef enum { MPM_DT_SOUND, MPM_DT_ACCELERATION, MPM_DT_VOLUME, MPM_DT_LANDING, MPM_NUM_DT_LIMITS } MPMDtLimit;
 PETSC_INTERN const char *const MPMDtLimitNames[];
-
-/* Time, carried explicitly through a step: t^n, the step dt_n and the leapfrog kick (dt_{n-1} + dt_n)/2 [s]. */
-typedef struct {
-  PetscReal tn, dt, kick;
-  PetscBool remap; /* the nodal velocities are the MUSL remap's, not the kick's (forces such as wall friction act once, in the kick) */
-} MPMStepContext;
-
-typedef struct _p_MPMModule *MPMModule;
-struct _p_MPMModule {
-  char          name[MPM_MAX_NAME]; /* its -log_view event                 */
-  MPMPhase      phase;
-  PetscLogEvent event;
-  PetscBool     pointwise;                                                    /* a point phase's module whose update of a point reads only that point and the grid: it can run on a window of the points (MPMStep) */
-  PetscErrorCode (*apply)(MPMModule, MPM, const MPMStepContext *, MPMNode *); /* the owned nodes in grid phases, else NULL */
-  void     *ctx;                                                              /* the module's state: one allocation (PetscMalloc), freed with the list, or NULL */
-  MPMModule next;
-};
 
 /* The tallies of the points removed at outflow faces: mass [g], sum m (e + v^2/2) [erg], with gravity the potential
    energy -sum m g.x at the exit [erg], kinetic energy [erg], the points, and momentum [g cm/s] from MPM_OUTFLOW_MOMENTUM. */
@@ -121,19 +93,10 @@ typedef struct {
   PetscInt  first_vacuum_step, first_empty_step;
   PetscReal volume_fill, volume_fill_max;                   /* the points' volumes over their interior cells' volume, last and largest (global; MPMDiagnoseVacuum) */
   PetscInt  first_overlap_step;                             /* the first diagnosis whose fill exceeded 1 + MPM_VOLUME_FILL_TOL (-1: none) */
-  PetscReal fill_volume, fill_point_steps;                  /* volume the volume-fill module took back, and the point-steps it acted on (this rank's) */
-  PetscInt  points_split;                                   /* points this rank split (each split adds one point)                       */
-  PetscInt  split_refused;                                  /* point-steps that called for a split the level limit refused (this rank) */
   PetscInt  wall_reflections;                               /* points this rank put back across a wall (MPMMigrate)              */
-  PetscInt  domain_resets;                                  /* point-steps whose skewed CPDI domain this rank reset to a cube (MPMDomainApply) */
   PetscInt  spalled;                                        /* point-steps whose EOS state spalled, p = 0 (this rank; MPMEOSSpalled)  */
   PetscReal plastic_work;                                   /* sum over the steps of m_p sigma_eq d eps_p / rho_p on this rank [erg] */
-  PetscReal friction_work;                                  /* kinetic energy wall friction took out, on this rank's wall nodes [erg] */
   PetscInt  rebalances;                                     /* times -mpm_balance rebuilt the grid's ownership ranges (global) */
-  PetscInt  popping_checks;                                 /* checks of the popping module (global)                                 */
-  PetscInt  popped_max;                                     /* most points popped at one check (global)                              */
-  PetscReal popped_sum;                                     /* popped points summed over the checks (global)                         */
-  PetscReal first_popped_time, first_popped_x[MPM_MAX_DIM]; /* when (-1: never) and where the first appeared [s, cm] */
   PetscReal outflow[MPM_OUTFLOW_N];                         /* what left through outflow faces on this rank (MPMMigrate; MPM_OUTFLOW_*) */
 } MPMDiagnostics;
 
@@ -154,16 +117,6 @@ struct _p_MPM {
   PetscReal            isentrope_threshold;            /* relative expansion per step above which e follows the isentrope [-] */
   PetscReal            vacuum_density;                 /* points below this fraction of their material's initial density count as vacuum [-] */
   MPMDtLimit           dt_limit;                       /* what set the current step's size */
-  PetscReal            conduction;                     /* -mpm_conduction: artificial heat conduction coefficient C_h [-], 0: off */
-  PetscReal            fill_rate, fill_tol, fill_mach; /* -mpm_volume_fill theta (0: off), -mpm_volume_fill_tol, -mpm_volume_fill_mach */
-  PetscReal            pressure_relax;                 /* -mpm_pressure_relax: sub-cell pressure relaxation rate K_r [-], 0: off */
-  PetscReal            pressure_relax_mach;            /* points whose |div v| h / c exceeds this do not relax [-] */
-  PetscReal            domain_skew;                    /* -mpm_domain_skew: a CPDI domain less square than this is reset to a cube [-], 0: never */
-  PetscBool            split;                          /* -mpm_split: the point splitting module is in the step  */
-  PetscInt             popping_interval;               /* -mpm_popping_interval: steps between popping checks, 0: off */
-  PetscReal            popping_speed;                  /* -mpm_popping_speed: a point faster than this has popped [cm/s], 0: not checked */
-  PetscReal            split_length;                   /* a domain longer than this along an axis splits [cells] */
-  PetscReal            split_min_scale;                /* smallest domain scale a split may leave: 2^-max_level [-] */
   PetscReal            next_id;                        /* the next unused point id (splitting)                  */
   PetscInt             sort_interval;                  /* steps between sorts of the points by cell, 0: never  */
   PetscInt             point_window;                   /* -mpm_point_window: points per window of the step's point phases, 0: each phase over all points */
@@ -217,15 +170,14 @@ struct _p_MPM {
   PetscInt     lbox_lo[MPM_MAX_DIM], lbox_hi[MPM_MAX_DIM]; /* several ranks: ghosted-box indices outside which (ghost nodes apart) the local nodes hold zeros */
   MPMFieldInfo field[MPM_MAX_FIELDS];                      /* the point fields: MPMFieldTable, then the registered ones  */
   PetscBool    field_on[MPM_MAX_FIELDS];                   /* carried by this scene's points                            */
+  PetscBool    field_req[MPM_NUM_FIELDS];                  /* optional core fields a module requires (MPMPointsRequireField) */
   PetscInt     nfields;
   PetscInt     nwork;                                    /* capacity of the constitutive workspace [points]         */
   PetscInt    *widx;                                     /* the local points of each material, material by material  */
   PetscReal   *wL;                                       /* axisymmetric: L_p - L_tt,p I, what the strength models see */
   PetscReal   *work;                                     /* 8 values per point of a chunk of MPM_CHUNK points        */
   PetscInt     box_lo[MPM_MAX_DIM], box_hi[MPM_MAX_DIM]; /* owned nodes the node loops sweep, owned-box indices (MPMGridZeroForScatter) */
-  PetscReal   *cellV, *cellS;                            /* per local cell: the pressure relaxation's scratch sums                  */
   PetscReal   *xcell;                                    /* the cell rule, per extended cell (grid.xcs, xcm): the volume V_c and V_c P_c its points lend it; in the gather, its work per unit P V */
-  PetscReal   *fill_ref;                                 /* the volume-fill module's reference nodal volumes V_I^0 (ghosted local nodes; fill.c) */
   DM           mean_da;                                  /* the point-exchange modules' nodal sums sum N w, sum N w q (nodemean.c) */
   Vec          mean_l;                                   /* its ghosted local vector (several ranks: summed by ghost_sf with mean_type) */
   TS           ts;
@@ -263,6 +215,8 @@ struct _p_MPM {
   MPMCheck       checks[MPM_MAX_CHECKS];
   MPMDiagnostics diag;
   MPMLog         log;
+  MPMModule     *mods;                    /* every registered module, in the step or not (MPMModulesCreate) */
+  PetscInt       nmods;
   MPMModule      modules[MPM_NUM_PHASES]; /* the step's modules, per phase, in order              */
   PetscBool      failed;                  /* the run cannot go on (MPMSetFailure)                 */
   char           failure[1024];           /* why                                                  */
@@ -338,6 +292,8 @@ PETSC_INTERN PetscErrorCode MPMCreatePoints(MPM);
 PETSC_INTERN void           MPMSiteAt(const MPMGrid *, PetscInt, PetscInt, PetscReal[], PetscReal *);
 PETSC_INTERN PetscErrorCode MPMPointsGetArrays(MPM, MPMPoints *);
 PETSC_INTERN PetscErrorCode MPMPointsSelectFields(MPM);
+PETSC_INTERN PetscErrorCode MPMPointsRequireField(MPM, MPMField);
+PETSC_INTERN PetscBool      MPMPointsFieldRequired(MPM, MPMField);
 PETSC_INTERN PetscErrorCode MPMPointsRegisterField(MPM, const char[], PetscInt, const char[], const char[], PetscBool, PetscInt *);
 PETSC_INTERN PetscErrorCode MPMPointsRestoreArrays(MPM, MPMPoints *);
 PETSC_INTERN PetscErrorCode MPMPointsRelease(MPM);
@@ -348,24 +304,11 @@ PETSC_INTERN PetscErrorCode MPMStepForces(MPM, PetscReal);
 PETSC_INTERN PetscErrorCode MPMDiagnoseVacuum(MPM, PetscInt *, PetscInt *);
 PETSC_INTERN PetscErrorCode MPMStep(MPM, PetscReal, PetscReal);
 PETSC_INTERN PetscErrorCode MPMSetFailure(MPM, const char[], ...);
-PETSC_INTERN PetscErrorCode MPMModuleAdd(MPM, const char[], MPMPhase, PetscErrorCode (*)(MPMModule, MPM, const MPMStepContext *, MPMNode *), void *, PetscBool);
-PETSC_INTERN PetscErrorCode MPMModulesApply(MPM, MPMPhase, const MPMStepContext *);
-PETSC_INTERN PetscErrorCode MPMModulesDestroy(MPM);
-PETSC_INTERN PetscErrorCode MPMWallsApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
-PETSC_INTERN PetscErrorCode MPMGravityApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
-PETSC_INTERN PetscErrorCode MPMRemapApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
-PETSC_INTERN PetscErrorCode MPMSplitApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
-PETSC_INTERN PetscErrorCode MPMDomainApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
-PETSC_INTERN PetscErrorCode MPMConductionApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
-PETSC_INTERN PetscErrorCode MPMRelaxApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
-PETSC_INTERN PetscErrorCode MPMFillApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMNodalMeanSetUp(MPM);
 PETSC_INTERN PetscErrorCode MPMNodalMeanSum(MPM, PetscReal **);
-PETSC_INTERN PetscErrorCode MPMPoppingApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMPointsNodalMean(MPM, const MPMPoints *, const PetscReal[], const PetscReal[], PetscReal[], PetscReal[]);
 PETSC_INTERN void           MPMPointEOSUpdate(MPM, MPMPoints *, PetscInt, PetscReal, PetscReal);
 PETSC_INTERN void           MPMPointChangeVolume(MPM, MPMPoints *, PetscInt, PetscReal, PetscReal);
-PETSC_INTERN PetscErrorCode MPMViscosityModuleApply(MPMModule, MPM, const MPMStepContext *, MPMNode *);
 PETSC_INTERN PetscErrorCode MPMScatter(MPM, PetscBool, PetscReal);
 PETSC_INTERN PetscErrorCode MPMGather(MPM, PetscReal, PetscReal, PetscBool, PetscBool, PetscBool);
 PETSC_INTERN PetscErrorCode MPMParticlesToGrid(MPM, const MPMStepContext *);

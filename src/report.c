@@ -448,23 +448,75 @@ static PetscReal MPMRelErr(PetscReal v, PetscReal r)
   return r != 0.0 ? PetscAbsReal(v - r) / PetscAbsReal(r) : PetscAbsReal(v - r);
 }
 
-/* The domain's volume (r-z: per radian, int r dr dz). */
-static PetscReal MPMDomainVolume(const MPMGrid *g)
+/* The report's keys that modules add (MPMModulesReport), kept until the report is written. */
+#define MPM_REPORT_MAX_KEYS 64
+struct _p_MPMReport {
+  PetscInt n;
+  struct {
+    char section[MPM_MAX_NAME]; /* "" for the top level */
+    char key[MPM_MAX_NAME];
+    char value[256]; /* JSON text */
+  } entry[MPM_REPORT_MAX_KEYS];
+  PetscReal removed;    /* energy that left the system through the modules [erg] */
+  char      text[4096]; /* the modules' lines of the printed summary */
+};
+
+/* A line of the printed summary (rank 0 prints it, after the run's totals). */
+PetscErrorCode MPMReportPrintf(MPMReport rep, const char format[], ...)
 {
-  PetscReal v = g->axisym ? 0.5 * (g->hi[0] * g->hi[0] - g->lo[0] * g->lo[0]) : g->hi[0] - g->lo[0];
-  for (PetscInt k = 1; k < g->dim; k++) v *= g->hi[k] - g->lo[k];
-  return v;
+  va_list Argp;
+  size_t  len, used = strlen(rep->text);
+
+  PetscFunctionBegin;
+  va_start(Argp, format);
+  PetscCall(PetscVSNPrintf(rep->text + used, sizeof(rep->text) - used, format, &len, Argp));
+  va_end(Argp);
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode MPMWriteReport(MPM mpm)
+/* Adds key: value (printf-style JSON text) to the report's section ("robustness", or NULL: the top level). */
+PetscErrorCode MPMReportAdd(MPMReport rep, const char section[], const char key[], const char format[], ...)
+{
+  va_list Argp;
+  size_t  len;
+
+  PetscFunctionBegin;
+  PetscCheck(rep->n < MPM_REPORT_MAX_KEYS, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Report key %s: at most %d keys from modules", key, MPM_REPORT_MAX_KEYS);
+  PetscCall(PetscStrncpy(rep->entry[rep->n].section, section ? section : "", MPM_MAX_NAME));
+  PetscCall(PetscStrncpy(rep->entry[rep->n].key, key, MPM_MAX_NAME));
+  va_start(Argp, format);
+  PetscCall(PetscVSNPrintf(rep->entry[rep->n].value, sizeof(rep->entry[0].value), format, &len, Argp));
+  va_end(Argp);
+  rep->n++;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMReportAddRemovedEnergy(MPMReport rep, PetscReal W)
+{
+  PetscFunctionBegin;
+  rep->removed += W;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The modules' keys of one section, each as ", \"key\": value" (the top level: ",\n  \"key\": value"). */
+static void MPMReportWriteSection(FILE *fp, MPMReport rep, const char section[])
+{
+  for (PetscInt i = 0; i < rep->n; i++) {
+    PetscBool same;
+    PetscCallAbort(PETSC_COMM_SELF, PetscStrcmp(rep->entry[i].section, section, &same));
+    if (same) fprintf(fp, "%s\"%s\": %s", section[0] ? ", " : ",\n  ", rep->entry[i].key, rep->entry[i].value);
+  }
+}
+
+static PetscErrorCode MPMWriteReportWith(MPM mpm, MPMReport rep)
 {
   const MPMGrid *g = &mpm->grid;
   PetscReal      err[MPM_NERR][3], rhomin = 0, dmass, denergy, mass, energy, mom[MPM_MAX_DIM], kinetic, wplastic = 0, eelastic = 0, eb[5] = {0, 0, 0, 0, 0}, gb[4] = {0, 0, 0, 0}, shock_cells = -1.0, pss;
   PetscBool      budget;
   PetscInt       nonfinite = 0, npoints, nvac, nempty, nmin, nmax;
   PetscReal      imbalance;
-  PetscReal      eisen, nisen, nsplit, nrefuse, nreflect, nreset, nspall, vfill, nfill, wfric, out[3] = {0, 0, 0};
-  PetscBool      outflow = PETSC_FALSE, friction = PETSC_FALSE;
+  PetscReal      eisen, nisen, nreflect, nspall, wfric, out[3] = {0, 0, 0};
+  PetscBool      outflow = PETSC_FALSE;
   PetscInt      *perrank = NULL; /* points on each rank (rank 0, for the report) */
   PetscMPIInt    size, rank;
 
@@ -478,18 +530,8 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   PetscCall(MPMDiagnoseVacuum(mpm, &nvac, &nempty));
   PetscCall(MPMPointBalance(mpm, &imbalance, &nmin, &nmax));
   {
-    PetscReal s[12] = {mpm->diag.isentrope_energy,
-                       (PetscReal)mpm->diag.isentrope_points,
-                       (PetscReal)mpm->diag.points_split,
-                       (PetscReal)mpm->diag.split_refused,
-                       (PetscReal)mpm->diag.wall_reflections,
-                       (PetscReal)mpm->diag.domain_resets,
-                       mpm->diag.plastic_work,
-                       0.0,
-                       (PetscReal)mpm->diag.spalled,
-                       mpm->diag.fill_volume,
-                       mpm->diag.fill_point_steps,
-                       mpm->diag.friction_work};
+    enum { ISEN_ENERGY, ISEN_POINTS, REFLECT, PLASTIC, ELASTIC, SPALL, NSUM };
+    PetscReal s[NSUM] = {mpm->diag.isentrope_energy, (PetscReal)mpm->diag.isentrope_points, (PetscReal)mpm->diag.wall_reflections, mpm->diag.plastic_work, 0.0, (PetscReal)mpm->diag.spalled};
     if (mpm->has_stress) { /* the stored elastic energy: hyperelastic models V_0 W(F) (V_0 = V / det F), hypoelastic ones their shear energy V sigma_eq^2 / (6 G) (s : s / (4 G)) */
       const PetscInt d = g->dim;
       MPMPoints      pts;
@@ -498,27 +540,20 @@ PetscErrorCode MPMWriteReport(MPM mpm)
         const MPMStrength str = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].strength;
         const PetscReal  *F   = pts.f[MPM_FIELD_DEFGRAD] ? &pts.f[MPM_FIELD_DEFGRAD][p * d * d] : NULL;
         if (str && str->ops.energy && F)
-          s[7] += pts.f[MPM_FIELD_VOLUME][p] / MPMDeterminant(d, F) * str->ops.energy(str->data, d, F);
+          s[ELASTIC] += pts.f[MPM_FIELD_VOLUME][p] / MPMDeterminant(d, F) * str->ops.energy(str->data, d, F);
         else if (str && str->G > 0.0)
-          s[7] += pts.f[MPM_FIELD_VOLUME][p] * PetscSqr(MPMVonMisesStress(d, &pts.f[MPM_FIELD_STRESS][p * d * d])) / (6.0 * str->G);
+          s[ELASTIC] += pts.f[MPM_FIELD_VOLUME][p] * PetscSqr(MPMVonMisesStress(d, &pts.f[MPM_FIELD_STRESS][p * d * d])) / (6.0 * str->G);
       }
       PetscCall(MPMPointsRestoreArrays(mpm, &pts));
     }
-    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 12, MPIU_REAL, MPIU_SUM, mpm->comm));
-    wplastic = s[6];
-    eelastic = s[7];
-    eisen    = s[0];
-    nisen    = s[1];
-    nsplit   = s[2];
-    nrefuse  = s[3];
-    nreflect = s[4];
-    nreset   = s[5];
-    nspall   = s[8];
-    vfill    = s[9];
-    nfill    = s[10];
-    wfric    = s[11];
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, NSUM, MPIU_REAL, MPIU_SUM, mpm->comm));
+    wplastic = s[PLASTIC];
+    eelastic = s[ELASTIC];
+    eisen    = s[ISEN_ENERGY];
+    nisen    = s[ISEN_POINTS];
+    nreflect = s[REFLECT];
+    nspall   = s[SPALL];
   }
-  for (PetscInt k = 0; k < g->dim; k++) friction = (PetscBool)(friction || mpm->friction_lo[k] > 0.0 || mpm->friction_hi[k] > 0.0);
   for (PetscInt k = 0; k < g->dim; k++) outflow = (PetscBool)(outflow || mpm->bc_lo[k] == MPM_BC_OUTFLOW || mpm->bc_hi[k] == MPM_BC_OUTFLOW);
   if (outflow) { /* what left through outflow faces: points, and mass and total energy relative to the initial sums */
     out[0] = mpm->diag.outflow[MPM_OUTFLOW_POINTS];
@@ -528,6 +563,8 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     out[1] /= mpm->mass0;
     out[2] = mpm->energy0 != 0 ? out[2] / PetscAbsReal(mpm->energy0) : out[2];
   }
+  PetscCall(MPMModulesReport(mpm, rep)); /* the modules' keys, their lines of the summary and the energy they took out */
+  wfric = rep->removed;
   for (PetscInt c = 0; c < mpm->nchecks; c++) {
     PetscBool is;
     PetscCall(PetscStrcmp(mpm->checks[c].name, "shock_position", &is));
@@ -557,16 +594,8 @@ PetscErrorCode MPMWriteReport(MPM mpm)
                           "expansion (a free surface's or a spall's), and the energy is not conserved\n",
                           (double)(eisen / PetscAbsReal(mpm->energy0)), (double)nisen, (double)mpm->isentrope_threshold));
   if (outflow) PetscCall(PetscPrintf(mpm->comm, "  outflow: %.0f points left through outflow faces, carrying %.3e of the mass and %.3e of the total energy (the conservation figures count them)\n", (double)out[0], (double)out[1], (double)out[2]));
-  if (mpm->split) PetscCall(PetscPrintf(mpm->comm, "  point splitting: %.0f points split (%" PetscInt_FMT " points at start); %.0f splits refused at -mpm_split_max_level\n", (double)nsplit, mpm->npoints0, (double)nrefuse));
+  PetscCall(PetscPrintf(mpm->comm, "%s", rep->text));
   if (size > 1) PetscCall(PetscPrintf(mpm->comm, "  balance: %" PetscInt_FMT " to %" PetscInt_FMT " points per rank, max/mean %.3f; %" PetscInt_FMT " rebalance(s) (-mpm_balance)\n", nmin, nmax, (double)imbalance, mpm->diag.rebalances));
-  if (mpm->popping_interval > 0) {
-    const PetscReal *x = mpm->diag.first_popped_x;
-    if (mpm->diag.first_popped_time >= 0.0)
-      PetscCall(PetscPrintf(mpm->comm, "  popping: up to %" PetscInt_FMT " points popped at one check, %.0f point-checks in %" PetscInt_FMT " checks; the first at t = %g s, x = (%g, %g, %g) cm\n", mpm->diag.popped_max, (double)mpm->diag.popped_sum,
-                            mpm->diag.popping_checks, (double)mpm->diag.first_popped_time, (double)x[0], (double)x[1], (double)x[2]));
-    else
-      PetscCall(PetscPrintf(mpm->comm, "  popping: no point popped in %" PetscInt_FMT " checks\n", mpm->diag.popping_checks));
-  }
   if (mpm->has_gravity) { /* potential energy released, and where it went */
     gb[0] = mpm->potential0 - mpm->potential;
     if (gb[0] != 0.0) {
@@ -582,7 +611,6 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     else
       PetscCall(PetscPrintf(mpm->comm, "  warning: not at rest at the final time: kinetic energy %.3g of its initial value, above -mpm_stop_at_rest %g\n", (double)(mpm->kinetic0 > 0 ? kinetic / mpm->kinetic0 : 0.0), (double)mpm->rest_fraction));
   }
-  if (friction) PetscCall(PetscPrintf(mpm->comm, "  wall friction: work %.6g erg, %.4f of the initial kinetic energy (energy that left the system: the budgets count it)\n", (double)wfric, (double)(mpm->kinetic0 > 0.0 ? wfric / mpm->kinetic0 : 0.0)));
   if (budget)
     PetscCall(PetscPrintf(mpm->comm, "  energy budget (of the initial kinetic energy): kinetic %.4f, internal change %.4f (plastic work %.4f, elastic %.4f, the rest %.4f), error %.2e\n", (double)eb[0], (double)eb[1], (double)eb[2], (double)eb[3],
                           (double)(eb[1] - eb[2] - eb[3]), (double)eb[4]));
@@ -642,23 +670,19 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     fprintf(fp, "]},\n");
     PetscCall(PetscFree(perrank));
     if (mpm->has_gravity) fprintf(fp, "  \"gravity_budget\": {\"released\": %.6e, \"kinetic\": %.6e, \"internal_change\": %.6e, \"error\": %.6e},\n", (double)gb[0], (double)gb[1], (double)gb[2], (double)gb[3]);
-    if (mpm->popping_interval > 0) {
-      const PetscReal *x = mpm->diag.first_popped_x;
-      fprintf(fp, "  \"popping\": {\"checks\": %" PetscInt_FMT ", \"popped_max\": %" PetscInt_FMT ", \"popped_sum\": %.0f, \"first_time\": %.10g, \"first_position\": [%.10g, %.10g, %.10g]},\n", mpm->diag.popping_checks, mpm->diag.popped_max,
-              (double)mpm->diag.popped_sum, (double)mpm->diag.first_popped_time, (double)x[0], (double)x[1], (double)x[2]);
-    }
     if (budget) fprintf(fp, "  \"energy_budget\": {\"kinetic\": %.6e, \"internal_change\": %.6e, \"plastic_work\": %.6e, \"elastic\": %.6e, \"error\": %.6e},\n", (double)eb[0], (double)eb[1], (double)eb[2], (double)eb[3], (double)eb[4]);
-    if (friction) fprintf(fp, "  \"friction_work\": %.6e,\n  \"friction_work_fraction\": %.6e,\n", (double)wfric, (double)(mpm->kinetic0 > 0.0 ? wfric / mpm->kinetic0 : 0.0));
-    fprintf(fp, "  \"energy_accounted\": %.6e,\n", (double)(mpm->energy0 != 0 ? (denergy * PetscAbsReal(mpm->energy0) + wfric - eisen) / PetscAbsReal(mpm->energy0) : denergy + wfric - eisen));
-    fprintf(fp, "  \"robustness\": {\"isentrope_energy\": %.6e, \"isentrope_point_steps\": %.0f, \"dt_limit\": {", (double)(mpm->energy0 != 0 ? eisen / PetscAbsReal(mpm->energy0) : eisen), (double)nisen);
+    fprintf(fp, "  \"energy_accounted\": %.6e", (double)(mpm->energy0 != 0 ? (denergy * PetscAbsReal(mpm->energy0) + wfric - eisen) / PetscAbsReal(mpm->energy0) : denergy + wfric - eisen));
+    MPMReportWriteSection(fp, rep, "");
+    fprintf(fp, ",\n  \"robustness\": {\"isentrope_energy\": %.6e, \"isentrope_point_steps\": %.0f, \"dt_limit\": {", (double)(mpm->energy0 != 0 ? eisen / PetscAbsReal(mpm->energy0) : eisen), (double)nisen);
     for (PetscInt l = 0; l < MPM_NUM_DT_LIMITS; l++) fprintf(fp, "%s\"%s\": %" PetscInt_FMT, l ? ", " : "", MPMDtLimitNames[l], mpm->diag.dt_limit[l]);
     fprintf(fp,
             "}, \"vacuum_points\": %" PetscInt_FMT ", \"vacuum_points_max\": %" PetscInt_FMT ", \"first_vacuum_step\": %" PetscInt_FMT ", \"empty_cells\": %" PetscInt_FMT ", \"empty_cells_max\": %" PetscInt_FMT
             ", \"first_empty_step\": %" PetscInt_FMT
-            ", \"points_split\": %.0f, \"split_refused\": %.0f, \"wall_reflections\": %.0f, \"domain_resets\": %.0f, \"spalled\": %.0f, \"volume_fill\": %.6f, \"volume_fill_max\": %.6f, \"first_overlap_step\": %" PetscInt_FMT
-            ", \"volume_fill_removed\": %.6e, \"volume_fill_point_steps\": %.0f}",
-            nvac, mpm->diag.vacuum_points_max, mpm->diag.first_vacuum_step, nempty, mpm->diag.empty_cells_max, mpm->diag.first_empty_step, (double)nsplit, (double)nrefuse, (double)nreflect, (double)nreset, (double)nspall,
-            (double)mpm->diag.volume_fill, (double)mpm->diag.volume_fill_max, mpm->diag.first_overlap_step, (double)(vfill / MPMDomainVolume(&mpm->grid)), (double)nfill);
+            ", \"wall_reflections\": %.0f, \"spalled\": %.0f, \"volume_fill\": %.6f, \"volume_fill_max\": %.6f, \"first_overlap_step\": %" PetscInt_FMT,
+            nvac, mpm->diag.vacuum_points_max, mpm->diag.first_vacuum_step, nempty, mpm->diag.empty_cells_max, mpm->diag.first_empty_step, (double)nreflect, (double)nspall, (double)mpm->diag.volume_fill, (double)mpm->diag.volume_fill_max,
+            mpm->diag.first_overlap_step);
+    MPMReportWriteSection(fp, rep, "robustness");
+    fprintf(fp, "}");
     if (outflow) fprintf(fp, ",\n  \"outflow\": {\"points\": %.0f, \"mass\": %.6e, \"energy\": %.6e}", (double)out[0], (double)out[1], (double)out[2]);
     fprintf(fp, ",\n  \"min_density\": %.10g,\n  \"nonfinite\": %" PetscInt_FMT ",\n  \"checks\": [", (double)rhomin, nonfinite);
     for (PetscInt c = 0; c < mpm->nchecks; c++)
@@ -668,6 +692,18 @@ PetscErrorCode MPMWriteReport(MPM mpm)
     PetscCheck(!fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write the report %s: %s", tmp, strerror(errno));
     PetscCheck(!rename(tmp, mpm->report), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot rename %s to %s: %s", tmp, mpm->report, strerror(errno));
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The printed summary, and the JSON report (-mpm_report) on rank 0. */
+PetscErrorCode MPMWriteReport(MPM mpm)
+{
+  MPMReport rep;
+
+  PetscFunctionBegin;
+  PetscCall(PetscNew(&rep));
+  PetscCall(MPMWriteReportWith(mpm, rep));
+  PetscCall(PetscFree(rep));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

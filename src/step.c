@@ -5,59 +5,6 @@
    the scene did not ask for is not in the list, so it costs nothing and has no -log_view row. */
 #include "petmpmimpl.h"
 
-/* Appends a module to its phase's list, with its own log event; pointwise: see MPMModule. */
-PetscErrorCode MPMModuleAdd(MPM mpm, const char name[], MPMPhase phase, PetscErrorCode (*apply)(MPMModule, MPM, const MPMStepContext *, MPMNode *), void *ctx, PetscBool pointwise)
-{
-  MPMModule mod, *last = &mpm->modules[phase];
-
-  PetscFunctionBegin;
-  PetscCall(PetscNew(&mod));
-  PetscCall(PetscStrncpy(mod->name, name, sizeof(mod->name)));
-  mod->phase     = phase;
-  mod->pointwise = pointwise;
-  mod->apply     = apply;
-  mod->ctx       = ctx;
-  PetscCall(PetscLogEventRegister(name, MPM_CLASSID, &mod->event));
-  while (*last) last = &(*last)->next;
-  *last = mod;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode MPMModulesDestroy(MPM mpm)
-{
-  PetscFunctionBegin;
-  for (PetscInt ph = 0; ph < MPM_NUM_PHASES; ph++) {
-    MPMModule mod = mpm->modules[ph];
-    while (mod) {
-      MPMModule next = mod->next;
-      PetscCall(PetscFree(mod->ctx)); /* a module's state: one allocation, or NULL */
-      PetscCall(PetscFree(mod));
-      mod = next;
-    }
-    mpm->modules[ph] = NULL;
-  }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* Runs the modules of one phase in the order they were added; grid-phase modules get the ghosted local nodal vector,
-   whose owned nodes (MPM_FOR_BOX_NODES, MPMOwnedToLocal) they update. */
-PetscErrorCode MPMModulesApply(MPM mpm, MPMPhase phase, const MPMStepContext *ctx)
-{
-  const PetscBool grid = (PetscBool)(phase == MPM_PHASE_GRID_FORCE || phase == MPM_PHASE_GRID_VELOCITY);
-  MPMNode        *node = NULL;
-
-  PetscFunctionBegin;
-  if (!mpm->modules[phase]) PetscFunctionReturn(PETSC_SUCCESS);
-  if (grid) PetscCall(VecGetArray(mpm->lnodes, (PetscScalar **)&node));
-  for (MPMModule mod = mpm->modules[phase]; mod; mod = mod->next) {
-    PetscCall(PetscLogEventBegin(mod->event, 0, 0, 0, 0));
-    PetscCall(mod->apply(mod, mpm, ctx, node));
-    PetscCall(PetscLogEventEnd(mod->event, 0, 0, 0, 0));
-  }
-  if (grid) PetscCall(VecRestoreArray(mpm->lnodes, (PetscScalar **)&node));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 /* v_I^n = (mv)_I / m_I, (mv)_I += dt_kick f_I, v_I^{n+1} = (mv)_I / m_I, f_I = 0 (free from here on: MUSL's gather sums
    the remap's momenta in it, MPMGather), then the nodal velocity modules (walls) and the ghost update. The new velocity is stored in p (as velocity) for the gather; v0 keeps v_I^n for the FLIP
    increment. The velocities live at half steps (leapfrog: the force at t^n kicks v^{n-1/2} to v^{n+1/2}, which then

@@ -15,10 +15,33 @@
    its nodes' mean (no new extremum), and a point at rest or in expansion is untouched. Heat flows between materials by
    temperature, so a gas split into two identical materials runs as one. It runs after migration, where each point's
    nodes are in its rank's ghosted box (MPMPointsNodalMean, nodemean.c), and the EOS then gives p, T and c for the new e. */
-#include "../petmpmimpl.h"
+#include "petmpmimpl.h"
 
-PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
+typedef struct {
+  PetscReal C; /* -mpm_conduction: the coefficient C_h [-] */
+} MPMConduction;
+
+static PetscErrorCode MPMConductionSetFromOptions(MPMModule mod, MPM mpm, PetscOptionItems *PetscOptionsObject)
 {
+  MPMConduction *hc = (MPMConduction *)mod->data;
+
+  PetscFunctionBegin;
+  PetscCall(PetscOptionsReal("-mpm_conduction", "Artificial heat conduction C_h: a point the step compressed exchanges heat, by temperature, with the points on its nodes at the rate C_h |div v| [-], >= 0 (0: off)", "", hc->C, &hc->C, NULL));
+  PetscCall(MPMOptionsCheckRange("-mpm_conduction", hc->C, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+  mod->active = (PetscBool)(hc->C > 0.0);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMConductionView(MPMModule mod, MPM mpm, PetscViewer viewer)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "heat conduction: C_h %g\n", (double)((MPMConduction *)mod->data)->C));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
+{
+  const PetscReal C    = ((MPMConduction *)mod->data)->C;
   const PetscInt d    = mpm->grid.dim;
   PetscInt       nact = 0;
   PetscReal     *w, *Tbar;
@@ -31,7 +54,7 @@ PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepContext *
     const PetscReal *rho = pts.f[MPM_FIELD_DENSITY], *e = pts.f[MPM_FIELD_ENERGY];
     for (PetscInt p = 0; p < pts.n; p++) { /* beta_p, c_v,p and the weight w_p = beta_p m_p c_v,p */
       const MPMEOS E    = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].eos;
-      PetscReal    beta = PetscMin(1.0, -mpm->conduction * MPMPointDivergence(&pts, d, p) * ctx->dt), de, T0, T1;
+      PetscReal    beta = PetscMin(1.0, -C * MPMPointDivergence(&pts, d, p) * ctx->dt), de, T0, T1;
       if (beta < 1e-10) continue;                    /* expansion, rest, or too little to matter (and no denormal weights) */
       de = 1e-3 * PetscMax(PetscAbsReal(e[p]), 1.0); /* a central difference wide enough that round-off in e does not reach c_v */
       MPMEOSTemperatureKernel(E, rho[p], e[p] - de, &T0);
@@ -49,5 +72,21 @@ PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepContext *
   }
   PetscCall(PetscFree2(w, Tbar));
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMModuleCreate_Conduction(MPMModule mod)
+{
+  MPMConduction *hc;
+
+  PetscFunctionBegin;
+  PetscCall(PetscNew(&hc));
+  hc->C                   = 2.0;
+  mod->data               = hc;
+  mod->phase              = MPM_PHASE_POINT_END;
+  mod->ops.setfromoptions = MPMConductionSetFromOptions;
+  mod->ops.apply          = MPMConductionApply;
+  mod->ops.view           = MPMConductionView;
+  PetscCall(PetscStrncpy(mod->event, "MPMConduction", sizeof(mod->event)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

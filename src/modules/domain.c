@@ -14,10 +14,60 @@
    (a principal-axes rectangle of the same sliver split along its length 440,520 times where the cube split 25,961).
    Axis-aligned stretching and compression (a planar tube on a 2D or 3D grid) leave a box and are never touched. The
    report counts the resets (robustness.domain_resets). */
-#include "../petmpmimpl.h"
+#include "petmpmimpl.h"
 
-PetscErrorCode MPMDomainApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
+typedef struct {
+  PetscReal skew;   /* -mpm_domain_skew: a domain less square than this is reset [-], 0: never */
+  PetscInt  resets; /* point-steps whose domain this rank reset */
+} MPMDomain;
+
+static PetscErrorCode MPMDomainSetFromOptions(MPMModule mod, MPM mpm, PetscOptionItems *PetscOptionsObject)
 {
+  MPMDomain *dm = (MPMDomain *)mod->data;
+
+  PetscFunctionBegin;
+  PetscCall(PetscOptionsReal("-mpm_domain_skew", "A CPDI domain whose skewness |det R| / prod |R e_k| (1 for a box) falls below this is reset to the cube of the same volume, for materials that do not read F [-], in [0, 1) (0: never)", "", dm->skew,
+                             &dm->skew, NULL));
+  PetscCall(MPMOptionsCheckRange("-mpm_domain_skew", dm->skew, 0.0, 1.0, PETSC_FALSE, PETSC_TRUE));
+  mod->active = (PetscBool)(mpm->grid.dim > 1 && dm->skew > 0.0);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* In the step where the points' domains deform with F: the shape functions read them, or splitting divides them. */
+static PetscErrorCode MPMDomainSetUp(MPMModule mod, MPM mpm)
+{
+  PetscFunctionBegin;
+  mod->active = (PetscBool)(mpm->shape->needs_F || MPMPointsFieldRequired(mpm, MPM_FIELD_DOMAINSCALE));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMDomainView(MPMModule mod, MPM mpm, PetscViewer viewer)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "domain reset: below skewness %g\n", (double)((MPMDomain *)mod->data)->skew));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMDomainReport(MPMModule mod, MPM mpm, MPMReport rep)
+{
+  PetscReal n = (PetscReal)((MPMDomain *)mod->data)->resets;
+
+  PetscFunctionBegin;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &n, 1, MPIU_REAL, MPIU_SUM, mpm->comm));
+  PetscCall(MPMReportAdd(rep, "robustness", "domain_resets", "%.0f", (double)n));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMDomainCheckpoint(MPMModule mod, MPM mpm, MPMCheckpoint ck)
+{
+  PetscFunctionBegin;
+  PetscCall(MPMCheckpointInts(ck, "resets", 1, &((MPMDomain *)mod->data)->resets, MPM_CKPT_RANK_SUM));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMDomainApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
+{
+  MPMDomain     *dm = (MPMDomain *)mod->data;
   const PetscInt d = mpm->grid.dim;
   MPMPoints      pts;
 
@@ -36,14 +86,33 @@ PetscErrorCode MPMDomainApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx,
       edges *= PetscSqrtReal(len2);
     }
     det = PetscAbsReal(MPMDeterminant(d, R));
-    if (!(det < mpm->domain_skew * edges)) continue;
+    if (!(det < dm->skew * edges)) continue;
     {
       const PetscReal a = d == 2 ? PetscSqrtReal(det) : PetscCbrtReal(det);
       for (PetscInt i = 0; i < d; i++)
         for (PetscInt k = 0; k < d; k++) F[i * d + k] = i == k ? a / (s ? s[k] : 1.0) : 0.0;
     }
-    mpm->diag.domain_resets++;
+    dm->resets++;
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMModuleCreate_Domain(MPMModule mod)
+{
+  MPMDomain *dm;
+
+  PetscFunctionBegin;
+  PetscCall(PetscNew(&dm));
+  dm->skew                = 0.5;
+  mod->data               = dm;
+  mod->phase              = MPM_PHASE_POINT_ADAPT;
+  mod->ops.setfromoptions = MPMDomainSetFromOptions;
+  mod->ops.setup          = MPMDomainSetUp;
+  mod->ops.apply          = MPMDomainApply;
+  mod->ops.view           = MPMDomainView;
+  mod->ops.report         = MPMDomainReport;
+  mod->ops.checkpoint     = MPMDomainCheckpoint;
+  PetscCall(PetscStrncpy(mod->event, "MPMDomain", sizeof(mod->event)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

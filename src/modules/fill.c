@@ -30,11 +30,77 @@
    blast at 64^2 cells L1 pressure 22% (64% without). Off by default: it also acts on the overlap that CPDI's points
    have for a while in a smooth rarefaction, and there its compression at fixed e costs accuracy (weak Sod at 512
    cells, CPDI, one point per cell: L1 density 0.59% without, 0.88% with theta = 0.02, 1.5% with 0.5). */
-#include "../petmpmimpl.h"
+#include "petmpmimpl.h"
 
-/* The reference nodal volumes V_I^0 in mpm->fill_ref (ghosted local nodes): every owned cell's ppc^d lattice sites with
-   their undeformed domains, summed over the ranks. */
-static PetscErrorCode MPMFillReference(MPM mpm)
+typedef struct {
+  PetscReal  rate, tol, mach; /* -mpm_volume_fill theta, -mpm_volume_fill_tol, -mpm_volume_fill_mach [-] */
+  PetscReal *ref;             /* the reference nodal volumes V_I^0 on the ghosted local nodes of the grid numbered grid_id [cm^d] */
+  PetscInt   grid_id;
+  PetscReal  volume, point_steps; /* volume taken back [cm^d] and the point-steps it acted on, this rank's */
+} MPMFill;
+
+static PetscErrorCode MPMFillSetFromOptions(MPMModule mod, MPM mpm, PetscOptionItems *PetscOptionsObject)
+{
+  MPMFill *fl = (MPMFill *)mod->data;
+
+  PetscFunctionBegin;
+  PetscCall(PetscOptionsReal("-mpm_volume_fill",
+                             "Volume consistency theta: fluid points on a node whose points' volumes exceed (1 + -mpm_volume_fill_tol) of its undeformed fill give back this fraction of the excess each step [-], in [0, 1] (0: off)", "",
+                             fl->rate, &fl->rate, NULL));
+  PetscCall(MPMOptionsCheckRange("-mpm_volume_fill", fl->rate, 0.0, 1.0, PETSC_FALSE, PETSC_FALSE));
+  mod->active = (PetscBool)(fl->rate > 0.0);
+  if (mod->active) {
+    PetscCall(PetscOptionsReal("-mpm_volume_fill_tol", "Overfill of a node's volume the volume consistency leaves alone [-], >= 0", "", fl->tol, &fl->tol, NULL));
+    PetscCall(MPMOptionsCheckRange("-mpm_volume_fill_tol", fl->tol, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+    PetscCall(PetscOptionsReal("-mpm_volume_fill_mach", "A point whose velocity jump across a cell |div v| h exceeds this fraction of its sound speed (a shock, a fast expansion) keeps its volume [-], > 0", "", fl->mach, &fl->mach, NULL));
+    PetscCall(MPMOptionsCheckRange("-mpm_volume_fill_mach", fl->mach, 0.0, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMFillView(MPMModule mod, MPM mpm, PetscViewer viewer)
+{
+  MPMFill *fl = (MPMFill *)mod->data;
+
+  PetscFunctionBegin;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "volume consistency: theta %g, tolerance %g, quiescent below |div v| h / c = %g\n", (double)fl->rate, (double)fl->tol, (double)fl->mach));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* robustness.volume_fill_removed: the volume taken back over the domain's; robustness.volume_fill_point_steps. */
+static PetscErrorCode MPMFillReport(MPMModule mod, MPM mpm, MPMReport rep)
+{
+  MPMFill  *fl   = (MPMFill *)mod->data;
+  PetscReal s[2] = {fl->volume, fl->point_steps};
+
+  PetscFunctionBegin;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 2, MPIU_REAL, MPIU_SUM, mpm->comm));
+  PetscCall(MPMReportAdd(rep, "robustness", "volume_fill_removed", "%.6e", (double)(s[0] / MPMGridDomainVolume(&mpm->grid))));
+  PetscCall(MPMReportAdd(rep, "robustness", "volume_fill_point_steps", "%.0f", (double)s[1]));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMFillCheckpoint(MPMModule mod, MPM mpm, MPMCheckpoint ck)
+{
+  MPMFill *fl = (MPMFill *)mod->data;
+
+  PetscFunctionBegin;
+  PetscCall(MPMCheckpointReals(ck, "volume", 1, &fl->volume, MPM_CKPT_RANK_SUM));
+  PetscCall(MPMCheckpointReals(ck, "point_steps", 1, &fl->point_steps, MPM_CKPT_RANK_SUM));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMFillDestroy(MPMModule mod)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscFree(((MPMFill *)mod->data)->ref));
+  PetscCall(PetscFree(mod->data));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The reference nodal volumes V_I^0 (ghosted local nodes): every owned cell's ppc^d lattice sites with their
+   undeformed domains, summed over the ranks. */
+static PetscErrorCode MPMFillReference(MPM mpm, MPMFill *fl)
 {
   const MPMGrid *g = &mpm->grid;
   const PetscInt d = g->dim, nloc = g->gm[0] * g->gm[1] * g->gm[2];
@@ -47,8 +113,9 @@ static PetscErrorCode MPMFillReference(MPM mpm)
     npd *= mpm->ppc;
     Ide[k * d + k] = 1.0;
   }
-  PetscCall(PetscFree(mpm->fill_ref));
-  PetscCall(PetscMalloc1(nloc, &mpm->fill_ref));
+  PetscCall(PetscFree(fl->ref));
+  PetscCall(PetscMalloc1(nloc, &fl->ref));
+  fl->grid_id = g->id;
   PetscCall(VecZeroEntries(mpm->mean_l));
   PetscCall(VecGetArray(mpm->mean_l, &W));
   for (PetscInt s = 0; s < g->ncells * npd; s++) { /* the seeding's lattice sites (MPMSiteAt) */
@@ -59,7 +126,7 @@ static PetscErrorCode MPMFillReference(MPM mpm)
     for (PetscInt a = 0; a < st.n; a++) W[2 * st.node[a]] += st.w[a] * V;
   }
   PetscCall(MPMNodalMeanSum(mpm, &W));
-  for (PetscInt i = 0; i < nloc; i++) mpm->fill_ref[i] = W[2 * i];
+  for (PetscInt i = 0; i < nloc; i++) fl->ref[i] = W[2 * i];
   PetscCall(VecRestoreArray(mpm->mean_l, &W));
   PetscCall(VecZeroEntries(mpm->mean_l)); /* the point-exchange modules find it zeroed */
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -71,7 +138,7 @@ static PetscErrorCode MPMFillReference(MPM mpm)
    fill, which a disordered set of points always has, odd-even in a rarefaction, does not read as overlap: taken back
    where it is high and never given where it is low, it would compress the material step by step; without the weights
    it took back 19% of weak Sod's volume); computed on the owned nodes, then sent to the ghosts. W[2 I + 1] is kept. */
-static PetscErrorCode MPMFillExcess(MPM mpm, PetscReal **W)
+static PetscErrorCode MPMFillExcess(MPM mpm, const MPMFill *fl, PetscReal **W)
 {
   const MPMGrid *g = &mpm->grid;
   const PetscInt d = g->dim, nloc = g->gm[0] * g->gm[1] * g->gm[2];
@@ -94,9 +161,9 @@ static PetscErrorCode MPMFillExcess(MPM mpm, PetscReal **W)
           for (PetscInt k = 0; k < d; k++) w *= a[k] == ijk[k] ? 2.0 : 1.0; /* the weights (1, 2, 1) per direction */
           nJ = (a[2] * g->gm[1] + a[1]) * g->gm[0] + a[0];
           S += w * (*W)[2 * nJ];
-          S0 += w * mpm->fill_ref[nJ];
+          S0 += w * fl->ref[nJ];
         }
-        if (S0 > 0.0 && (*W)[2 * nI] > 0.0) E[nI] = PetscMax(0.0, S / S0 - (1.0 + mpm->fill_tol)) * mpm->fill_ref[nI];
+        if (S0 > 0.0 && (*W)[2 * nI] > 0.0) E[nI] = PetscMax(0.0, S / S0 - (1.0 + fl->tol)) * fl->ref[nI];
       }
   for (PetscInt i = 0; i < nloc; i++) (*W)[2 * i] = E[i];
   PetscCall(PetscFree(E));
@@ -104,8 +171,9 @@ static PetscErrorCode MPMFillExcess(MPM mpm, PetscReal **W)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode MPMFillApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
+static PetscErrorCode MPMFillApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
 {
+  MPMFill   *fl = (MPMFill *)mod->data;
   PetscReal *W, *c, over = 0.0;
   PetscInt   nact = 0;
   MPMPoints  pts;
@@ -113,7 +181,7 @@ PetscErrorCode MPMFillApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, M
 
   PetscFunctionBegin;
   PetscCall(MPMNodalMeanSetUp(mpm));
-  if (!mpm->fill_ref) PetscCall(MPMFillReference(mpm));
+  if (fl->grid_id != mpm->grid.id) PetscCall(MPMFillReference(mpm, fl));
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   PetscCall(PetscCalloc1(pts.n + 1, &c));
   PetscCall(VecZeroEntries(mpm->mean_l));
@@ -123,7 +191,7 @@ PetscErrorCode MPMFillApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, M
     PetscReal          pr, c2;
     if (!MPMStrengthIsSolid(mat->strength)) {
       MPMEOSPressureKernel(mat->eos, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_ENERGY][p], &pr, &c2);
-      if (c2 > 0.0 && !MPMPointInShock(mpm, &pts, p, c2, mpm->fill_mach)) c[p] = pts.f[MPM_FIELD_VOLUME][p] / (pts.f[MPM_FIELD_DENSITY][p] * c2);
+      if (c2 > 0.0 && !MPMPointInShock(mpm, &pts, p, c2, fl->mach)) c[p] = pts.f[MPM_FIELD_VOLUME][p] / (pts.f[MPM_FIELD_DENSITY][p] * c2);
     }
     MPMNodalMeanStencilOf(mpm, &pts, p, &st);
     for (PetscInt a = 0; a < st.n; a++) {
@@ -132,7 +200,7 @@ PetscErrorCode MPMFillApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, M
     }
   }
   PetscCall(MPMNodalMeanSum(mpm, &W));
-  PetscCall(MPMFillExcess(mpm, &W));
+  PetscCall(MPMFillExcess(mpm, fl, &W));
   for (PetscInt p = 0; p < pts.n; p++) {
     PetscReal x = 0.0, dV;
     if (c[p] <= 0.0) continue;
@@ -142,7 +210,7 @@ PetscErrorCode MPMFillApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, M
       if (W[2 * nI] > 0.0 && W[2 * nI + 1] > 0.0) x += st.w[a] * W[2 * nI] / W[2 * nI + 1];
     }
     if (x <= 0.0) continue;
-    dV = PetscMax(-mpm->fill_rate * c[p] * x, -0.5 * pts.f[MPM_FIELD_VOLUME][p]);
+    dV = PetscMax(-fl->rate * c[p] * x, -0.5 * pts.f[MPM_FIELD_VOLUME][p]);
     MPMPointChangeVolume(mpm, &pts, p, dV, pts.f[MPM_FIELD_ENERGY][p]);
     over -= dV;
     nact++;
@@ -151,7 +219,27 @@ PetscErrorCode MPMFillApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, M
   PetscCall(VecZeroEntries(mpm->mean_l)); /* the point-exchange modules find it zeroed */
   PetscCall(PetscFree(c));
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-  mpm->diag.fill_volume += over; /* this rank's; summed for the report */
-  mpm->diag.fill_point_steps += nact;
+  fl->volume += over; /* this rank's; summed for the report */
+  fl->point_steps += nact;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMModuleCreate_Fill(MPMModule mod)
+{
+  MPMFill *fl;
+
+  PetscFunctionBegin;
+  PetscCall(PetscNew(&fl));
+  fl->tol                 = 0.05;
+  fl->mach                = 0.05;
+  mod->data               = fl;
+  mod->phase              = MPM_PHASE_POINT_END;
+  mod->ops.setfromoptions = MPMFillSetFromOptions;
+  mod->ops.apply          = MPMFillApply;
+  mod->ops.view           = MPMFillView;
+  mod->ops.report         = MPMFillReport;
+  mod->ops.checkpoint     = MPMFillCheckpoint;
+  mod->ops.destroy        = MPMFillDestroy;
+  PetscCall(PetscStrncpy(mod->event, "MPMVolumeFill", sizeof(mod->event)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

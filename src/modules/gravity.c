@@ -1,9 +1,9 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* Gravity module (grid phase MPM_PHASE_GRID_FORCE): f_I += m_I g (= sum_p N_I m_p g, since the N_I sum to one).
    Registered when -mpm_gravity is not zero. */
-#include "../petmpmimpl.h"
+#include "petmpmimpl.h"
 
-PetscErrorCode MPMGravityApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *node)
+static PetscErrorCode MPMGravityApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *node)
 {
   const PetscInt d = mpm->grid.dim;
 
@@ -12,5 +12,31 @@ PetscErrorCode MPMGravityApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx
   {
     for (PetscInt k = 0; k < d; k++) node[c].f[k] += node[c].m * mpm->gravity[k];
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* In the step where the scene's -mpm_gravity is not zero. */
+static PetscErrorCode MPMGravitySetFromOptions(MPMModule mod, MPM mpm, PetscOptionItems *PetscOptionsObject)
+{
+  PetscFunctionBegin;
+  mod->active = mpm->has_gravity;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMGravityView(MPMModule mod, MPM mpm, PetscViewer viewer)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "gravity (%g, %g, %g) cm/s^2\n", (double)mpm->gravity[0], (double)mpm->gravity[1], (double)mpm->gravity[2]));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMModuleCreate_Gravity(MPMModule mod)
+{
+  PetscFunctionBegin;
+  mod->phase              = MPM_PHASE_GRID_FORCE;
+  mod->ops.setfromoptions = MPMGravitySetFromOptions;
+  mod->ops.apply          = MPMGravityApply;
+  mod->ops.view           = MPMGravityView;
+  PetscCall(PetscStrncpy(mod->event, "MPMGravity", sizeof(mod->event)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -9,7 +9,69 @@
    The counts use the nodal sums of every rank (the ghost exchange of the point-exchange modules), so a point at a
    rank boundary sees its neighbours across it. The report gives the most points popped at one check, the sum over
    the checks, and when and where the first one appeared (robustness.popping). */
-#include "../petmpmimpl.h"
+#include "petmpmimpl.h"
+
+typedef struct {
+  PetscInt  interval;                           /* -mpm_popping_interval: steps between checks                       */
+  PetscReal speed;                              /* -mpm_popping_speed: a point faster than this has popped [cm/s], 0: not checked */
+  PetscInt  checks, popped_max;                 /* checks made; most points popped at one check (global)             */
+  PetscReal popped_sum;                         /* popped points summed over the checks (global)                      */
+  PetscReal first_time, first_x[MPM_MAX_DIM]; /* when (-1: never) and where the first appeared [s, cm]               */
+} MPMPopping;
+
+static PetscErrorCode MPMPoppingSetFromOptions(MPMModule mod, MPM mpm, PetscOptionItems *PetscOptionsObject)
+{
+  MPMPopping *pp = (MPMPopping *)mod->data;
+
+  PetscFunctionBegin;
+  PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-mpm_popping_interval", "Steps between checks for popped points (a point with no other point in the cells around its own, or faster than -mpm_popping_speed) [-], >= 0 (0: off)",
+                               &pp->interval, 0, PETSC_MAX_INT));
+  mod->active = (PetscBool)(pp->interval > 0);
+  if (mod->active) {
+    PetscCall(PetscOptionsReal("-mpm_popping_speed", "A point faster than this has popped [cm/s], >= 0 (0: no speed criterion)", "", pp->speed, &pp->speed, NULL));
+    PetscCall(MPMOptionsCheckRange("-mpm_popping_speed", pp->speed, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMPoppingView(MPMModule mod, MPM mpm, PetscViewer viewer)
+{
+  MPMPopping *pp = (MPMPopping *)mod->data;
+
+  PetscFunctionBegin;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "popping checks: every %" PetscInt_FMT " steps, speed limit %g cm/s\n", pp->interval, (double)pp->speed));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The line of the printed summary and the report's "popping" object (only when the checks ran). */
+static PetscErrorCode MPMPoppingReport(MPMModule mod, MPM mpm, MPMReport rep)
+{
+  MPMPopping      *pp = (MPMPopping *)mod->data;
+  const PetscReal *x  = pp->first_x;
+
+  PetscFunctionBegin;
+  if (!mod->active) PetscFunctionReturn(PETSC_SUCCESS);
+  if (pp->first_time >= 0.0)
+    PetscCall(MPMReportPrintf(rep, "  popping: up to %" PetscInt_FMT " points popped at one check, %.0f point-checks in %" PetscInt_FMT " checks; the first at t = %g s, x = (%g, %g, %g) cm\n", pp->popped_max, (double)pp->popped_sum, pp->checks,
+                          (double)pp->first_time, (double)x[0], (double)x[1], (double)x[2]));
+  else PetscCall(MPMReportPrintf(rep, "  popping: no point popped in %" PetscInt_FMT " checks\n", pp->checks));
+  PetscCall(MPMReportAdd(rep, NULL, "popping", "{\"checks\": %" PetscInt_FMT ", \"popped_max\": %" PetscInt_FMT ", \"popped_sum\": %.0f, \"first_time\": %.10g, \"first_position\": [%.10g, %.10g, %.10g]}", pp->checks, pp->popped_max,
+                         (double)pp->popped_sum, (double)pp->first_time, (double)x[0], (double)x[1], (double)x[2]));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMPoppingCheckpoint(MPMModule mod, MPM mpm, MPMCheckpoint ck)
+{
+  MPMPopping *pp = (MPMPopping *)mod->data;
+
+  PetscFunctionBegin;
+  PetscCall(MPMCheckpointInts(ck, "checks", 1, &pp->checks, MPM_CKPT_GLOBAL));
+  PetscCall(MPMCheckpointInts(ck, "popped_max", 1, &pp->popped_max, MPM_CKPT_GLOBAL));
+  PetscCall(MPMCheckpointReals(ck, "popped_sum", 1, &pp->popped_sum, MPM_CKPT_GLOBAL));
+  PetscCall(MPMCheckpointReals(ck, "first_time", 1, &pp->first_time, MPM_CKPT_GLOBAL));
+  PetscCall(MPMCheckpointReals(ck, "first_position", MPM_MAX_DIM, pp->first_x, MPM_CKPT_GLOBAL));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
 /* The local (ghosted) index of corner c of the cell holding x, and the corner's tent weight. */
 static inline PetscReal MPMCornerWeight(const MPMGrid *g, const PetscReal x[], PetscInt c, PetscInt *node)
@@ -27,8 +89,9 @@ static inline PetscReal MPMCornerWeight(const MPMGrid *g, const PetscReal x[], P
   return w;
 }
 
-PetscErrorCode MPMPoppingApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
+static PetscErrorCode MPMPoppingApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
 {
+  MPMPopping    *pp = (MPMPopping *)mod->data;
   const MPMGrid *g = &mpm->grid;
   const PetscInt d = g->dim, nc = 1 << d;
   PetscInt       n[2] = {0, 0}, first = -1; /* popped on this rank, [1]: global after the reduction */
@@ -36,7 +99,7 @@ PetscErrorCode MPMPoppingApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx
   MPMPoints      pts;
 
   PetscFunctionBegin;
-  if (mpm->steps % mpm->popping_interval) PetscFunctionReturn(PETSC_SUCCESS);
+  if (mpm->steps % pp->interval) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(MPMNodalMeanSetUp(mpm));
   PetscCall(VecZeroEntries(mpm->mean_l));
   PetscCall(MPMPointsGetArrays(mpm, &pts));
@@ -56,7 +119,7 @@ PetscErrorCode MPMPoppingApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx
       other += W[2 * node] - w; /* the other points' weights on the corner */
     }
     for (PetscInt k = 0; k < d; k++) v2 += PetscSqr(pts.f[MPM_FIELD_VELOCITY][p * d + k]);
-    if (other < 1e-9 || (mpm->popping_speed > 0.0 && v2 > PetscSqr(mpm->popping_speed))) {
+    if (other < 1e-9 || (pp->speed > 0.0 && v2 > PetscSqr(pp->speed))) {
       if (first < 0) first = p;
       n[0]++;
     }
@@ -64,19 +127,37 @@ PetscErrorCode MPMPoppingApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx
   PetscCall(VecRestoreArray(mpm->mean_l, &W));
   PetscCall(VecZeroEntries(mpm->mean_l)); /* the point-exchange modules find it zeroed */
   PetscCall(MPIU_Allreduce(&n[0], &n[1], 1, MPIU_INT, MPI_SUM, mpm->comm));
-  mpm->diag.popping_checks++;
-  mpm->diag.popped_sum += n[1];
-  mpm->diag.popped_max = PetscMax(mpm->diag.popped_max, n[1]);
-  if (n[1] > 0 && mpm->diag.first_popped_time < 0.0) { /* where: the first popped point of the lowest rank that has one */
+  pp->checks++;
+  pp->popped_sum += n[1];
+  pp->popped_max = PetscMax(pp->popped_max, n[1]);
+  if (n[1] > 0 && pp->first_time < 0.0) { /* where: the first popped point of the lowest rank that has one */
     PetscMPIInt rank, owner;
     PetscReal   x[MPM_MAX_DIM] = {0, 0, 0};
     PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
     PetscCall(MPIU_Allreduce(first >= 0 ? &rank : &(PetscMPIInt){PETSC_MPI_INT_MAX}, &owner, 1, MPI_INT, MPI_MIN, mpm->comm));
     if (rank == owner)
       for (PetscInt k = 0; k < d; k++) x[k] = pts.f[MPM_FIELD_POSITION][first * d + k];
-    PetscCall(MPIU_Allreduce(x, mpm->diag.first_popped_x, MPM_MAX_DIM, MPIU_REAL, MPIU_SUM, mpm->comm));
-    mpm->diag.first_popped_time = ctx->tn + ctx->dt;
+    PetscCall(MPIU_Allreduce(x, pp->first_x, MPM_MAX_DIM, MPIU_REAL, MPIU_SUM, mpm->comm));
+    pp->first_time = ctx->tn + ctx->dt;
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMModuleCreate_Popping(MPMModule mod)
+{
+  MPMPopping *pp;
+
+  PetscFunctionBegin;
+  PetscCall(PetscNew(&pp));
+  pp->first_time          = -1.0;
+  mod->data               = pp;
+  mod->phase              = MPM_PHASE_POINT_END;
+  mod->ops.setfromoptions = MPMPoppingSetFromOptions;
+  mod->ops.apply          = MPMPoppingApply;
+  mod->ops.view           = MPMPoppingView;
+  mod->ops.report         = MPMPoppingReport;
+  mod->ops.checkpoint     = MPMPoppingCheckpoint;
+  PetscCall(PetscStrncpy(mod->event, "MPMPopping", sizeof(mod->event)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -28,26 +28,73 @@
    scale below 1, where the material expanded towards vacuum) do not relax either, which gives the blast back its
    L1 (2.0% and 1.6% at 1024 and 2048 cells) and leaves Noh's gain whole. A shocked plateau, where the mode lives,
    is at rest and unsplit. Solids (with a strength model) are left alone. */
-#include "../petmpmimpl.h"
+#include "petmpmimpl.h"
+
+typedef struct {
+  PetscReal  K;            /* -mpm_pressure_relax: the rate K_r [-]                                   */
+  PetscReal  mach;         /* -mpm_pressure_relax_mach: points with |div v| h / c above it do not relax [-] */
+  PetscReal *cellV, *cellS; /* per owned cell of the grid numbered grid_id: the cell sums (zero between uses) */
+  PetscInt   grid_id;
+} MPMRelax;
+
+static PetscErrorCode MPMRelaxSetFromOptions(MPMModule mod, MPM mpm, PetscOptionItems *PetscOptionsObject)
+{
+  MPMRelax *rx = (MPMRelax *)mod->data;
+
+  PetscFunctionBegin;
+  PetscCall(PetscOptionsReal("-mpm_pressure_relax", "Sub-cell pressure relaxation K_r: fluid points of a cell exchange volume towards a common pressure at the acoustic rate K_r c / h [-], >= 0 (0: off)", "", rx->K, &rx->K, NULL));
+  PetscCall(MPMOptionsCheckRange("-mpm_pressure_relax", rx->K, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+  mod->active = (PetscBool)(rx->K > 0.0);
+  if (mod->active) {
+    PetscCall(PetscOptionsReal("-mpm_pressure_relax_mach", "A point whose velocity jump across a cell |div v| h exceeds this fraction of its sound speed (a shock, a fast expansion) does not relax [-], > 0", "", rx->mach, &rx->mach, NULL));
+    PetscCall(MPMOptionsCheckRange("-mpm_pressure_relax_mach", rx->mach, 0.0, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMRelaxView(MPMModule mod, MPM mpm, PetscViewer viewer)
+{
+  MPMRelax *rx = (MPMRelax *)mod->data;
+
+  PetscFunctionBegin;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "sub-cell pressure relaxation: K_r %g, quiescent below |div v| h / c = %g\n", (double)rx->K, (double)rx->mach));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMRelaxDestroy(MPMModule mod)
+{
+  MPMRelax *rx = (MPMRelax *)mod->data;
+
+  PetscFunctionBegin;
+  PetscCall(PetscFree2(rx->cellV, rx->cellS));
+  PetscCall(PetscFree(mod->data));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
 /* Sums a weight and a weighted quantity over each owned cell's fluid points (w_p > 0), in cellV / cellS. */
-static void MPMRelaxCellSums(MPM mpm, const PetscInt cell[], PetscInt n, const PetscReal w[], const PetscReal q[])
+static void MPMRelaxCellSums(MPMRelax *rx, const PetscInt cell[], PetscInt n, const PetscReal w[], const PetscReal q[])
 {
   for (PetscInt p = 0; p < n; p++)
     if (w[p] > 0.0) {
-      mpm->cellV[cell[p]] += w[p];
-      mpm->cellS[cell[p]] += w[p] * q[p];
+      rx->cellV[cell[p]] += w[p];
+      rx->cellS[cell[p]] += w[p] * q[p];
     }
 }
 
-PetscErrorCode MPMRelaxApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
+static PetscErrorCode MPMRelaxApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
 {
+  MPMRelax      *rx = (MPMRelax *)mod->data;
   const PetscInt d = mpm->grid.dim;
   PetscInt      *cell;
   PetscReal     *w, *q;
   MPMPoints      pts;
 
   PetscFunctionBegin;
+  if (rx->grid_id != mpm->grid.id) { /* the cell sums on this grid's owned cells */
+    PetscCall(PetscFree2(rx->cellV, rx->cellS));
+    PetscCall(PetscCalloc2(mpm->grid.ncells, &rx->cellV, mpm->grid.ncells, &rx->cellS));
+    rx->grid_id = mpm->grid.id;
+  }
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   PetscCall(PetscMalloc3(pts.n + 1, &cell, pts.n + 1, &w, pts.n + 1, &q));
   for (PetscInt p = 0; p < pts.n; p++) { /* the cell, volume weight and bulk modulus of each fluid point */
@@ -58,7 +105,7 @@ PetscErrorCode MPMRelaxApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
     if (MPMStrengthIsSolid(mat->strength) || cell[p] < 0) continue; /* solids keep their pressure pattern: a viscous liquid relaxes */
     MPMEOSPressureKernel(mat->eos, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_ENERGY][p], &pr, &c2);
     if (!(c2 > 0.0)) continue;
-    if (MPMPointInShock(mpm, &pts, p, c2, mpm->pressure_relax_mach)) continue;
+    if (MPMPointInShock(mpm, &pts, p, c2, rx->mach)) continue;
     if (pts.f[MPM_FIELD_DOMAINSCALE]) { /* a point made by splitting: the material expanded towards vacuum here */
       PetscBool split = PETSC_FALSE;
       for (PetscInt k = 0; k < d; k++) split = (PetscBool)(split || pts.f[MPM_FIELD_DOMAINSCALE][p * d + k] < 1.0);
@@ -68,29 +115,47 @@ PetscErrorCode MPMRelaxApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
     q[p] = pts.f[MPM_FIELD_DENSITY][p] * c2;
   }
   for (PetscInt p = 0; p < pts.n; p++) /* the cell sums start from zero (the cell rule's transfers leave theirs in the same arrays) */
-    if (cell[p] >= 0) mpm->cellV[cell[p]] = mpm->cellS[cell[p]] = 0.0;
-  MPMRelaxCellSums(mpm, cell, pts.n, w, q); /* Kbar_c */
+    if (cell[p] >= 0) rx->cellV[cell[p]] = rx->cellS[cell[p]] = 0.0;
+  MPMRelaxCellSums(rx, cell, pts.n, w, q); /* Kbar_c */
   for (PetscInt p = 0; p < pts.n; p++) {
     PetscReal K, theta;
     if (w[p] == 0.0) continue;
-    K     = PetscMax(q[p], mpm->cellS[cell[p]] / mpm->cellV[cell[p]]);
-    theta = PetscMin(0.5, mpm->pressure_relax * ctx->dt * PetscSqrtReal(K / pts.f[MPM_FIELD_DENSITY][p]) / mpm->grid.hmin);
+    K     = PetscMax(q[p], rx->cellS[cell[p]] / rx->cellV[cell[p]]);
+    theta = PetscMin(0.5, rx->K * ctx->dt * PetscSqrtReal(K / pts.f[MPM_FIELD_DENSITY][p]) / mpm->grid.hmin);
     w[p]  = theta * pts.f[MPM_FIELD_VOLUME][p] / K;
     q[p]  = pts.f[MPM_FIELD_PRESSURE][p];
   }
   for (PetscInt p = 0; p < pts.n; p++)
-    if (cell[p] >= 0) mpm->cellV[cell[p]] = mpm->cellS[cell[p]] = 0.0;
-  MPMRelaxCellSums(mpm, cell, pts.n, w, q); /* p_c */
+    if (cell[p] >= 0) rx->cellV[cell[p]] = rx->cellS[cell[p]] = 0.0;
+  MPMRelaxCellSums(rx, cell, pts.n, w, q); /* p_c */
   for (PetscInt p = 0; p < pts.n; p++) {
     PetscReal pc, dV;
     if (w[p] == 0.0) continue;
-    pc = mpm->cellS[cell[p]] / mpm->cellV[cell[p]];
+    pc = rx->cellS[cell[p]] / rx->cellV[cell[p]];
     dV = w[p] * (q[p] - pc);
     MPMPointChangeVolume(mpm, &pts, p, dV, pts.f[MPM_FIELD_ENERGY][p] - pc * dV / pts.f[MPM_FIELD_MASS][p]);
   }
   for (PetscInt p = 0; p < pts.n; p++) /* scratch left zeroed */
-    if (cell[p] >= 0) mpm->cellV[cell[p]] = mpm->cellS[cell[p]] = 0.0;
+    if (cell[p] >= 0) rx->cellV[cell[p]] = rx->cellS[cell[p]] = 0.0;
   PetscCall(PetscFree3(cell, w, q));
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMModuleCreate_Relax(MPMModule mod)
+{
+  MPMRelax *rx;
+
+  PetscFunctionBegin;
+  PetscCall(PetscNew(&rx));
+  rx->K                   = 0.25;
+  rx->mach                = 0.005;
+  mod->data               = rx;
+  mod->phase              = MPM_PHASE_POINT_END;
+  mod->ops.setfromoptions = MPMRelaxSetFromOptions;
+  mod->ops.apply          = MPMRelaxApply;
+  mod->ops.view           = MPMRelaxView;
+  mod->ops.destroy        = MPMRelaxDestroy;
+  PetscCall(PetscStrncpy(mod->event, "MPMRelax", sizeof(mod->event)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

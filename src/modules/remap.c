@@ -5,9 +5,9 @@
    With the specialised kernels the momenta are summed in grid to points, each point's as soon as its new velocity is
    formed (MPM::remap_fused: one pass over the points and their stencils instead of two, and m_I is kept), into f_I,
    which the kick has used; the same sums in the same order as the scatter here, so the same bits. */
-#include "../petmpmimpl.h"
+#include "petmpmimpl.h"
 
-PetscErrorCode MPMRemapApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
+static PetscErrorCode MPMRemapApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
 {
   const PetscInt d = mpm->grid.dim;
   MPMNode       *node;
@@ -31,5 +31,23 @@ PetscErrorCode MPMRemapApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
     PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_VELOCITY, &rctx));
   }
   PetscCall(MPMGridGhostFill(mpm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* In the step with -mpm_scheme musl. */
+static PetscErrorCode MPMRemapSetFromOptions(MPMModule mod, MPM mpm, PetscOptionItems *PetscOptionsObject)
+{
+  PetscFunctionBegin;
+  mod->active = (PetscBool)(mpm->scheme == MPM_SCHEME_MUSL);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMModuleCreate_Remap(MPMModule mod)
+{
+  PetscFunctionBegin;
+  mod->phase              = MPM_PHASE_POINT_KINEMATICS;
+  mod->ops.setfromoptions = MPMRemapSetFromOptions;
+  mod->ops.apply          = MPMRemapApply;
+  PetscCall(PetscStrncpy(mod->event, "MPMRemapMomentum", sizeof(mod->event)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

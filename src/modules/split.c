@@ -14,14 +14,74 @@
    parents' (id, material) over all ranks, so that the ids do not depend on the number of ranks. Cf.
    Ma, Lu & Komanduri, CMES 2006 (splitting of GIMP/CPDI domains), and Homel, Brannon & Guilkey 2016 (CPDI
    splitting). The registered point fields are copied: a module's field must be intensive. */
-#include "../petmpmimpl.h"
+#include "petmpmimpl.h"
+
+typedef struct {
+  PetscBool on;        /* -mpm_split                                                  */
+  PetscReal length;    /* -mpm_split_length: a domain longer than this along an axis splits [cells] */
+  PetscReal min_scale; /* smallest domain scale a split may leave: 2^-(max_level - 1) [-] */
+  PetscInt  split, refused; /* points this rank split; point-steps whose split the level limit refused */
+} MPMSplit;
+
+static PetscErrorCode MPMSplitSetFromOptions(MPMModule mod, MPM mpm, PetscOptionItems *PetscOptionsObject)
+{
+  MPMSplit *sp = (MPMSplit *)mod->data;
+
+  PetscFunctionBegin;
+  PetscCall(PetscOptionsBool("-mpm_split", "Split a point whose domain stretches beyond -mpm_split_length cells along an axis into two (mass, momentum, energy, volume and first moment conserved)", "", sp->on, &sp->on, NULL));
+  mod->active = sp->on;
+  if (sp->on) {
+    PetscInt level = 30;
+    sp->length     = PetscMax(1.0, 1.5 / mpm->ppc);
+    PetscCall(PetscOptionsReal("-mpm_split_length", "Length of a point's domain along an axis above which it splits [cells], default max(1, 1.5 / ppc), >= 1 / ppc (the lattice spacing)", "", sp->length, &sp->length, NULL));
+    PetscCall(MPMOptionsCheckRange("-mpm_split_length", sp->length, 1.0 / mpm->ppc, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+    PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-mpm_split_max_level", "Most times a point's domain may be halved along one axis [-], 1 to 40", &level, 1, 40));
+    sp->min_scale = PetscPowReal(0.5, (PetscReal)level - 1) * (1.0 - 1e-12);
+    PetscCall(MPMPointsRequireField(mpm, MPM_FIELD_DOMAINSCALE)); /* a domain is F diag(s) l0 */
+    PetscCall(MPMPointsRequireField(mpm, MPM_FIELD_DEFGRAD));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMSplitView(MPMModule mod, MPM mpm, PetscViewer viewer)
+{
+  MPMSplit *sp = (MPMSplit *)mod->data;
+
+  PetscFunctionBegin;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "point splitting: domains longer than %g cells, smallest scale %g\n", (double)sp->length, (double)sp->min_scale));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* robustness.points_split and robustness.split_refused, and a line of the printed summary when the module ran. */
+static PetscErrorCode MPMSplitReport(MPMModule mod, MPM mpm, MPMReport rep)
+{
+  MPMSplit *sp   = (MPMSplit *)mod->data;
+  PetscReal s[2] = {(PetscReal)sp->split, (PetscReal)sp->refused};
+
+  PetscFunctionBegin;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 2, MPIU_REAL, MPIU_SUM, mpm->comm));
+  if (mod->active) PetscCall(MPMReportPrintf(rep, "  point splitting: %.0f points split (%" PetscInt_FMT " points at start); %.0f splits refused at -mpm_split_max_level\n", (double)s[0], mpm->npoints0, (double)s[1]));
+  PetscCall(MPMReportAdd(rep, "robustness", "points_split", "%.0f", (double)s[0]));
+  PetscCall(MPMReportAdd(rep, "robustness", "split_refused", "%.0f", (double)s[1]));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMSplitCheckpoint(MPMModule mod, MPM mpm, MPMCheckpoint ck)
+{
+  MPMSplit *sp = (MPMSplit *)mod->data;
+
+  PetscFunctionBegin;
+  PetscCall(MPMCheckpointInts(ck, "points_split", 1, &sp->split, MPM_CKPT_RANK_SUM));
+  PetscCall(MPMCheckpointInts(ck, "split_refused", 1, &sp->refused, MPM_CKPT_RANK_SUM));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
 /* The axis along which point p should split (-1: none) and whether a split was refused at the level limit. */
-static inline PetscInt MPMSplitAxis(const MPM mpm, const PetscReal *x, const PetscReal *F, const PetscReal *s, PetscBool *refused)
+static inline PetscInt MPMSplitAxis(const MPM mpm, const MPMSplit *sp, const PetscReal *x, const PetscReal *F, const PetscReal *s, PetscBool *refused)
 {
   const MPMGrid *g    = &mpm->grid;
   const PetscInt d    = g->dim;
-  PetscReal      best = mpm->split_length;
+  PetscReal      best = sp->length;
   PetscInt       axis = -1;
 
   for (PetscInt k = 0; k < d; k++) {
@@ -33,7 +93,7 @@ static inline PetscInt MPMSplitAxis(const MPM mpm, const PetscReal *x, const Pet
       axis = k;
     }
   }
-  if (axis >= 0 && s[axis] < mpm->split_min_scale) {
+  if (axis >= 0 && s[axis] < sp->min_scale) {
     *refused = PETSC_TRUE;
     axis     = -1;
   }
@@ -48,8 +108,9 @@ static int MPMSplitCompare(const void *a, const void *b)
   return x[0] < y[0] ? -1 : x[0] > y[0] ? 1 : x[1] < y[1] ? -1 : x[1] > y[1] ? 1 : 0;
 }
 
-PetscErrorCode MPMSplitApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
+static PetscErrorCode MPMSplitApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
 {
+  MPMSplit      *sp = (MPMSplit *)mod->data;
   const MPMGrid *g = &mpm->grid;
   const PetscInt d = g->dim;
   PetscInt      *axis, *place, n, nsplit = 0, nrefused = 0, counts[2];
@@ -61,7 +122,7 @@ PetscErrorCode MPMSplitApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
   PetscCall(PetscMalloc2(n + 1, &axis, n + 1, &place));
   for (PetscInt p = 0; p < n; p++) {
     PetscBool refused = PETSC_FALSE;
-    axis[p]           = MPMSplitAxis(mpm, &pts.f[MPM_FIELD_POSITION][p * d], &pts.f[MPM_FIELD_DEFGRAD][p * d * d], &pts.f[MPM_FIELD_DOMAINSCALE][p * d], &refused);
+    axis[p]           = MPMSplitAxis(mpm, sp, &pts.f[MPM_FIELD_POSITION][p * d], &pts.f[MPM_FIELD_DEFGRAD][p * d * d], &pts.f[MPM_FIELD_DOMAINSCALE][p * d], &refused);
     nsplit += axis[p] >= 0;
     nrefused += refused;
   }
@@ -69,7 +130,7 @@ PetscErrorCode MPMSplitApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
   counts[0] = nsplit;
   counts[1] = nrefused;
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, counts, 2, MPIU_INT, MPI_SUM, mpm->comm));
-  mpm->diag.split_refused += nrefused;
+  sp->refused += nrefused;
   if (!counts[0]) {
     PetscCall(PetscFree2(axis, place));
     PetscFunctionReturn(PETSC_SUCCESS);
@@ -135,6 +196,24 @@ PetscErrorCode MPMSplitApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, 
   PetscCall(PetscFree2(axis, place));
   mpm->next_id += counts[0];
   mpm->npoints += counts[0];
-  mpm->diag.points_split += nsplit;
+  sp->split += nsplit;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMModuleCreate_Split(MPMModule mod)
+{
+  MPMSplit *sp;
+
+  PetscFunctionBegin;
+  PetscCall(PetscNew(&sp));
+  sp->on                  = PETSC_TRUE;
+  mod->data               = sp;
+  mod->phase              = MPM_PHASE_POINT_ADAPT;
+  mod->ops.setfromoptions = MPMSplitSetFromOptions;
+  mod->ops.apply          = MPMSplitApply;
+  mod->ops.view           = MPMSplitView;
+  mod->ops.report         = MPMSplitReport;
+  mod->ops.checkpoint     = MPMSplitCheckpoint;
+  PetscCall(PetscStrncpy(mod->event, "MPMSplit", sizeof(mod->event)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -15,7 +15,7 @@
    f_fric), the conservative update's sum over the grid of m_I |v|^2 / 2 changes by f_fric . (v_I^n + v_I) / 2 dt more
    than the internal work, so the module tallies m_I (v* - v_t) . (v_I^n + v_t) / 2 per node (v* the tangential
    velocity before friction), which the report adds back (friction_work). */
-#include "../petmpmimpl.h"
+#include "petmpmimpl.h"
 
 /* What one pass over the wall faces does at each node: the face's friction coefficient, the friction's work (NULL: no
    friction), and the contact nodes' states, one per node in the order of the pass: held (the node moved into the wall
@@ -29,11 +29,12 @@ typedef struct {
   PetscBool  remap;
 } MPMWallPass;
 
-/* The module's state (its ctx, one allocation that the module list frees): room for n contact nodes' states. */
+/* The module's state: room for n contact nodes' states, and the friction's work on this rank's wall nodes [erg]. */
 typedef struct {
-  PetscInt  n;
-  PetscBool held[];
-} MPMWallsState;
+  PetscInt   n;
+  PetscBool *held;
+  PetscReal  friction_work;
+} MPMWalls;
 
 /* Calls fn on every owned node in the plane of local index ik of direction k (side -1: the lower face, +1: the upper). */
 static void MPMWallPlaneEach(const MPMGrid *g, MPMNode *node, PetscInt k, PetscInt ik, PetscInt side, MPMWallPass *pass, void (*fn)(MPMNode *, PetscInt, PetscInt, PetscInt, MPMWallPass *))
@@ -103,23 +104,80 @@ static void MPMWallContactNode(MPMNode *nd, PetscInt d, PetscInt k, PetscInt sid
   nd->p[k] = nd->f[k] = nd->v0[k] = 0.0;
 }
 
-PetscErrorCode MPMWallsApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *node)
+static PetscErrorCode MPMWallsApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *node)
 {
-  MPMWallPass    pass = {0.0, &mpm->diag.friction_work, NULL, 0, ctx->remap};
+  MPMWalls      *w    = (MPMWalls *)mod->data;
+  MPMWallPass    pass = {0.0, &w->friction_work, NULL, 0, ctx->remap};
   const PetscInt n    = MPMWallFacesEach(mpm, node, PETSC_TRUE, &pass, NULL); /* contact nodes on this rank */
 
   PetscFunctionBegin;
   MPMWallFacesEach(mpm, node, PETSC_FALSE, &pass, MPMWallNode); /* symmetry planes first: friction reads the velocity they leave */
   if (!n) PetscFunctionReturn(PETSC_SUCCESS);
-  if (!mod->ctx || n > ((MPMWallsState *)mod->ctx)->n) { /* the kick sizes it (a rebalanced grid may own more wall nodes) */
-    MPMWallsState *st;
+  if (n > w->n) { /* the kick sizes it (a rebalanced grid may own more wall nodes) */
     PetscCheck(!ctx->remap, PETSC_COMM_SELF, PETSC_ERR_PLIB, "MUSL remap before the kick recorded the wall contacts");
-    PetscCall(PetscFree(mod->ctx));
-    PetscCall(PetscMalloc(sizeof(MPMWallsState) + (size_t)n * sizeof(PetscBool), &st));
-    st->n    = n;
-    mod->ctx = st;
+    PetscCall(PetscFree(w->held));
+    PetscCall(PetscMalloc1(n, &w->held));
+    w->n = n;
   }
-  pass.held = ((MPMWallsState *)mod->ctx)->held;
+  pass.held = w->held;
   MPMWallFacesEach(mpm, node, PETSC_TRUE, &pass, MPMWallContactNode); /* friction acts in the kick only */
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* In the step where a face is a wall. */
+static PetscErrorCode MPMWallsSetFromOptions(MPMModule mod, MPM mpm, PetscOptionItems *PetscOptionsObject)
+{
+  PetscFunctionBegin;
+  mod->active = PETSC_FALSE;
+  for (PetscInt k = 0; k < mpm->grid.dim; k++) mod->active = (PetscBool)(mod->active || mpm->bc_lo[k] == MPM_BC_WALL || mpm->bc_hi[k] == MPM_BC_WALL);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* With friction: its work, which left the system (the energy budgets add it back), and a line of the summary. */
+static PetscErrorCode MPMWallsReport(MPMModule mod, MPM mpm, MPMReport rep)
+{
+  PetscReal W        = ((MPMWalls *)mod->data)->friction_work;
+  PetscBool friction = PETSC_FALSE;
+
+  PetscFunctionBegin;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &W, 1, MPIU_REAL, MPIU_SUM, mpm->comm));
+  PetscCall(MPMReportAddRemovedEnergy(rep, W));
+  for (PetscInt k = 0; k < mpm->grid.dim; k++) friction = (PetscBool)(friction || mpm->friction_lo[k] > 0.0 || mpm->friction_hi[k] > 0.0);
+  if (!friction) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MPMReportPrintf(rep, "  wall friction: work %.6g erg, %.4f of the initial kinetic energy (energy that left the system: the budgets count it)\n", (double)W, (double)(mpm->kinetic0 > 0.0 ? W / mpm->kinetic0 : 0.0)));
+  PetscCall(MPMReportAdd(rep, NULL, "friction_work", "%.6e", (double)W));
+  PetscCall(MPMReportAdd(rep, NULL, "friction_work_fraction", "%.6e", (double)(mpm->kinetic0 > 0.0 ? W / mpm->kinetic0 : 0.0)));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMWallsCheckpoint(MPMModule mod, MPM mpm, MPMCheckpoint ck)
+{
+  PetscFunctionBegin;
+  PetscCall(MPMCheckpointReals(ck, "friction_work", 1, &((MPMWalls *)mod->data)->friction_work, MPM_CKPT_RANK_SUM));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMWallsDestroy(MPMModule mod)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscFree(((MPMWalls *)mod->data)->held));
+  PetscCall(PetscFree(mod->data));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMModuleCreate_Walls(MPMModule mod)
+{
+  MPMWalls *w;
+
+  PetscFunctionBegin;
+  PetscCall(PetscNew(&w));
+  mod->data               = w;
+  mod->phase              = MPM_PHASE_GRID_VELOCITY;
+  mod->ops.setfromoptions = MPMWallsSetFromOptions;
+  mod->ops.apply          = MPMWallsApply;
+  mod->ops.report         = MPMWallsReport;
+  mod->ops.checkpoint     = MPMWallsCheckpoint;
+  mod->ops.destroy        = MPMWallsDestroy;
+  PetscCall(PetscStrncpy(mod->event, "MPMWalls", sizeof(mod->event)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
