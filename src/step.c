@@ -55,19 +55,6 @@ PetscErrorCode MPMSetFailure(MPM mpm, const char format[], ...)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The first phase of the step from t^n: the points' mass, momentum and internal force on the grid, and the
-   external forces (m_I, (mv)_I, f_I at t^n). They do not depend on the step size, so the time step reads them
-   (the acceleration limit of MPMComputeTimeStep): the TS pre-step runs this phase, then sets dt. */
-PetscErrorCode MPMStepForces(MPM mpm, PetscReal tn)
-{
-  const MPMStepContext ctx = {.tn = tn, .dt = 0.0, .kick = 0.0}; /* the force phase reads t^n only */
-
-  PetscFunctionBegin;
-  PetscCall(MPMParticlesToGrid(mpm, &ctx));                    /* m_I, (mv)_I, f_I = f_int */
-  PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_FORCE, &ctx)); /* f_I += f_ext: gravity    */
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 /* The point phases from grid to points to the constitutive update, on the points MPMPointsGetArrays shows (all, or a
    window of them). USL: v_p, x_p, L_p from the advanced grid velocity, then the point-kinematics modules; MUSL: x_p and
    L_p from the remap's (v_p and the remap came before). Then the point-state modules and the constitutive update. */
@@ -83,16 +70,27 @@ static PetscErrorCode MPMStepPoints(MPM mpm, const MPMStepContext *ctx, PetscInt
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The rest of the explicit MPM step from t^n to t^{n+1} = t, after MPMStepForces(t^n). -log_view shows a row per
-   phase and per module. The point phases of MPMStepPoints run window by window where they can (MPM::windowed): a
-   window's fields stay in cache from grid to points to the constitutive update. */
-PetscErrorCode MPMStep(MPM mpm, PetscReal t, PetscReal dt)
+/* One explicit MPM step from t^n = tn, the whole of it; -log_view shows a row per phase and per module. The forces at
+   t^n come first, since the step size reads them (the acceleration limit); dt lands on tmax and the output times
+   (MPMStepSize). TS is the clock: its pre-step calls this and takes dt (0: the run cannot go on, MPM::failed). The
+   point phases of MPMStepPoints run window by window where they can (MPM::windowed): a window's fields stay in cache
+   from grid to points to the constitutive update. */
+PetscErrorCode MPMStep(MPM mpm, PetscReal tn, PetscReal tmax, PetscReal *dt)
 {
-  const MPMStepContext ctx  = {.tn = t - dt, .dt = dt, .kick = 0.5 * (mpm->dt + dt)}; /* mpm->dt: the previous step, 0 before the first */
-  PetscInt             nbad = 0;
+  MPMStepContext ctx  = {.tn = tn};
+  PetscInt       nbad = 0;
+  PetscReal      t;
 
   PetscFunctionBegin;
-  mpm->dt = dt;
+  PetscCall(MPMParticlesToGrid(mpm, &ctx));                    /* m_I, (mv)_I, f_I = f_int at t^n */
+  PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_FORCE, &ctx)); /* f_I += f_ext: gravity          */
+  PetscCall(MPMStepSize(mpm, tn, tmax, dt, &t));               /* dt_n, t^{n+1}                  */
+  if (mpm->failed) PetscFunctionReturn(PETSC_SUCCESS);
+  mpm->steps++;
+  mpm->time = t;
+  mpm->diag.dt_limit[mpm->dt_limit]++;
+  ctx = (MPMStepContext){.tn = t - *dt, .dt = *dt, .kick = 0.5 * (mpm->dt + *dt)}; /* mpm->dt: the previous step, 0 before the first */
+  mpm->dt = *dt;
   mpm->point_steps += mpm->npoints;
   PetscCall(MPMGridAdvance(mpm, &ctx)); /* (mv)_I += dt_kick f_I; walls */
   if (mpm->scheme == MPM_SCHEME_MUSL) {
@@ -111,9 +109,9 @@ PetscErrorCode MPMStep(MPM mpm, PetscReal t, PetscReal dt)
     PetscCall(MPMStepPoints(mpm, &ctx, &nbad));
   PetscCall(MPMConstitutiveFailure(mpm, nbad));
   if (mpm->failed) PetscFunctionReturn(PETSC_SUCCESS);                                           /* the time loop stops               */
-  PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_ADAPT, &ctx));                                  /* point splitting                   */
+  PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_ADAPT, &ctx));                                  /* domain reset, point splitting     */
   PetscCall(MPMMigrate(mpm));                                                                    /* points follow their cells         */
   if (mpm->sort_interval && mpm->steps % mpm->sort_interval == 0) PetscCall(MPMSortPoints(mpm)); /* and stay in cell order */
-  PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_END, &ctx));                                    /* heat conduction                   */
+  PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_END, &ctx));                                    /* heat conduction, relaxation  */
   PetscFunctionReturn(PETSC_SUCCESS);
 }

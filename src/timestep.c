@@ -89,7 +89,7 @@ static inline __attribute__((always_inline)) void MPMSignalMaxima(const MPMPoint
                    dt (dt + dt_prev)/2 wbar_I |a_I| <= C_a h_min. It is what a cold or light material feels before
                    its own state knows (a shock driven into a gas 1000 times lighter); the weight keeps the
                    nodes that a point barely reaches (its small-mass stencil corners) from setting the step.
-   The grid's forces of the step (MPMStepForces) must be in the nodal vector. Records which limit set dt
+   The grid's forces of the step (MPMStep's first phases) must be in the nodal vector. Records which limit set dt
    (mpm->dt_limit). With diagnose, the rank holding the point that sets the sound-speed limit prints it (for a run
    stopped by -mpm_dt_min). */
 PetscErrorCode MPMComputeTimeStep(MPM mpm, PetscBool diagnose, PetscReal *dt)
@@ -166,5 +166,44 @@ PetscErrorCode MPMComputeTimeStep(MPM mpm, PetscBool diagnose, PetscReal *dt)
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   PetscCall(PetscLogEventEnd(mpm->log.timestep, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The size of the step from t^n = tn: the CFL step (MPMComputeTimeStep), trimmed so that steps land on tmax and on the
+   output times; on the end time the step's t^{n+1} is tmax exactly. It records a failure (MPMSetFailure) and returns
+   dt = 0 below -mpm_dt_min, below -mpm_dt_min_ratio of the run's largest step (a step that collapsed by that factor:
+   the run would crawl), or where dt is so small (or NaN) that t no longer advances. */
+PetscErrorCode MPMStepSize(MPM mpm, PetscReal tn, PetscReal tmax, PetscReal *dtn, PetscReal *tn1)
+{
+  const PetscInt step = mpm->steps;
+  PetscReal      dt;
+
+  PetscFunctionBegin;
+  *dtn = *tn1 = 0.0;
+  PetscCall(MPMComputeTimeStep(mpm, PETSC_FALSE, &dt));
+  if (dt < mpm->dtmin || dt < mpm->dtmin_ratio * mpm->dt_peak || !(tn + dt > tn)) {
+    const PetscBool collapsed = (PetscBool) !(tn + dt > tn), absolute = (PetscBool)(dt < mpm->dtmin);
+    PetscCall(MPMComputeTimeStep(mpm, PETSC_TRUE, &dt));
+    if (collapsed)
+      PetscCall(MPMSetFailure(mpm, "Step %" PetscInt_FMT ", t = %g s: the time step collapsed to %g s (t + dt == t: time no longer advances); the limit that set it is printed above", step, (double)tn, (double)dt));
+    else if (absolute)
+      PetscCall(MPMSetFailure(mpm, "Step %" PetscInt_FMT ", t = %g s: CFL time step %g s fell below -mpm_dt_min %g s", step, (double)tn, (double)dt, (double)mpm->dtmin));
+    else
+      PetscCall(MPMSetFailure(mpm, "Step %" PetscInt_FMT ", t = %g s: CFL time step %g s fell below -mpm_dt_min_ratio %g of the run's largest step %g s (a step collapse; the limit that set it is printed above)", step, (double)tn, (double)dt,
+                              (double)mpm->dtmin_ratio, (double)mpm->dt_peak));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  mpm->dt_peak = PetscMax(mpm->dt_peak, dt);
+  if (tn + dt * (1.0 + 1e-6) >= tmax) { /* land on the final time, never leave a sliver */
+    dt            = tmax - tn;
+    mpm->dt_limit = MPM_DT_LANDING;
+  }
+  if (mpm->itout < mpm->ntout && tn + dt * (1.0 + 1e-6) >= mpm->tout[mpm->itout]) { /* and on the output times */
+    dt            = mpm->tout[mpm->itout] - tn;
+    mpm->dt_limit = MPM_DT_LANDING;
+  }
+  *dtn = dt;
+  *tn1 = tn + dt; /* as TS advances its time */
+  if (PetscAbsReal(*tn1 - tmax) <= 1e-12 * PetscAbsReal(tmax)) *tn1 = tmax;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

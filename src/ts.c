@@ -24,43 +24,18 @@ static PetscErrorCode MPMTSRHSFunction(TS ts, PetscReal t, Vec U, Vec F, void *c
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The whole MPM step runs here, from t^n: it sets the step size, which TS then takes as its clock. */
 static PetscErrorCode MPMTSPreStep(TS ts)
 {
   MPM       mpm;
   PetscReal t, tmax, dt;
-  PetscInt  step;
 
   PetscFunctionBegin;
   PetscCall(TSGetApplicationContext(ts, &mpm));
   PetscCall(TSGetTime(ts, &t));
   PetscCall(TSGetMaxTime(ts, &tmax));
-  PetscCall(TSGetStepNumber(ts, &step));
-  PetscCall(MPMStepForces(mpm, t)); /* the step's grid forces, which the acceleration limit reads */
-  PetscCall(MPMComputeTimeStep(mpm, PETSC_FALSE, &dt));
-  /* below -mpm_dt_min, below -mpm_dt_min_ratio of the run's largest step (a step that collapsed by that factor: the run
-     would crawl), or so small (or NaN) that t no longer advances: the post-step stops the loop without a step */
-  if (dt < mpm->dtmin || dt < mpm->dtmin_ratio * mpm->dt_peak || !(t + dt > t)) {
-    const PetscBool collapsed = (PetscBool) !(t + dt > t), absolute = (PetscBool)(dt < mpm->dtmin);
-    PetscCall(MPMComputeTimeStep(mpm, PETSC_TRUE, &dt));
-    if (collapsed)
-      PetscCall(MPMSetFailure(mpm, "Step %" PetscInt_FMT ", t = %g s: the time step collapsed to %g s (t + dt == t: time no longer advances); the limit that set it is printed above", step, (double)t, (double)dt));
-    else if (absolute)
-      PetscCall(MPMSetFailure(mpm, "Step %" PetscInt_FMT ", t = %g s: CFL time step %g s fell below -mpm_dt_min %g s", step, (double)t, (double)dt, (double)mpm->dtmin));
-    else
-      PetscCall(MPMSetFailure(mpm, "Step %" PetscInt_FMT ", t = %g s: CFL time step %g s fell below -mpm_dt_min_ratio %g of the run's largest step %g s (a step collapse; the limit that set it is printed above)", step, (double)t, (double)dt,
-                              (double)mpm->dtmin_ratio, (double)mpm->dt_peak));
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
-  mpm->dt_peak = PetscMax(mpm->dt_peak, dt);
-  if (t + dt * (1.0 + 1e-6) >= tmax) { /* land on the final time, never leave a sliver */
-    dt            = tmax - t;
-    mpm->dt_limit = MPM_DT_LANDING;
-  }
-  if (mpm->itout < mpm->ntout && t + dt * (1.0 + 1e-6) >= mpm->tout[mpm->itout]) { /* and on the output times */
-    dt            = mpm->tout[mpm->itout] - t;
-    mpm->dt_limit = MPM_DT_LANDING;
-  }
-  PetscCall(TSSetTimeStep(ts, dt));
+  PetscCall(MPMStep(mpm, t, tmax, &dt));
+  if (dt > 0.0) PetscCall(TSSetTimeStep(ts, dt)); /* 0: no step (MPM::failed); the post-step stops the loop */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -76,22 +51,13 @@ static PetscErrorCode MPMTSPostStep(TS ts)
   PetscCall(TSGetMaxTime(ts, &tmax));
   PetscCall(TSGetTimeStep(ts, &dt));
   PetscCall(TSGetStepNumber(ts, &step));
-  if (mpm->failed) { /* set by the pre-step: no step */
-    PetscCall(TSSetConvergedReason(ts, TS_DIVERGED_STEP_REJECTED));
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
-  if (PetscAbsReal(t - tmax) <= 1e-12 * PetscAbsReal(tmax)) {
-    t = tmax; /* the trimmed last step: report the final time exactly */
-    PetscCall(TSSetTime(ts, t));
-  }
-  mpm->steps = step;
-  mpm->time  = t;
-  mpm->diag.dt_limit[mpm->dt_limit]++;
-  PetscCall(MPMStep(mpm, t, dt));
   if (mpm->failed) { /* set by the step: stop the loop, MPMSolve writes the last state */
     PetscCall(TSSetConvergedReason(ts, TS_DIVERGED_STEP_REJECTED));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
+  PetscCheck(step == mpm->steps, mpm->comm, PETSC_ERR_PLIB, "TS step %" PetscInt_FMT " is not the MPM step %" PetscInt_FMT, step, mpm->steps);
+  if (t != mpm->time) PetscCall(TSSetTime(ts, mpm->time)); /* the trimmed last step: the final time exactly (MPMStepSize) */
+  t = mpm->time;
   if (mpm->itout < mpm->ntout && PetscAbsReal(t - mpm->tout[mpm->itout]) <= 1e-9 * mpm->tout[mpm->itout]) {
     mpm->itout++;
     if (PetscAbsReal(t - tmax) > 1e-12 * PetscAbsReal(tmax)) { /* the final state is written and checked after the loop */
