@@ -2,7 +2,7 @@
 /* EOS consistency for every registered type over a range of states: the sound speed against a centred
    finite difference of p(rho, s) along the isentrope de = p / rho^2 drho, temperature and energy round
    trip, and for the ideal gas p = (gamma - 1) rho Cv T exactly. */
-#include "petmpmimpl.h"
+#include "core/petmpmimpl.h"
 
 /* Mie-Gruneisen copper (defaults = ../shared/reference/copper.md): the Hugoniot state of the 500 m/s impact
    (Us = c0 + s up = 4.6845e5 cm/s, P = rho0 Us up = 2.0916e11 dyn/cm^2, rho = 9.997 g/cm^3, T about 408 K), the

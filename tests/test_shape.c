@@ -12,7 +12,7 @@
    stencil node is distinct and there are at most 3^d. CPDI is checked a second time with F near 6 I at 2 points per
    cell (domains about 3 cells wide, so that the corners reach boxes of 4 and of 5 nodes per direction: merged,
    and kept as the 4^d corner entries). */
-#include "petmpmimpl.h"
+#include "core/petmpmimpl.h"
 
 /* A random deformation gradient near stretch times the identity. */
 static void RandomF(PetscRandom rnd, PetscInt dim, PetscReal stretch, PetscReal F[])

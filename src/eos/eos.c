@@ -3,6 +3,26 @@
    for one material. Specific internal energy e in erg/g, temperature in eV. */
 #include "eosimpl.h"
 
+PETSC_EXTERN PetscErrorCode MPMEOSCreate_IdealGas(MPMEOS);
+PETSC_EXTERN PetscErrorCode MPMEOSCreate_Tait(MPMEOS);
+PETSC_EXTERN PetscErrorCode MPMEOSCreate_None(MPMEOS);
+PETSC_EXTERN PetscErrorCode MPMEOSCreate_MieGruneisen(MPMEOS);
+
+static PetscBool MPMEOSRegisterAllCalled = PETSC_FALSE;
+
+/* Registers every type of the equations of state: a new type is its file in impls/ plus its prototype and one line here. */
+PetscErrorCode MPMEOSRegisterAll(void)
+{
+  PetscFunctionBegin;
+  if (MPMEOSRegisterAllCalled) PetscFunctionReturn(PETSC_SUCCESS);
+  MPMEOSRegisterAllCalled = PETSC_TRUE;
+  PetscCall(MPMEOSRegister(MPMEOSIDEALGAS, MPMEOSCreate_IdealGas));
+  PetscCall(MPMEOSRegister(MPMEOSTAIT, MPMEOSCreate_Tait));
+  PetscCall(MPMEOSRegister(MPMEOSNONE, MPMEOSCreate_None));
+  PetscCall(MPMEOSRegister(MPMEOSMIEGRUNEISEN, MPMEOSCreate_MieGruneisen));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscFunctionList MPMEOSList = NULL;
 
 static PetscErrorCode MPMEOSReset(void *obj)
@@ -55,6 +75,7 @@ MPM_CLASS_INTERFACE(MPMEOS)
 PetscErrorCode MPMEOSCreate(MPI_Comm comm, MPMEOS *eos)
 {
   PetscFunctionBegin;
+  PetscCall(MPMEOSRegisterAll());
   PetscCall(MPMObjectCreate(comm, &MPMEOSClass, sizeof(struct _p_MPMEOS), eos));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* Private data of the equation-of-state class (src/eos/). */
 #pragma once
-#include "../classimpl.h"
+#include "core/classimpl.h"
 
 typedef struct {
   MPM_CLASS_OPS(MPMEOS);
@@ -85,3 +85,4 @@ static inline PetscReal MPMEOSPressureOf(void *ctx, PetscReal rho, PetscReal e)
   MPMEOSPressureKernel((MPMEOS)ctx, rho, e, &p, &c2);
   return p;
 }
+PETSC_INTERN PetscErrorCode MPMEOSRegisterAll(void);

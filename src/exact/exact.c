@@ -3,6 +3,40 @@
    then carries error norms of density, velocity, pressure and temperature and the scene's named checks. */
 #include "exactimpl.h"
 
+PETSC_EXTERN PetscErrorCode MPMExactCreate_MMS(MPMExact);
+PETSC_EXTERN PetscErrorCode MPMExactCreate_None(MPMExact);
+PETSC_EXTERN PetscErrorCode MPMExactCreate_Riemann(MPMExact);
+PETSC_EXTERN PetscErrorCode MPMExactCreate_Flyer(MPMExact);
+PETSC_EXTERN PetscErrorCode MPMExactCreate_Sedov(MPMExact);
+PETSC_EXTERN PetscErrorCode MPMExactCreate_Noh(MPMExact);
+PETSC_EXTERN PetscErrorCode MPMExactCreate_Anvil(MPMExact);
+PETSC_EXTERN PetscErrorCode MPMExactCreate_Hydrostatic(MPMExact);
+PETSC_EXTERN PetscErrorCode MPMExactCreate_Slide(MPMExact);
+PETSC_EXTERN PetscErrorCode MPMExactCreate_Spin(MPMExact);
+PETSC_EXTERN PetscErrorCode MPMExactCreate_DamBreak(MPMExact);
+
+static PetscBool MPMExactRegisterAllCalled = PETSC_FALSE;
+
+/* Registers every type of the exact solutions: a new type is its file in impls/ plus its prototype and one line here. */
+PetscErrorCode MPMExactRegisterAll(void)
+{
+  PetscFunctionBegin;
+  if (MPMExactRegisterAllCalled) PetscFunctionReturn(PETSC_SUCCESS);
+  MPMExactRegisterAllCalled = PETSC_TRUE;
+  PetscCall(MPMExactRegister(MPMEXACTNONE, MPMExactCreate_None));
+  PetscCall(MPMExactRegister(MPMEXACTRIEMANN, MPMExactCreate_Riemann));
+  PetscCall(MPMExactRegister(MPMEXACTMMS, MPMExactCreate_MMS));
+  PetscCall(MPMExactRegister(MPMEXACTFLYER, MPMExactCreate_Flyer));
+  PetscCall(MPMExactRegister(MPMEXACTSEDOV, MPMExactCreate_Sedov));
+  PetscCall(MPMExactRegister(MPMEXACTNOH, MPMExactCreate_Noh));
+  PetscCall(MPMExactRegister(MPMEXACTANVIL, MPMExactCreate_Anvil));
+  PetscCall(MPMExactRegister(MPMEXACTHYDROSTATIC, MPMExactCreate_Hydrostatic));
+  PetscCall(MPMExactRegister(MPMEXACTSLIDE, MPMExactCreate_Slide));
+  PetscCall(MPMExactRegister(MPMEXACTSPIN, MPMExactCreate_Spin));
+  PetscCall(MPMExactRegister(MPMEXACTDAMBREAK, MPMExactCreate_DamBreak));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscFunctionList MPMExactList = NULL;
 
 /* Class-level option, read after the type's: where the error norms are taken. */
@@ -26,6 +60,7 @@ MPM_CLASS_INTERFACE(MPMExact)
 PetscErrorCode MPMExactCreate(MPI_Comm comm, MPMExact *exact)
 {
   PetscFunctionBegin;
+  PetscCall(MPMExactRegisterAll());
   PetscCall(MPMObjectCreate(comm, &MPMExactClass, sizeof(struct _p_MPMExact), exact));
   PetscCall(MPMObjectSetOptionsPrefix(*exact, "mpm_"));
   (*exact)->window[0] = PETSC_MIN_REAL;

@@ -3,7 +3,7 @@
    parameters: it reads the scene once at set-up (MPMScene) and measures its checks through an MPMProbe (the binned
    density profile and windowed means of the points, src/report.c), never the MPM object or the swarm. */
 #pragma once
-#include "../sceneimpl.h"
+#include "scene/sceneimpl.h"
 
 /* What a check may measure on the current state. */
 typedef struct _p_MPMProbe *MPMProbe;
@@ -81,3 +81,4 @@ static inline PetscReal MPMRadialFrameRadius(const MPMRadialFrame *fr, const Pet
   for (PetscInt k = 0; k < fr->nr; k++) r2 += PetscSqr(x[k] - fr->c[k]);
   return PetscSqrtReal(r2);
 }
+PETSC_INTERN PetscErrorCode MPMExactRegisterAll(void);

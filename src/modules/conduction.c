@@ -15,7 +15,7 @@
    its nodes' mean (no new extremum), and a point at rest or in expansion is untouched. Heat flows between materials by
    temperature, so a gas split into two identical materials runs as one. It runs after migration, where each point's
    nodes are in its rank's ghosted box (MPMPointsNodalMean, nodemean.c), and the EOS then gives p, T and c for the new e. */
-#include "petmpmimpl.h"
+#include "core/petmpmimpl.h"
 
 typedef struct {
   PetscReal C; /* -mpm_conduction: the coefficient C_h [-] */

@@ -14,7 +14,7 @@
    (a principal-axes rectangle of the same sliver split along its length 440,520 times where the cube split 25,961).
    Axis-aligned stretching and compression (a planar tube on a 2D or 3D grid) leave a box and are never touched. The
    report counts the resets (robustness.domain_resets). */
-#include "petmpmimpl.h"
+#include "core/petmpmimpl.h"
 
 typedef struct {
   PetscReal skew;   /* -mpm_domain_skew: a domain less square than this is reset [-], 0: never */

@@ -30,7 +30,7 @@
    blast at 64^2 cells L1 pressure 22% (64% without). Off by default: it also acts on the overlap that CPDI's points
    have for a while in a smooth rarefaction, and there its compression at fixed e costs accuracy (weak Sod at 512
    cells, CPDI, one point per cell: L1 density 0.59% without, 0.88% with theta = 0.02, 1.5% with 0.5). */
-#include "petmpmimpl.h"
+#include "core/petmpmimpl.h"
 
 typedef struct {
   PetscReal  rate, tol, mach; /* -mpm_volume_fill theta, -mpm_volume_fill_tol, -mpm_volume_fill_mach [-] */

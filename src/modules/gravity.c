@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* Gravity module (grid phase MPM_PHASE_GRID_FORCE): f_I += m_I g (= sum_p N_I m_p g, since the N_I sum to one).
    Registered when -mpm_gravity is not zero. */
-#include "petmpmimpl.h"
+#include "core/petmpmimpl.h"
 
 static PetscErrorCode MPMGravityApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *node)
 {

@@ -2,7 +2,7 @@
 /* The module list: every registered module is created with the MPM object, reads its options, and at set-up joins
    its phase of the step or leaves it (a module the scene does not need is not in the step: no cost, no -log_view
    row). Within a phase modules run in the order of registration below. */
-#include "petmpmimpl.h"
+#include "core/petmpmimpl.h"
 
 PETSC_INTERN PetscErrorCode MPMModuleCreate_Gravity(MPMModule);
 PETSC_INTERN PetscErrorCode MPMModuleCreate_Walls(MPMModule);

@@ -2,8 +2,9 @@
 /* The step's modules: a module is one file that owns its options, state, report keys and checkpoint data, and acts in
    one phase of the step (src/core/step.c). The core calls it through its ops and knows none of its members. */
 #pragma once
-#include "classimpl.h"
-#include "gridimpl.h"
+#include "core/classimpl.h"
+#include "grid/gridimpl.h"
+#include "points/points.h"
 
 /* Where in the step a module runs. Grid phases get the owned nodes of the ghosted local nodal vector. */
 typedef enum {
@@ -76,3 +77,10 @@ PETSC_INTERN PetscErrorCode MPMReportPrintf(MPMReport, const char[], ...) PETSC_
 /* Writes or reads (as the checkpoint is being written or read) n values of this rank under the module's name. */
 PETSC_INTERN PetscErrorCode MPMCheckpointReals(MPMCheckpoint, const char[], PetscInt, PetscReal[], MPMCheckpointMerge);
 PETSC_INTERN PetscErrorCode MPMCheckpointInts(MPMCheckpoint, const char[], PetscInt, PetscInt[], MPMCheckpointMerge);
+
+/* The point-exchange modules' nodal sums and the points' state changes they make (src/modules/nodemean.c). */
+PETSC_INTERN PetscErrorCode MPMNodalMeanSetUp(MPM);
+PETSC_INTERN PetscErrorCode MPMNodalMeanSum(MPM, PetscReal **);
+PETSC_INTERN PetscErrorCode MPMPointsNodalMean(MPM, const MPMPoints *, const PetscReal[], const PetscReal[], PetscReal[], PetscReal[]);
+PETSC_INTERN void           MPMPointEOSUpdate(MPM, MPMPoints *, PetscInt, PetscReal, PetscReal);
+PETSC_INTERN void           MPMPointChangeVolume(MPM, MPMPoints *, PetscInt, PetscReal, PetscReal);

@@ -6,7 +6,7 @@
    An exchange w_p sum_I N_I(x_p) (q_p - q_I) X_I then sums to zero over the points for any nodal X_I (partition of
    the nodal sums), which is what makes the modules conservative. It runs after migration, where each point's nodes
    are in its rank's ghosted box. */
-#include "../petmpmimpl.h"
+#include "core/petmpmimpl.h"
 
 /* The nodal sums' DMDA (2 values per node) and its vectors, made on first use; the local vector starts zeroed. */
 PetscErrorCode MPMNodalMeanSetUp(MPM mpm)

@@ -9,7 +9,7 @@
    The counts use the nodal sums of every rank (the ghost exchange of the point-exchange modules), so a point at a
    rank boundary sees its neighbours across it. The report gives the most points popped at one check, the sum over
    the checks, and when and where the first one appeared (robustness.popping). */
-#include "petmpmimpl.h"
+#include "core/petmpmimpl.h"
 
 typedef struct {
   PetscInt  interval;                           /* -mpm_popping_interval: steps between checks                       */

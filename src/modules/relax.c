@@ -28,7 +28,7 @@
    scale below 1, where the material expanded towards vacuum) do not relax either, which gives the blast back its
    L1 (2.0% and 1.6% at 1024 and 2048 cells) and leaves Noh's gain whole. A shocked plateau, where the mode lives,
    is at rest and unsplit. Solids (with a strength model) are left alone. */
-#include "petmpmimpl.h"
+#include "core/petmpmimpl.h"
 
 typedef struct {
   PetscReal  K;            /* -mpm_pressure_relax: the rate K_r [-]                                   */

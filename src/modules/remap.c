@@ -5,7 +5,7 @@
    With the specialised kernels the momenta are summed in grid to points, each point's as soon as its new velocity is
    formed (MPM::remap_fused: one pass over the points and their stencils instead of two, and m_I is kept), into f_I,
    which the kick has used; the same sums in the same order as the scatter here, so the same bits. */
-#include "petmpmimpl.h"
+#include "core/petmpmimpl.h"
 
 static PetscErrorCode MPMRemapApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
 {

@@ -14,7 +14,7 @@
    parents' (id, material) over all ranks, so that the ids do not depend on the number of ranks. Cf.
    Ma, Lu & Komanduri, CMES 2006 (splitting of GIMP/CPDI domains), and Homel, Brannon & Guilkey 2016 (CPDI
    splitting). The registered point fields are copied: a module's field must be intensive. */
-#include "petmpmimpl.h"
+#include "core/petmpmimpl.h"
 
 typedef struct {
   PetscBool on;        /* -mpm_split                                                  */

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* Artificial-viscosity module (point phase MPM_PHASE_POINT_STATE; -mpm_viscosity_type other than none): fills the
    viscosity class's context from the points and the ghosted grid, and lets the type compute q_p. */
-#include "petmpmimpl.h"
+#include "core/petmpmimpl.h"
 
 static PetscErrorCode MPMViscosityModuleApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
 {

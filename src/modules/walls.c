@@ -15,7 +15,7 @@
    f_fric), the conservative update's sum over the grid of m_I |v|^2 / 2 changes by f_fric . (v_I^n + v_I) / 2 dt more
    than the internal work, so the module tallies m_I (v* - v_t) . (v_I^n + v_t) / 2 per node (v* the tangential
    velocity before friction), which the report adds back (friction_work). */
-#include "petmpmimpl.h"
+#include "core/petmpmimpl.h"
 
 /* What one pass over the wall faces does at each node: the face's friction coefficient, the friction's work (NULL: no
    friction), and the contact nodes' states, one per node in the order of the pass: held (the node moved into the wall

@@ -3,6 +3,28 @@
    functions are tensor products N_I(x) = prod_d N_{i_d}(x_d), with gradients by the product rule. */
 #include "shapeimpl.h"
 
+PETSC_EXTERN PetscErrorCode MPMShapeCreate_Linear(MPMShape);
+PETSC_EXTERN PetscErrorCode MPMShapeCreate_GIMP(MPMShape);
+PETSC_EXTERN PetscErrorCode MPMShapeCreate_CPDI(MPMShape);
+PETSC_EXTERN PetscErrorCode MPMShapeCreate_BSpline2(MPMShape);
+PETSC_EXTERN PetscErrorCode MPMShapeCreate_BSpline3(MPMShape);
+
+static PetscBool MPMShapeRegisterAllCalled = PETSC_FALSE;
+
+/* Registers every type of the shape functions: a new type is its file in impls/ plus its prototype and one line here. */
+PetscErrorCode MPMShapeRegisterAll(void)
+{
+  PetscFunctionBegin;
+  if (MPMShapeRegisterAllCalled) PetscFunctionReturn(PETSC_SUCCESS);
+  MPMShapeRegisterAllCalled = PETSC_TRUE;
+  PetscCall(MPMShapeRegister(MPMSHAPELINEAR, MPMShapeCreate_Linear));
+  PetscCall(MPMShapeRegister(MPMSHAPEGIMP, MPMShapeCreate_GIMP));
+  PetscCall(MPMShapeRegister(MPMSHAPECPDI, MPMShapeCreate_CPDI));
+  PetscCall(MPMShapeRegister(MPMSHAPEBSPLINE2, MPMShapeCreate_BSpline2));
+  PetscCall(MPMShapeRegister(MPMSHAPEBSPLINE3, MPMShapeCreate_BSpline3));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscFunctionList MPMShapeList = NULL;
 
 static PetscErrorCode MPMShapeReset(void *obj)
@@ -31,6 +53,7 @@ MPM_CLASS_INTERFACE(MPMShape)
 PetscErrorCode MPMShapeCreate(MPI_Comm comm, MPMShape *shape)
 {
   PetscFunctionBegin;
+  PetscCall(MPMShapeRegisterAll());
   PetscCall(MPMObjectCreate(comm, &MPMShapeClass, sizeof(struct _p_MPMShape), shape));
   PetscCall(MPMObjectSetOptionsPrefix(*shape, "mpm_"));
   PetscCall(MPMShapeSetType(*shape, MPMSHAPECPDI)); /* the default method: docs/shock-capturing.md */

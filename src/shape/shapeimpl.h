@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* Private data of the shape-function class (src/shape/). */
 #pragma once
-#include "../gridimpl.h"
+#include "grid/gridimpl.h"
 
 typedef struct _MPMTransferKernels MPMTransferKernels; /* src/transfer/transfer.h */
 
@@ -60,3 +60,4 @@ static inline void MPMShapeWeights(MPMShape shape, const MPMGrid *g, const Petsc
   else
     MPMShapeEvaluate(shape, g, x, F, st);
 }
+PETSC_INTERN PetscErrorCode MPMShapeRegisterAll(void);

@@ -4,6 +4,30 @@
    whose materials are all fluids never touches a stress tensor. */
 #include "strengthimpl.h"
 
+PETSC_EXTERN PetscErrorCode MPMStrengthCreate_None(MPMStrength);
+PETSC_EXTERN PetscErrorCode MPMStrengthCreate_NeoHookean(MPMStrength);
+PETSC_EXTERN PetscErrorCode MPMStrengthCreate_Elastic(MPMStrength);
+PETSC_EXTERN PetscErrorCode MPMStrengthCreate_VonMises(MPMStrength);
+PETSC_EXTERN PetscErrorCode MPMStrengthCreate_JohnsonCook(MPMStrength);
+PETSC_EXTERN PetscErrorCode MPMStrengthCreate_Newtonian(MPMStrength);
+
+static PetscBool MPMStrengthRegisterAllCalled = PETSC_FALSE;
+
+/* Registers every type of the strength models: a new type is its file in impls/ plus its prototype and one line here. */
+PetscErrorCode MPMStrengthRegisterAll(void)
+{
+  PetscFunctionBegin;
+  if (MPMStrengthRegisterAllCalled) PetscFunctionReturn(PETSC_SUCCESS);
+  MPMStrengthRegisterAllCalled = PETSC_TRUE;
+  PetscCall(MPMStrengthRegister(MPMSTRENGTHNONE, MPMStrengthCreate_None));
+  PetscCall(MPMStrengthRegister(MPMSTRENGTHNEOHOOKEAN, MPMStrengthCreate_NeoHookean));
+  PetscCall(MPMStrengthRegister(MPMSTRENGTHELASTIC, MPMStrengthCreate_Elastic));
+  PetscCall(MPMStrengthRegister(MPMSTRENGTHVONMISES, MPMStrengthCreate_VonMises));
+  PetscCall(MPMStrengthRegister(MPMSTRENGTHJOHNSONCOOK, MPMStrengthCreate_JohnsonCook));
+  PetscCall(MPMStrengthRegister(MPMSTRENGTHNEWTONIAN, MPMStrengthCreate_Newtonian));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscFunctionList MPMStrengthList = NULL;
 
 static PetscErrorCode MPMStrengthReset(void *obj)
@@ -22,6 +46,7 @@ MPM_CLASS_INTERFACE(MPMStrength)
 PetscErrorCode MPMStrengthCreate(MPI_Comm comm, MPMStrength *str)
 {
   PetscFunctionBegin;
+  PetscCall(MPMStrengthRegisterAll());
   PetscCall(MPMObjectCreate(comm, &MPMStrengthClass, sizeof(struct _p_MPMStrength), str));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* Private data of the strength-model class (src/strength/). */
 #pragma once
-#include "../classimpl.h"
+#include "core/classimpl.h"
 
 typedef struct {
   MPM_CLASS_OPS(MPMStrength);
@@ -45,3 +45,4 @@ static inline PetscBool MPMStrengthIsSolid(MPMStrength str)
 }
 
 PETSC_INTERN PetscErrorCode MPMStrengthStressBatch(MPMStrength, PetscInt, PetscReal, PetscInt, const PetscInt[], const PetscReal[], const PetscReal[], const PetscReal[], const PetscReal[], PetscReal[], PetscReal[], PetscReal[]);
+PETSC_INTERN PetscErrorCode MPMStrengthRegisterAll(void);

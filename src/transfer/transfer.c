@@ -3,7 +3,7 @@
    projection of the point state for output. Each dispatches to the shape family's specialised kernel (kernels.h)
    where it has one, and otherwise runs the generic reference below, which the specialised kernels reproduce bit
    for bit. */
-#include "../petmpmimpl.h"
+#include "core/petmpmimpl.h"
 #include "transfer.h"
 
 #if defined(__GNUC__)

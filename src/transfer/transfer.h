@@ -6,7 +6,7 @@
    the specialised kernels must reproduce it bit for bit (they evaluate the same expressions in the same order;
    tests/scenes/kernels.json and scripts/regress check it). */
 #pragma once
-#include "../gridimpl.h"
+#include "grid/gridimpl.h"
 
 /* What a points-to-grid kernel scatters besides m_I and (mv)_I: a bit mask indexing MPMTransferKernels::p2g. */
 enum {
@@ -76,3 +76,4 @@ struct _MPMTransferKernels {
   MPMG2PKernel g2p[MPM_G2P_NMODES];
   MPMP2GKernel g2p_remap[2];
 };
+

@@ -4,6 +4,24 @@
    energy equation as de = -(p + q) dV / m. Type "none" removes the module from the step. */
 #include "viscosityimpl.h"
 
+PETSC_EXTERN PetscErrorCode MPMViscosityCreate_None(MPMViscosity);
+PETSC_EXTERN PetscErrorCode MPMViscosityCreate_VNR(MPMViscosity);
+PETSC_EXTERN PetscErrorCode MPMViscosityCreate_Limited(MPMViscosity);
+
+static PetscBool MPMViscosityRegisterAllCalled = PETSC_FALSE;
+
+/* Registers every type of the artificial viscosities: a new type is its file in impls/ plus its prototype and one line here. */
+PetscErrorCode MPMViscosityRegisterAll(void)
+{
+  PetscFunctionBegin;
+  if (MPMViscosityRegisterAllCalled) PetscFunctionReturn(PETSC_SUCCESS);
+  MPMViscosityRegisterAllCalled = PETSC_TRUE;
+  PetscCall(MPMViscosityRegister(MPMVISCOSITYNONE, MPMViscosityCreate_None));
+  PetscCall(MPMViscosityRegister(MPMVISCOSITYVNR, MPMViscosityCreate_VNR));
+  PetscCall(MPMViscosityRegister(MPMVISCOSITYLIMITED, MPMViscosityCreate_Limited));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscFunctionList MPMViscosityList = NULL;
 
 static PetscErrorCode MPMViscosityReset(void *obj)
@@ -21,6 +39,7 @@ MPM_CLASS_INTERFACE(MPMViscosity)
 PetscErrorCode MPMViscosityCreate(MPI_Comm comm, MPMViscosity *visc)
 {
   PetscFunctionBegin;
+  PetscCall(MPMViscosityRegisterAll());
   PetscCall(MPMObjectCreate(comm, &MPMViscosityClass, sizeof(struct _p_MPMViscosity), visc));
   PetscCall(MPMObjectSetOptionsPrefix(*visc, "mpm_"));
   PetscCall(MPMViscositySetType(*visc, MPMVISCOSITYVNR)); /* the default method */

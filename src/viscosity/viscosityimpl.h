@@ -26,3 +26,4 @@ struct _p_MPMViscosity {
   PetscInt  ghost;     /* grid ghost cells the type reads beyond the shape support [cells] */
   PetscBool pointwise; /* q_p reads only point p's fields: the type can run on a window of the points (MPMStep) */
 };
+PETSC_INTERN PetscErrorCode MPMViscosityRegisterAll(void);

@@ -22,7 +22,7 @@
    uninterrupted one; on another rank count the grid is rebalanced from the points. The output file DIR/petmpm.h5 is
    reopened and continues at the checkpoint's output count (rows a later output wrote before the interruption are
    overwritten), so output and report read as one run. */
-#include "h5impl.h"
+#include "io/h5impl.h"
 #include "exact/exactimpl.h"
 #include <unistd.h>
 

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* The point-state update of a step: density, internal energy (every energy-update variant but the work the
    conservative update adds in the gather), the strength models' stress and the EOS, and the initial state. */
-#include "petmpmimpl.h"
+#include "core/petmpmimpl.h"
 #include "strength/hypoelastic.h"
 
 static inline PetscReal MPMDetIPlusDtL(PetscInt d, PetscReal dt, const PetscReal L[])

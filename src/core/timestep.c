@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* The time step: the smallest of the limits the state sets. */
-#include "petmpmimpl.h"
+#include "core/petmpmimpl.h"
 
 /* The nodal maximum of MPMComputeTimeStep takes a node's square root and division only where it can raise the maximum so
    far: a node is skipped where a product-only bound puts it below the maximum by a relative margin (1e-9) far above the

@@ -4,7 +4,7 @@
    vector (PIC and MUSL rebuild it from the points every step), so the TS integrates an empty system and the
    MPM cycle runs as its post-step: pre-step sets dt from the CFL condition, trimmed so that the last step
    lands exactly on the final time. */
-#include "petmpmimpl.h"
+#include "core/petmpmimpl.h"
 #include <signal.h>
 
 /* SIGTERM and SIGINT during the time loop: the step under way finishes, then the run stops as a failed run does
@@ -15,6 +15,20 @@ static volatile sig_atomic_t MPMSignalCaught = 0;
 static void MPMSignalHandler(int sig)
 {
   MPMSignalCaught = sig;
+}
+
+/* The state at step and t to the output: the points, and the grid's nodal mass and velocity projected from them;
+   nothing where this step is written already. */
+static PetscErrorCode MPMWriteState(MPM mpm, PetscInt step, PetscReal t)
+{
+  const PetscReal t0 = MPI_Wtime();
+
+  PetscFunctionBegin;
+  if (!mpm->h5 || step == mpm->last_output_step) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MPMProjectToGrid(mpm));
+  mpm->wall_output += MPI_Wtime() - t0;
+  PetscCall(MPMOutputWrite(mpm, step, t));
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 static PetscErrorCode MPMTSRHSFunction(TS ts, PetscReal t, Vec U, Vec F, void *ctx)
@@ -61,11 +75,11 @@ static PetscErrorCode MPMTSPostStep(TS ts)
   if (mpm->itout < mpm->ntout && PetscAbsReal(t - mpm->tout[mpm->itout]) <= 1e-9 * mpm->tout[mpm->itout]) {
     mpm->itout++;
     if (PetscAbsReal(t - tmax) > 1e-12 * PetscAbsReal(tmax)) { /* the final state is written and checked after the loop */
-      PetscCall(MPMOutputWrite(mpm, step, t));
+      PetscCall(MPMWriteState(mpm, step, t));
       PetscCall(MPMComputeChecks(mpm));
     }
   } else if (mpm->output_interval > 0 && step % mpm->output_interval == 0)
-    PetscCall(MPMOutputWrite(mpm, step, t));
+    PetscCall(MPMWriteState(mpm, step, t));
   if (mpm->progress > 0.0 && MPI_Wtime() - mpm->progress_last >= mpm->progress) { /* rank 0's clock: a line, no collective call */
     const PetscReal el = MPI_Wtime() - mpm->progress_start, frac = t / tmax;
     mpm->progress_last = MPI_Wtime();
@@ -147,7 +161,7 @@ PetscErrorCode MPMSolve(MPM mpm)
   PetscFunctionBegin;
   PetscCall(PetscLogStagePush(mpm->log.io));
   if (!mpm->restart[0]) { /* a restart continues after the checkpoint's outputs */
-    PetscCall(MPMOutputWrite(mpm, 0, 0.0));
+    PetscCall(MPMWriteState(mpm, 0, 0.0));
     if (mpm->exact && mpm->exact->check_start) PetscCall(MPMComputeChecks(mpm));
   }
   PetscCall(PetscLogStagePop());
@@ -170,7 +184,7 @@ PetscErrorCode MPMSolve(MPM mpm)
   PetscCall(PetscLogStagePop());
   if (mpm->failed) { /* the one place that writes the last state of a run that cannot go on */
     PetscCall(PetscLogStagePush(mpm->log.io));
-    PetscCall(MPMOutputWrite(mpm, mpm->steps, mpm->time));
+    PetscCall(MPMWriteState(mpm, mpm->steps, mpm->time));
     PetscCall(MPMOutputClose(mpm)); /* the last state is a complete output, as a finished run's */
     PetscCall(PetscLogStagePop());
     SETERRQ(mpm->comm, PETSC_ERR_NOT_CONVERGED, "%s; last state written to %s", mpm->failure, mpm->outdir);
@@ -178,7 +192,7 @@ PetscErrorCode MPMSolve(MPM mpm)
   PetscCall(TSGetStepNumber(mpm->ts, &mpm->steps));
   PetscCall(TSGetTime(mpm->ts, &mpm->time));
   PetscCall(PetscLogStagePush(mpm->log.io));
-  PetscCall(MPMOutputWrite(mpm, mpm->steps, mpm->time));
+  PetscCall(MPMWriteState(mpm, mpm->steps, mpm->time));
   PetscCall(MPMOutputWriteExact(mpm));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(PETSC_SUCCESS);

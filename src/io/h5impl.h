@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* HDF5 helpers of the output and the checkpoints (src/output.c). */
 #pragma once
-#include "petmpmimpl.h"
+#include "core/petmpmimpl.h"
 #include <petscviewerhdf5.h>
 
 PETSC_INTERN PetscErrorCode MPMH5Block(hid_t, PetscBool, const hsize_t[], const hsize_t[], void *, const char[]);

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* What every petmpm class shares: looking up a type by name with an error that lists the valid ones,
    and range checks on option values that name the option. */
-#include "classimpl.h"
+#include "core/classimpl.h"
 
 /* Writes the registered type names of a list as "a, b, c". */
 PetscErrorCode MPMClassTypeList(PetscFunctionList list, char buf[], size_t len)

@@ -2,7 +2,7 @@
 /* The scene as the exact solutions see it: materials, regions, the grid and its boundaries, without the MPM
    object (the core fills an MPMScene with MPMGetScene). */
 #pragma once
-#include "gridimpl.h"
+#include "grid/gridimpl.h"
 #include "eos/eosimpl.h"
 #include "strength/strengthimpl.h"
 
@@ -53,4 +53,24 @@ typedef struct {
 PETSC_INTERN PetscErrorCode MPMHydrostaticSetUp(const MPMScene *, PetscInt, MPMHydrostatic *);
 PETSC_INTERN PetscErrorCode MPMHydrostaticAt(const MPMHydrostatic *, const PetscReal[], PetscReal *, PetscReal *);
 
-PETSC_INTERN PetscInt MPMSceneRegionAt(const MPMScene *, const PetscReal[]);
+
+/* Region index of the first region holding x, or -1. */
+static inline PetscInt MPMSceneRegionAt(const MPMScene *sc, const PetscReal x[])
+{
+  for (PetscInt r = 0; r < sc->nreg; r++) {
+    const MPMRegion *reg = &sc->reg[r];
+    PetscBool        in  = PETSC_TRUE;
+    PetscReal        r2  = 0.0;
+    for (PetscInt k = 0; k < sc->grid->dim; k++) {
+      in = (PetscBool)(in && x[k] >= reg->lo[k] && x[k] <= reg->hi[k]);
+      if (k != reg->axis) r2 += PetscSqr(x[k] - reg->center[k]);
+    }
+    if (in && r2 >= reg->rmin * reg->rmin && (reg->rmax >= PETSC_MAX_REAL || r2 <= reg->rmax * reg->rmax)) return r;
+  }
+  return -1;
+}
+
+/* The scene of the MPM object (src/scene/scene.c). */
+PETSC_INTERN PetscErrorCode MPMSceneSetFromOptions(MPM, PetscOptionItems *);
+PETSC_INTERN PetscErrorCode MPMSceneView(MPM, PetscViewer);
+PETSC_INTERN PetscErrorCode MPMGetScene(MPM, MPMScene *);

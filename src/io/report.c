@@ -4,7 +4,7 @@
    Norms are volume-weighted over the points and relative to the exact solution q(x) (q(X) for a manufactured one):
      L1 = sum V_p |q_p - q(x_p)| / sum V_p |q(x_p)|,  L2 = sqrt(sum V_p (q_p - q(x_p))^2 / sum V_p q(x_p)^2),
      Linf = max |q_p - q(x_p)| / max |q(x_p)|;  for the velocity |.| is the Euclidean norm of the vector. */
-#include "petmpmimpl.h"
+#include "core/petmpmimpl.h"
 #include "strength/hypoelastic.h"
 #include <errno.h>
 

@@ -2,7 +2,7 @@
 /* Material points: a DMSWARM_BASIC swarm (works in 1, 2 and 3 dimensions in PETSc 3.18) whose fields are all
    PETSC_REAL so that each can become a Vec and be written. Points are seeded on a regular lattice of
    ppc^d points per cell, and migrate by owning rank computed from the DMDA ownership ranges. */
-#include "petmpmimpl.h"
+#include "core/petmpmimpl.h"
 
 const MPMFieldInfo MPMFieldTable[MPM_NUM_FIELDS] = {
   {"position", 0, "cm", "position x_p", PETSC_TRUE},
@@ -128,22 +128,6 @@ PetscErrorCode MPMPointsRelease(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Region index of the first region holding x, or -1. */
-PetscInt MPMSceneRegionAt(const MPMScene *sc, const PetscReal x[])
-{
-  for (PetscInt r = 0; r < sc->nreg; r++) {
-    const MPMRegion *reg = &sc->reg[r];
-    PetscBool        in  = PETSC_TRUE;
-    PetscReal        r2  = 0.0;
-    for (PetscInt k = 0; k < sc->grid->dim; k++) {
-      in = (PetscBool)(in && x[k] >= reg->lo[k] && x[k] <= reg->hi[k]);
-      if (k != reg->axis) r2 += PetscSqr(x[k] - reg->center[k]);
-    }
-    if (in && r2 >= reg->rmin * reg->rmin && (reg->rmax >= PETSC_MAX_REAL || r2 <= reg->rmax * reg->rmax)) return r;
-  }
-  return -1;
-}
-
 static inline PetscInt MPMRegionAt(MPM mpm, const PetscReal x[])
 {
   MPMScene sc;
@@ -153,23 +137,6 @@ static inline PetscInt MPMRegionAt(MPM mpm, const PetscReal x[])
   return MPMSceneRegionAt(&sc, x);
 }
 
-/* The scene as the exact solutions see it. */
-PetscErrorCode MPMGetScene(MPM mpm, MPMScene *sc)
-{
-  PetscFunctionBegin;
-  sc->comm        = mpm->comm;
-  sc->grid        = &mpm->grid;
-  sc->bc_lo       = mpm->bc_lo;
-  sc->bc_hi       = mpm->bc_hi;
-  sc->nmat        = mpm->nmat;
-  sc->nreg        = mpm->nreg;
-  sc->mat         = mpm->mat;
-  sc->reg         = mpm->reg;
-  sc->gravity     = mpm->gravity;
-  sc->friction_lo = mpm->friction_lo;
-  sc->friction_hi = mpm->friction_hi;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
 
 /* Lattice site s (0 <= s < prod_k cm_k ppc) of this rank's cells: its position and its global lattice index. */
 void MPMSiteAt(const MPMGrid *g, PetscInt ppc, PetscInt s, PetscReal x[], PetscReal *id)

@@ -14,7 +14,7 @@
    the run says so once (robustness.volume_fill in the report). Only overlap is flagged: a cell that a stretched CPDI
    domain barely reaches counts as occupied, so a thin, sheared body (the Taylor anvil's foot, 0.93 while its points'
    volumes sum to the rod's within 0.2%) reads below 1 without a gap; gaps inside the material are the emptied cells. */
-#include "petmpmimpl.h"
+#include "core/petmpmimpl.h"
 
 PetscErrorCode MPMDiagnoseVacuum(MPM mpm, PetscInt *nvacuum, PetscInt *nempty)
 {

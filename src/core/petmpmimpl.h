@@ -3,59 +3,23 @@
    API. Only the core files (src/ top-level files, src/transfer/, src/modules/, the exact solutions) include this; a physics
    type includes its class header (src/<class>/<class>impl.h), which cannot see the MPM object. */
 #pragma once
-#include "classimpl.h"
-#include "gridimpl.h"
+#include "core/classimpl.h"
+#include "grid/gridimpl.h"
 #include "shape/shapeimpl.h"
 #include "eos/eosimpl.h"
 #include "strength/strengthimpl.h"
 #include "viscosity/viscosityimpl.h"
-#include "sceneimpl.h"
+#include "scene/sceneimpl.h"
 #include "exact/exactimpl.h"
 #include "modules/module.h"
+#include "points/points.h"
+#include "transfer/transfer.h"
+#include "io/io.h"
 #include <petscsf.h>
 
-/* ------------------------------------------------------------------ particles */
-/* Every particle field once: name (also the HDF5 dataset name), block size, unit, meaning. */
-typedef enum {
-  MPM_FIELD_POSITION,
-  MPM_FIELD_VELOCITY,
-  MPM_FIELD_MASS,
-  MPM_FIELD_VOLUME,
-  MPM_FIELD_DENSITY,
-  MPM_FIELD_PRESSURE,
-  MPM_FIELD_ENERGY,
-  MPM_FIELD_TEMPERATURE,
-  MPM_FIELD_SOUNDSPEED,
-  MPM_FIELD_VISCOSITY,
-  MPM_FIELD_GRADV,
-  MPM_FIELD_DEFGRAD,
-  MPM_FIELD_STRESS,
-  MPM_FIELD_PLASTICSTRAIN,
-  MPM_FIELD_REFPOSITION,
-  MPM_FIELD_MATERIAL,
-  MPM_FIELD_ID,
-  MPM_FIELD_DOMAINSCALE,
-  MPM_FIELD_HOOPRATE,
-  MPM_NUM_FIELDS
-} MPMField;
-
-typedef struct {
-  const char *name;    /* DMSwarm field and HDF5 dataset name                */
-  PetscInt    bs;      /* block size; 0 means d, -1 means d*d                */
-  const char *unit;    /* CGS unit                                           */
-  const char *meaning; /* what it is                                         */
-  PetscBool   output;  /* written to HDF5                                    */
-} MPMFieldInfo;
-PETSC_INTERN PetscErrorCode     MPMRetireObject(MPM, void *);
-PETSC_INTERN const MPMFieldInfo MPMFieldTable[MPM_NUM_FIELDS];
-#define MPM_MAX_FIELDS 32 /* the core fields and those classes and modules register (MPMPointsRegisterField) */
-
-/* Raw arrays of every particle field, valid between MPMPointsGetArrays() and MPMPointsRestoreArrays() (and, held,
-   until the swarm changes: MPMPointsRelease). */
-typedef struct {
-  PetscInt   n;
-  PetscReal *f[MPM_MAX_FIELDS]; /* NULL for a field the scene does not carry */
-} MPMPoints;
+PETSC_INTERN PetscErrorCode MPMRetireObject(MPM, void *);
+PETSC_INTERN PetscErrorCode MPMCheckUnusedOptions(MPM);
+PETSC_INTERN PetscErrorCode MPMCreateGridOwned(MPM, PetscInt *[], const PetscInt[]);
 
 #define MPM_VOLUME_FILL_TOL 0.05 /* the points' volumes may fill their interior cells to within this fraction */
 #define MPM_CHUNK 256            /* points per batch of the constitutive update */
@@ -276,64 +240,22 @@ static inline PetscBool MPMPointInShock(MPM mpm, const MPMPoints *pts, PetscInt 
 /* Internal API */
 PETSC_INTERN PetscClassId   MPM_CLASSID; /* log events of petmpm (src/init.c) */
 PETSC_INTERN PetscErrorCode MPMLogRegister(MPM);
-PETSC_INTERN PetscInt       MPMFieldBlockSize(PetscInt, PetscInt);
-PETSC_INTERN PetscErrorCode MPMCreateGrid(MPM);
-PETSC_INTERN PetscErrorCode MPMGridGhostSum(MPM);
-PETSC_INTERN PetscErrorCode MPMGridGhostSumForce(MPM);
-PETSC_INTERN PetscErrorCode MPMGridOwnedToGlobal(MPM);
-PETSC_INTERN PetscErrorCode MPMGhostExchange(MPM, MPI_Datatype, PetscScalar *, PetscBool, PetscBool);
 PETSC_INTERN PetscErrorCode MPMRebalance(MPM);
 PETSC_INTERN PetscErrorCode MPMGridSetOwnership(MPM, PetscInt *[]);
-PETSC_INTERN PetscErrorCode MPMDestroyGrid(MPM);
 PETSC_INTERN PetscErrorCode MPMPointBalance(MPM, PetscReal *, PetscInt *, PetscInt *);
-PETSC_INTERN PetscErrorCode MPMGridGhostFill(MPM);
-PETSC_INTERN PetscErrorCode MPMGridZeroForScatter(MPM, PetscInt, const PetscReal[], MPMNode *);
-PETSC_INTERN PetscErrorCode MPMCreatePoints(MPM);
-PETSC_INTERN void           MPMSiteAt(const MPMGrid *, PetscInt, PetscInt, PetscReal[], PetscReal *);
-PETSC_INTERN PetscErrorCode MPMPointsGetArrays(MPM, MPMPoints *);
-PETSC_INTERN PetscErrorCode MPMPointsSelectFields(MPM);
-PETSC_INTERN PetscErrorCode MPMPointsRequireField(MPM, MPMField);
-PETSC_INTERN PetscBool      MPMPointsFieldRequired(MPM, MPMField);
-PETSC_INTERN PetscErrorCode MPMPointsRegisterField(MPM, const char[], PetscInt, const char[], const char[], PetscBool, PetscInt *);
-PETSC_INTERN PetscErrorCode MPMPointsRestoreArrays(MPM, MPMPoints *);
-PETSC_INTERN PetscErrorCode MPMPointsRelease(MPM);
-PETSC_INTERN PetscErrorCode MPMPointsSetWindow(MPM, PetscInt, PetscInt);
-PETSC_INTERN PetscErrorCode MPMMigrate(MPM);
-PETSC_INTERN PetscErrorCode MPMSortPoints(MPM);
-PETSC_INTERN PetscErrorCode MPMDiagnoseVacuum(MPM, PetscInt *, PetscInt *);
 PETSC_INTERN PetscErrorCode MPMStep(MPM, PetscReal, PetscReal, PetscReal *);
 PETSC_INTERN PetscErrorCode MPMStepSize(MPM, PetscReal, PetscReal, PetscReal *, PetscReal *);
 PETSC_INTERN PetscErrorCode MPMSetFailure(MPM, const char[], ...);
-PETSC_INTERN PetscErrorCode MPMNodalMeanSetUp(MPM);
-PETSC_INTERN PetscErrorCode MPMNodalMeanSum(MPM, PetscReal **);
-PETSC_INTERN PetscErrorCode MPMPointsNodalMean(MPM, const MPMPoints *, const PetscReal[], const PetscReal[], PetscReal[], PetscReal[]);
-PETSC_INTERN void           MPMPointEOSUpdate(MPM, MPMPoints *, PetscInt, PetscReal, PetscReal);
-PETSC_INTERN void           MPMPointChangeVolume(MPM, MPMPoints *, PetscInt, PetscReal, PetscReal);
+PETSC_INTERN PetscErrorCode MPMConstitutivePoints(MPM, PetscReal, PetscInt *);
+PETSC_INTERN PetscErrorCode MPMConstitutiveFailure(MPM, PetscInt);
+PETSC_INTERN PetscErrorCode MPMConstitutiveInitialize(MPM);
+PETSC_INTERN PetscErrorCode MPMComputeTimeStep(MPM, PetscBool, PetscReal *);
+PETSC_INTERN PetscErrorCode MPMCreateTS(MPM);
+
+/* The transfers of the MPM object (src/transfer/transfer.c). */
 PETSC_INTERN PetscErrorCode MPMScatter(MPM, PetscBool, PetscReal);
 PETSC_INTERN PetscErrorCode MPMGather(MPM, PetscReal, PetscReal, PetscBool, PetscBool, PetscBool);
 PETSC_INTERN PetscErrorCode MPMParticlesToGrid(MPM, const MPMStepContext *);
 PETSC_INTERN PetscErrorCode MPMGridToParticles(MPM, const MPMStepContext *, PetscBool, PetscBool);
 PETSC_INTERN PetscBool      MPMGridToParticlesIsPointwise(MPM);
-PETSC_INTERN PetscErrorCode MPMConstitutivePoints(MPM, PetscReal, PetscInt *);
-PETSC_INTERN PetscErrorCode MPMConstitutiveFailure(MPM, PetscInt);
 PETSC_INTERN PetscErrorCode MPMProjectToGrid(MPM);
-PETSC_INTERN PetscErrorCode MPMOutputWriteExact(MPM);
-PETSC_INTERN PetscErrorCode MPMConstitutiveInitialize(MPM);
-PETSC_INTERN PetscErrorCode MPMComputeTimeStep(MPM, PetscBool, PetscReal *);
-PETSC_INTERN PetscErrorCode MPMCreateTS(MPM);
-PETSC_INTERN PetscErrorCode MPMOutputOpen(MPM);
-PETSC_INTERN PetscErrorCode MPMOutputWrite(MPM, PetscInt, PetscReal);
-PETSC_INTERN PetscErrorCode MPMOutputClose(MPM);
-PETSC_INTERN PetscErrorCode MPMCheckpointWrite(MPM);
-PETSC_INTERN PetscErrorCode MPMRestartCheck(MPM);
-PETSC_INTERN PetscErrorCode MPMRestartRead(MPM);
-PETSC_INTERN PetscErrorCode MPMGlobalSums(MPM, PetscReal *, PetscReal *, PetscReal[], PetscReal *);
-PETSC_INTERN PetscErrorCode MPMSceneSetFromOptions(MPM, PetscOptionItems *);
-PETSC_INTERN PetscErrorCode MPMSceneView(MPM, PetscViewer);
-PETSC_INTERN PetscErrorCode MPMGetScene(MPM, MPMScene *);
-PETSC_INTERN PetscErrorCode MPMExactInitialize(MPMExact, MPM);
-PETSC_INTERN PetscErrorCode MPMComputeChecks(MPM);
-PETSC_INTERN PetscErrorCode MPMAddCheck(MPM, const char[], PetscReal, PetscReal);
-PETSC_INTERN PetscErrorCode MPMXProfile(MPM, PetscInt, PetscReal[], PetscReal[]);
-PETSC_INTERN PetscErrorCode MPMXProfileOf(MPM, const PetscReal[], PetscReal, PetscReal, PetscReal[], PetscReal[]);
-PETSC_INTERN PetscErrorCode MPMRadialProfile(MPM, const PetscReal[], PetscInt, PetscInt, PetscReal, PetscReal[], PetscReal[], PetscReal[]);

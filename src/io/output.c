@@ -14,7 +14,7 @@
    DIR/petmpm.xmf (XDMF 2) describes the points and the grid fields over time (two temporal collections, "points" and
    "grid"), so ParaView and VisIt open them; it is rewritten
    through a temporary file after each output so that it is never left half-written. */
-#include "h5impl.h"
+#include "io/h5impl.h"
 #include <errno.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -338,7 +338,7 @@ static PetscErrorCode MPMWritePoints(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Nodal mass and velocity projected from the points: row k of /grid/nodes (outputs, [nz,] [ny,] nx, 1 + d) in the
+/* Nodal mass and velocity projected from the points (in mpm->nodes, MPMProjectToGrid): row k of /grid/nodes (outputs, [nz,] [ny,] nx, 1 + d) in the
    DMDA's natural order, written here with HDF5 (each rank its owned block, chunks no larger than the grid) rather
    than by VecView, whose chunks in PETSc 3.18 can exceed a 1D grid's length on several ranks and fail. */
 static PetscErrorCode MPMWriteGrid(MPM mpm)
@@ -352,7 +352,6 @@ static PetscErrorCode MPMWriteGrid(MPM mpm)
   PetscInt       nown = MPMNumOwnedNodes(g);
 
   PetscFunctionBegin;
-  PetscCall(MPMProjectToGrid(mpm));
   PetscCall(PetscMalloc1(nown * dof + 1, &a));
   PetscCall(VecGetArrayRead(mpm->nodes, (const PetscScalar **)&node));
   for (PetscInt c = 0; c < nown; c++) {

@@ -3,7 +3,7 @@
    modified update-stress-last as in Nairn, CMES 4 (2003) 649 and Buzzi et al., 2008), as a list of phases and the
    modules the scene registered in each (src/modules/). Every phase and every module is a PetscLogEvent; a module
    the scene did not ask for is not in the list, so it costs nothing and has no -log_view row. */
-#include "petmpmimpl.h"
+#include "core/petmpmimpl.h"
 
 /* v_I^n = (mv)_I / m_I, (mv)_I += dt_kick f_I, v_I^{n+1} = (mv)_I / m_I, f_I = 0 (free from here on: MUSL's gather sums
    the remap's momenta in it, MPMGather), then the nodal velocity modules (walls) and the ghost update. The new velocity is stored in p (as velocity) for the gather; v0 keeps v_I^n for the FLIP
@@ -37,21 +37,6 @@ static PetscErrorCode MPMGridAdvance(MPM mpm, const MPMStepContext *ctx)
   PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_VELOCITY, ctx));
   PetscCall(MPMGridGhostFill(mpm));
   PetscCall(PetscLogEventEnd(mpm->log.advance, 0, 0, 0, 0));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* Records why the run cannot go on. The step returns normally; the time loop (src/ts.c) stops at the end of the
-   step and MPMSolve writes the last state and raises the error: one place writes the last state. */
-PetscErrorCode MPMSetFailure(MPM mpm, const char format[], ...)
-{
-  va_list Argp;
-  size_t  len;
-
-  PetscFunctionBegin;
-  va_start(Argp, format);
-  PetscCall(PetscVSNPrintf(mpm->failure, sizeof(mpm->failure), format, &len, Argp));
-  va_end(Argp);
-  mpm->failed = PETSC_TRUE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -2,16 +2,7 @@
 /* The background grid: a DMDA of vertices in 1, 2 or 3 dimensions whose ghost width follows the support of
    the shape functions, plus the neighbour cells a limited viscosity reads. Cell i lies between vertices i and i+1 and belongs to the rank owning vertex i,
    so every point of a cell lives on one rank and cell averages need no communication. */
-#include "petmpmimpl.h"
-
-/* The DMDA's stencil width: the shape functions' ghost width and the cells a viscosity limiter reads beyond it. */
-static PetscInt MPMGridStencilWidth(MPM mpm)
-{
-  PetscInt sw;
-
-  PetscCallAbort(mpm->comm, MPMShapeGetGhostWidth(mpm->shape, &sw));
-  return sw + (mpm->viscosity ? mpm->viscosity->ghost : 0);
-}
+#include "core/petmpmimpl.h"
 
 /* The ghost exchange of several ranks (MPM::ghost_sf): every ghost node of the ghosted local box is a leaf whose root is
    the same node in its owner's ghosted local vector, so that the step's node loops work on the local vectors alone:
@@ -67,7 +58,7 @@ static PetscErrorCode MPMGridGhostCreate(MPM mpm)
 /* The DMDA, its vectors and the per-cell arrays; own[k] gives the vertices each rank column owns along k, with the
    ranks per direction of the present grid, or (own NULL) ranks[k] the ranks per direction (PETSC_DECIDE: PETSc's
    split) and PETSc the ranges. */
-static PetscErrorCode MPMCreateGridOwned(MPM mpm, PetscInt *own[], const PetscInt ranks[])
+PetscErrorCode MPMCreateGridOwned(MPM mpm, PetscInt *own[], const PetscInt ranks[])
 {
   MPMGrid        *g = &mpm->grid;
   PetscInt        sw, M[MPM_MAX_DIM] = {1, 1, 1}, P[MPM_MAX_DIM] = {PETSC_DECIDE, PETSC_DECIDE, PETSC_DECIDE};
@@ -75,7 +66,7 @@ static PetscErrorCode MPMCreateGridOwned(MPM mpm, PetscInt *own[], const PetscIn
 
   PetscFunctionBegin;
   for (PetscInt k = 0; k < g->dim; k++) P[k] = own ? g->nranks[k] : ranks[k];
-  g->sw = sw = MPMGridStencilWidth(mpm);
+  sw = g->sw;
   for (PetscInt k = 0; k < g->dim; k++) M[k] = g->cells[k] + 1;
   switch (g->dim) {
   case 1:
@@ -175,7 +166,7 @@ PetscErrorCode MPMDestroyGrid(MPM mpm)
    stencil width 0 on the same grid: the split does not depend on the width) is kept where it fits, so every run that
    worked is partitioned as before; otherwise the split among those that fit with the smallest cut area; none that
    fits is an error that names -mpm_cells and the rank count. */
-static PetscErrorCode MPMGridLayout(MPM mpm, PetscInt P[])
+static PetscErrorCode MPMGridLayout(MPM mpm, const char why[], PetscInt P[])
 {
   const MPMGrid  *g = &mpm->grid;
   PetscInt        sw, M[MPM_MAX_DIM] = {1, 1, 1}, Q[MPM_MAX_DIM] = {1, 1, 1}, best = PETSC_MAX_INT;
@@ -188,7 +179,7 @@ static PetscErrorCode MPMGridLayout(MPM mpm, PetscInt P[])
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) P[k] = PETSC_DECIDE;
   PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
   if (size == 1) PetscFunctionReturn(PETSC_SUCCESS);
-  sw = MPMGridStencilWidth(mpm);
+  sw = g->sw;
   for (PetscInt k = 0; k < g->dim; k++) M[k] = g->cells[k] + 1;
   if (g->dim == 1)
     PetscCall(DMDACreate1d(mpm->comm, DM_BOUNDARY_NONE, M[0], 1, 0, NULL, &da));
@@ -228,97 +219,21 @@ static PetscErrorCode MPMGridLayout(MPM mpm, PetscInt P[])
       PetscCall(PetscStrlcat(cells, c, sizeof(cells)));
     }
     SETERRQ(mpm->comm, PETSC_ERR_USER_INPUT,
-            "-mpm_cells %s on %d ranks: no split of the grid gives every rank at least %" PetscInt_FMT " nodes along each direction it is split in (the ghost width of -mpm_shape_type %s%s); use fewer ranks or more cells", cells, size, sw,
-            ((MPMObject)mpm->shape)->type_name, mpm->viscosity && mpm->viscosity->ghost ? " and the viscosity's neighbour cells" : "");
+            "-mpm_cells %s on %d ranks: no split of the grid gives every rank at least %" PetscInt_FMT " nodes along each direction it is split in (the ghost width of %s); use fewer ranks or more cells", cells, size, sw, why);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode MPMCreateGrid(MPM mpm)
+/* The first grid, of ghost width sw [cells] (a point touches the nodes within sw cells of its own); why names what
+   sets it, for the message where no split of the grid on the ranks fits it. */
+PetscErrorCode MPMCreateGrid(MPM mpm, PetscInt sw, const char why[])
 {
   PetscInt P[MPM_MAX_DIM];
 
   PetscFunctionBegin;
-  PetscCall(MPMGridLayout(mpm, P));
+  mpm->grid.sw = sw;
+  PetscCall(MPMGridLayout(mpm, why, P));
   PetscCall(MPMCreateGridOwned(mpm, NULL, P));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* Points per rank: max over mean (1 when balanced) and the extremes, on every rank. */
-PetscErrorCode MPMPointBalance(MPM mpm, PetscReal *imbalance, PetscInt *nmin, PetscInt *nmax)
-{
-  PetscInt    n, mx[2];
-  PetscMPIInt size;
-
-  PetscFunctionBegin;
-  PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
-  PetscCall(DMSwarmGetLocalSize(mpm->swarm, &n));
-  mx[0] = n;
-  mx[1] = -n;
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, mx, 2, MPIU_INT, MPI_MAX, mpm->comm));
-  PetscCall(DMSwarmGetSize(mpm->swarm, &n));
-  *imbalance = n > 0 ? (PetscReal)mx[0] * size / n : 1.0;
-  if (nmin) *nmin = -mx[1];
-  if (nmax) *nmax = mx[0];
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* Rebalance (-mpm_balance): the DMDA's ownership ranges from the points. Along each direction k the points' cells
-   give a histogram over the cells; each of the grid's rank columns along k gets a run of cells holding an equal
-   share of the points (at least the ghost width plus one cell). The grid is rebuilt with those ranges and the points
-   migrate to the ranks that own their cells. A tensor-product partition balances the marginals exactly; a body in
-   one corner of a 2D or 3D box is balanced along each axis, not in every rank. */
-PetscErrorCode MPMRebalance(MPM mpm)
-{
-  MPMGrid  *g                = &mpm->grid;
-  PetscInt *own[MPM_MAX_DIM] = {NULL, NULL, NULL};
-  MPMPoints pts;
-
-  PetscFunctionBegin;
-  PetscCall(MPMPointsGetArrays(mpm, &pts));
-  for (PetscInt k = 0; k < g->dim; k++) {
-    const PetscInt nc = g->cells[k], np = g->nranks[k], minc = PetscMin(g->sw + 1, nc / np);
-    PetscReal     *hist, total = 0.0, acc = 0.0;
-    PetscInt       r = 0, start = 0;
-    PetscCall(PetscCalloc1(nc, &hist));
-    for (PetscInt p = 0; p < pts.n; p++) hist[MPMCellIndex(g, k, pts.f[MPM_FIELD_POSITION][p * g->dim + k])] += 1.0;
-    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, hist, nc, MPIU_REAL, MPIU_SUM, mpm->comm));
-    for (PetscInt c = 0; c < nc; c++) total += hist[c];
-    PetscCall(PetscMalloc1(np, &own[k]));
-    for (PetscInt c = 0; c < nc && r < np - 1; c++) { /* close rank column r after cell c once it holds its share */
-      acc += hist[c];
-      if ((acc >= total * (r + 1) / np && c + 1 - start >= minc) || nc - (c + 1) == (np - 1 - r) * minc) {
-        own[k][r++] = c + 1 - start;
-        start       = c + 1;
-      }
-    }
-    for (; r < np - 1; r++) { /* too few cells left to close them by share */
-      own[k][r] = minc;
-      start += minc;
-    }
-    own[k][np - 1] = nc - start + 1; /* the last column also owns the last vertex */
-    PetscCall(PetscFree(hist));
-  }
-  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-  PetscCall(MPMGridSetOwnership(mpm, own));
-  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) PetscCall(PetscFree(own[k]));
-  mpm->diag.rebalances++;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* Rebuilds the grid with the ownership ranges own[k] (nodes per rank column along each direction, the grid's
-   g->nranks[k] of them) and migrates the points to the ranks that own their cells: a rebalance, and a restart on
-   the rank count that wrote the checkpoint (the grid it was written on, so that the run continues bit for bit). */
-PetscErrorCode MPMGridSetOwnership(MPM mpm, PetscInt *own[])
-{
-  MPMGrid *g = &mpm->grid;
-
-  PetscFunctionBegin;
-  PetscCall(MPMDestroyGrid(mpm));
-  PetscCall(MPMCreateGridOwned(mpm, own, NULL));
-  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) mpm->box_lo[k] = mpm->box_hi[k] = 0;
-  PetscCall(MPMShapeSetUp(mpm->shape, g, mpm->ppc)); /* its cell tables cover the rank's ghosted cells */
-  PetscCall(MPMMigrate(mpm));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

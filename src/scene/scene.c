@@ -11,7 +11,7 @@
      -region_<r>_temperature       initial temperature [eV] (>= 0)
      -region_<r>_velocity          initial velocity [cm/s]
      -region_<r>_hydrostatic       start in hydrostatic equilibrium under -mpm_gravity (the density is the top's) */
-#include "petmpmimpl.h"
+#include "core/petmpmimpl.h"
 #include "eos/eosimpl.h"
 
 static PetscErrorCode MPMSceneNames(PetscOptionItems *PetscOptionsObject, const char opt[], const char text[], PetscInt max, char names[][MPM_MAX_NAME], PetscInt *n)
@@ -253,5 +253,23 @@ PetscErrorCode MPMHydrostaticAt(const MPMHydrostatic *hs, const PetscReal x[], P
   p = hs->p[i] + (f - i) * (hs->p[i + 1] - hs->p[i]);
   PetscCall(MPMHydrostaticDensity(hs, p, rho));
   if (pr) *pr = p;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The scene as the exact solutions see it. */
+PetscErrorCode MPMGetScene(MPM mpm, MPMScene *sc)
+{
+  PetscFunctionBegin;
+  sc->comm        = mpm->comm;
+  sc->grid        = &mpm->grid;
+  sc->bc_lo       = mpm->bc_lo;
+  sc->bc_hi       = mpm->bc_hi;
+  sc->nmat        = mpm->nmat;
+  sc->nreg        = mpm->nreg;
+  sc->mat         = mpm->mat;
+  sc->reg         = mpm->reg;
+  sc->gravity     = mpm->gravity;
+  sc->friction_lo = mpm->friction_lo;
+  sc->friction_hi = mpm->friction_hi;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

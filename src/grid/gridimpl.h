@@ -2,7 +2,7 @@
 /* The grid seen by the shape functions and the transfer kernels: the DMDA's geometry and ownership, the nodal
    record, the stencil of a point, and the inline pieces of shape-function evaluation. */
 #pragma once
-#include "classimpl.h"
+#include "core/classimpl.h"
 
 #define MPM_MAX_STENCIL 216 /* nodes a point can touch: 6^3 covers every planned shape type */
 #define MPM_MAX_1D 8        /* nodes per direction a 1D basis can touch */
@@ -212,3 +212,13 @@ static inline void MPMGridCellBasis(const MPMGrid *g, const PetscInt ijk[], MPMS
   }
   MPMShapeTensor(g, nn, idx, w, dw, sg, st);
 }
+
+/* The grid of the MPM object (src/grid/grid.c). */
+PETSC_INTERN PetscErrorCode MPMCreateGrid(MPM, PetscInt, const char[]);
+PETSC_INTERN PetscErrorCode MPMGridGhostSum(MPM);
+PETSC_INTERN PetscErrorCode MPMGridGhostSumForce(MPM);
+PETSC_INTERN PetscErrorCode MPMGridOwnedToGlobal(MPM);
+PETSC_INTERN PetscErrorCode MPMGhostExchange(MPM, MPI_Datatype, PetscScalar *, PetscBool, PetscBool);
+PETSC_INTERN PetscErrorCode MPMDestroyGrid(MPM);
+PETSC_INTERN PetscErrorCode MPMGridGhostFill(MPM);
+PETSC_INTERN PetscErrorCode MPMGridZeroForScatter(MPM, PetscInt, const PetscReal[], MPMNode *);

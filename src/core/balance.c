@@ -1,0 +1,83 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* Balance of the points over the ranks (-mpm_balance): the grid's ownership ranges from the points, then the points
+   migrate to the ranks that own their cells. Above the grid and the points, which it joins. */
+#include "core/petmpmimpl.h"
+
+/* Points per rank: max over mean (1 when balanced) and the extremes, on every rank. */
+PetscErrorCode MPMPointBalance(MPM mpm, PetscReal *imbalance, PetscInt *nmin, PetscInt *nmax)
+{
+  PetscInt    n, mx[2];
+  PetscMPIInt size;
+
+  PetscFunctionBegin;
+  PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
+  PetscCall(DMSwarmGetLocalSize(mpm->swarm, &n));
+  mx[0] = n;
+  mx[1] = -n;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, mx, 2, MPIU_INT, MPI_MAX, mpm->comm));
+  PetscCall(DMSwarmGetSize(mpm->swarm, &n));
+  *imbalance = n > 0 ? (PetscReal)mx[0] * size / n : 1.0;
+  if (nmin) *nmin = -mx[1];
+  if (nmax) *nmax = mx[0];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Rebalance (-mpm_balance): the DMDA's ownership ranges from the points. Along each direction k the points' cells
+   give a histogram over the cells; each of the grid's rank columns along k gets a run of cells holding an equal
+   share of the points (at least the ghost width plus one cell). The grid is rebuilt with those ranges and the points
+   migrate to the ranks that own their cells. A tensor-product partition balances the marginals exactly; a body in
+   one corner of a 2D or 3D box is balanced along each axis, not in every rank. */
+PetscErrorCode MPMRebalance(MPM mpm)
+{
+  MPMGrid  *g                = &mpm->grid;
+  PetscInt *own[MPM_MAX_DIM] = {NULL, NULL, NULL};
+  MPMPoints pts;
+
+  PetscFunctionBegin;
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt k = 0; k < g->dim; k++) {
+    const PetscInt nc = g->cells[k], np = g->nranks[k], minc = PetscMin(g->sw + 1, nc / np);
+    PetscReal     *hist, total = 0.0, acc = 0.0;
+    PetscInt       r = 0, start = 0;
+    PetscCall(PetscCalloc1(nc, &hist));
+    for (PetscInt p = 0; p < pts.n; p++) hist[MPMCellIndex(g, k, pts.f[MPM_FIELD_POSITION][p * g->dim + k])] += 1.0;
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, hist, nc, MPIU_REAL, MPIU_SUM, mpm->comm));
+    for (PetscInt c = 0; c < nc; c++) total += hist[c];
+    PetscCall(PetscMalloc1(np, &own[k]));
+    for (PetscInt c = 0; c < nc && r < np - 1; c++) { /* close rank column r after cell c once it holds its share */
+      acc += hist[c];
+      if ((acc >= total * (r + 1) / np && c + 1 - start >= minc) || nc - (c + 1) == (np - 1 - r) * minc) {
+        own[k][r++] = c + 1 - start;
+        start       = c + 1;
+      }
+    }
+    for (; r < np - 1; r++) { /* too few cells left to close them by share */
+      own[k][r] = minc;
+      start += minc;
+    }
+    own[k][np - 1] = nc - start + 1; /* the last column also owns the last vertex */
+    PetscCall(PetscFree(hist));
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(MPMGridSetOwnership(mpm, own));
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) PetscCall(PetscFree(own[k]));
+  mpm->diag.rebalances++;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Rebuilds the grid with the ownership ranges own[k] (nodes per rank column along each direction, the grid's
+   g->nranks[k] of them) and migrates the points to the ranks that own their cells: a rebalance, and a restart on
+   the rank count that wrote the checkpoint (the grid it was written on, so that the run continues bit for bit). */
+PetscErrorCode MPMGridSetOwnership(MPM mpm, PetscInt *own[])
+{
+  MPMGrid *g = &mpm->grid;
+
+  PetscFunctionBegin;
+  PetscCall(MPMDestroyGrid(mpm));
+  PetscCall(MPMCreateGridOwned(mpm, own, NULL));
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) mpm->box_lo[k] = mpm->box_hi[k] = 0;
+  PetscCall(MPMShapeSetUp(mpm->shape, g, mpm->ppc)); /* its cell tables cover the rank's ghosted cells */
+  PetscCall(MPMMigrate(mpm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
