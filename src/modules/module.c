@@ -14,6 +14,7 @@ PETSC_INTERN PetscErrorCode MPMModuleCreate_Fill(MPMModule);
 PETSC_INTERN PetscErrorCode MPMModuleCreate_Popping(MPMModule);
 PETSC_INTERN PetscErrorCode MPMModuleCreate_Domain(MPMModule);
 PETSC_INTERN PetscErrorCode MPMModuleCreate_Split(MPMModule);
+PETSC_INTERN PetscErrorCode MPMModuleCreate_Damping(MPMModule);
 
 #define MPM_MAX_MODULES 32
 static struct {
@@ -48,6 +49,7 @@ PetscErrorCode MPMModulesRegisterAll(void)
   PetscCall(MPMModuleRegister("popping", MPMModuleCreate_Popping));
   PetscCall(MPMModuleRegister("domain", MPMModuleCreate_Domain));
   PetscCall(MPMModuleRegister("split", MPMModuleCreate_Split));
+  PetscCall(MPMModuleRegister("damping", MPMModuleCreate_Damping));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
