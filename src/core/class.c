@@ -141,6 +141,18 @@ PetscErrorCode MPMObjectCreate(MPI_Comm comm, const MPMClass *cls, size_t size, 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* A type's point field (MPMFieldDecl), declared in its Create; name, unit and meaning must outlive the object. */
+PetscErrorCode MPMObjectDeclareField(void *o, const char name[], PetscInt bs, const char unit[], const char meaning[])
+{
+  MPMObject obj = (MPMObject)o;
+
+  PetscFunctionBegin;
+  PetscCheck(obj->nfields < MPM_MAX_TYPE_FIELDS, obj->comm, PETSC_ERR_SUP, "%s type %s: at most %d point fields", obj->cls->name, obj->type_name, MPM_MAX_TYPE_FIELDS);
+  obj->field[obj->nfields] = (MPMFieldDecl){name, unit, meaning, bs};
+  obj->fid[obj->nfields++] = -1;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* The option that names the type, -<prefix><key>_type, for messages. */
 static PetscErrorCode MPMObjectTypeOption(MPMObject obj, char option[], size_t len)
 {
@@ -167,6 +179,7 @@ PetscErrorCode MPMObjectSetType(void *o, const char type[])
   PetscCall(PetscMemzero(&obj->ops, obj->cls->opssize));
   if (obj->cls->reset) PetscCall(obj->cls->reset(obj));
   PetscCall(PetscStrncpy(obj->type_name, type, sizeof(obj->type_name)));
+  obj->nfields = 0; /* the new type declares its own */
   PetscCall(create(obj));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

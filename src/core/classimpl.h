@@ -32,12 +32,25 @@ typedef struct {
    table that starts with MPM_CLASS_OPS, so that src/class.c can reach every object as an MPMObject. The type's data is
    one allocation (PetscNew) that the class frees when the type changes or the object is destroyed; a type's
    ops.destroy (may be NULL) frees only what its data points to. */
-#define MPM_CLASS_HEADER(Ops)              \
-  MPI_Comm        comm;                    \
-  const MPMClass *cls;                     \
-  char            type_name[MPM_MAX_NAME]; \
-  char           *prefix;                  \
-  void           *data;                    \
+/* A point field a type keeps as its state per point (plastic strain, later damage): the name (also the HDF5 dataset
+   and the checkpoint's), the block size (0: d, -1: d*d), the unit and its meaning. The core registers the fields of
+   the run's types with the points (MPMPointsRegisterTypeFields), one field per name, and gives the type its arrays
+   in the batched operations. */
+typedef struct {
+  const char *name, *unit, *meaning;
+  PetscInt    bs;
+} MPMFieldDecl;
+#define MPM_MAX_TYPE_FIELDS 4
+
+#define MPM_CLASS_HEADER(Ops)                         \
+  MPI_Comm        comm;                               \
+  const MPMClass *cls;                                \
+  char            type_name[MPM_MAX_NAME];            \
+  char           *prefix;                             \
+  void           *data;                               \
+  PetscInt        nfields;                            \
+  MPMFieldDecl    field[MPM_MAX_TYPE_FIELDS];         \
+  PetscInt        fid[MPM_MAX_TYPE_FIELDS]; /* the point fields' indices (MPMPoints::f), -1 before set-up */ \
   Ops             ops
 #define MPM_CLASS_OPS(Obj)                                   \
   PetscErrorCode (*setfromoptions)(Obj, PetscOptionItems *); \
@@ -58,6 +71,7 @@ PETSC_INTERN PetscErrorCode MPMObjectSetOptionsPrefix(void *, const char[]);
 PETSC_INTERN PetscErrorCode MPMObjectSetFromOptions(void *);
 PETSC_INTERN PetscErrorCode MPMObjectView(void *, PetscViewer);
 PETSC_INTERN PetscErrorCode MPMObjectDestroy(void *);
+PETSC_INTERN PetscErrorCode MPMObjectDeclareField(void *, const char[], PetscInt, const char[], const char[]);
 PETSC_INTERN PetscErrorCode MPMClassOtherTypeOption(const MPMClass *, const char[], const char[], const char[], const char **);
 PETSC_INTERN PetscErrorCode MPMObjectOtherTypeOption(void *, const char[], const char **);
 

@@ -107,9 +107,10 @@ static inline __attribute__((always_inline)) PetscErrorCode MPMConstitutiveChunk
       }
     }
   }
-  if (Str) { /* s^{n+1}, eps_p; the plastic work sum m sigma_eq d eps_p / rho for the report's energy budget */
-    PetscReal *epsp = pts->f[MPM_FIELD_PLASTICSTRAIN], eps0[MPM_CHUNK];
-    for (PetscInt i = 0; i < n; i++) eps0[i] = epsp[MPM_CP(i)];
+  if (Str) { /* s^{n+1}, eps_p (a plastic type's state, its first point field); the plastic work sum m sigma_eq d eps_p / rho for the report's energy budget */
+    PetscReal *epsp = Str->nfields ? pts->f[Str->fid[0]] : NULL, eps0[MPM_CHUNK];
+    if (epsp)
+      for (PetscInt i = 0; i < n; i++) eps0[i] = epsp[MPM_CP(i)];
     PetscCall(MPMStrengthStressBatch(Str, d, dt, n, idx, Lsh ? Lsh : L, F, rho1, T, S, epsp, cs2));
     if (E->spall_spinodal) /* stretched past the EOS's spinodal the solid has fractured: no shear stress, no shear wave */
       for (PetscInt i = 0; i < n; i++)
@@ -117,7 +118,7 @@ static inline __attribute__((always_inline)) PetscErrorCode MPMConstitutiveChunk
           for (PetscInt a = 0; a < d * d; a++) S[MPM_CP(i) * d * d + a] = 0.0;
           cs2[i] = 0.0;
         }
-    for (PetscInt i = 0; i < n; i++)
+    for (PetscInt i = 0; epsp && i < n; i++)
       if (epsp[MPM_CP(i)] > eps0[i]) mpm->diag.plastic_work += m[MPM_CP(i)] * MPMVonMisesStress(d, &S[MPM_CP(i) * d * d]) * (epsp[MPM_CP(i)] - eps0[i]) / rho1[i];
   }
   if (midpoint) {
@@ -286,7 +287,7 @@ PetscErrorCode MPMConstitutiveInitialize(MPM mpm)
     MPMEOSPressureKernel(E, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_ENERGY][p], &pts.f[MPM_FIELD_PRESSURE][p], &c2);
     if (S)
       S->ops.stress(S->data, d, 0.0, &pts.f[MPM_FIELD_GRADV][p * d * d], pts.f[MPM_FIELD_DEFGRAD] ? &pts.f[MPM_FIELD_DEFGRAD][p * d * d] : NULL, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_TEMPERATURE][p], &pts.f[MPM_FIELD_STRESS][p * d * d],
-                    &pts.f[MPM_FIELD_PLASTICSTRAIN][p], &cs2);
+                    S->nfields ? &pts.f[S->fid[0]][p] : NULL, &cs2);
     pts.f[MPM_FIELD_SOUNDSPEED][p] = PetscSqrtReal(PetscMax(c2, 0.0) + cs2);
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));

@@ -260,6 +260,10 @@ PetscErrorCode MPMSetUp(MPM mpm)
   if (mpm->shape->needs_F || MPMPointsFieldRequired(mpm, MPM_FIELD_DEFGRAD) || (mpm->exact && mpm->exact->ops.initial)) mpm->track_F = PETSC_TRUE; /* the points carry F */
   if (!mpm->exact->ops.evaluate && !mpm->exact->ops.checks) PetscCall(MPMRetireObject(mpm, &mpm->exact));      /* none */
   PetscCall(MPMPointsSelectFields(mpm));
+  for (PetscInt i = 0; i < mpm->nmat; i++) { /* the point state the materials' types keep */
+    PetscCall(MPMPointsRegisterTypeFields(mpm, mpm->mat[i].eos));
+    PetscCall(MPMPointsRegisterTypeFields(mpm, mpm->mat[i].strength));
+  }
   if (mpm->update == MPM_UPDATE_APIC) PetscCall(MPMPointsRegisterField(mpm, "affine", -1, "1/s", "APIC affine velocity C_p = B_p D_p^-1 (v(x) = v_p + C_p (x - x_p) about the point)", PETSC_TRUE, &mpm->affine));
   PetscCall(MPMCreatePoints(mpm));
   if (mpm->exact) {

@@ -18,7 +18,6 @@ const MPMFieldInfo MPMFieldTable[MPM_NUM_FIELDS] = {
   {"gradv", -1, "1/s", "velocity gradient L_p = dv/dx, row-major", PETSC_FALSE},
   {"defgrad", -1, "-", "deformation gradient F_p = dx/dX, row-major", PETSC_TRUE},
   {"stress", -1, "dyn/cm^2", "stress s_p besides the pressure (strength model), row-major", PETSC_TRUE},
-  {"plasticstrain", 1, "-", "equivalent plastic strain eps_p (plastic strength models)", PETSC_TRUE},
   {"refposition", 0, "cm", "reference (initial lattice) position X_p", PETSC_TRUE},
   {"material", 1, "-", "material index", PETSC_TRUE},
   {"id", 1, "-", "persistent id: the point's seeding lattice index; children of a split take ids from the number of lattice sites up", PETSC_TRUE},
@@ -45,6 +44,29 @@ PetscErrorCode MPMPointsRegisterField(MPM mpm, const char name[], PetscInt bs, c
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The point fields a class object's type declared (MPMObjectDeclareField), registered once per name (two materials
+   with the same plastic type share one plastic strain field); the object gets their indices (fid). Before set-up. */
+PetscErrorCode MPMPointsRegisterTypeFields(MPM mpm, void *o)
+{
+  MPMObject obj = (MPMObject)o;
+
+  PetscFunctionBegin;
+  if (!obj) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt i = 0; i < obj->nfields; i++) {
+    const MPMFieldDecl *fd = &obj->field[i];
+    PetscInt            f;
+    for (f = 0; f < mpm->nfields; f++) {
+      PetscBool same;
+      PetscCall(PetscStrcmp(mpm->field[f].name, fd->name, &same));
+      if (same) break;
+    }
+    if (f < mpm->nfields) PetscCheck(mpm->field[f].bs == fd->bs, mpm->comm, PETSC_ERR_PLIB, "Point field %s of %s type %s: block size %" PetscInt_FMT ", registered with %" PetscInt_FMT, fd->name, obj->cls->name, obj->type_name, fd->bs, mpm->field[f].bs);
+    else PetscCall(MPMPointsRegisterField(mpm, fd->name, fd->bs, fd->unit, fd->meaning, PETSC_TRUE, &f));
+    obj->fid[i] = f;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* A module needs one of the core fields only some scenes carry (splitting: the domain scale s_p and F); before set-up. */
 PetscErrorCode MPMPointsRequireField(MPM mpm, MPMField f)
 {
@@ -67,7 +89,6 @@ PetscErrorCode MPMPointsSelectFields(MPM mpm)
   PetscFunctionBegin;
   mpm->field_on[MPM_FIELD_DEFGRAD]       = mpm->track_F;
   mpm->field_on[MPM_FIELD_STRESS]        = mpm->has_stress;
-  mpm->field_on[MPM_FIELD_PLASTICSTRAIN] = mpm->has_stress;
   mpm->field_on[MPM_FIELD_REFPOSITION]   = (PetscBool)(mpm->exact != NULL);
   mpm->field_on[MPM_FIELD_DOMAINSCALE]   = mpm->field_req[MPM_FIELD_DOMAINSCALE];
   mpm->field_on[MPM_FIELD_HOOPRATE]      = mpm->grid.axisym;
@@ -358,7 +379,10 @@ PetscErrorCode MPMCreatePoints(MPM mpm)
       }
       pts.f[MPM_FIELD_TEMPERATURE][n] = T;
       pts.f[MPM_FIELD_VISCOSITY][n]   = 0.0;
-      if (pts.f[MPM_FIELD_PLASTICSTRAIN]) pts.f[MPM_FIELD_PLASTICSTRAIN][n] = 0.0;
+      for (PetscInt f = MPM_NUM_FIELDS; f < mpm->nfields; f++) { /* the registered fields (a type's state, APIC's C_p) start at 0 */
+        const PetscInt bs = MPMFieldBlockSize(mpm->field[f].bs, d);
+        for (PetscInt k = 0; k < bs; k++) pts.f[f][n * bs + k] = 0.0;
+      }
       pts.f[MPM_FIELD_MATERIAL][n] = (PetscReal)pc[i].material;
       pts.f[MPM_FIELD_ID][n]       = id;
     }

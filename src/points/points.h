@@ -20,7 +20,6 @@ typedef enum {
   MPM_FIELD_GRADV,
   MPM_FIELD_DEFGRAD,
   MPM_FIELD_STRESS,
-  MPM_FIELD_PLASTICSTRAIN,
   MPM_FIELD_REFPOSITION,
   MPM_FIELD_MATERIAL,
   MPM_FIELD_ID,
@@ -53,6 +52,7 @@ PETSC_INTERN PetscErrorCode MPMPointsGetArrays(MPM, MPMPoints *);
 PETSC_INTERN PetscErrorCode MPMPointsSelectFields(MPM);
 PETSC_INTERN PetscErrorCode MPMPointsRequireField(MPM, MPMField);
 PETSC_INTERN PetscBool      MPMPointsFieldRequired(MPM, MPMField);
+PETSC_INTERN PetscErrorCode MPMPointsRegisterTypeFields(MPM, void *);
 PETSC_INTERN PetscErrorCode MPMPointsRegisterField(MPM, const char[], PetscInt, const char[], const char[], PetscBool, PetscInt *);
 PETSC_INTERN PetscErrorCode MPMPointsRestoreArrays(MPM, MPMPoints *);
 PETSC_INTERN PetscErrorCode MPMPointsRelease(MPM);

@@ -97,7 +97,7 @@ PetscErrorCode MPMStrengthStressBatch(MPMStrength str, PetscInt d, PetscReal dt,
   else
     for (PetscInt i = 0; i < n; i++) {
       const PetscInt p = idx[i];
-      str->ops.stress(str->data, d, dt, &L[p * d * d], F ? &F[p * d * d] : NULL, rho[i], T[p], &s[p * d * d], &epsp[p], &c2[i]);
+      str->ops.stress(str->data, d, dt, &L[p * d * d], F ? &F[p * d * d] : NULL, rho[i], T[p], &s[p * d * d], epsp ? &epsp[p] : NULL, &c2[i]);
     }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

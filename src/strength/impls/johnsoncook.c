@@ -161,6 +161,7 @@ PetscErrorCode MPMStrengthCreate_JohnsonCook(MPMStrength str)
 
   PetscFunctionBegin;
   PetscCall(PetscNew(&jc));
+  PetscCall(MPMObjectDeclareField(str, "plasticstrain", 1, "-", "equivalent plastic strain eps_p"));
   jc->G                   = 4.77e11; /* OFHC copper, ../shared/reference/copper.md */
   jc->A                   = 9.0e8;
   jc->B                   = 2.92e9;

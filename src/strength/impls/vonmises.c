@@ -59,6 +59,7 @@ PetscErrorCode MPMStrengthCreate_VonMises(MPMStrength str)
 
   PetscFunctionBegin;
   PetscCall(PetscNew(&vm));
+  PetscCall(MPMObjectDeclareField(str, "plasticstrain", 1, "-", "equivalent plastic strain eps_p"));
   vm->G                   = 4.77e11; /* OFHC copper, ../shared/reference/copper.md */
   vm->Y                   = 9.0e8;
   str->data               = vm;
