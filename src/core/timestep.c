@@ -10,8 +10,8 @@
 
 /* The signal speed of point p (c_p + |v_p| and the diffusive terms of MPMComputeTimeStep), with the dimension D, whether
    a material may be viscous (VISC: mu, the materials' viscosities) and whether the hoop rate enters div v (HOOP)
-   compile-time constants where the loops call it (MPMPointDivergence tests for the hoop rate per point: that loop did not
-   vectorize, ten times slower on weak Sod). The viscosity's term is taken wherever q_p > 0 and div v_p != 0 (the
+   compile-time constants where the loops call it, so that the loops vectorize (MPMPointDivergence's test for the hoop
+   rate per point keeps a loop scalar: docs/performance.md). The viscosity's term is taken wherever q_p > 0 and div v_p != 0 (the
    screened loop of earlier versions skipped it only where it could not raise the maximum: the same bits). */
 static inline __attribute__((always_inline)) PetscReal MPMSignalSpeed(const MPMPoints *pts, PetscInt p, const PetscInt D, const PetscBool VISC, const PetscBool HOOP, const PetscReal mu[], PetscReal h, PetscReal *divv)
 {

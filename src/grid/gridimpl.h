@@ -193,9 +193,7 @@ static inline void MPMShapeTensor(const MPMGrid *g, const PetscInt nn[], PetscIn
 /* The cell-averaged linear (Q1) shape functions of the global cell ijk, (1/V_c) int_c N_I dx = 2^-d and
    (1/V_c) int_c grad N_I dx, on the cell's own 2^d nodes (folded at the walls), whatever the points' shape functions:
    the cell rule's force and work and cell-centred reads of the grid (the limited viscosity's cell velocity gradient)
-   act through the cell as a zone. The cell average of the type's own basis, used before, reaches nodes beyond the
-   cell for GIMP and the B-splines, and at a free surface a cell's force then pushed a node that the surface points
-   give a mass of order overlap^2: the 2D dam break and the 2D bar exploded within two steps (docs/algorithm.md). */
+   act through the cell as a zone (why not the type's own basis: docs/modules.md). */
 static inline void MPMGridCellBasis(const MPMGrid *g, const PetscInt ijk[], MPMStencil *st)
 {
   PetscInt  idx[MPM_MAX_DIM][MPM_MAX_1D], nn[MPM_MAX_DIM] = {1, 1, 1};

@@ -1,20 +1,12 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
-/* Artificial heat conduction module (point phase MPM_PHASE_POINT_END, after migration; -mpm_conduction C_h > 0).
-   Why: a point keeps the entropy the shock gave it, and points that meet a shock at different phases of the grid get
-   different entropies (on Noh's implosion p / rho^gamma of neighbouring points varied by +-25%). A Lagrangian zone
-   code sees every zone shocked alike, and an Eulerian code's remap mixes the difference away; points have neither,
-   so the difference stays as density noise. Noh (J. Comput. Phys. 72 (1987) 78) proposed an artificial heat flux for
-   the same cause at a wall (wall heating). Here a point that the step compressed exchanges heat with the points on
-   its nodes, by temperature:
+/* Artificial heat conduction module (point phase MPM_PHASE_POINT_END, after migration; -mpm_conduction C_h > 0,
+   default 2): a point the step compressed exchanges heat with the points on its nodes, by temperature,
      m_p de_p = w_p (sum_I N_I(x_p) T_I - T_p),  T_I = sum_q N_I(x_q) w_q T_q / sum_q N_I(x_q) w_q,
      w_p = beta_p m_p c_v,p,  beta_p = min(1, C_h max(0, -tr L_p) dt),
-   with c_v,p = de/dT at the point's density from its EOS. It is a diffusion with diffusivity about C_h h^2 |div v|
-   (the form of the quadratic viscosity) that acts only where the step compressed. Then
-   sum_p m_p de_p = sum_I T_I sum_q N_I w_q - sum_q w_q T_q = 0: internal energy is conserved to round-off. For an
-   EOS whose e is linear in T at fixed density (ideal gas, Mie-Gruneisen), T_p moves a fraction beta_p of the way to
-   its nodes' mean (no new extremum), and a point at rest or in expansion is untouched. Heat flows between materials by
-   temperature, so a gas split into two identical materials runs as one. It runs after migration, where each point's
-   nodes are in its rank's ghosted box (MPMPointsNodalMean, nodemean.c), and the EOS then gives p, T and c for the new e. */
+   with c_v,p = de/dT [erg/(g eV)] at the point's density from its EOS: a diffusion with diffusivity about
+   C_h h^2 |div v| [cm^2/s] where the step compressed (after Noh, J. Comput. Phys. 72 (1987) 78). Internal energy is
+   conserved to round-off, sum_p m_p de_p = 0; a point at rest or in expansion is untouched. The EOS then gives p, T
+   and c for the new e. Why and what it measured: docs/modules.md. */
 #include "core/petmpmimpl.h"
 
 typedef struct {

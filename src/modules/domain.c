@@ -1,19 +1,11 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
-/* Domain regularisation module (point phase MPM_PHASE_POINT_ADAPT, before splitting; wherever a point's domain is
-   read: the CPDI shape functions, and splitting with any shape family; -mpm_domain_skew). A point's domain is the parallelepiped R = F diag(s) l0 (split.c). In a
-   sheared flow its edges turn towards each other and the domain becomes a sliver: in the cylindrical Sedov blast a
-   point's F reached [[40, -31], [-86, 67]], edges 95 l0 long and a fraction of a cell apart, and the domain-averaged
-   gradient weights reached 1.4e4 1/cm against 1/h = 64, so L_p was noise and the run blew up. Splitting halves a
-   domain along reference axes and cannot undo shear. When the domain's skewness
+/* Domain regularisation module (point phase MPM_PHASE_POINT_ADAPT, before splitting; -mpm_domain_skew, default 0.5;
+   in the step where the points' domains deform with F: CPDI shape functions, or splitting). A point's domain is the
+   parallelepiped R = F diag(s) l0 (split.c); where its skewness
      sigma = |det R| / prod_k |R e_k|     (1 for a box, -> 0 for a sliver; in 2D the sine of the edges' angle)
-   falls below -mpm_domain_skew, and the point's material does not read F (a fluid, or a hypoelastic strength model,
-   which integrate rates; a hyperelastic one is left alone), the domain is replaced by the square (cube) of the same
-   volume: F <- |det R|^(1/d) diag(1/s), so that F diag(s) = |det R|^(1/d) I. Mass, volume, momentum and energy are
-   unchanged; only the domain over which the shape functions average changes. The splitting that follows then halves
-   a square along each axis in turn, so a near vacuum that opens in two directions keeps about one point per cell
-   (a principal-axes rectangle of the same sliver split along its length 440,520 times where the cube split 25,961).
-   Axis-aligned stretching and compression (a planar tube on a 2D or 3D grid) leave a box and are never touched. The
-   report counts the resets (robustness.domain_resets). */
+   falls below -mpm_domain_skew and the material does not read F (a fluid, a hypoelastic strength model), the domain
+   becomes the cube of the same volume, F <- |det R|^(1/d) diag(1/s). Mass, volume, momentum and energy are unchanged.
+   The report counts the resets (robustness.domain_resets). Why and what it measured: docs/modules.md. */
 #include "core/petmpmimpl.h"
 
 typedef struct {

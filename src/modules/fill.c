@@ -1,35 +1,13 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
-/* Volume consistency module (point phase MPM_PHASE_POINT_END, after the pressure relaxation; -mpm_volume_fill theta > 0;
-   fluids, the materials without a strength model).
-   Why: a point's volume follows its own velocity gradient, V_p' = V_p div v(x_p), and nothing ties the points' volumes
-   to the space they fill. With point integration the grid reads the points' pressure only through
-   f_I = sum_p V_p P_p grad N_I(x_p); where the points do not tile space (disordered by a vortical flow, split, their
-   domains reset) the quadrature error g_I = sum_p V_p grad N_I(x_p) of an interior node is not zero, and a uniform
-   pressure pushes that node with P g_I. The nodes so pushed move along g_I, and the points' volumes grow at
-   sum_p V_p div v(x_p) = sum_I v_I . g_I > 0: the points expand into each other, their internal energy becoming the
-   nodes' kinetic energy, faster the lighter the material (the nodes' acceleration P g_I / m_I). A helium bubble struck
-   by a shock in air (README, "Known failure") expands where it should be compressed threefold; the cylindrical Sedov
-   blast's split interior fills its cells three times over.
-   What it does: the points' volumes are put on the nodes, V_I = sum_p N_I(x_p) V_p, against the volume a complete,
-   undeformed fill of the domain puts there, V_I^0 (a lattice of -mpm_ppc^d sites per cell with undeformed domains,
-   computed once per grid, so that walls and shape families need no case of their own). The fill is smoothed over the
-   node's 3^d block with the weights (1, 2, 1) per direction, phi_I = sum_J w_J V_J / sum_J w_J V_J^0 (a set of points
-   always scatters about a complete fill from node to node, often odd-even, which these weights cancel), and where it
-   exceeds 1 + tol (-mpm_volume_fill_tol) the node gives back E_I = (phi_I - 1 - tol) V_I^0: a fraction theta
-   (-mpm_volume_fill) of it per step, from the fluid points on it in proportion to their compliance V_p / K_p
-   (K_p = rho_p c_p^2: the point that expanded at a lower pressure gives more),
+/* Volume consistency module (point phase MPM_PHASE_POINT_END, after the pressure relaxation; -mpm_volume_fill theta > 0,
+   off by default; fluids): the points' volumes on the nodes, V_I = sum_p N_I(x_p) V_p, against a complete undeformed
+   fill V_I^0 (the seeding lattice, once per grid), smoothed over the node's 3^d block with weights (1, 2, 1) per
+   direction, phi_I = sum_J w_J V_J / sum_J w_J V_J^0; where phi_I > 1 + tol (-mpm_volume_fill_tol) the node gives back
+   E_I = (phi_I - 1 - tol) V_I^0 [cm^d], a fraction theta of it per step, from its fluid points by compliance,
      dV_p = -theta (V_p / K_p) sum_I N_I(x_p) E_I / C_I,  C_I = sum_q N_I(x_q) V_q / K_q,  dV_p >= -V_p / 2,
-   at fixed specific internal energy: mass, momentum, positions and total energy stay as they were (to round-off), the
-   EOS gives the new p, T and c, and a CPDI domain scales isotropically with the volume. A point in a shock or a fast
-   expansion (|div v| h / c above -mpm_volume_fill_mach) keeps its volume: a shock front's points overlap for a few
-   steps as part of its structure. Excess is only taken, never given (a gap inside the material and a free surface look
-   alike on the nodes). The nodal sums are summed over the ranks and the smoothed excess is computed on the owned nodes
-   and sent to the ghosts, so that every rank count gives the same answer.
-   Measured (README, docs/algorithm.md): the helium bubble's median density 2.9e-4 g/cm^3 at t = 2e-4 s (8.5e-5 without,
-   2.7e-4 with the cell rule), the points' volumes 131.2 cm^2 in the 133.5 cm^2 box (151 without); the cylindrical Sedov
-   blast at 64^2 cells L1 pressure 22% (64% without). Off by default: it also acts on the overlap that CPDI's points
-   have for a while in a smooth rarefaction, and there its compression at fixed e costs accuracy (weak Sod at 512
-   cells, CPDI, one point per cell: L1 density 0.59% without, 0.88% with theta = 0.02, 1.5% with 0.5). */
+   K_p = rho_p c_p^2, at fixed specific internal energy (mass, momentum, positions and total energy unchanged). Points
+   in a shock or a fast expansion (|div v| h / c above -mpm_volume_fill_mach) keep their volume; excess is only taken.
+   Why and what it measured: docs/modules.md. */
 #include "core/petmpmimpl.h"
 
 typedef struct {

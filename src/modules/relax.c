@@ -1,33 +1,14 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
-/* Sub-cell pressure relaxation module (point phase MPM_PHASE_POINT_END, after migration and heat conduction;
-   -mpm_pressure_relax K_r > 0; fluids, the materials without a strength model).
-   Why: the grid cannot see a pressure difference between points that share a cell. With linear (or CPDI) shape
-   functions the velocity is linear in a cell, so the points of a cell get (nearly) the same strain rate, and a cell's
-   nodal forces read only sum_p V_p p_p: a pattern of pressures that varies from point to point within each cell and
-   keeps that sum is in the null space of the transfers. Nothing drives it back; it is the particle method's
-   hourglass mode. On Noh's planar implosion (one point per cell, compressed four times) the four points of every
-   shocked cell kept 0.68, 0.86, 1.30 and 1.39 of the exact plateau pressure and densities 3.2, 3.6, 4.8 and 5.0
-   (exact 4), however fine the grid: the L1 density error stayed at 16%. Caramana and Shashkov (J. Comput. Phys. 142
-   (1998) 521) restore sub-zonal pressure forces for the same mode in Lagrangian zones; a point cannot get a force the
-   grid does not carry, so here the points of a cell exchange volume, as a mixed cell's materials relax to a common
-   pressure, with the work done at the cell's pressure p_c:
+/* Sub-cell pressure relaxation module (point phase MPM_PHASE_POINT_END, after heat conduction; -mpm_pressure_relax
+   K_r > 0, default 0.25; fluids, the materials without a strength model): the points of a cell exchange volume
+   towards the cell's pressure p_c, with the work done at p_c,
      dV_p     = w_p (p_p - p_c),   p_c = sum_{q in c} w_q p_q / sum_{q in c} w_q,   m_p de_p = -p_c dV_p,
      w_p      = theta_p V_p / K_p,  K_p = max(rho_p c_p^2, Kbar_c),  theta_p = min(1/2, K_r dt sqrt(K_p / rho_p) / h),
-   with Kbar_c the volume-weighted mean bulk modulus of the cell. Within a cell sum_p dV_p = 0 and sum_p m_p de_p = 0:
-   volume and total energy are conserved to round-off, positions and momentum are untouched, and the heat a point
-   gets over the isentropic work, m_p de_p + p_p dV_p = w_p (p_p - p_c)^2 >= 0, is the entropy an irreversible
-   pressure equilibration makes. theta_p is the fraction of the way to equilibrium in one step at the acoustic rate
-   K_r c / h; K_p is raised to the cell's mean so that a cold point beside hot ones is not crushed along its own soft
-   isentrope. A CPDI domain scales isotropically with the volume.
-   Only points in a quiescent flow relax: |div v| h / c below -mpm_pressure_relax_mach. A point's volume is not tied
-   to its position, and volume moved between two points that the flow then strains differently does not stay
-   conserved: volume moved from a cold point to its hot neighbours in a shock front, which the shock then compresses
-   four times, came back a quarter, and the plateau behind the shock grew light (rho 3.5 for 4 at K_r = 4). The same
-   in the rattling, expanding interior of the planar Sedov blast took its pressure 18% low with K_r = 1 and M = 0.05,
-   and, since |div v| h / c falls with h, 56% low at 2048 cells with M = 0.01: points made by splitting (domain
-   scale below 1, where the material expanded towards vacuum) do not relax either, which gives the blast back its
-   L1 (2.0% and 1.6% at 1024 and 2048 cells) and leaves Noh's gain whole. A shocked plateau, where the mode lives,
-   is at rest and unsplit. Solids (with a strength model) are left alone. */
+   with Kbar_c the volume-weighted mean bulk modulus of the cell [dyn/cm^2] (after Caramana & Shashkov, J. Comput.
+   Phys. 142 (1998) 521). Within a cell volume and total energy are conserved to round-off; the heat
+   w_p (p_p - p_c)^2 >= 0 is the entropy of the equilibration. Only points in a quiescent flow relax
+   (|div v| h / c below -mpm_pressure_relax_mach), and not points made by splitting (domain scale below 1).
+   Why and what it measured: docs/modules.md. */
 #include "core/petmpmimpl.h"
 
 typedef struct {

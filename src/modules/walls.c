@@ -1,20 +1,14 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
-/* Walls module (grid phase MPM_PHASE_GRID_VELOCITY): rigid walls. Registered when a face is a wall (-mpm_bc_lo,
-   -mpm_bc_hi); it runs wherever nodal velocities are formed (the advance and the MUSL remap).
-   A frictionless wall (a symmetry plane): the normal velocity of the nodes on the face is zero, (mv)_I, f_I and v_I^n
-   lose their normal component there, whichever way the node moves.
-   A wall with Coulomb friction (-mpm_wall_friction_lo, -mpm_wall_friction_hi > 0) is a contact with a rigid body
-   (Bardenhagen, Brackbill & Sulsky, CMAME 187 (2000) 529): a node that moves into it loses its normal velocity v_n,
-   an impulse m_I |v_n| per step, and friction takes at most mu times that from its tangential velocity,
-   v_t <- v_t max(0, 1 - mu |v_n| / |v_t|), which stops a node whose tangential speed is below mu |v_n| (sticking); a
-   node that moves away separates (a sticky wall would pull the body down where it lifts, and friction on the
-   compressive impulses alone would then exceed mu times the net normal force: measured on inputs/slide_2d.opts, the
-   block stopped 2.7 times too soon). The symmetry planes act first, so that friction reads the tangential velocity
-   they leave (an anvil's edge on a symmetry plane). Friction acts in the kick only (the MUSL remap's velocities come
-   from points that already felt it), and the remap holds and frees the contact nodes as the kick did (MPMWallPass). Its work is what the step's energy loses: with m_I (v_I - v_I^n) = dt (f_I +
-   f_fric), the conservative update's sum over the grid of m_I |v|^2 / 2 changes by f_fric . (v_I^n + v_I) / 2 dt more
-   than the internal work, so the module tallies m_I (v* - v_t) . (v_I^n + v_t) / 2 per node (v* the tangential
-   velocity before friction), which the report adds back (friction_work). */
+/* Walls module (grid phase MPM_PHASE_GRID_VELOCITY; a face with -mpm_bc_lo or -mpm_bc_hi wall), wherever nodal
+   velocities are formed (the advance and the MUSL remap).
+   A frictionless wall (a symmetry plane): (mv)_I, f_I and v_I^n of the nodes on the face lose their normal component.
+   A wall with Coulomb friction mu (-mpm_wall_friction_lo, -mpm_wall_friction_hi > 0) is a contact with a rigid body
+   (Bardenhagen, Brackbill & Sulsky, CMAME 187 (2000) 529): a node moving into it loses its normal velocity v_n and
+   friction takes at most mu |v_n| of its tangential velocity, v_t <- v_t max(0, 1 - mu |v_n| / |v_t|); a node moving
+   away separates. Symmetry planes act first; friction acts in the kick only, and the MUSL remap holds and frees the
+   contact nodes as the kick did (MPMWallPass). Friction's work, m_I (v* - v_t) . (v_I^n + v_t) / 2 per node [erg]
+   (v* the tangential velocity before friction), left the system: the report adds it back (friction_work).
+   Why and what it measured: docs/modules.md. */
 #include "core/petmpmimpl.h"
 
 /* What one pass over the wall faces does at each node: the face's friction coefficient, the friction's work (NULL: no

@@ -126,8 +126,7 @@ PetscErrorCode MPMPointsSetWindow(MPM mpm, PetscInt p0, PetscInt n)
 }
 
 /* Ends a phase's use of the arrays. They stay held: DMSwarmGetField finds a field by comparing its name with each
-   registered one's, and with every phase fetching every field each step that was 9% of weak Sod's run (4096 points,
-   about 25 fields). What changes the swarm (adds, removes or moves points, or reads a field itself) calls
+   registered one's, and every phase fetching every field each step would pay that (docs/performance.md). What changes the swarm (adds, removes or moves points, or reads a field itself) calls
    MPMPointsRelease first, and the next MPMPointsGetArrays fetches the arrays anew. */
 PetscErrorCode MPMPointsRestoreArrays(MPM mpm, MPMPoints *pts)
 {

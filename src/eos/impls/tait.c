@@ -9,12 +9,7 @@
    water), and the isentrope is e_c shifted (closed form). Tension (rho < rho0) is carried down to a cavitation
    density (1 - eps_c) rho0, below which the water has cavitated and carries no pressure (the class's memoryless spall
    rule, MPMEOSSpalled, at the spall pressure p_c = B ((1 - eps_c)^gamma - 1), the default of -mat_<name>_eos_pmin).
-   Why: a liquid point that has lost its neighbours (spray, a splash) and keeps a tension near the floor -B, where its
-   sound speed c0 (rho/rho0)^((gamma-1)/2) is small, is pulled together by its own stress on its nodes faster than the
-   sound-speed step resolves; it oscillates and collapses (docs/validation-dambreak.md). Above the cavitation density
-   the bulk keeps the tension that restores it from numerical expansion. eps_c = 0.05 (p_c = -0.30 B at gamma = 7):
-   the dam break runs to 1 s with eps_c from 0.01 to 0.094 (p_c from -0.07 B to -0.5 B) and stops with no tension (a
-   spall pressure of -1 dyn/cm^2: the bulk expands unrestored) and near 0.28 (-0.9 B). Options -mat_<name>_eos_tait_rho0 [g/cm^3], _c0 (sound speed at rho0 [cm/s]; B = rho0 c0^2 / gamma),
+   The default eps_c and why: docs/modules.md. Options -mat_<name>_eos_tait_rho0 [g/cm^3], _c0 (sound speed at rho0 [cm/s]; B = rho0 c0^2 / gamma),
    _gamma [-], _cv [erg/(g eV)], _cavitation (eps_c [-]). Defaults: water at 20 C, rho0 = 0.998, c0 = 1.482e5 cm/s (B = 3.13e9 dyn/cm^2),
    gamma = 7, Cv = 4.18e7 erg/(g K) = 4.85e11 erg/(g eV). A weakly compressible scene lowers c0 to ten times its
    largest flow speed (a Mach number 0.1 keeps density variations near 1%) to take larger time steps. */
