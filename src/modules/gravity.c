@@ -16,7 +16,7 @@ static PetscErrorCode MPMGravityApply(MPMModule mod, MPM mpm, const MPMStepConte
 }
 
 /* In the step where the scene's -mpm_gravity is not zero. */
-static PetscErrorCode MPMGravitySetFromOptions(MPMModule mod, MPM mpm, PetscOptionItems *PetscOptionsObject)
+static PetscErrorCode MPMGravitySetUp(MPMModule mod, MPM mpm)
 {
   PetscFunctionBegin;
   mod->active = mpm->has_gravity;
@@ -34,7 +34,8 @@ PetscErrorCode MPMModuleCreate_Gravity(MPMModule mod)
 {
   PetscFunctionBegin;
   mod->phase              = MPM_PHASE_GRID_FORCE;
-  mod->ops.setfromoptions = MPMGravitySetFromOptions;
+  mod->active             = PETSC_TRUE; /* until set-up */
+  mod->ops.setup          = MPMGravitySetUp;
   mod->ops.apply          = MPMGravityApply;
   mod->ops.view           = MPMGravityView;
   PetscCall(PetscStrncpy(mod->event, "MPMGravity", sizeof(mod->event)));

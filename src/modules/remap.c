@@ -35,7 +35,7 @@ static PetscErrorCode MPMRemapApply(MPMModule mod, MPM mpm, const MPMStepContext
 }
 
 /* In the step with -mpm_scheme musl. */
-static PetscErrorCode MPMRemapSetFromOptions(MPMModule mod, MPM mpm, PetscOptionItems *PetscOptionsObject)
+static PetscErrorCode MPMRemapSetUp(MPMModule mod, MPM mpm)
 {
   PetscFunctionBegin;
   mod->active = (PetscBool)(mpm->scheme == MPM_SCHEME_MUSL);
@@ -46,7 +46,8 @@ PetscErrorCode MPMModuleCreate_Remap(MPMModule mod)
 {
   PetscFunctionBegin;
   mod->phase              = MPM_PHASE_POINT_KINEMATICS;
-  mod->ops.setfromoptions = MPMRemapSetFromOptions;
+  mod->active             = PETSC_TRUE; /* until set-up */
+  mod->ops.setup          = MPMRemapSetUp;
   mod->ops.apply          = MPMRemapApply;
   PetscCall(PetscStrncpy(mod->event, "MPMRemapMomentum", sizeof(mod->event)));
   PetscFunctionReturn(PETSC_SUCCESS);

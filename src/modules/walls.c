@@ -119,7 +119,7 @@ static PetscErrorCode MPMWallsApply(MPMModule mod, MPM mpm, const MPMStepContext
 }
 
 /* In the step where a face is a wall. */
-static PetscErrorCode MPMWallsSetFromOptions(MPMModule mod, MPM mpm, PetscOptionItems *PetscOptionsObject)
+static PetscErrorCode MPMWallsSetUp(MPMModule mod, MPM mpm)
 {
   PetscFunctionBegin;
   mod->active = PETSC_FALSE;
@@ -167,7 +167,8 @@ PetscErrorCode MPMModuleCreate_Walls(MPMModule mod)
   PetscCall(PetscNew(&w));
   mod->data               = w;
   mod->phase              = MPM_PHASE_GRID_VELOCITY;
-  mod->ops.setfromoptions = MPMWallsSetFromOptions;
+  mod->active             = PETSC_TRUE; /* until set-up */
+  mod->ops.setup          = MPMWallsSetUp;
   mod->ops.apply          = MPMWallsApply;
   mod->ops.report         = MPMWallsReport;
   mod->ops.checkpoint     = MPMWallsCheckpoint;
