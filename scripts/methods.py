@@ -42,7 +42,7 @@ CONFIGS = [
     ("cth", ["-options_file", os.path.join(lib.SRC, "inputs", "methods", "cth.opts")], 1),
     ("2 ranks", [], 2),
 ]
-# What stopped a run, from its diagnosis (src/constitutive.c, src/ts.c), first match wins.
+# What stopped a run, from its diagnosis (src/core/constitutive.c, src/core/ts.c), first match wins.
 REASONS = [("holds little mass but this point", "light node"), ("spinodal", "spall"), ("-mpm_shape_cpdi_reach", "CPDI reach"),
            ("collapsed", "dt collapse"), ("-mpm_dt_min_ratio", "dt collapse"), ("near vacuum", "vacuum"), ("emptied", "emptied cells"), ("left the domain through a free face", "left the domain")]
 

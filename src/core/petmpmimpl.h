@@ -37,7 +37,7 @@ typedef struct {
   PetscLogStage setup, loop, io;
 } MPMLog;
 
-/* What sets a step's size (src/timestep.c): the sound-speed CFL, the grid acceleration, the volume change of a
+/* What sets a step's size (src/core/timestep.c): the sound-speed CFL, the grid acceleration, the volume change of a
    point, or the final or output time the step lands on. */
 typedef enum { MPM_DT_SOUND, MPM_DT_ACCELERATION, MPM_DT_VOLUME, MPM_DT_LANDING, MPM_NUM_DT_LIMITS } MPMDtLimit;
 PETSC_INTERN const char *const MPMDtLimitNames[];
@@ -238,7 +238,7 @@ static inline PetscBool MPMPointInShock(MPM mpm, const MPMPoints *pts, PetscInt 
       for (PetscInt c = MPMOwnedToLocal(&(mpm)->grid, (mpm)->box_lo[0], k1_, k2_), c##end_ = c - (mpm)->box_lo[0] + (mpm)->box_hi[0]; c < c##end_; c++)
 
 /* Internal API */
-PETSC_INTERN PetscClassId   MPM_CLASSID; /* log events of petmpm (src/init.c) */
+PETSC_INTERN PetscClassId   MPM_CLASSID; /* log events of petmpm (src/core/init.c) */
 PETSC_INTERN PetscErrorCode MPMLogRegister(MPM);
 PETSC_INTERN PetscErrorCode MPMRebalance(MPM);
 PETSC_INTERN PetscErrorCode MPMGridSetOwnership(MPM, PetscInt *[]);

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* Private data of the exact-solution class (src/exact/). An exact type is a pure function of (t, x, X) and its
    parameters: it reads the scene once at set-up (MPMScene) and measures its checks through an MPMProbe (the binned
-   density profile and windowed means of the points, src/report.c), never the MPM object or the swarm. */
+   density profile and windowed means of the points, src/io/report.c), never the MPM object or the swarm. */
 #pragma once
 #include "scene/sceneimpl.h"
 

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
-/* HDF5 helpers of the output and the checkpoints (src/output.c). */
+/* HDF5 helpers of the output and the checkpoints (src/io/output.c). */
 #pragma once
 #include "core/petmpmimpl.h"
 #include <petscviewerhdf5.h>

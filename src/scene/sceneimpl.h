@@ -40,7 +40,7 @@ typedef struct {
   const PetscReal       *friction_lo, *friction_hi; /* wall friction coefficient of each face [-] */
 } MPMScene;
 
-/* A region's hydrostatic state under the scene's gravity (-region_<r>_hydrostatic, src/scene.c): p(z) at depth z below
+/* A region's hydrostatic state under the scene's gravity (-region_<r>_hydrostatic, src/scene/scene.c): p(z) at depth z below
    the top of its box, tabulated, and rho(p) at the region's temperature. */
 #define MPM_HYDRO_N 512
 typedef struct {

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* A column at rest in hydrostatic equilibrium under -mpm_gravity (g along -x_k of one axis k): the scene's first
-   region, of height H along k. The exact state (MPMHydrostatic, src/scene.c): v = 0, p(z) with dp/dz = rho(p) |g|
+   region, of height H along k. The exact state (MPMHydrostatic, src/scene/scene.c): v = 0, p(z) with dp/dz = rho(p) |g|
    from p(rho_r, T_r) at the top of the region's box, rho(p) at the region's temperature T_r. A region seeded with
    -region_<r>_hydrostatic starts in this state; one seeded at uniform density falls onto itself and rings.
    Checks, at each output time and at the end:

@@ -5,7 +5,7 @@
    sigma = s - (p + q) I with the pressure from the material's EOS (a liquid: -mat_<name>_eos_type tait). The
    stress work s : L = 2 mu D' : D' >= 0 heats the fluid. No elastic wave (c^2 unchanged); the explicit
    diffusion limit dt <= h^2 / (2 d nu), nu = mu / rho, enters the time step's speed as 2 d nu / h
-   (src/timestep.c). Option -mat_<name>_strength_newtonian_mu, the dynamic viscosity [poise = g/(cm s)], >= 0
+   (src/core/timestep.c). Option -mat_<name>_strength_newtonian_mu, the dynamic viscosity [poise = g/(cm s)], >= 0
    (default 0.01, water at 20 C). */
 #include "../hypoelastic.h"
 
