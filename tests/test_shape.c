@@ -162,7 +162,7 @@ static PetscErrorCode CheckCPDIMerge(PetscInt dim, PetscInt *fails)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The class base (src/class.c), through the shape class: the default type, GetType after SetType, SetType of the
+/* The class base (src/core/class.c), through the shape class: the default type, GetType after SetType, SetType of the
    current type keeps the type's data (nothing re-created), an options prefix of one's own (-<prefix>shape_type),
    and an unknown type refused with an error. */
 static PetscErrorCode CheckClassBase(PetscInt *fails)

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
-/* What every class shares: the class descriptor, the object header and the generic operations of src/class.c,
+/* What every class shares: the class descriptor, the object header and the generic operations of src/core/class.c,
    option helpers that name the option, and small pointwise helpers of the physics types. A physics type file sees
    this header and its class's own, never the MPM object. */
 #pragma once
@@ -10,7 +10,7 @@
 
 /* What a class is: its name, its options and its registry. One instance per class (MPMShapeClass, ...); the
    operations every class shares (create, set type, get type, options prefix, set-from-options, view, destroy)
-   are written once against it in src/class.c. */
+   are written once against it in src/core/class.c. */
 typedef struct {
   const char        *name;                                      /* for messages: "shape function"                                           */
   const char        *key;                                       /* its options are -<prefix><key>_type and -<prefix><key>_<type>_...        */
@@ -29,7 +29,7 @@ typedef struct {
 } MPMClass;
 
 /* Generic class header, in the PETSc pattern: the class, a type name, an options prefix, the type's data and an ops
-   table that starts with MPM_CLASS_OPS, so that src/class.c can reach every object as an MPMObject. The type's data is
+   table that starts with MPM_CLASS_OPS, so that src/core/class.c can reach every object as an MPMObject. The type's data is
    one allocation (PetscNew) that the class frees when the type changes or the object is destroyed; a type's
    ops.destroy (may be NULL) frees only what its data points to. */
 /* A point field a type keeps as its state per point (plastic strain, later damage): the name (also the HDF5 dataset

@@ -1,9 +1,9 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* Every TS detail of petmpm. TS owns time, step number, step size, the final time and the monitors
    (-ts_max_time, -ts_max_steps, -ts_monitor). The MPM state lives in the grid and the swarm, not in a TS
-   vector (PIC and MUSL rebuild it from the points every step), so the TS integrates an empty system and the
-   MPM cycle runs as its post-step: pre-step sets dt from the CFL condition, trimmed so that the last step
-   lands exactly on the final time. */
+   vector (PIC and MUSL rebuild it from the points every step), so the TS integrates an empty system and is the
+   clock: its pre-step runs the whole MPM step (MPMStep, which sets dt), its post-step the outputs, the balance,
+   the checkpoints and the signals. */
 #include "core/petmpmimpl.h"
 #include <signal.h>
 

@@ -157,12 +157,13 @@ static PetscErrorCode MPMCkptDiagnostics(MPM mpm, MPMCheckpoint ck)
   PetscCall(MPMCheckpointReals(ck, "volume_fill_max", 1, &dg->volume_fill_max, MPM_CKPT_GLOBAL));
   PetscCall(MPMCheckpointInts(ck, "first_overlap_step", 1, &dg->first_overlap_step, MPM_CKPT_GLOBAL));
   PetscCall(MPMCheckpointSetGroup(ck, "modules"));
-  for (PetscInt i = 0; i < mpm->nmods; i++) {
-    char group[2 * MPM_MAX_NAME];
-    if (!mpm->mods[i]->active || !mpm->mods[i]->ops.checkpoint) continue;
-    PetscCall(PetscSNPrintf(group, sizeof(group), "modules/%s", mpm->mods[i]->name));
+  for (PetscInt i = 0; i < mpm->nmods; i++) { /* each module in the step under /modules/<name> */
+    MPMModule mod = mpm->mods[i];
+    char      group[2 * MPM_MAX_NAME];
+    if (!mod->active || !mod->ops.checkpoint) continue;
+    PetscCall(PetscSNPrintf(group, sizeof(group), "modules/%s", mod->name));
     PetscCall(MPMCheckpointSetGroup(ck, group));
-    PetscCall(mpm->mods[i]->ops.checkpoint(mpm->mods[i], mpm, ck));
+    PetscCall(mod->ops.checkpoint(mod, mpm, ck));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

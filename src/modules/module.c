@@ -149,16 +149,6 @@ PetscErrorCode MPMModulesReport(MPM mpm, MPMReport rep)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode MPMModulesCheckpoint(MPM mpm, MPMCheckpoint ck)
-{
-  PetscFunctionBegin;
-  for (PetscInt i = 0; i < mpm->nmods; i++) {
-    MPMModule mod = mpm->mods[i];
-    if (mod->active && mod->ops.checkpoint) PetscCall(mod->ops.checkpoint(mod, mpm, ck));
-  }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode MPMModulesDestroy(MPM mpm)
 {
   PetscFunctionBegin;

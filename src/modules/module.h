@@ -9,11 +9,11 @@
 /* Where in the step a module runs. Grid phases get the owned nodes of the ghosted local nodal vector. */
 typedef enum {
   MPM_PHASE_GRID_FORCE,       /* after points to grid: external nodal forces (gravity)                                            */
-  MPM_PHASE_GRID_VELOCITY,    /* wherever nodal velocities are formed (advance, MUSL remap): walls, later rigid bodies and contact */
+  MPM_PHASE_GRID_VELOCITY,    /* wherever nodal velocities are formed (advance, MUSL remap): walls, damping, later contact */
   MPM_PHASE_POINT_KINEMATICS, /* after grid to points (MUSL: after its velocity gather, over all points): the MUSL remap          */
   MPM_PHASE_POINT_STATE,      /* before the constitutive update: artificial viscosity                                             */
   MPM_PHASE_POINT_ADAPT,      /* after the constitutive update: domain reset, point splitting                                     */
-  MPM_PHASE_POINT_END,        /* after migration, each point on the rank that owns its cell: heat conduction, pressure relaxation */
+  MPM_PHASE_POINT_END,        /* after migration, on the rank owning the point's cell: conduction, relaxation, volume fill, popping */
   MPM_NUM_PHASES
 } MPMPhase;
 
@@ -63,7 +63,6 @@ PETSC_INTERN PetscErrorCode MPMModulesSetUp(MPM);
 PETSC_INTERN PetscErrorCode MPMModulesApply(MPM, MPMPhase, const MPMStepContext *);
 PETSC_INTERN PetscErrorCode MPMModulesView(MPM, PetscViewer);
 PETSC_INTERN PetscErrorCode MPMModulesReport(MPM, MPMReport);
-PETSC_INTERN PetscErrorCode MPMModulesCheckpoint(MPM, MPMCheckpoint);
 PETSC_INTERN PetscErrorCode MPMModulesDestroy(MPM);
 PETSC_INTERN PetscBool      MPMModulesPointwise(MPM, MPMPhase, MPMPhase);
 

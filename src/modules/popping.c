@@ -8,7 +8,7 @@
      fast:     |v_p| > -mpm_popping_speed (cm/s; 0: not checked), for a gravity-driven flow a margin over sqrt(2 g H).
    The counts use the nodal sums of every rank (the ghost exchange of the point-exchange modules), so a point at a
    rank boundary sees its neighbours across it. The report gives the most points popped at one check, the sum over
-   the checks, and when and where the first one appeared (robustness.popping). */
+   the checks, and when and where the first one appeared (the report's top-level key popping). */
 #include "core/petmpmimpl.h"
 
 typedef struct {

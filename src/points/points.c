@@ -82,8 +82,9 @@ PetscBool MPMPointsFieldRequired(MPM mpm, MPMField f)
 }
 
 /* The core fields (MPMFieldTable) that every scene carries, and those only some need: F where the shape functions,
-   a strength model or the exact solution read it, s and eps_p where a material has strength, X where an exact
-   solution is evaluated at it. A fluid scene carries 26 values per point in 3D instead of 47. */
+   a strength model or the exact solution read it, s where a material has strength, X where an exact solution is
+   evaluated at it, s_p where a module asks (MPMPointsRequireField); a type's own state is registered apart
+   (MPMPointsRegisterTypeFields). A fluid scene carries 26 values per point in 3D instead of 47. */
 PetscErrorCode MPMPointsSelectFields(MPM mpm)
 {
   PetscFunctionBegin;
