@@ -19,13 +19,9 @@
 #endif
 /* A tensor-product family's grid-to-points kernel takes MPM_KLANES points at once, one vector lane each (GCC and clang
    vector extensions: the same IEEE operations per lane, no contraction with -ffp-contract=off, so the same bits).
-   The lanes per dimension, MPM_KLANES_<d>, measured where the target has 32 vector registers (AVX-512):
-     1D  eight (1.2 times faster than four on weak Sod);
-     2D  four (eight: 0.91 on the 2D bar, 1.03 on 2D gas problems with linear shapes; the larger loss decides);
-     3D  eight for the tent family (its stencils in vector lanes, MPM_KBASIS_TENT: 1.05 on the 3D block, 1.01 to 1.04
-         on a linear 3D Sedov blast and anvil, not tuned on), four for the others (eight: 0.95 on the B-spline block,
-         whose 27-entry stencils are evaluated lane by lane).
-   Elsewhere two (16 registers: four lanes spill, measured slower). */
+   The lanes per dimension, MPM_KLANES_<d>, where the target has 32 vector registers (AVX-512): eight in 1D, four in 2D,
+   in 3D eight for the tent family (its stencils in vector lanes, MPM_KBASIS_TENT) and four for the others; elsewhere
+   two (16 registers). The measurements behind these numbers are in docs/performance.md (Kernel design notes). */
 #if defined(__GNUC__) && defined(PETSC_USE_REAL_DOUBLE) && !defined(MPM_KSTENCIL)
 #  define MPM_KVECTOR
 #  if defined(__AVX512VL__)
@@ -46,13 +42,13 @@
 #define MPM_KCAT(a, b, c, d) MPM_KCAT_(a, b, c, d)
 
 #define MPM_KD 1
-#include "kernels_body.h"
+#include "kernel_entries.h"
 #undef MPM_KD
 #define MPM_KD 2
-#include "kernels_body.h"
+#include "kernel_entries.h"
 #undef MPM_KD
 #define MPM_KD 3
-#include "kernels_body.h"
+#include "kernel_entries.h"
 #undef MPM_KD
 
 #define MPM_KTABLE(D)                                                                                                                                   \
