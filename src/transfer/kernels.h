@@ -41,6 +41,25 @@
 #define MPM_KCAT_(a, b, c, d) a##_##b##_##c##d
 #define MPM_KCAT(a, b, c, d) MPM_KCAT_(a, b, c, d)
 
+/* The modes a family's kernels are made for (transfer.h), each as (the name in its kernel's name, its mode). */
+#define MPM_KP2G_MODES(X, D)            \
+  X(D, Mass, MPM_P2G_MODE_MASS)         \
+  X(D, Pressure, MPM_P2G_MODE_PRESSURE) \
+  X(D, Stress, MPM_P2G_MODE_STRESS)     \
+  X(D, PressureStress, MPM_P2G_MODE_PRESSURE_STRESS)
+#define MPM_KG2P_MODES(X, D)                                 \
+  X(D, Sums, MPM_G2P_MODE_SUMS)                              \
+  X(D, Velocity, MPM_G2P_MODE_VELOCITY)                      \
+  X(D, Kinematics, MPM_G2P_MODE_KINEMATICS)                  \
+  X(D, VelocityKinematics, MPM_G2P_MODE_VELOCITY_KINEMATICS) \
+  X(D, Work, MPM_G2P_MODE_WORK)                              \
+  X(D, VelocityWork, MPM_G2P_MODE_VELOCITY_WORK)             \
+  X(D, KinematicsWork, MPM_G2P_MODE_KINEMATICS_WORK)         \
+  X(D, VelocityKinematicsWork, MPM_G2P_MODE_VELOCITY_KINEMATICS_WORK)
+#define MPM_KG2PREMAP_MODES(X, D)                  \
+  X(D, VelocityRemap, MPM_G2P_MODE_VELOCITY_REMAP) \
+  X(D, VelocityWorkRemap, MPM_G2P_MODE_VELOCITY_WORK_REMAP)
+
 #define MPM_KD 1
 #include "kernel_entries.h"
 #undef MPM_KD
@@ -51,14 +70,14 @@
 #include "kernel_entries.h"
 #undef MPM_KD
 
-#define MPM_KTABLE(D)                                                                                                                                   \
-  {                                                                                                                                                     \
-    {MPM_KCAT(MPMP2G, MPM_KNAME, D, _0), MPM_KCAT(MPMP2G, MPM_KNAME, D, _1), MPM_KCAT(MPMP2G, MPM_KNAME, D, _2), MPM_KCAT(MPMP2G, MPM_KNAME, D, _3)},   \
-      {MPM_KCAT(MPMG2P, MPM_KNAME, D, _0), MPM_KCAT(MPMG2P, MPM_KNAME, D, _1), MPM_KCAT(MPMG2P, MPM_KNAME, D, _2), MPM_KCAT(MPMG2P, MPM_KNAME, D, _3),  \
-       MPM_KCAT(MPMG2P, MPM_KNAME, D, _4), MPM_KCAT(MPMG2P, MPM_KNAME, D, _5), MPM_KCAT(MPMG2P, MPM_KNAME, D, _6), MPM_KCAT(MPMG2P, MPM_KNAME, D, _7)}, \
-    {                                                                                                                                                   \
-      MPM_KCAT(MPMG2P, MPM_KNAME, D, _9), MPM_KCAT(MPMG2P, MPM_KNAME, D, _13)                                                                           \
-    }                                                                                                                                                   \
+/* The table, MPMTransferKernels_<family>[d - 1], each kernel at the index of its mode (transfer.h): p2g[MPM_P2G_MODE_STRESS]
+   = MPMP2G_<family>_<d>d_Stress, g2p_remap[MPM_G2P_MODE_VELOCITY_WORK] = MPMG2P_<family>_<d>d_VelocityWorkRemap, ... */
+#define MPM_KP2GENTRY(D, Name, M) [M] = MPM_KCAT(MPMP2G, MPM_KNAME, D, d_##Name),
+#define MPM_KG2PENTRY(D, Name, M) [M] = MPM_KCAT(MPMG2P, MPM_KNAME, D, d_##Name),
+#define MPM_KREMAPENTRY(D, Name, M) [(M) & ~MPM_G2P_REMAP] = MPM_KCAT(MPMG2P, MPM_KNAME, D, d_##Name),
+#define MPM_KTABLE(D)                                                                                                                              \
+  {                                                                                                                                                \
+    .p2g = {MPM_KP2G_MODES(MPM_KP2GENTRY, D)}, .g2p = {MPM_KG2P_MODES(MPM_KG2PENTRY, D)}, .g2p_remap = { MPM_KG2PREMAP_MODES(MPM_KREMAPENTRY, D) } \
   }
 #define MPM_KTABLES_(name) static const MPMTransferKernels MPMTransferKernels_##name[3] = {MPM_KTABLE(1), MPM_KTABLE(2), MPM_KTABLE(3)};
 #define MPM_KTABLES(name) MPM_KTABLES_(name)
@@ -66,3 +85,9 @@ MPM_KTABLES(MPM_KNAME)
 #undef MPM_KTABLES
 #undef MPM_KTABLES_
 #undef MPM_KTABLE
+#undef MPM_KP2GENTRY
+#undef MPM_KG2PENTRY
+#undef MPM_KREMAPENTRY
+#undef MPM_KP2G_MODES
+#undef MPM_KG2P_MODES
+#undef MPM_KG2PREMAP_MODES
