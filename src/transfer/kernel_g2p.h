@@ -8,7 +8,7 @@
      velocity    v_p <- alpha (v_p + dv) + (1 - alpha) vpic, and the kinetic-energy fix into e_p [erg/g]
      work        e_p += MPMWorkIncrement (dt_kick (s : Lbar - (p + q) tr Lbar) / rho, Lbar = Lb / 2)
      kinematics  x_p += dt vpic,  L_p = Lp
-     remap       f_I += N_I m_p v_p with the new v_p (MPMKRemapPoint, kernel_p2g.h)
+     remap       f_I += N_I m_p v_p with the new v_p (MPMKP2GPoint's momentum, kernel_p2g.h)
    one point at a time (MPMKG2PPoint) or MPM_KLANES points in vector lanes (MPMKG2PLanes). The operations and their
    order are those of the generic reference (MPMGatherGeneric). */
 
@@ -77,7 +77,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
     }
   }
   MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p, vpic, dv, dv2, R, Lp, Lb, mode);
-  if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKRemapPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p, ns, node, W, SG, mirror, 1);
+  if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p, ns, node, W, NULL, SG, MPM_P2G_REMAP, mirror, 1);
 }
 
 #if defined(MPM_KLANES)
@@ -128,7 +128,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
       Lbl[i] = Lb[i][l];
     }
     MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p0 + l, vpicl, dvl, dv2[l], R[l], Lpl, Lbl, mode);
-    if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKRemapPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p0 + l, MPM_KS, &node[0][l], &W[0][l], NULL, 0, MPM_KLANES);
+    if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p0 + l, MPM_KS, &node[0][l], &W[0][l], NULL, NULL, MPM_P2G_REMAP, 0, MPM_KLANES);
   }
 }
 #endif

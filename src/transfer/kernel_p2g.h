@@ -8,18 +8,21 @@
      pressure  f_I += s_I V_p (p_p + q_p) grad N_I
      stress    f_I += s_I (-V_p sigma_p) grad N_I,  -V sigma = V ((p + q) I - s)  (MPMStressForceMatrix)
    point by point (MPMKP2GPoint) or by runs of same-cell points whose node sums stay in registers (MPMKP2GRuns).
-   MPMKRemapPoint is the same momentum product into f_I, the MUSL remap's, for grid to points (kernel_g2p.h). The
+   MPMKP2GPoint with MPM_P2G_REMAP is the momentum product alone into f_I, the MUSL remap's, for grid to points. The
    operations and their order are those of the generic reference (src/transfer/transfer.c, MPMScatterGeneric). */
 
-/* One point's m_I += N_I m_p, (mv)_I += N_I m_p v_p and, by mode, its point pressure force and stress force, over its ns
-   stencil entries; SG (the mirror signs) is read only when mirror is set. */
-MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, MPMNode *nodes, PetscInt p, const PetscInt ns, const PetscInt node[MPM_KS], const PetscReal W[MPM_KS], const PetscReal DW[MPM_KS][MPM_KD],
-                                                              const PetscReal SG[MPM_KS][MPM_KD], const int mode, const int mirror)
+/* One point's m_I += N_I m_p, w2_I += N_I^2, (mv)_I += s_I N_I m_p v_p and, by mode, its point pressure force and
+   stress force, over its ns stencil entries; SG (the mirror signs) is read only when mirror is set. With MPM_P2G_REMAP
+   (the MUSL remap's momentum fused into grid to points, after the point's finish with its new velocity) only the
+   momentum product, into f_I: the remap's own scatter's products in point order, the same bits. Entry a's node and
+   weight are node[a ls] and W[a ls] (one point's arrays, ls = 1, or one lane of a group's, ls = MPM_KLANES). */
+MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, MPMNode *nodes, PetscInt p, const PetscInt ns, const PetscInt *node, const PetscReal *W, const PetscReal DW[MPM_KS][MPM_KD], const PetscReal SG[MPM_KS][MPM_KD],
+                                                              const int mode, const int mirror, const PetscInt ls)
 {
   const PetscInt D = MPM_KD;
   /* the point's values in locals, read once: a store to a node may alias any double array, so the compiler would
      otherwise load them again after every node update */
-  const PetscReal mp = A->m[p], Vp = A->V[p], P = (mode & MPM_P2G_PRESSURE) ? A->pr[p] + A->q[p] : 0.0;
+  const PetscReal mp = A->m[p], Vp = (mode & (MPM_P2G_PRESSURE | MPM_P2G_STRESS)) ? A->V[p] : 0.0, P = (mode & MPM_P2G_PRESSURE) ? A->pr[p] + A->q[p] : 0.0;
   PetscReal       vp[MPM_KD], Sp[MPM_KD * MPM_KD];
 
   for (PetscInt k = 0; k < D; k++) vp[k] = A->v[p * D + k];
@@ -28,11 +31,14 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
   if (mode & MPM_P2G_STRESS) /* -V sigma = V ((p + q) I - s), formed once (MPMStressForceMatrix; p + q = 0 where the cell rule takes it) */
     MPMStressForceMatrix(D, Vp, P, Sp);
   for (PetscInt a = 0; a < ns; a++) {
-    MPMNode        *nd = &nodes[node[a]];
-    const PetscReal wm = W[a] * mp;
-    nd->m += wm;
-    nd->w2 += W[a] * W[a];
-    for (PetscInt k = 0; k < D; k++) nd->p[k] += (mirror ? SG[a][k] : 1.0) * wm * vp[k];
+    MPMNode        *nd = &nodes[node[a * ls]];
+    PetscScalar    *mv = (mode & MPM_P2G_REMAP) ? nd->f : nd->p;
+    const PetscReal wm = W[a * ls] * mp;
+    if (!(mode & MPM_P2G_REMAP)) {
+      nd->m += wm;
+      nd->w2 += W[a * ls] * W[a * ls];
+    }
+    for (PetscInt k = 0; k < D; k++) mv[k] += (mirror ? SG[a][k] : 1.0) * wm * vp[k];
     if (mode & MPM_P2G_STRESS)
       for (PetscInt k = 0; k < D; k++) {
         PetscReal sgr = 0.0;
@@ -44,25 +50,6 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
   }
 }
 
-/* The MUSL remap's momentum of point p fused into grid to points (mode MPM_G2P_REMAP), after its finish: f_I += N_I m_p v_p
-   with its new velocity, MPMKP2GPoint's (mv)_I products in point order (the same bits as the remap's own scatter). Entry
-   a's node and weight are node[a ls] and W[a ls] (one point's arrays, ls = 1, or one lane of a group's); SG is read only
-   when mirror is set. */
-MPM_KINLINE void MPM_KCAT(MPMKRemapPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, MPMNode *nodes, PetscInt p, const PetscInt ns, const PetscInt *node, const PetscReal *W, const PetscReal SG[MPM_KS][MPM_KD], const int mirror,
-                                                                const PetscInt ls)
-{
-  const PetscInt  D  = MPM_KD;
-  const PetscReal mp = A->m[p];
-  PetscReal       vp[MPM_KD];
-
-  for (PetscInt k = 0; k < D; k++) vp[k] = A->v[p * D + k];
-  for (PetscInt a = 0; a < ns; a++) {
-    MPMNode        *nd = &nodes[node[a * ls]];
-    const PetscReal wm = W[a * ls] * mp;
-    for (PetscInt k = 0; k < D; k++) nd->f[k] += (mirror ? SG[a][k] : 1.0) * wm * vp[k];
-  }
-}
-
 /* One point of points to grid: its stencil, then MPMKP2GPoint, with the mirror signs only where the stencil has one. */
 MPM_KINLINE void MPM_KCAT(MPMKP2GOne, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const void *ctx, const MPMTransferArgs *A, MPMNode *nodes, PetscInt p, const int mode)
 {
@@ -71,9 +58,9 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GOne, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, co
   const int mirror = MPM_KEVAL(g, ctx, A, p, node, W, DW, SG, ns);
 
   if (mirror)
-    MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 1);
+    MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 1, 1);
   else
-    MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 0);
+    MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 0, 1);
 }
 
 #if !defined(MPM_KSTENCIL) && defined(__GNUC__) && defined(PETSC_USE_REAL_DOUBLE) && (MPM_KS & (MPM_KS - 1)) == 0
@@ -230,7 +217,7 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GLoop, MPM_KNAME, MPM_KD, d)(const MPMGrid *gin,
       PetscInt  nodel[MPM_KS];
       PetscReal Wl[MPM_KS], DWl[MPM_KS][MPM_KD];
       MPM_KCAT(MPMKLaneOut, MPM_KNAME, MPM_KD, d)(l, node, W, DW, nodel, Wl, DWl);
-      MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS, nodel, Wl, DWl, NULL, mode, 0);
+      MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS, nodel, Wl, DWl, NULL, mode, 0, 1);
     }
   }
 #endif

@@ -13,7 +13,8 @@
 enum {
   MPM_P2G_PRESSURE = 1, /* f_I += V_p (p_p + q_p) grad N_I(x_p): point-by-point pressure force */
   MPM_P2G_STRESS   = 2, /* f_I -= V_p s_p . grad N_I(x_p): a strength model's stress           */
-  MPM_P2G_NMODES   = 4
+  MPM_P2G_NMODES   = 4,
+  MPM_P2G_REMAP    = 4 /* within a kernel: the momentum product alone, into f_I (the MUSL remap's, in grid to points) */
 };
 typedef enum {
   MPM_P2G_MODE_MASS            = 0, /* m_I and (mv)_I only (the output's projection; the cell rule without strength) */
