@@ -19,13 +19,9 @@
 #endif
 /* A tensor-product family's grid-to-points kernel takes MPM_KLANES points at once, one vector lane each (GCC and clang
    vector extensions: the same IEEE operations per lane, no contraction with -ffp-contract=off, so the same bits).
-   The lanes per dimension, MPM_KLANES_<d>, measured where the target has 32 vector registers (AVX-512):
-     1D  eight (1.2 times faster than four on weak Sod);
-     2D  four (eight: 0.91 on the 2D bar, 1.03 on 2D gas problems with linear shapes; the larger loss decides);
-     3D  eight for the tent family (its stencils in vector lanes, MPM_KBASIS_TENT: 1.05 on the 3D block, 1.01 to 1.04
-         on a linear 3D Sedov blast and anvil, not tuned on), four for the others (eight: 0.95 on the B-spline block,
-         whose 27-entry stencils are evaluated lane by lane).
-   Elsewhere two (16 registers: four lanes spill, measured slower). */
+   The lanes per dimension, MPM_KLANES_<d>, where the target has 32 vector registers (AVX-512): eight in 1D, four in 2D,
+   in 3D eight for the tent family (its stencils in vector lanes, MPM_KBASIS_TENT) and four for the others; elsewhere
+   two (16 registers). The measurements behind these numbers are in docs/performance.md (Kernel design notes). */
 #if defined(__GNUC__) && defined(PETSC_USE_REAL_DOUBLE) && !defined(MPM_KSTENCIL)
 #  define MPM_KVECTOR
 #  if defined(__AVX512VL__)
@@ -45,24 +41,43 @@
 #define MPM_KCAT_(a, b, c, d) a##_##b##_##c##d
 #define MPM_KCAT(a, b, c, d) MPM_KCAT_(a, b, c, d)
 
+/* The modes a family's kernels are made for (transfer.h), each as (the name in its kernel's name, its mode). */
+#define MPM_KP2G_MODES(X, D)            \
+  X(D, Mass, MPM_P2G_MODE_MASS)         \
+  X(D, Pressure, MPM_P2G_MODE_PRESSURE) \
+  X(D, Stress, MPM_P2G_MODE_STRESS)     \
+  X(D, PressureStress, MPM_P2G_MODE_PRESSURE_STRESS)
+#define MPM_KG2P_MODES(X, D)                                 \
+  X(D, Sums, MPM_G2P_MODE_SUMS)                              \
+  X(D, Velocity, MPM_G2P_MODE_VELOCITY)                      \
+  X(D, Kinematics, MPM_G2P_MODE_KINEMATICS)                  \
+  X(D, VelocityKinematics, MPM_G2P_MODE_VELOCITY_KINEMATICS) \
+  X(D, Work, MPM_G2P_MODE_WORK)                              \
+  X(D, VelocityWork, MPM_G2P_MODE_VELOCITY_WORK)             \
+  X(D, KinematicsWork, MPM_G2P_MODE_KINEMATICS_WORK)         \
+  X(D, VelocityKinematicsWork, MPM_G2P_MODE_VELOCITY_KINEMATICS_WORK)
+#define MPM_KG2PREMAP_MODES(X, D)                  \
+  X(D, VelocityRemap, MPM_G2P_MODE_VELOCITY_REMAP) \
+  X(D, VelocityWorkRemap, MPM_G2P_MODE_VELOCITY_WORK_REMAP)
+
 #define MPM_KD 1
-#include "kernels_body.h"
+#include "kernel_entries.h"
 #undef MPM_KD
 #define MPM_KD 2
-#include "kernels_body.h"
+#include "kernel_entries.h"
 #undef MPM_KD
 #define MPM_KD 3
-#include "kernels_body.h"
+#include "kernel_entries.h"
 #undef MPM_KD
 
-#define MPM_KTABLE(D)                                                                                                                                   \
-  {                                                                                                                                                     \
-    {MPM_KCAT(MPMP2G, MPM_KNAME, D, _0), MPM_KCAT(MPMP2G, MPM_KNAME, D, _1), MPM_KCAT(MPMP2G, MPM_KNAME, D, _2), MPM_KCAT(MPMP2G, MPM_KNAME, D, _3)},   \
-      {MPM_KCAT(MPMG2P, MPM_KNAME, D, _0), MPM_KCAT(MPMG2P, MPM_KNAME, D, _1), MPM_KCAT(MPMG2P, MPM_KNAME, D, _2), MPM_KCAT(MPMG2P, MPM_KNAME, D, _3),  \
-       MPM_KCAT(MPMG2P, MPM_KNAME, D, _4), MPM_KCAT(MPMG2P, MPM_KNAME, D, _5), MPM_KCAT(MPMG2P, MPM_KNAME, D, _6), MPM_KCAT(MPMG2P, MPM_KNAME, D, _7)}, \
-    {                                                                                                                                                   \
-      MPM_KCAT(MPMG2P, MPM_KNAME, D, _9), MPM_KCAT(MPMG2P, MPM_KNAME, D, _13)                                                                           \
-    }                                                                                                                                                   \
+/* The table, MPMTransferKernels_<family>[d - 1], each kernel at the index of its mode (transfer.h): p2g[MPM_P2G_MODE_STRESS]
+   = MPMP2G_<family>_<d>d_Stress, g2p_remap[MPM_G2P_MODE_VELOCITY_WORK] = MPMG2P_<family>_<d>d_VelocityWorkRemap, ... */
+#define MPM_KP2GENTRY(D, Name, M) [M] = MPM_KCAT(MPMP2G, MPM_KNAME, D, d_##Name),
+#define MPM_KG2PENTRY(D, Name, M) [M] = MPM_KCAT(MPMG2P, MPM_KNAME, D, d_##Name),
+#define MPM_KREMAPENTRY(D, Name, M) [(M) & ~MPM_G2P_REMAP] = MPM_KCAT(MPMG2P, MPM_KNAME, D, d_##Name),
+#define MPM_KTABLE(D)                                                                                                                              \
+  {                                                                                                                                                \
+    .p2g = {MPM_KP2G_MODES(MPM_KP2GENTRY, D)}, .g2p = {MPM_KG2P_MODES(MPM_KG2PENTRY, D)}, .g2p_remap = { MPM_KG2PREMAP_MODES(MPM_KREMAPENTRY, D) } \
   }
 #define MPM_KTABLES_(name) static const MPMTransferKernels MPMTransferKernels_##name[3] = {MPM_KTABLE(1), MPM_KTABLE(2), MPM_KTABLE(3)};
 #define MPM_KTABLES(name) MPM_KTABLES_(name)
@@ -70,3 +85,9 @@ MPM_KTABLES(MPM_KNAME)
 #undef MPM_KTABLES
 #undef MPM_KTABLES_
 #undef MPM_KTABLE
+#undef MPM_KP2GENTRY
+#undef MPM_KG2PENTRY
+#undef MPM_KREMAPENTRY
+#undef MPM_KP2G_MODES
+#undef MPM_KG2P_MODES
+#undef MPM_KG2PREMAP_MODES

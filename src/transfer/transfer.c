@@ -535,7 +535,7 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
                                 .ectx      = &ex,
                                 .threshold = mpm->isentrope_threshold};
     if (remap) { /* f_I, zeroed by the kick (MPMGridAdvance, and the ghosts from their owners), takes the remap's momenta (MPMRemapApply) */
-      mpm->kern->g2p_remap[work ? 1 : 0](g, mpm->shape->data, &A, node);
+      mpm->kern->g2p_remap[work ? MPM_G2P_MODE_VELOCITY_WORK : MPM_G2P_MODE_VELOCITY](g, mpm->shape->data, &A, node);
     } else if (mpm->kern) {
       mpm->kern->g2p[(velocity ? MPM_G2P_VELOCITY : 0) | (kinematics ? MPM_G2P_KINEMATICS : 0) | (work ? MPM_G2P_WORK : 0)](g, mpm->shape->data, &A, node);
     } else if (d == 3)

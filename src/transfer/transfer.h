@@ -8,14 +8,23 @@
 #pragma once
 #include "grid/gridimpl.h"
 
-/* What a points-to-grid kernel scatters besides m_I and (mv)_I: a bit mask indexing MPMTransferKernels::p2g. */
+/* What a points-to-grid kernel scatters besides m_I and (mv)_I: bits, and the modes they make, each a kernel and its
+   index in MPMTransferKernels::p2g. */
 enum {
   MPM_P2G_PRESSURE = 1, /* f_I += V_p (p_p + q_p) grad N_I(x_p): point-by-point pressure force */
   MPM_P2G_STRESS   = 2, /* f_I -= V_p s_p . grad N_I(x_p): a strength model's stress           */
-  MPM_P2G_NMODES   = 4
+  MPM_P2G_NMODES   = 4,
+  MPM_P2G_REMAP    = 4 /* within a kernel: the momentum product alone, into f_I (the MUSL remap's, in grid to points) */
 };
+typedef enum {
+  MPM_P2G_MODE_MASS            = 0, /* m_I and (mv)_I only (the output's projection; the cell rule without strength) */
+  MPM_P2G_MODE_PRESSURE        = MPM_P2G_PRESSURE,
+  MPM_P2G_MODE_STRESS          = MPM_P2G_STRESS, /* the cell rule with strength */
+  MPM_P2G_MODE_PRESSURE_STRESS = MPM_P2G_PRESSURE | MPM_P2G_STRESS
+} MPMP2GMode;
 
-/* What a grid-to-points kernel updates: a bit mask indexing MPMTransferKernels::g2p. */
+/* What a grid-to-points kernel updates: bits, and the modes they make, each a kernel and its index in
+   MPMTransferKernels::g2p (g2p_remap for the modes with MPM_G2P_REMAP). */
 enum {
   MPM_G2P_VELOCITY   = 1, /* v_p (FLIP/PIC blend) and the kinetic-energy fix                   */
   MPM_G2P_KINEMATICS = 2, /* x_p += dt v_pic, L_p = sum v_I (x) grad N_I                        */
@@ -24,6 +33,18 @@ enum {
   MPM_G2P_REMAP      = 8, /* with velocity: f_I += N_I m_p v_p^{n+1}, the MUSL remap's momentum (g2p_remap)  */
   MPM_G2P_FLIP       = 16 /* within a kernel, with velocity: alpha = 1 (pure FLIP), whose fix has no PIC term R  */
 };
+typedef enum {
+  MPM_G2P_MODE_SUMS                     = 0, /* the stencil sums only, nothing written (never asked for) */
+  MPM_G2P_MODE_VELOCITY                 = MPM_G2P_VELOCITY,
+  MPM_G2P_MODE_KINEMATICS               = MPM_G2P_KINEMATICS,
+  MPM_G2P_MODE_VELOCITY_KINEMATICS      = MPM_G2P_VELOCITY | MPM_G2P_KINEMATICS,
+  MPM_G2P_MODE_WORK                     = MPM_G2P_WORK, /* the work needs the velocity: as SUMS (never asked for) */
+  MPM_G2P_MODE_VELOCITY_WORK            = MPM_G2P_VELOCITY | MPM_G2P_WORK,
+  MPM_G2P_MODE_KINEMATICS_WORK          = MPM_G2P_KINEMATICS | MPM_G2P_WORK, /* as KINEMATICS (never asked for) */
+  MPM_G2P_MODE_VELOCITY_KINEMATICS_WORK = MPM_G2P_VELOCITY | MPM_G2P_KINEMATICS | MPM_G2P_WORK,
+  MPM_G2P_MODE_VELOCITY_REMAP           = MPM_G2P_VELOCITY | MPM_G2P_REMAP,
+  MPM_G2P_MODE_VELOCITY_WORK_REMAP      = MPM_G2P_VELOCITY | MPM_G2P_WORK | MPM_G2P_REMAP
+} MPMG2PMode;
 
 /* The point arrays a kernel reads and writes; entries a mode does not use may be NULL. */
 typedef struct {
@@ -68,12 +89,14 @@ static inline PetscReal MPMWorkIncrement(const MPMTransferArgs *A, PetscInt p, P
 typedef void (*MPMP2GKernel)(const MPMGrid *, const void *, const MPMTransferArgs *, MPMNode *);
 typedef void (*MPMG2PKernel)(const MPMGrid *, const void *, const MPMTransferArgs *, const MPMNode *);
 
-/* g2p_remap[w]: the MUSL step's grid to points (MPM_G2P_VELOCITY, with MPM_G2P_WORK where w = 1) fused with its remap's
-   momentum scatter: each point, its new velocity formed, adds N_I m_p v_p to f_I, which the kick has used (the products
-   and the point order of the remap's own scatter: the same bits; src/modules/remap.c). */
+/* The kernels of one family and dimension, indexed by their modes: p2g[MPMP2GMode], g2p[MPMG2PMode] and
+   g2p_remap[MPMG2PMode without MPM_G2P_REMAP], the MUSL step's grid to points (velocity, with or without the work)
+   fused with its remap's momentum scatter: each point, its new velocity formed, adds N_I m_p v_p to f_I, which the kick
+   has used (the products and the point order of the remap's own scatter: the same bits; src/modules/remap.c). The
+   other g2p_remap entries are NULL. kernels.h fills the tables. */
 struct _MPMTransferKernels {
   MPMP2GKernel p2g[MPM_P2G_NMODES];
   MPMG2PKernel g2p[MPM_G2P_NMODES];
-  MPMP2GKernel g2p_remap[2];
+  MPMP2GKernel g2p_remap[MPM_G2P_NMODES];
 };
 

@@ -1,0 +1,196 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* Grid to points for dimension MPM_KD (kernel_entries.h includes this once per dimension). Point p's sums over its
+   stencil of the grid velocity v_I [cm/s] (MPMNode::p after the advance) and its change over the step dv_I = v_I - v_I^n
+   (s_Ik the mirror sign of component k, kernel_stencil.h, applied to both):
+     vpic = sum N_I v_I,   dv = sum N_I dv_I,   dv2 = sum N_I |dv_I|^2,   R = sum N_I (v_I^n - v_p) . v_I
+     Lp   = sum v_I (x) grad N_I [1/s],   Lb = sum (2 v_I - dv_I) (x) grad N_I = sum (v_I + v_I^n) (x) grad N_I
+   then by mode (MPM_G2P_*; MPMKG2PFinish, the formulas at MPMGather in src/transfer/transfer.c)
+     velocity    v_p <- alpha (v_p + dv) + (1 - alpha) vpic, and the kinetic-energy fix into e_p [erg/g]
+     work        e_p += MPMWorkIncrement (dt_kick (s : Lbar - (p + q) tr Lbar) / rho, Lbar = Lb / 2)
+     kinematics  x_p += dt vpic,  L_p = Lp
+     remap       f_I += N_I m_p v_p with the new v_p (MPMKP2GPoint's momentum, kernel_p2g.h)
+   one point at a time (MPMKG2PPoint) or MPM_KLANES points in vector lanes (MPMKG2PLanes). The operations and their
+   order are those of the generic reference (MPMGatherGeneric). */
+
+/* The grid velocity back to one point, by mode (see MPMGather for the formulas): the finish, from the point's stencil sums
+   (vpic = sum N v_I, dv = sum N dv_I, dv2 = sum N |dv_I|^2, R, Lp = sum v_I (x) grad N, Lb = sum (2 v_I - dv_I) (x) grad N). */
+MPM_KINLINE void MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, PetscInt p, const PetscReal vpic[MPM_KD], const PetscReal dv[MPM_KD], PetscReal dv2, PetscReal R, const PetscReal Lp[MPM_KD * MPM_KD],
+                                                               const PetscReal Lb[MPM_KD * MPM_KD], const int mode)
+{
+  const PetscInt   D        = MPM_KD;
+  const PetscBool  velocity = (PetscBool)(mode & MPM_G2P_VELOCITY), kinematics = (PetscBool)(mode & MPM_G2P_KINEMATICS), work = (PetscBool)(mode & MPM_G2P_WORK);
+  PetscReal       *x = A->x, *v = A->v, *L = A->L, *e = A->e;
+  const PetscReal *S = A->S, alpha = A->alpha;
+
+  if (velocity) {
+    PetscReal share = 0.5 * dv2, gain = 0.0;
+    for (PetscInt i = 0; i < D; i++) {
+      const PetscReal vn = alpha * (v[p * D + i] + dv[i]) + (1.0 - alpha) * vpic[i];
+      share += v[p * D + i] * dv[i];
+      gain += 0.5 * (vn * vn - v[p * D + i] * v[p * D + i]);
+      v[p * D + i] = vn;
+    }
+    if (A->kefix) e[p] += share - gain + ((mode & MPM_G2P_FLIP) ? 0.0 : (1.0 - alpha) * R); /* pure FLIP: 0 R = 0, R not summed */
+    if (work) {
+      PetscReal sL = 0.0, div = 0.0;
+      if (A->pointwork)
+        div = A->pointwork[p];
+      else
+        for (PetscInt i = 0; i < D; i++) div += Lb[i * D + i];
+      if (A->stress)
+        for (PetscInt i = 0; i < D * D; i++) sL += S[p * D * D + i] * Lb[i];
+      e[p] += MPMWorkIncrement(A, p, e[p], sL, div);
+    }
+  }
+  if (kinematics) {
+    for (PetscInt i = 0; i < D; i++) x[p * D + i] += A->dt * vpic[i];
+    for (PetscInt i = 0; i < D * D; i++) L[p * D * D + i] = Lp[i];
+  }
+}
+
+/* One point's stencil sums over its ns entries, then the finish; SG read only when mirror is set. */
+MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, const MPMNode *nodes, PetscInt p, const PetscInt ns, const PetscInt node[MPM_KS], const PetscReal W[MPM_KS], const PetscReal DW[MPM_KS][MPM_KD],
+                                                              const PetscReal SG[MPM_KS][MPM_KD], const int mode, const int mirror)
+{
+  const PetscInt   D        = MPM_KD;
+  const PetscBool  velocity = (PetscBool)(mode & MPM_G2P_VELOCITY), kinematics = (PetscBool)(mode & MPM_G2P_KINEMATICS), work = (PetscBool)(mode & MPM_G2P_WORK);
+  const PetscReal *v            = A->v;
+  PetscReal        vpic[MPM_KD] = {0}, dv[MPM_KD] = {0}, Lp[MPM_KD * MPM_KD] = {0}, Lb[MPM_KD * MPM_KD] = {0}, dv2 = 0.0, R = 0.0;
+
+  for (PetscInt a = 0; a < ns; a++) {
+    const MPMNode *nd = &nodes[node[a]];
+    for (PetscInt i = 0; i < D; i++) {
+      const PetscReal vI = (mirror ? SG[a][i] : 1.0) * nd->p[i];
+      vpic[i] += W[a] * vI;
+      if (velocity || work) {
+        const PetscReal dvI = (mirror ? SG[a][i] : 1.0) * (nd->p[i] - nd->v0[i]);
+        if (velocity) {
+          dv[i] += W[a] * dvI;
+          dv2 += W[a] * dvI * dvI;
+          if (!(mode & MPM_G2P_FLIP)) R += W[a] * (vI - dvI - v[p * D + i]) * vI;
+        }
+        if (work)
+          for (PetscInt j = 0; j < D; j++) Lb[i * D + j] += (2.0 * vI - dvI) * DW[a][j];
+      }
+      if (kinematics)
+        for (PetscInt j = 0; j < D; j++) Lp[i * D + j] += vI * DW[a][j];
+    }
+  }
+  MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p, vpic, dv, dv2, R, Lp, Lb, mode);
+  if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p, ns, node, W, NULL, SG, MPM_P2G_REMAP, mirror, 1);
+}
+
+#if defined(MPM_KLANES)
+/* MPM_KLANES points at once, none with a mirrored entry: the stencil sums of MPMKG2PPoint with one vector lane per point
+   (the same operations in the same order in every lane, so the same bits as point by point), then each point's finish. */
+MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, const MPMNode *nodes, PetscInt p0, const PetscInt node[MPM_KS][MPM_KLANES], const PetscReal W[MPM_KS][MPM_KLANES], const PetscReal DW[MPM_KS][MPM_KD][MPM_KLANES],
+                                                              const int mode)
+{
+  const PetscInt  D        = MPM_KD;
+  const PetscBool velocity = (PetscBool)(mode & MPM_G2P_VELOCITY), kinematics = (PetscBool)(mode & MPM_G2P_KINEMATICS), work = (PetscBool)(mode & MPM_G2P_WORK);
+  MPM_KVEC        vpic[MPM_KD] = {0}, dv[MPM_KD] = {0}, Lp[MPM_KD * MPM_KD] = {0}, Lb[MPM_KD * MPM_KD] = {0}, dv2 = {0}, R = {0}, vp[MPM_KD];
+
+  for (PetscInt i = 0; i < D; i++) vp[i] = MPM_KLANE(&A->v[p0 * D + i], D);
+  for (PetscInt a = 0; a < MPM_KS; a++) {
+    const MPM_KVEC w = MPM_KLANE(W[a], 1);
+    MPM_KVEC       dw[MPM_KD];
+    for (PetscInt j = 0; j < D; j++) dw[j] = MPM_KLANE(DW[a][j], 1);
+    for (PetscInt i = 0; i < D; i++) {
+      PetscReal vl[MPM_KLANES], v0l[MPM_KLANES];
+      for (PetscInt l = 0; l < MPM_KLANES; l++) {
+        vl[l]  = nodes[node[a][l]].p[i];
+        v0l[l] = nodes[node[a][l]].v0[i];
+      }
+      const MPM_KVEC vI = MPM_KLANE(vl, 1), v0I = MPM_KLANE(v0l, 1);
+      vpic[i] += w * vI;
+      if (velocity || work) {
+        const MPM_KVEC dvI = vI - v0I;
+        if (velocity) {
+          dv[i] += w * dvI;
+          dv2 += w * dvI * dvI;
+          if (!(mode & MPM_G2P_FLIP)) R += w * (vI - dvI - vp[i]) * vI;
+        }
+        if (work)
+          for (PetscInt j = 0; j < D; j++) Lb[i * D + j] += (2.0 * vI - dvI) * dw[j];
+      }
+      if (kinematics)
+        for (PetscInt j = 0; j < D; j++) Lp[i * D + j] += vI * dw[j];
+    }
+  }
+  for (PetscInt l = 0; l < MPM_KLANES; l++) {
+    PetscReal vpicl[MPM_KD], dvl[MPM_KD], Lpl[MPM_KD * MPM_KD], Lbl[MPM_KD * MPM_KD];
+    for (PetscInt i = 0; i < D; i++) {
+      vpicl[i] = vpic[i][l];
+      dvl[i]   = dv[i][l];
+    }
+    for (PetscInt i = 0; i < D * D; i++) {
+      Lpl[i] = Lp[i][l];
+      Lbl[i] = Lb[i][l];
+    }
+    MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p0 + l, vpicl, dvl, dv2[l], R[l], Lpl, Lbl, mode);
+    if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p0 + l, MPM_KS, &node[0][l], &W[0][l], NULL, NULL, MPM_P2G_REMAP, 0, MPM_KLANES);
+  }
+}
+#endif
+
+/* One point of grid to points: its stencil, then MPMKG2PPoint, with the mirror signs only where the stencil has one. */
+MPM_KINLINE void MPM_KCAT(MPMKG2POne, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const void *ctx, const MPMTransferArgs *A, MPMNode *nodes, PetscInt p, const int mode)
+{
+  PetscInt  node[MPM_KS], ns = MPM_KS;
+  PetscReal W[MPM_KS], DW[MPM_KS][MPM_KD], SG[MPM_KS][MPM_KD];
+  const int mirror = MPM_KEVAL(g, ctx, A, p, node, W, DW, SG, ns);
+
+  if (mirror)
+    MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 1);
+  else
+    MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 0);
+}
+
+/* The grid-to-points loop over the points, with no mode branch left inside: MPM_KLANES points at a time where none
+   has a mirrored entry (a tensor-product family; the linear family's stencils in vector lanes, MPMKStencilTent), else
+   point by point (a group with a mirrored entry, at a wall, with the stencils it evaluated). */
+MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *gin, const void *ctx, const MPMTransferArgs *Ain, MPMNode *nodes, const int mode)
+{
+  /* local copies: the grid's and the arguments' doubles (lo, h, dt, ...) stay in registers across the node updates */
+  const MPMGrid         gl = *gin, *g = &gl;
+  const MPMTransferArgs Al = *Ain, *A = &Al;
+  PetscInt              p = 0;
+
+#if defined(MPM_KLANES)
+  for (; p + MPM_KLANES <= A->n; p += MPM_KLANES) {
+    PetscInt  node[MPM_KS][MPM_KLANES]; /* each entry's lanes side by side (MPMKStencilStrided) */
+    PetscReal W[MPM_KS][MPM_KLANES], DW[MPM_KS][MPM_KD][MPM_KLANES], SG[MPM_KLANES][MPM_KS][MPM_KD];
+    PetscBool mirror[MPM_KLANES], any = PETSC_FALSE;
+#  if defined(MPM_KTENT)
+    if (!MPM_KCAT(MPMKStencilTent, MPM_KNAME, MPM_KD, d)(g, A->x, p, node, W, DW)) /* near a wall or a free face: lane by lane, folded */
+#  endif
+      for (PetscInt l = 0; l < MPM_KLANES; l++) {
+        mirror[l] = MPM_KCAT(MPMKStencilStrided, MPM_KNAME, MPM_KD, d)(g, &A->x[(p + l) * MPM_KD], &node[0][l], &W[0][l], &DW[0][0][l], SG[l], MPM_KLANES, MPM_KD * MPM_KLANES, MPM_KLANES);
+        any       = (PetscBool)(any || mirror[l]);
+      }
+    if (!any)
+      MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(A, nodes, p, node, W, DW, mode);
+    else /* a wall beside the group: each point on its own, with the stencil already evaluated (its lane copied out) */
+      for (PetscInt l = 0; l < MPM_KLANES; l++) {
+        PetscInt  nodel[MPM_KS];
+        PetscReal Wl[MPM_KS], DWl[MPM_KS][MPM_KD];
+        MPM_KCAT(MPMKLaneOut, MPM_KNAME, MPM_KD, d)(l, node, W, DW, nodel, Wl, DWl);
+        if (mirror[l])
+          MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS, nodel, Wl, DWl, SG[l], mode, 1);
+        else
+          MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS, nodel, Wl, DWl, SG[l], mode, 0);
+      }
+  }
+#endif
+  for (; p < A->n; p++) MPM_KCAT(MPMKG2POne, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, p, mode);
+}
+
+/* The loop, with pure FLIP (alpha = 1, the default update) a mode of its own (MPM_G2P_FLIP): its kinetic-energy fix
+   drops the PIC term (1 - alpha) R_p, 0 R_p = 0, so R_p's stencil sum is not formed. */
+MPM_KINLINE void MPM_KCAT(MPMKG2PLoop, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const void *ctx, const MPMTransferArgs *A, MPMNode *nodes, const int mode)
+{
+  if ((mode & MPM_G2P_VELOCITY) && A->alpha == 1.0)
+    MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, mode | MPM_G2P_FLIP);
+  else
+    MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, mode);
+}

@@ -1,0 +1,225 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* Points to grid for dimension MPM_KD (kernel_entries.h includes this once per dimension). Each point p adds to the
+   nodes I of its stencil, s_Ik the mirror sign of component k (kernel_stencil.h):
+     m_I    += N_I m_p                                [g]
+     w2_I   += N_I^2                                  [-]
+     (mv)_I += s_I N_I m_p v_p                        [g cm/s]
+   and by mode (MPM_P2G_*) the internal force [dyn]
+     pressure  f_I += s_I V_p (p_p + q_p) grad N_I
+     stress    f_I += s_I (-V_p sigma_p) grad N_I,  -V sigma = V ((p + q) I - s)  (MPMStressForceMatrix)
+   point by point (MPMKP2GPoint) or by runs of same-cell points whose node sums stay in registers (MPMKP2GRuns).
+   MPMKP2GPoint with MPM_P2G_REMAP is the momentum product alone into f_I, the MUSL remap's, for grid to points. The
+   operations and their order are those of the generic reference (src/transfer/transfer.c, MPMScatterGeneric). */
+
+/* One point's m_I += N_I m_p, w2_I += N_I^2, (mv)_I += s_I N_I m_p v_p and, by mode, its point pressure force and
+   stress force, over its ns stencil entries; SG (the mirror signs) is read only when mirror is set. With MPM_P2G_REMAP
+   (the MUSL remap's momentum fused into grid to points, after the point's finish with its new velocity) only the
+   momentum product, into f_I: the remap's own scatter's products in point order, the same bits. Entry a's node and
+   weight are node[a ls] and W[a ls] (one point's arrays, ls = 1, or one lane of a group's, ls = MPM_KLANES). */
+MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, MPMNode *nodes, PetscInt p, const PetscInt ns, const PetscInt *node, const PetscReal *W, const PetscReal DW[MPM_KS][MPM_KD], const PetscReal SG[MPM_KS][MPM_KD],
+                                                              const int mode, const int mirror, const PetscInt ls)
+{
+  const PetscInt D = MPM_KD;
+  /* the point's values in locals, read once: a store to a node may alias any double array, so the compiler would
+     otherwise load them again after every node update */
+  const PetscReal mp = A->m[p], Vp = (mode & (MPM_P2G_PRESSURE | MPM_P2G_STRESS)) ? A->V[p] : 0.0, P = (mode & MPM_P2G_PRESSURE) ? A->pr[p] + A->q[p] : 0.0;
+  PetscReal       vp[MPM_KD], Sp[MPM_KD * MPM_KD];
+
+  for (PetscInt k = 0; k < D; k++) vp[k] = A->v[p * D + k];
+  if (mode & MPM_P2G_STRESS)
+    for (PetscInt k = 0; k < D * D; k++) Sp[k] = A->S[p * D * D + k];
+  if (mode & MPM_P2G_STRESS) /* -V sigma = V ((p + q) I - s), formed once (MPMStressForceMatrix; p + q = 0 where the cell rule takes it) */
+    MPMStressForceMatrix(D, Vp, P, Sp);
+  for (PetscInt a = 0; a < ns; a++) {
+    MPMNode        *nd = &nodes[node[a * ls]];
+    PetscScalar    *mv = (mode & MPM_P2G_REMAP) ? nd->f : nd->p;
+    const PetscReal wm = W[a * ls] * mp;
+    if (!(mode & MPM_P2G_REMAP)) {
+      nd->m += wm;
+      nd->w2 += W[a * ls] * W[a * ls];
+    }
+    for (PetscInt k = 0; k < D; k++) mv[k] += (mirror ? SG[a][k] : 1.0) * wm * vp[k];
+    if (mode & MPM_P2G_STRESS)
+      for (PetscInt k = 0; k < D; k++) {
+        PetscReal sgr = 0.0;
+        for (PetscInt j = 0; j < D; j++) sgr += Sp[k * D + j] * DW[a][j];
+        nd->f[k] += (mirror ? SG[a][k] : 1.0) * sgr;
+      }
+    else if (mode & MPM_P2G_PRESSURE)
+      for (PetscInt k = 0; k < D; k++) nd->f[k] += (mirror ? SG[a][k] : 1.0) * Vp * P * DW[a][k];
+  }
+}
+
+/* One point of points to grid: its stencil, then MPMKP2GPoint, with the mirror signs only where the stencil has one. */
+MPM_KINLINE void MPM_KCAT(MPMKP2GOne, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const void *ctx, const MPMTransferArgs *A, MPMNode *nodes, PetscInt p, const int mode)
+{
+  PetscInt  node[MPM_KS], ns = MPM_KS;
+  PetscReal W[MPM_KS], DW[MPM_KS][MPM_KD], SG[MPM_KS][MPM_KD];
+  const int mirror = MPM_KEVAL(g, ctx, A, p, node, W, DW, SG, ns);
+
+  if (mirror)
+    MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 1, 1);
+  else
+    MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 0, 1);
+}
+
+#if !defined(MPM_KSTENCIL) && defined(__GNUC__) && defined(PETSC_USE_REAL_DOUBLE) && (MPM_KS & (MPM_KS - 1)) == 0
+#  define MPM_KRUNS
+/* One vector of a value per stencil entry (MPM_KS a power of two: the linear family's 2, 4 and 8 entries). */
+typedef PetscReal MPM_KCAT(MPMKRow, MPM_KNAME, MPM_KD, d) __attribute__((vector_size(MPM_KS * sizeof(PetscReal))));
+#  define MPM_KROW MPM_KCAT(MPMKRow, MPM_KNAME, MPM_KD, d)
+
+/* Points to grid by runs: consecutive points with the same stencil nodes (sorted points: a cell's points) sum into the
+   nodes' values held in registers, one vector per field with a lane per stencil entry, loaded at the run's start and
+   stored at its end. Each node gets the same additions in the same order as point by point (MPMKP2GPoint: the same
+   bits) without a load and a store per point and node. A point with a mirrored or a clamped entry (at a wall, at a
+   free face) ends the run and goes point by point (MPMKP2GOne). */
+MPM_KINLINE void MPM_KCAT(MPMKP2GRuns, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const MPMTransferArgs *A, MPMNode *nodes, const int mode)
+{
+  const PetscInt  D     = MPM_KD;
+  const PetscBool force = (PetscBool)(mode & (MPM_P2G_STRESS | MPM_P2G_PRESSURE));
+  /* the span node[MPM_KS - 1] - node[0] of a stencil whose every direction has MPM_KNB distinct nodes */
+  const PetscInt span = (MPM_KNB - 1) * (1 + (D > 1 ? g->gm[0] : 0) + (D > 2 ? g->gm[0] * g->gm[1] : 0));
+  PetscInt       run[MPM_KS], open = 0;
+  MPM_KROW       am = {0}, aw = {0}, ap[MPM_KD] = {{0}}, af[MPM_KD] = {{0}};
+
+  /* lane a of the run's sums stored to its node; node i's values loaded into lane a; lane b's moved to lane a */
+#  define MPM_KRUN_STORE(a)                                           \
+    do {                                                              \
+      MPMNode *nd_ = &nodes[run[a]];                                  \
+      nd_->m       = am[a];                                           \
+      nd_->w2      = aw[a];                                           \
+      for (PetscInt k = 0; k < D; k++) nd_->p[k] = ap[k][a];          \
+      for (PetscInt k = 0; force && k < D; k++) nd_->f[k] = af[k][a]; \
+    } while (0)
+#  define MPM_KRUN_LOAD(a, i)                                         \
+    do {                                                              \
+      const MPMNode *nd_ = &nodes[i];                                 \
+      run[a]             = (i);                                       \
+      am[a]              = nd_->m;                                    \
+      aw[a]              = nd_->w2;                                   \
+      for (PetscInt k = 0; k < D; k++) ap[k][a] = nd_->p[k];          \
+      for (PetscInt k = 0; force && k < D; k++) af[k][a] = nd_->f[k]; \
+    } while (0)
+#  define MPM_KRUN_MOVE(a, b)                                        \
+    do {                                                             \
+      run[a] = run[b];                                               \
+      am[a]  = am[b];                                                \
+      aw[a]  = aw[b];                                                \
+      for (PetscInt k = 0; k < D; k++) ap[k][a] = ap[k][b];          \
+      for (PetscInt k = 0; force && k < D; k++) af[k][a] = af[k][b]; \
+    } while (0)
+#  define MPM_KRUN_FLUSH()                                             \
+    do {                                                               \
+      for (PetscInt a = 0; open && a < MPM_KS; a++) MPM_KRUN_STORE(a); \
+      open = 0;                                                        \
+    } while (0)
+#  if defined(MPM_KTENT)
+  PetscInt  nodeg[MPM_KS][MPM_KLANES]; /* a group of MPM_KLANES points' tent stencils, evaluated in vector lanes */
+  PetscReal Wg[MPM_KS][MPM_KLANES], DWg[MPM_KS][MPM_KD][MPM_KLANES];
+  int       tent = 0;
+#  endif
+  for (PetscInt p = 0; p < A->n; p++) {
+    PetscInt  node[MPM_KS];
+    PetscReal W[MPM_KS], DW[MPM_KD][MPM_KS], SG[MPM_KS][MPM_KD];
+    int       mirror = 0;
+#  if defined(MPM_KTENT)
+    const PetscInt l = p % MPM_KLANES;
+    if (!l) tent = p + MPM_KLANES <= A->n && MPM_KCAT(MPMKStencilTent, MPM_KNAME, MPM_KD, d)(g, A->x, p, nodeg, Wg, DWg);
+    if (tent) /* the point's entries out of its lane: the same numbers */
+      for (PetscInt a = 0; a < MPM_KS; a++) {
+        node[a] = nodeg[a][l];
+        W[a]    = Wg[a][l];
+        for (PetscInt k = 0; k < D; k++) DW[k][a] = DWg[a][k][l];
+      }
+    else
+#  endif
+      mirror = MPM_KCAT(MPMKStencilStrided, MPM_KNAME, MPM_KD, d)(g, &A->x[p * D], node, W, &DW[0][0], SG, 1, 1, MPM_KS);
+    if (mirror || node[MPM_KS - 1] - node[0] != span) { /* a rare point: its stencil again, point by point */
+      MPM_KRUN_FLUSH();
+      MPM_KCAT(MPMKP2GOne, MPM_KNAME, MPM_KD, d)(g, NULL, A, nodes, p, mode);
+      continue;
+    }
+#  if MPM_KNB == 2
+    if (open && node[0] == run[0] + 1) { /* the next cell along x (a row of cells, one point each): its first layer of
+                                            nodes is the run's second, whose sums stay in the registers; the run's first
+                                            layer is stored and the point's second loaded */
+      for (PetscInt a = 0; a < MPM_KS; a += 2) {
+        MPM_KRUN_STORE(a);
+        MPM_KRUN_MOVE(a, a + 1);
+        MPM_KRUN_LOAD(a + 1, node[a + 1]);
+      }
+    } else
+#  endif
+      if (!open || node[0] != run[0]) {
+      MPM_KRUN_FLUSH();
+      for (PetscInt a = 0; a < MPM_KS; a++) MPM_KRUN_LOAD(a, node[a]);
+      open = 1;
+    }
+    { /* the operations of MPMKP2GPoint on every entry at once (sign 1) */
+      const PetscReal mp = A->m[p], Vp = A->V[p], P = (mode & MPM_P2G_PRESSURE) ? A->pr[p] + A->q[p] : 0.0;
+      PetscReal       vp[MPM_KD], Sp[MPM_KD * MPM_KD];
+      MPM_KROW        w, wm, dw[MPM_KD];
+      __builtin_memcpy(&w, W, sizeof(w));
+      for (PetscInt k = 0; k < D; k++) __builtin_memcpy(&dw[k], DW[k], sizeof(w));
+      for (PetscInt k = 0; k < D; k++) vp[k] = A->v[p * D + k];
+      if (mode & MPM_P2G_STRESS) {
+        for (PetscInt k = 0; k < D * D; k++) Sp[k] = A->S[p * D * D + k];
+        MPMStressForceMatrix(D, Vp, P, Sp);
+      }
+      wm = w * mp;
+      am += wm;
+      aw += w * w;
+      for (PetscInt k = 0; k < D; k++) ap[k] += 1.0 * wm * vp[k];
+      if (mode & MPM_P2G_STRESS)
+        for (PetscInt k = 0; k < D; k++) {
+          MPM_KROW sgr = {0};
+          for (PetscInt j = 0; j < D; j++) sgr += Sp[k * D + j] * dw[j];
+          af[k] += 1.0 * sgr;
+        }
+      else if (mode & MPM_P2G_PRESSURE)
+        for (PetscInt k = 0; k < D; k++) af[k] += 1.0 * Vp * P * dw[k];
+    }
+  }
+  MPM_KRUN_FLUSH();
+#  undef MPM_KRUN_FLUSH
+#  undef MPM_KRUN_STORE
+#  undef MPM_KRUN_LOAD
+#  undef MPM_KRUN_MOVE
+}
+#endif
+
+/* The points-to-grid loop over the points, with no mode branch left inside: by runs of same-cell points where the
+   scene seeds several per cell (MPMKP2GRuns), else point by point (the linear family's stencils of a group in vector
+   lanes, MPMKStencilTent), its node sums in point order. */
+MPM_KINLINE void MPM_KCAT(MPMKP2GLoop, MPM_KNAME, MPM_KD, d)(const MPMGrid *gin, const void *ctx, const MPMTransferArgs *Ain, MPMNode *nodes, const int mode)
+{
+  /* local copies: the grid's and the arguments' doubles (lo, h, dt, ...) stay in registers across the node updates */
+  const MPMGrid         gl = *gin, *g = &gl;
+  const MPMTransferArgs Al = *Ain, *A = &Al;
+  PetscInt              p = 0;
+
+#if defined(MPM_KRUNS)
+  if (A->runs) { /* runs pay where a cell holds several points; with one they only add the loads and stores of a run's start and end */
+    MPM_KCAT(MPMKP2GRuns, MPM_KNAME, MPM_KD, d)(g, A, nodes, mode);
+    return;
+  }
+#endif
+#if defined(MPM_KTENT)
+  for (; p + MPM_KLANES <= A->n; p += MPM_KLANES) { /* point by point, each group's tent stencils in vector lanes */
+    PetscInt  node[MPM_KS][MPM_KLANES];
+    PetscReal W[MPM_KS][MPM_KLANES], DW[MPM_KS][MPM_KD][MPM_KLANES];
+    if (!MPM_KCAT(MPMKStencilTent, MPM_KNAME, MPM_KD, d)(g, A->x, p, node, W, DW)) {
+      for (PetscInt l = 0; l < MPM_KLANES; l++) MPM_KCAT(MPMKP2GOne, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, p + l, mode);
+      continue;
+    }
+    for (PetscInt l = 0; l < MPM_KLANES; l++) {
+      PetscInt  nodel[MPM_KS];
+      PetscReal Wl[MPM_KS], DWl[MPM_KS][MPM_KD];
+      MPM_KCAT(MPMKLaneOut, MPM_KNAME, MPM_KD, d)(l, node, W, DW, nodel, Wl, DWl);
+      MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS, nodel, Wl, DWl, NULL, mode, 0, 1);
+    }
+  }
+#endif
+  for (; p < A->n; p++) MPM_KCAT(MPMKP2GOne, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, p, mode);
+}
