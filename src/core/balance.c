@@ -80,4 +80,3 @@ PetscErrorCode MPMGridSetOwnership(MPM mpm, PetscInt *own[])
   PetscCall(MPMMigrate(mpm));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
-

@@ -42,14 +42,14 @@ typedef struct {
 } MPMFieldDecl;
 #define MPM_MAX_TYPE_FIELDS 4
 
-#define MPM_CLASS_HEADER(Ops)                         \
-  MPI_Comm        comm;                               \
-  const MPMClass *cls;                                \
-  char            type_name[MPM_MAX_NAME];            \
-  char           *prefix;                             \
-  void           *data;                               \
-  PetscInt        nfields;                            \
-  MPMFieldDecl    field[MPM_MAX_TYPE_FIELDS];         \
+#define MPM_CLASS_HEADER(Ops)                                                                                \
+  MPI_Comm        comm;                                                                                      \
+  const MPMClass *cls;                                                                                       \
+  char            type_name[MPM_MAX_NAME];                                                                   \
+  char           *prefix;                                                                                    \
+  void           *data;                                                                                      \
+  PetscInt        nfields;                                                                                   \
+  MPMFieldDecl    field[MPM_MAX_TYPE_FIELDS];                                                                \
   PetscInt        fid[MPM_MAX_TYPE_FIELDS]; /* the point fields' indices (MPMPoints::f), -1 before set-up */ \
   Ops             ops
 #define MPM_CLASS_OPS(Obj)                                   \

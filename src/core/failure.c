@@ -16,4 +16,3 @@ PetscErrorCode MPMSetFailure(MPM mpm, const char format[], ...)
   mpm->failed = PETSC_TRUE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
-

@@ -258,7 +258,7 @@ PetscErrorCode MPMSetUp(MPM mpm)
     PetscCheck(!mpm->grid.axisym || !mpm->mat[i].strength || !mpm->mat[i].strength->needs_F, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_axisymmetric: material %s's strength model reads F, which has no hoop component here; use a hypoelastic type",
                mpm->mat[i].name);
   if (mpm->shape->needs_F || MPMPointsFieldRequired(mpm, MPM_FIELD_DEFGRAD) || (mpm->exact && mpm->exact->ops.initial)) mpm->track_F = PETSC_TRUE; /* the points carry F */
-  if (!mpm->exact->ops.evaluate && !mpm->exact->ops.checks) PetscCall(MPMRetireObject(mpm, &mpm->exact));      /* none */
+  if (!mpm->exact->ops.evaluate && !mpm->exact->ops.checks) PetscCall(MPMRetireObject(mpm, &mpm->exact));                                          /* none */
   PetscCall(MPMPointsSelectFields(mpm));
   for (PetscInt i = 0; i < mpm->nmat; i++) { /* the point state the materials' types keep */
     PetscCall(MPMPointsRegisterTypeFields(mpm, mpm->mat[i].eos));

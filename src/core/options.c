@@ -83,4 +83,3 @@ PetscErrorCode MPMCheckUnusedOptions(MPM mpm)
   PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
-

@@ -55,13 +55,13 @@ typedef struct {
   PetscInt  empty_cells_max;             /* most cells emptied inside the material at one step                         */
   PetscInt  empty_cells0;                /* such cells in the initial state (gaps between bodies), -1 before the first count */
   PetscInt  first_vacuum_step, first_empty_step;
-  PetscReal volume_fill, volume_fill_max;                   /* the points' volumes over their interior cells' volume, last and largest (global; MPMDiagnoseVacuum) */
-  PetscInt  first_overlap_step;                             /* the first diagnosis whose fill exceeded 1 + MPM_VOLUME_FILL_TOL (-1: none) */
-  PetscInt  wall_reflections;                               /* points this rank put back across a wall (MPMMigrate)              */
-  PetscInt  spalled;                                        /* point-steps whose EOS state spalled, p = 0 (this rank; MPMEOSSpalled)  */
-  PetscReal plastic_work;                                   /* sum over the steps of m_p sigma_eq d eps_p / rho_p on this rank [erg] */
-  PetscInt  rebalances;                                     /* times -mpm_balance rebuilt the grid's ownership ranges (global) */
-  PetscReal outflow[MPM_OUTFLOW_N];                         /* what left through outflow faces on this rank (MPMMigrate; MPM_OUTFLOW_*) */
+  PetscReal volume_fill, volume_fill_max; /* the points' volumes over their interior cells' volume, last and largest (global; MPMDiagnoseVacuum) */
+  PetscInt  first_overlap_step;           /* the first diagnosis whose fill exceeded 1 + MPM_VOLUME_FILL_TOL (-1: none) */
+  PetscInt  wall_reflections;             /* points this rank put back across a wall (MPMMigrate)              */
+  PetscInt  spalled;                      /* point-steps whose EOS state spalled, p = 0 (this rank; MPMEOSSpalled)  */
+  PetscReal plastic_work;                 /* sum over the steps of m_p sigma_eq d eps_p / rho_p on this rank [erg] */
+  PetscInt  rebalances;                   /* times -mpm_balance rebuilt the grid's ownership ranges (global) */
+  PetscReal outflow[MPM_OUTFLOW_N];       /* what left through outflow faces on this rank (MPMMigrate; MPM_OUTFLOW_*) */
 } MPMDiagnostics;
 
 struct _p_MPM {
@@ -71,23 +71,23 @@ struct _p_MPM {
   char                 outdir[PETSC_MAX_PATH_LEN]; /* output directory                                  */
   char                 report[PETSC_MAX_PATH_LEN]; /* JSON report file, empty for none                  */
   MPMGrid              grid;
-  PetscInt             ppc;                            /* points per cell per direction                     */
-  PetscReal            cfl;                            /* Courant number                                    */
-  PetscReal            dtmin;                          /* smallest time step before the run is stopped [s]  */
-  PetscReal            dtmin_ratio;                    /* smallest time step as a fraction of dt_peak before the run is stopped [-] */
-  PetscReal            dt_peak;                        /* largest CFL step of the run so far (checkpointed) [s] */
-  PetscReal            dvol_max;                       /* largest relative volume change of a point per step (time step limit) [-] */
-  PetscReal            accel_cfl;                      /* Courant number of the grid acceleration limit [-]          */
-  PetscReal            isentrope_threshold;            /* relative expansion per step above which e follows the isentrope [-] */
-  PetscReal            vacuum_density;                 /* points below this fraction of their material's initial density count as vacuum [-] */
-  MPMDtLimit           dt_limit;                       /* what set the current step's size */
-  PetscReal            next_id;                        /* the next unused point id (splitting)                  */
-  PetscInt             sort_interval;                  /* steps between sorts of the points by cell, 0: never  */
-  PetscInt             point_window;                   /* -mpm_point_window: points per window of the step's point phases, 0: each phase over all points */
-  PetscBool            windowed;                       /* the step runs grid to points, the point-kinematics and point-state modules and the constitutive update window by window */
-  PetscInt             output_interval;                /* steps between outputs, 0: start and end only      */
-  PetscReal            tout[MPM_MAX_OUTPUT_TIMES];     /* -mpm_output_times: steps land on them [s] */
-  PetscInt             ntout, itout;                   /* their number, the next one                */
+  PetscInt             ppc;                        /* points per cell per direction                     */
+  PetscReal            cfl;                        /* Courant number                                    */
+  PetscReal            dtmin;                      /* smallest time step before the run is stopped [s]  */
+  PetscReal            dtmin_ratio;                /* smallest time step as a fraction of dt_peak before the run is stopped [-] */
+  PetscReal            dt_peak;                    /* largest CFL step of the run so far (checkpointed) [s] */
+  PetscReal            dvol_max;                   /* largest relative volume change of a point per step (time step limit) [-] */
+  PetscReal            accel_cfl;                  /* Courant number of the grid acceleration limit [-]          */
+  PetscReal            isentrope_threshold;        /* relative expansion per step above which e follows the isentrope [-] */
+  PetscReal            vacuum_density;             /* points below this fraction of their material's initial density count as vacuum [-] */
+  MPMDtLimit           dt_limit;                   /* what set the current step's size */
+  PetscReal            next_id;                    /* the next unused point id (splitting)                  */
+  PetscInt             sort_interval;              /* steps between sorts of the points by cell, 0: never  */
+  PetscInt             point_window;               /* -mpm_point_window: points per window of the step's point phases, 0: each phase over all points */
+  PetscBool            windowed;                   /* the step runs grid to points, the point-kinematics and point-state modules and the constitutive update window by window */
+  PetscInt             output_interval;            /* steps between outputs, 0: start and end only      */
+  PetscReal            tout[MPM_MAX_OUTPUT_TIMES]; /* -mpm_output_times: steps land on them [s] */
+  PetscInt             ntout, itout;               /* their number, the next one                */
   MPMScheme            scheme;
   MPMStressIntegration stress_integration;
   MPMCellVolume        cell_volume; /* the cell rule's cell volume (-mpm_cell_volume) */
@@ -179,7 +179,7 @@ struct _p_MPM {
   MPMCheck       checks[MPM_MAX_CHECKS];
   MPMDiagnostics diag;
   MPMLog         log;
-  MPMModule     *mods;                    /* every registered module, in the step or not (MPMModulesCreate) */
+  MPMModule     *mods; /* every registered module, in the step or not (MPMModulesCreate) */
   PetscInt       nmods;
   MPMModule      modules[MPM_NUM_PHASES]; /* the step's modules, per phase, in order              */
   PetscBool      failed;                  /* the run cannot go on (MPMSetFailure)                 */

@@ -74,7 +74,7 @@ PetscErrorCode MPMStep(MPM mpm, PetscReal tn, PetscReal tmax, PetscReal *dt)
   mpm->steps++;
   mpm->time = t;
   mpm->diag.dt_limit[mpm->dt_limit]++;
-  ctx = (MPMStepContext){.tn = t - *dt, .dt = *dt, .kick = 0.5 * (mpm->dt + *dt)}; /* mpm->dt: the previous step, 0 before the first */
+  ctx     = (MPMStepContext){.tn = t - *dt, .dt = *dt, .kick = 0.5 * (mpm->dt + *dt)}; /* mpm->dt: the previous step, 0 before the first */
   mpm->dt = *dt;
   mpm->point_steps += mpm->npoints;
   PetscCall(MPMGridAdvance(mpm, &ctx)); /* (mv)_I += dt_kick f_I; walls */

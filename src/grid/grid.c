@@ -218,8 +218,8 @@ static PetscErrorCode MPMGridLayout(MPM mpm, const char why[], PetscInt P[])
       PetscCall(PetscSNPrintf(c, sizeof(c), ",%" PetscInt_FMT, g->cells[k]));
       PetscCall(PetscStrlcat(cells, c, sizeof(cells)));
     }
-    SETERRQ(mpm->comm, PETSC_ERR_USER_INPUT,
-            "-mpm_cells %s on %d ranks: no split of the grid gives every rank at least %" PetscInt_FMT " nodes along each direction it is split in (the ghost width of %s); use fewer ranks or more cells", cells, size, sw, why);
+    SETERRQ(mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_cells %s on %d ranks: no split of the grid gives every rank at least %" PetscInt_FMT " nodes along each direction it is split in (the ghost width of %s); use fewer ranks or more cells", cells, size,
+            sw, why);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

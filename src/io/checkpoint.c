@@ -110,8 +110,10 @@ PetscErrorCode MPMCheckpointReals(MPMCheckpoint ck, const char name[], PetscInt 
   PetscCall(PetscMalloc1(ck->wsize * n, &all));
   PetscCall(MPMCkptRead(ck->file, path, 0, (hsize_t)(ck->wsize * n), all, NULL));
   for (PetscInt i = 0; i < n; i++) {
-    if (ck->wsize == ck->size) v[i] = all[ck->rank * n + i];
-    else if (merge == MPM_CKPT_GLOBAL) v[i] = all[i];
+    if (ck->wsize == ck->size)
+      v[i] = all[ck->rank * n + i];
+    else if (merge == MPM_CKPT_GLOBAL)
+      v[i] = all[i];
     else {
       v[i] = all[i];
       for (PetscInt r = 1; r < ck->wsize; r++) v[i] += all[r * n + i];

@@ -677,8 +677,7 @@ static PetscErrorCode MPMWriteReportWith(MPM mpm, MPMReport rep)
     for (PetscInt l = 0; l < MPM_NUM_DT_LIMITS; l++) fprintf(fp, "%s\"%s\": %" PetscInt_FMT, l ? ", " : "", MPMDtLimitNames[l], mpm->diag.dt_limit[l]);
     fprintf(fp,
             "}, \"vacuum_points\": %" PetscInt_FMT ", \"vacuum_points_max\": %" PetscInt_FMT ", \"first_vacuum_step\": %" PetscInt_FMT ", \"empty_cells\": %" PetscInt_FMT ", \"empty_cells_max\": %" PetscInt_FMT
-            ", \"first_empty_step\": %" PetscInt_FMT
-            ", \"wall_reflections\": %.0f, \"spalled\": %.0f, \"volume_fill\": %.6f, \"volume_fill_max\": %.6f, \"first_overlap_step\": %" PetscInt_FMT,
+            ", \"first_empty_step\": %" PetscInt_FMT ", \"wall_reflections\": %.0f, \"spalled\": %.0f, \"volume_fill\": %.6f, \"volume_fill_max\": %.6f, \"first_overlap_step\": %" PetscInt_FMT,
             nvac, mpm->diag.vacuum_points_max, mpm->diag.first_vacuum_step, nempty, mpm->diag.empty_cells_max, mpm->diag.first_empty_step, (double)nreflect, (double)nspall, (double)mpm->diag.volume_fill, (double)mpm->diag.volume_fill_max,
             mpm->diag.first_overlap_step);
     MPMReportWriteSection(fp, rep, "robustness");

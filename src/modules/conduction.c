@@ -34,10 +34,10 @@ static PetscErrorCode MPMConductionView(MPMModule mod, MPM mpm, PetscViewer view
 static PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
 {
   const PetscReal C    = ((MPMConduction *)mod->data)->C;
-  const PetscInt d    = mpm->grid.dim;
-  PetscInt       nact = 0;
-  PetscReal     *w, *Tbar;
-  MPMPoints      pts;
+  const PetscInt  d    = mpm->grid.dim;
+  PetscInt        nact = 0;
+  PetscReal      *w, *Tbar;
+  MPMPoints       pts;
 
   PetscFunctionBegin;
   PetscCall(MPMPointsGetArrays(mpm, &pts));

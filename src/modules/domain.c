@@ -60,7 +60,7 @@ static PetscErrorCode MPMDomainCheckpoint(MPMModule mod, MPM mpm, MPMCheckpoint 
 static PetscErrorCode MPMDomainApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
 {
   MPMDomain     *dm = (MPMDomain *)mod->data;
-  const PetscInt d = mpm->grid.dim;
+  const PetscInt d  = mpm->grid.dim;
   MPMPoints      pts;
 
   PetscFunctionBegin;

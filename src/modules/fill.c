@@ -23,8 +23,8 @@ static PetscErrorCode MPMFillSetFromOptions(MPMModule mod, MPM mpm, PetscOptionI
 
   PetscFunctionBegin;
   PetscCall(PetscOptionsReal("-mpm_volume_fill",
-                             "Volume consistency theta: fluid points on a node whose points' volumes exceed (1 + -mpm_volume_fill_tol) of its undeformed fill give back this fraction of the excess each step [-], in [0, 1] (0: off)", "",
-                             fl->rate, &fl->rate, NULL));
+                             "Volume consistency theta: fluid points on a node whose points' volumes exceed (1 + -mpm_volume_fill_tol) of its undeformed fill give back this fraction of the excess each step [-], in [0, 1] (0: off)", "", fl->rate,
+                             &fl->rate, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_volume_fill", fl->rate, 0.0, 1.0, PETSC_FALSE, PETSC_FALSE));
   mod->active = (PetscBool)(fl->rate > 0.0);
   if (mod->active) {

@@ -33,11 +33,11 @@ static PetscErrorCode MPMGravityView(MPMModule mod, MPM mpm, PetscViewer viewer)
 PetscErrorCode MPMModuleCreate_Gravity(MPMModule mod)
 {
   PetscFunctionBegin;
-  mod->phase              = MPM_PHASE_GRID_FORCE;
-  mod->active             = PETSC_TRUE; /* until set-up */
-  mod->ops.setup          = MPMGravitySetUp;
-  mod->ops.apply          = MPMGravityApply;
-  mod->ops.view           = MPMGravityView;
+  mod->phase     = MPM_PHASE_GRID_FORCE;
+  mod->active    = PETSC_TRUE; /* until set-up */
+  mod->ops.setup = MPMGravitySetUp;
+  mod->ops.apply = MPMGravityApply;
+  mod->ops.view  = MPMGravityView;
   PetscCall(PetscStrncpy(mod->event, "MPMGravity", sizeof(mod->event)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -154,8 +154,10 @@ PetscErrorCode MPMModulesDestroy(MPM mpm)
   PetscFunctionBegin;
   for (PetscInt i = 0; i < mpm->nmods; i++) {
     MPMModule mod = mpm->mods[i];
-    if (mod->ops.destroy) PetscCall(mod->ops.destroy(mod));
-    else PetscCall(PetscFree(mod->data));
+    if (mod->ops.destroy)
+      PetscCall(mod->ops.destroy(mod));
+    else
+      PetscCall(PetscFree(mod->data));
     PetscCall(PetscFree(mod));
   }
   PetscCall(PetscFree(mpm->mods));

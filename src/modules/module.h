@@ -28,11 +28,11 @@ typedef struct _p_MPMReport     *MPMReport;     /* the run's report while it is 
 typedef struct _p_MPMCheckpoint *MPMCheckpoint; /* a checkpoint while it is written or read (src/io/checkpoint.c) */
 
 typedef struct {
-  PetscErrorCode (*setfromoptions)(MPMModule, MPM, PetscOptionItems *); /* its options -mpm_<name>...; sets active          */
-  PetscErrorCode (*setup)(MPMModule, MPM);                              /* before the points are seeded; may leave the step */
+  PetscErrorCode (*setfromoptions)(MPMModule, MPM, PetscOptionItems *);       /* its options -mpm_<name>...; sets active          */
+  PetscErrorCode (*setup)(MPMModule, MPM);                                    /* before the points are seeded; may leave the step */
   PetscErrorCode (*apply)(MPMModule, MPM, const MPMStepContext *, MPMNode *); /* the owned nodes in grid phases, else NULL   */
   PetscErrorCode (*view)(MPMModule, MPM, PetscViewer);
-  PetscErrorCode (*report)(MPMModule, MPM, MPMReport); /* every module, in the step or not: its report keys (zeros when out) */
+  PetscErrorCode (*report)(MPMModule, MPM, MPMReport);         /* every module, in the step or not: its report keys (zeros when out) */
   PetscErrorCode (*checkpoint)(MPMModule, MPM, MPMCheckpoint); /* its state, written or read by name (MPMCheckpointReals) */
   PetscErrorCode (*destroy)(MPMModule);                        /* frees data (default: PetscFree)                          */
 } MPMModuleOps;
@@ -50,10 +50,7 @@ struct _p_MPMModule {
 };
 
 /* How a checkpointed value is taken back on another rank count: the same on every rank, or this rank's share of a sum. */
-typedef enum {
-  MPM_CKPT_GLOBAL,
-  MPM_CKPT_RANK_SUM
-} MPMCheckpointMerge;
+typedef enum { MPM_CKPT_GLOBAL, MPM_CKPT_RANK_SUM } MPMCheckpointMerge;
 
 PETSC_INTERN PetscErrorCode MPMModuleRegister(const char[], PetscErrorCode (*)(MPMModule));
 PETSC_INTERN PetscErrorCode MPMModulesRegisterAll(void);

@@ -12,10 +12,10 @@
 #include "core/petmpmimpl.h"
 
 typedef struct {
-  PetscInt  interval;                           /* -mpm_popping_interval: steps between checks                       */
-  PetscReal speed;                              /* -mpm_popping_speed: a point faster than this has popped [cm/s], 0: not checked */
-  PetscInt  checks, popped_max;                 /* checks made; most points popped at one check (global)             */
-  PetscReal popped_sum;                         /* popped points summed over the checks (global)                      */
+  PetscInt  interval;                         /* -mpm_popping_interval: steps between checks                       */
+  PetscReal speed;                            /* -mpm_popping_speed: a point faster than this has popped [cm/s], 0: not checked */
+  PetscInt  checks, popped_max;               /* checks made; most points popped at one check (global)             */
+  PetscReal popped_sum;                       /* popped points summed over the checks (global)                      */
   PetscReal first_time, first_x[MPM_MAX_DIM]; /* when (-1: never) and where the first appeared [s, cm]               */
 } MPMPopping;
 
@@ -24,8 +24,8 @@ static PetscErrorCode MPMPoppingSetFromOptions(MPMModule mod, MPM mpm, PetscOpti
   MPMPopping *pp = (MPMPopping *)mod->data;
 
   PetscFunctionBegin;
-  PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-mpm_popping_interval", "Steps between checks for popped points (a point with no other point in the cells around its own, or faster than -mpm_popping_speed) [-], >= 0 (0: off)",
-                               &pp->interval, 0, PETSC_MAX_INT));
+  PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-mpm_popping_interval", "Steps between checks for popped points (a point with no other point in the cells around its own, or faster than -mpm_popping_speed) [-], >= 0 (0: off)", &pp->interval, 0,
+                               PETSC_MAX_INT));
   mod->active = (PetscBool)(pp->interval > 0);
   if (mod->active) {
     PetscCall(PetscOptionsReal("-mpm_popping_speed", "A point faster than this has popped [cm/s], >= 0 (0: no speed criterion)", "", pp->speed, &pp->speed, NULL));
@@ -53,8 +53,9 @@ static PetscErrorCode MPMPoppingReport(MPMModule mod, MPM mpm, MPMReport rep)
   if (!mod->active) PetscFunctionReturn(PETSC_SUCCESS);
   if (pp->first_time >= 0.0)
     PetscCall(MPMReportPrintf(rep, "  popping: up to %" PetscInt_FMT " points popped at one check, %.0f point-checks in %" PetscInt_FMT " checks; the first at t = %g s, x = (%g, %g, %g) cm\n", pp->popped_max, (double)pp->popped_sum, pp->checks,
-                          (double)pp->first_time, (double)x[0], (double)x[1], (double)x[2]));
-  else PetscCall(MPMReportPrintf(rep, "  popping: no point popped in %" PetscInt_FMT " checks\n", pp->checks));
+                              (double)pp->first_time, (double)x[0], (double)x[1], (double)x[2]));
+  else
+    PetscCall(MPMReportPrintf(rep, "  popping: no point popped in %" PetscInt_FMT " checks\n", pp->checks));
   PetscCall(MPMReportAdd(rep, NULL, "popping", "{\"checks\": %" PetscInt_FMT ", \"popped_max\": %" PetscInt_FMT ", \"popped_sum\": %.0f, \"first_time\": %.10g, \"first_position\": [%.10g, %.10g, %.10g]}", pp->checks, pp->popped_max,
                          (double)pp->popped_sum, (double)pp->first_time, (double)x[0], (double)x[1], (double)x[2]));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -92,7 +93,7 @@ static inline PetscReal MPMCornerWeight(const MPMGrid *g, const PetscReal x[], P
 static PetscErrorCode MPMPoppingApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
 {
   MPMPopping    *pp = (MPMPopping *)mod->data;
-  const MPMGrid *g = &mpm->grid;
+  const MPMGrid *g  = &mpm->grid;
   const PetscInt d = g->dim, nc = 1 << d;
   PetscInt       n[2] = {0, 0}, first = -1; /* popped on this rank, [1]: global after the reduction */
   PetscReal     *W;

@@ -12,8 +12,8 @@
 #include "core/petmpmimpl.h"
 
 typedef struct {
-  PetscReal  K;            /* -mpm_pressure_relax: the rate K_r [-]                                   */
-  PetscReal  mach;         /* -mpm_pressure_relax_mach: points with |div v| h / c above it do not relax [-] */
+  PetscReal  K;             /* -mpm_pressure_relax: the rate K_r [-]                                   */
+  PetscReal  mach;          /* -mpm_pressure_relax_mach: points with |div v| h / c above it do not relax [-] */
   PetscReal *cellV, *cellS; /* per owned cell of the grid numbered grid_id: the cell sums (zero between uses) */
   PetscInt   grid_id;
 } MPMRelax;
@@ -65,7 +65,7 @@ static void MPMRelaxCellSums(MPMRelax *rx, const PetscInt cell[], PetscInt n, co
 static PetscErrorCode MPMRelaxApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
 {
   MPMRelax      *rx = (MPMRelax *)mod->data;
-  const PetscInt d = mpm->grid.dim;
+  const PetscInt d  = mpm->grid.dim;
   PetscInt      *cell;
   PetscReal     *w, *q;
   MPMPoints      pts;

@@ -45,10 +45,10 @@ static PetscErrorCode MPMRemapSetUp(MPMModule mod, MPM mpm)
 PetscErrorCode MPMModuleCreate_Remap(MPMModule mod)
 {
   PetscFunctionBegin;
-  mod->phase              = MPM_PHASE_POINT_KINEMATICS;
-  mod->active             = PETSC_TRUE; /* until set-up */
-  mod->ops.setup          = MPMRemapSetUp;
-  mod->ops.apply          = MPMRemapApply;
+  mod->phase     = MPM_PHASE_POINT_KINEMATICS;
+  mod->active    = PETSC_TRUE; /* until set-up */
+  mod->ops.setup = MPMRemapSetUp;
+  mod->ops.apply = MPMRemapApply;
   PetscCall(PetscStrncpy(mod->event, "MPMRemapMomentum", sizeof(mod->event)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -17,9 +17,9 @@
 #include "core/petmpmimpl.h"
 
 typedef struct {
-  PetscBool on;        /* -mpm_split                                                  */
-  PetscReal length;    /* -mpm_split_length: a domain longer than this along an axis splits [cells] */
-  PetscReal min_scale; /* smallest domain scale a split may leave: 2^-(max_level - 1) [-] */
+  PetscBool on;             /* -mpm_split                                                  */
+  PetscReal length;         /* -mpm_split_length: a domain longer than this along an axis splits [cells] */
+  PetscReal min_scale;      /* smallest domain scale a split may leave: 2^-(max_level - 1) [-] */
   PetscInt  split, refused; /* points this rank split; point-steps whose split the level limit refused */
 } MPMSplit;
 
@@ -111,8 +111,8 @@ static int MPMSplitCompare(const void *a, const void *b)
 static PetscErrorCode MPMSplitApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
 {
   MPMSplit      *sp = (MPMSplit *)mod->data;
-  const MPMGrid *g = &mpm->grid;
-  const PetscInt d = g->dim;
+  const MPMGrid *g  = &mpm->grid;
+  const PetscInt d  = g->dim;
   PetscInt      *axis, *place, n, nsplit = 0, nrefused = 0, counts[2];
   MPMPoints      pts;
 

@@ -165,14 +165,14 @@ PetscErrorCode MPMModuleCreate_Walls(MPMModule mod)
 
   PetscFunctionBegin;
   PetscCall(PetscNew(&w));
-  mod->data               = w;
-  mod->phase              = MPM_PHASE_GRID_VELOCITY;
-  mod->active             = PETSC_TRUE; /* until set-up */
-  mod->ops.setup          = MPMWallsSetUp;
-  mod->ops.apply          = MPMWallsApply;
-  mod->ops.report         = MPMWallsReport;
-  mod->ops.checkpoint     = MPMWallsCheckpoint;
-  mod->ops.destroy        = MPMWallsDestroy;
+  mod->data           = w;
+  mod->phase          = MPM_PHASE_GRID_VELOCITY;
+  mod->active         = PETSC_TRUE; /* until set-up */
+  mod->ops.setup      = MPMWallsSetUp;
+  mod->ops.apply      = MPMWallsApply;
+  mod->ops.report     = MPMWallsReport;
+  mod->ops.checkpoint = MPMWallsCheckpoint;
+  mod->ops.destroy    = MPMWallsDestroy;
   PetscCall(PetscStrncpy(mod->event, "MPMWalls", sizeof(mod->event)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -60,8 +60,10 @@ PetscErrorCode MPMPointsRegisterTypeFields(MPM mpm, void *o)
       PetscCall(PetscStrcmp(mpm->field[f].name, fd->name, &same));
       if (same) break;
     }
-    if (f < mpm->nfields) PetscCheck(mpm->field[f].bs == fd->bs, mpm->comm, PETSC_ERR_PLIB, "Point field %s of %s type %s: block size %" PetscInt_FMT ", registered with %" PetscInt_FMT, fd->name, obj->cls->name, obj->type_name, fd->bs, mpm->field[f].bs);
-    else PetscCall(MPMPointsRegisterField(mpm, fd->name, fd->bs, fd->unit, fd->meaning, PETSC_TRUE, &f));
+    if (f < mpm->nfields)
+      PetscCheck(mpm->field[f].bs == fd->bs, mpm->comm, PETSC_ERR_PLIB, "Point field %s of %s type %s: block size %" PetscInt_FMT ", registered with %" PetscInt_FMT, fd->name, obj->cls->name, obj->type_name, fd->bs, mpm->field[f].bs);
+    else
+      PetscCall(MPMPointsRegisterField(mpm, fd->name, fd->bs, fd->unit, fd->meaning, PETSC_TRUE, &f));
     obj->fid[i] = f;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -88,11 +90,11 @@ PetscBool MPMPointsFieldRequired(MPM mpm, MPMField f)
 PetscErrorCode MPMPointsSelectFields(MPM mpm)
 {
   PetscFunctionBegin;
-  mpm->field_on[MPM_FIELD_DEFGRAD]       = mpm->track_F;
-  mpm->field_on[MPM_FIELD_STRESS]        = mpm->has_stress;
-  mpm->field_on[MPM_FIELD_REFPOSITION]   = (PetscBool)(mpm->exact != NULL);
-  mpm->field_on[MPM_FIELD_DOMAINSCALE]   = mpm->field_req[MPM_FIELD_DOMAINSCALE];
-  mpm->field_on[MPM_FIELD_HOOPRATE]      = mpm->grid.axisym;
+  mpm->field_on[MPM_FIELD_DEFGRAD]     = mpm->track_F;
+  mpm->field_on[MPM_FIELD_STRESS]      = mpm->has_stress;
+  mpm->field_on[MPM_FIELD_REFPOSITION] = (PetscBool)(mpm->exact != NULL);
+  mpm->field_on[MPM_FIELD_DOMAINSCALE] = mpm->field_req[MPM_FIELD_DOMAINSCALE];
+  mpm->field_on[MPM_FIELD_HOOPRATE]    = mpm->grid.axisym;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -157,7 +159,6 @@ static inline PetscInt MPMRegionAt(MPM mpm, const PetscReal x[])
   sc.reg  = mpm->reg;
   return MPMSceneRegionAt(&sc, x);
 }
-
 
 /* Lattice site s (0 <= s < prod_k cm_k ppc) of this rank's cells: its position and its global lattice index. */
 void MPMSiteAt(const MPMGrid *g, PetscInt ppc, PetscInt s, PetscReal x[], PetscReal *id)

@@ -53,7 +53,6 @@ typedef struct {
 PETSC_INTERN PetscErrorCode MPMHydrostaticSetUp(const MPMScene *, PetscInt, MPMHydrostatic *);
 PETSC_INTERN PetscErrorCode MPMHydrostaticAt(const MPMHydrostatic *, const PetscReal[], PetscReal *, PetscReal *);
 
-
 /* Region index of the first region holding x, or -1. */
 static inline PetscInt MPMSceneRegionAt(const MPMScene *sc, const PetscReal x[])
 {

@@ -15,9 +15,9 @@ typedef struct {
 /* The batched stress operation of a type from its pointwise one (see MPMStrengthOps::stress_n), with the dimension
    a compile-time constant in each branch so that the inlined pointwise operation's loops over d unroll (the same
    operations in the same order: the same numbers). */
-#define MPM_STRENGTH_BATCHED_D(Stress, D)                                                                       \
-  for (PetscInt i = 0; i < n; i++) {                                                                            \
-    const PetscInt p = idx[i];                                                                                  \
+#define MPM_STRENGTH_BATCHED_D(Stress, D)                                                                                     \
+  for (PetscInt i = 0; i < n; i++) {                                                                                          \
+    const PetscInt p = idx[i];                                                                                                \
     Stress(ctx, D, dt, &L[p * D * D], F ? &F[p * D * D] : NULL, rho[i], T[p], &s[p * D * D], epsp ? &epsp[p] : NULL, &c2[i]); \
   }
 #define MPM_STRENGTH_BATCHED(Stress)                                                                                                                                                                                                   \

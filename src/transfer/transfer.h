@@ -99,4 +99,3 @@ struct _MPMTransferKernels {
   MPMG2PKernel g2p[MPM_G2P_NMODES];
   MPMP2GKernel g2p_remap[MPM_G2P_NMODES];
 };
-
