@@ -193,16 +193,32 @@ static inline void MPMStencilOffset(const MPMGrid *g, const PetscReal xp[], cons
   }
 }
 
-/* The generic scatter's point loop (the reference the specialised kernels reproduce), with the dimension d a constant
-   where MPMScatter calls it, so that its loops over d unroll; the same operations in the same order for every d. */
-MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node, PetscReal tn, PetscBool force, PetscBool cellrule, PetscBool stress, PetscBool body, const PetscInt d)
+/* The generic loops' variants (MPMGenericVariant): the reference, which computes what the specialised kernels compute
+   (they reproduce it bit for bit, tests/scenes/kernels.json), and the terms that only some runs have, each a
+   compile-time flag of the same loop body, so that the reference carries no branch for them:
+     AFFINE  APIC's affine velocity v_p + C_p (x_I - x_p) and its moments B_p, D_p (-mpm_update_type apic),
+     HOOP    the axisymmetric hoop force -sigma_tt V_p / r_p, the hoop rate and its work (-mpm_axisymmetric),
+     BODY    a manufactured solution's body force sum_p N_I m_p b(X_p, t^n) (points to grid only).
+   MPMScatterVariant and MPMGatherVariant name each instantiation. */
+typedef enum { MPM_GENERIC_REFERENCE = 0, MPM_GENERIC_AFFINE = 1, MPM_GENERIC_HOOP = 2, MPM_GENERIC_BODY = 4 } MPMGenericVariant;
+
+/* The variant a run's generic loops take: APIC's affine part, the hoop terms of an axisymmetric grid, and (points to
+   grid with the force) a manufactured body force. */
+static inline PetscInt MPMGenericVariantOf(MPM mpm, PetscBool body)
+{
+  return (mpm->affine >= 0 ? MPM_GENERIC_AFFINE : 0) | (mpm->grid.axisym ? MPM_GENERIC_HOOP : 0) | (body ? MPM_GENERIC_BODY : 0);
+}
+
+/* The generic scatter's point loop, with the dimension d and the variant's terms compile-time constants where
+   MPMScatterVariant calls it, so that its loops over d unroll; the same operations in the same order for every d. */
+MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node, PetscReal tn, PetscBool force, PetscBool cellrule, PetscBool stress, const PetscBool AFFINE, const PetscBool HOOP, const PetscBool BODY, const PetscInt d)
 {
   const MPMGrid   *g = &mpm->grid;
   const PetscReal *x = pts->f[MPM_FIELD_POSITION], *v = pts->f[MPM_FIELD_VELOCITY], *m = pts->f[MPM_FIELD_MASS];
   const PetscReal *V = pts->f[MPM_FIELD_VOLUME], *pr = pts->f[MPM_FIELD_PRESSURE], *q = pts->f[MPM_FIELD_VISCOSITY];
   const PetscReal *F = mpm->track_F ? pts->f[MPM_FIELD_DEFGRAD] : NULL, *S = pts->f[MPM_FIELD_STRESS], *X = pts->f[MPM_FIELD_REFPOSITION];
   const PetscReal *ds = mpm->shape->needs_F ? pts->f[MPM_FIELD_DOMAINSCALE] : NULL; /* split points' domains */
-  const PetscReal *C  = mpm->affine >= 0 ? pts->f[mpm->affine] : NULL;
+  const PetscReal *C  = AFFINE ? pts->f[mpm->affine] : NULL;
   MPMStencil       st;
 
   for (PetscInt p = 0; p < pts->n; p++) {
@@ -212,15 +228,15 @@ MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node,
       for (PetscInt k = 0; k < d * d; k++) Sig[k] = S[p * d * d + k];
       MPMStressForceMatrix(d, V[p], cellrule ? 0.0 : P, Sig);
     }
-    if (force && g->axisym) hoop = V[p] * (P + (stress ? S[p * d * d] + S[p * d * d + d + 1] : 0.0)) / x[p * d]; /* -sigma_tt V / r, sigma_tt = -P - (s_rr + s_zz) */
-    if (body) mpm->exact->ops.bodyforce(mpm->exact->data, tn, &X[p * d], F ? &F[p * d * d] : NULL, b);
+    if (HOOP && force) hoop = V[p] * (P + (stress ? S[p * d * d] + S[p * d * d + d + 1] : 0.0)) / x[p * d]; /* -sigma_tt V / r, sigma_tt = -P - (s_rr + s_zz) */
+    if (BODY) mpm->exact->ops.bodyforce(mpm->exact->data, tn, &X[p * d], F ? &F[p * d * d] : NULL, b);
     MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, F, ds, p, Fs), &st);
     for (PetscInt a = 0; a < st.n; a++) {
       MPMNode        *nd = &node[st.node[a]];
       const PetscReal wm = st.w[a] * m[p];
       nd->m += wm;
       nd->w2 += st.w[a] * st.w[a];
-      if (C) { /* APIC: the point's affine velocity at the node, v_p + C_p (x_I - x_p) */
+      if (AFFINE) { /* APIC: the point's affine velocity at the node, v_p + C_p (x_I - x_p) */
         PetscReal dx[MPM_MAX_DIM];
         MPMStencilOffset(g, &x[p * d], &st, a, dx);
         for (PetscInt k = 0; k < d; k++) {
@@ -238,11 +254,64 @@ MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node,
         }
       else if (force && !cellrule)
         for (PetscInt k = 0; k < d; k++) nd->f[k] += st.s[a][k] * V[p] * P * st.dw[a][k];
-      if (body)
+      if (BODY)
         for (PetscInt k = 0; k < d; k++) nd->f[k] += st.s[a][k] * wm * b[k];
-      if (hoop != 0.0) nd->f[0] += st.s[a][0] * hoop * st.w[a];
+      if (HOOP && hoop != 0.0) nd->f[0] += st.s[a][0] * hoop * st.w[a];
     }
     if (cellrule) MPMCellRuleAdd(mpm, &x[p * d], V[p], P);
+  }
+}
+
+/* The generic scatter of one variant (a sum of MPMGenericVariant flags; the hoop terms exist in 2D only). */
+static void MPMScatterVariant(MPM mpm, const MPMPoints *pts, MPMNode *node, PetscReal tn, PetscBool force, PetscBool cellrule, PetscBool stress, PetscInt variant)
+{
+  const PetscInt  d = mpm->grid.dim;
+  const PetscBool T = PETSC_TRUE, F = PETSC_FALSE;
+
+  switch (variant) {
+  case MPM_GENERIC_REFERENCE:
+    if (d == 3)
+      MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, F, F, F, 3);
+    else if (d == 2)
+      MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, F, F, F, 2);
+    else
+      MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, F, F, F, 1);
+    break;
+  case MPM_GENERIC_AFFINE:
+    if (d == 3)
+      MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, T, F, F, 3);
+    else if (d == 2)
+      MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, T, F, F, 2);
+    else
+      MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, T, F, F, 1);
+    break;
+  case MPM_GENERIC_BODY:
+    if (d == 3)
+      MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, F, F, T, 3);
+    else if (d == 2)
+      MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, F, F, T, 2);
+    else
+      MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, F, F, T, 1);
+    break;
+  case MPM_GENERIC_BODY | MPM_GENERIC_AFFINE:
+    if (d == 3)
+      MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, T, F, T, 3);
+    else if (d == 2)
+      MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, T, F, T, 2);
+    else
+      MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, T, F, T, 1);
+    break;
+  case MPM_GENERIC_HOOP:
+    MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, F, T, F, 2);
+    break;
+  case MPM_GENERIC_HOOP | MPM_GENERIC_AFFINE:
+    MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, T, T, F, 2);
+    break;
+  case MPM_GENERIC_HOOP | MPM_GENERIC_BODY:
+    MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, F, T, T, 2);
+    break;
+  default:
+    MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, T, T, T, 2);
   }
 }
 
@@ -294,12 +363,8 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
         MPMCellRuleAddFull(mpm, pts.n, x, V, pr, q, 2);
       else if (cellrule)
         MPMCellRuleAddFull(mpm, pts.n, x, V, pr, q, 3);
-    } else if (d == 3)
-      MPMScatterGeneric(mpm, &pts, node, tn, force, cellrule, stress, body, 3);
-    else if (d == 2)
-      MPMScatterGeneric(mpm, &pts, node, tn, force, cellrule, stress, body, 2);
-    else
-      MPMScatterGeneric(mpm, &pts, node, tn, force, cellrule, stress, body, 1);
+    } else
+      MPMScatterVariant(mpm, &pts, node, tn, force, cellrule, stress, MPMGenericVariantOf(mpm, body));
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   if (cellrule) { /* f_I += V_c P_c grad N_I(x_c): full, h^d times the cell's mean P; points, the shares' sum (V P)_c, linear in them, so a rank adds its own */
@@ -374,14 +439,14 @@ static void MPMAffineFromMoments(const MPMGrid *g, const PetscReal B[], PetscRea
 
 /* The generic gather's point loop (the reference the specialised kernels reproduce), with the dimension d a constant
    where MPMGather calls it, so that its loops over d unroll; the same operations in the same order for every d. */
-MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPoints *pts, const MPMNode *node, PetscBool velocity, PetscBool kinematics, PetscBool work, const PetscInt d)
+MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPoints *pts, const MPMNode *node, PetscBool velocity, PetscBool kinematics, PetscBool work, const PetscBool AFFINE, const PetscBool HOOP, const PetscInt d)
 {
   const MPMGrid   *g     = &mpm->grid;
   const PetscReal  alpha = A->alpha, dt = A->dt;
   const PetscBool  kefix = A->kefix, stress = A->stress;
   PetscReal       *x = A->x, *v = A->v, *L = A->L, *e = A->e;
   const PetscReal *S = A->S;
-  PetscReal       *C = mpm->affine >= 0 ? pts->f[mpm->affine] : NULL;
+  PetscReal       *C = AFFINE ? pts->f[mpm->affine] : NULL;
   MPMStencil       st;
 
   for (PetscInt p = 0; p < pts->n; p++) {
@@ -391,7 +456,7 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
     MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, A->F, A->ds, p, Fs), &st);
     for (PetscInt a = 0; a < st.n; a++) {
       const MPMNode *nd = &node[st.node[a]];
-      if (C && velocity) {
+      if (AFFINE && velocity) {
         PetscReal dx[MPM_MAX_DIM];
         MPMStencilOffset(g, &x[p * d], &st, a, dx);
         for (PetscInt i = 0; i < d; i++)
@@ -409,7 +474,7 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
         for (PetscInt j = 0; j < d; j++) Lp[i * d + j] += vI * st.dw[a][j];
         if (work)
           for (PetscInt j = 0; j < d; j++) Lb[i * d + j] += (2.0 * vI - dvI) * st.dw[a][j];
-        if (work && g->axisym && i == 0) Lbtt += st.w[a] * (2.0 * vI - dvI) / x[p * d];
+        if (HOOP && work && i == 0) Lbtt += st.w[a] * (2.0 * vI - dvI) / x[p * d];
       }
     }
     if (velocity) {
@@ -421,7 +486,7 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
         v[p * d + i] = vn;
       }
       if (kefix) e[p] += share - gain + (1.0 - alpha) * R;
-      if (C) MPMAffineFromMoments(g, Bm, Dm, &C[p * d * d]);
+      if (AFFINE) MPMAffineFromMoments(g, Bm, Dm, &C[p * d * d]);
       if (work) { /* the work the grid's forces did over the kick, sum_p V_p sigma_p : Lbar_p dt_kick = sum_I f_I . vbar_I dt_kick */
         PetscReal sL = 0.0, div = 0.0;
         if (A->pointwork)
@@ -430,7 +495,7 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
           for (PetscInt i = 0; i < d; i++) div += Lb[i * d + i];
         if (stress)
           for (PetscInt i = 0; i < d * d; i++) sL += S[p * d * d + i] * Lb[i];
-        if (g->axisym) { /* the hoop work: -P Lbar_tt + s_tt Lbar_tt, s_tt = -(s_rr + s_zz) */
+        if (HOOP) { /* the hoop work: -P Lbar_tt + s_tt Lbar_tt, s_tt = -(s_rr + s_zz) */
           div += Lbtt;
           if (stress) sL -= (S[p * d * d] + S[p * d * d + d + 1]) * Lbtt;
         }
@@ -438,10 +503,41 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
       }
     }
     if (kinematics) {
-      if (g->axisym) pts->f[MPM_FIELD_HOOPRATE][p] = vpic[0] / x[p * d]; /* L_tt = v_r / r at x^n, as L_p */
+      if (HOOP) pts->f[MPM_FIELD_HOOPRATE][p] = vpic[0] / x[p * d]; /* L_tt = v_r / r at x^n, as L_p */
       for (PetscInt i = 0; i < d; i++) x[p * d + i] += dt * vpic[i];
       for (PetscInt i = 0; i < d * d; i++) L[p * d * d + i] = Lp[i];
     }
+  }
+}
+
+/* The generic gather of one variant (MPMGenericVariant without BODY; the hoop terms exist in 2D only). */
+static void MPMGatherVariant(MPM mpm, const MPMTransferArgs *A, const MPMPoints *pts, const MPMNode *node, PetscBool velocity, PetscBool kinematics, PetscBool work, PetscInt variant)
+{
+  const PetscInt  d = mpm->grid.dim;
+  const PetscBool T = PETSC_TRUE, F = PETSC_FALSE;
+
+  switch (variant) {
+  case MPM_GENERIC_REFERENCE:
+    if (d == 3)
+      MPMGatherGeneric(mpm, A, pts, node, velocity, kinematics, work, F, F, 3);
+    else if (d == 2)
+      MPMGatherGeneric(mpm, A, pts, node, velocity, kinematics, work, F, F, 2);
+    else
+      MPMGatherGeneric(mpm, A, pts, node, velocity, kinematics, work, F, F, 1);
+    break;
+  case MPM_GENERIC_AFFINE:
+    if (d == 3)
+      MPMGatherGeneric(mpm, A, pts, node, velocity, kinematics, work, T, F, 3);
+    else if (d == 2)
+      MPMGatherGeneric(mpm, A, pts, node, velocity, kinematics, work, T, F, 2);
+    else
+      MPMGatherGeneric(mpm, A, pts, node, velocity, kinematics, work, T, F, 1);
+    break;
+  case MPM_GENERIC_HOOP:
+    MPMGatherGeneric(mpm, A, pts, node, velocity, kinematics, work, F, T, 2);
+    break;
+  default:
+    MPMGatherGeneric(mpm, A, pts, node, velocity, kinematics, work, T, T, 2);
   }
 }
 
@@ -538,12 +634,8 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
       mpm->kern->g2p_remap[work ? MPM_G2P_MODE_VELOCITY_WORK : MPM_G2P_MODE_VELOCITY](g, mpm->shape->data, &A, node);
     } else if (mpm->kern) {
       mpm->kern->g2p[(velocity ? MPM_G2P_VELOCITY : 0) | (kinematics ? MPM_G2P_KINEMATICS : 0) | (work ? MPM_G2P_WORK : 0)](g, mpm->shape->data, &A, node);
-    } else if (d == 3)
-      MPMGatherGeneric(mpm, &A, &pts, node, velocity, kinematics, work, 3);
-    else if (d == 2)
-      MPMGatherGeneric(mpm, &A, &pts, node, velocity, kinematics, work, 2);
-    else
-      MPMGatherGeneric(mpm, &A, &pts, node, velocity, kinematics, work, 1);
+    } else
+      MPMGatherVariant(mpm, &A, &pts, node, velocity, kinematics, work, MPMGenericVariantOf(mpm, PETSC_FALSE));
   }
   PetscCall(PetscFree(pointwork));
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
