@@ -11,7 +11,7 @@
      /points/<field>       (N bs)         the points of rank r at the offset of ranks < r
      /counts               (ranks)        points per rank
      /state                (MPM_CKPT_NSTATE)
-     /diagnostics/<name>   (ranks x n)    the core's counters and sums, each rank's row (MPMCkptDiagnostics)
+     /diagnostics/<name>   (ranks x n)    the core's counters and sums, each rank's row (MPMCkptNamedState)
      /modules/<module>/<name> (ranks x n) the state each module in the step writes (its checkpoint op)
      /outputs              (outputs x 2: time, points);  /checks (checks x 2: value, reference), /check_names (checks x MPM_MAX_NAME)
      /ownership            (sum of the ranks per direction)  the grid's nodes per rank column along each direction
@@ -137,7 +137,7 @@ PetscErrorCode MPMCheckpointInts(MPMCheckpoint ck, const char name[], PetscInt n
 }
 
 /* The core's diagnostics (each rank's sums, and the counters that are global), then each module's state. */
-static PetscErrorCode MPMCkptDiagnostics(MPM mpm, MPMCheckpoint ck)
+static PetscErrorCode MPMCkptNamedState(MPM mpm, MPMCheckpoint ck)
 {
   MPMDiagnostics *dg = &mpm->diag;
 
@@ -236,7 +236,7 @@ PetscErrorCode MPMCheckpointWrite(MPM mpm)
     PetscReal              *out, *chk;
     PetscCall(MPMCkptWrite(f, "counts", (hsize_t)size, (hsize_t)rank, 1, &cnt));
     PetscCall(MPMCkptWrite(f, "state", MPM_CKPT_NSTATE, 0, rank ? 0 : MPM_CKPT_NSTATE, st));
-    PetscCall(MPMCkptDiagnostics(mpm, &ck));
+    PetscCall(MPMCkptNamedState(mpm, &ck));
     PetscCall(PetscMalloc2(2 * mpm->noutputs + 1, &out, 2 * mpm->nchecks + 1, &chk));
     for (PetscInt s = 0; s < mpm->noutputs; s++) {
       out[2 * s]     = mpm->output_times[s];
@@ -370,7 +370,7 @@ PetscErrorCode MPMRestartRead(MPM mpm)
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   { /* diagnostics and the modules' state: each rank its own; on another rank count rank 0 takes the sums, every rank the global values */
     struct _p_MPMCheckpoint ck = {f, PETSC_FALSE, rank, size, wsize, ""};
-    PetscCall(MPMCkptDiagnostics(mpm, &ck));
+    PetscCall(MPMCkptNamedState(mpm, &ck));
   }
   mpm->time             = st[0];
   mpm->steps            = (PetscInt)st[1];

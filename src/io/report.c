@@ -502,9 +502,7 @@ PetscErrorCode MPMReportAddRemovedEnergy(MPMReport rep, PetscReal W)
 static void MPMReportWriteSection(FILE *fp, MPMReport rep, const char section[])
 {
   for (PetscInt i = 0; i < rep->n; i++) {
-    PetscBool same;
-    PetscCallAbort(PETSC_COMM_SELF, PetscStrcmp(rep->entry[i].section, section, &same));
-    if (same) fprintf(fp, "%s\"%s\": %s", section[0] ? ", " : ",\n  ", rep->entry[i].key, rep->entry[i].value);
+    if (!strcmp(rep->entry[i].section, section)) fprintf(fp, "%s\"%s\": %s", section[0] ? ", " : ",\n  ", rep->entry[i].key, rep->entry[i].value);
   }
 }
 

@@ -262,56 +262,49 @@ MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node,
   }
 }
 
-/* The generic scatter of one variant (a sum of MPMGenericVariant flags; the hoop terms exist in 2D only). */
+/* The generic scatter of one variant over the dimensions: AFFINE, HOOP and BODY compile-time constants of each
+   instantiation (MPMScatterVariant passes literals); the hoop terms exist in 2D only. */
+MPM_TINLINE void MPMScatterDims(MPM mpm, const MPMPoints *pts, MPMNode *node, PetscReal tn, PetscBool force, PetscBool cellrule, PetscBool stress, const PetscBool AFFINE, const PetscBool HOOP, const PetscBool BODY)
+{
+  const PetscInt d = mpm->grid.dim;
+
+  if (HOOP || d == 2)
+    MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, AFFINE, HOOP, BODY, 2);
+  else if (d == 3)
+    MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, AFFINE, PETSC_FALSE, BODY, 3);
+  else
+    MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, AFFINE, PETSC_FALSE, BODY, 1);
+}
+
+/* The generic scatter's named variants (a sum of MPMGenericVariant flags). */
 static void MPMScatterVariant(MPM mpm, const MPMPoints *pts, MPMNode *node, PetscReal tn, PetscBool force, PetscBool cellrule, PetscBool stress, PetscInt variant)
 {
-  const PetscInt  d = mpm->grid.dim;
   const PetscBool T = PETSC_TRUE, F = PETSC_FALSE;
 
   switch (variant) {
   case MPM_GENERIC_REFERENCE:
-    if (d == 3)
-      MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, F, F, F, 3);
-    else if (d == 2)
-      MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, F, F, F, 2);
-    else
-      MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, F, F, F, 1);
+    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, F, F, F);
     break;
   case MPM_GENERIC_AFFINE:
-    if (d == 3)
-      MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, T, F, F, 3);
-    else if (d == 2)
-      MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, T, F, F, 2);
-    else
-      MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, T, F, F, 1);
-    break;
-  case MPM_GENERIC_BODY:
-    if (d == 3)
-      MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, F, F, T, 3);
-    else if (d == 2)
-      MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, F, F, T, 2);
-    else
-      MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, F, F, T, 1);
-    break;
-  case MPM_GENERIC_BODY | MPM_GENERIC_AFFINE:
-    if (d == 3)
-      MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, T, F, T, 3);
-    else if (d == 2)
-      MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, T, F, T, 2);
-    else
-      MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, T, F, T, 1);
+    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, T, F, F);
     break;
   case MPM_GENERIC_HOOP:
-    MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, F, T, F, 2);
+    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, F, T, F);
     break;
   case MPM_GENERIC_HOOP | MPM_GENERIC_AFFINE:
-    MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, T, T, F, 2);
+    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, T, T, F);
     break;
-  case MPM_GENERIC_HOOP | MPM_GENERIC_BODY:
-    MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, F, T, T, 2);
+  case MPM_GENERIC_BODY:
+    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, F, F, T);
+    break;
+  case MPM_GENERIC_BODY | MPM_GENERIC_AFFINE:
+    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, T, F, T);
+    break;
+  case MPM_GENERIC_BODY | MPM_GENERIC_HOOP:
+    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, F, T, T);
     break;
   default:
-    MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, T, T, T, 2);
+    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, T, T, T);
   }
 }
 
@@ -510,34 +503,36 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
   }
 }
 
-/* The generic gather of one variant (MPMGenericVariant without BODY; the hoop terms exist in 2D only). */
+/* The generic gather of one variant over the dimensions, as MPMScatterDims. */
+MPM_TINLINE void MPMGatherDims(MPM mpm, const MPMTransferArgs *A, const MPMPoints *pts, const MPMNode *node, PetscBool velocity, PetscBool kinematics, PetscBool work, const PetscBool AFFINE, const PetscBool HOOP)
+{
+  const PetscInt d = mpm->grid.dim;
+
+  if (HOOP || d == 2)
+    MPMGatherGeneric(mpm, A, pts, node, velocity, kinematics, work, AFFINE, HOOP, 2);
+  else if (d == 3)
+    MPMGatherGeneric(mpm, A, pts, node, velocity, kinematics, work, AFFINE, PETSC_FALSE, 3);
+  else
+    MPMGatherGeneric(mpm, A, pts, node, velocity, kinematics, work, AFFINE, PETSC_FALSE, 1);
+}
+
+/* The generic gather's named variants (MPMGenericVariant flags but BODY). */
 static void MPMGatherVariant(MPM mpm, const MPMTransferArgs *A, const MPMPoints *pts, const MPMNode *node, PetscBool velocity, PetscBool kinematics, PetscBool work, PetscInt variant)
 {
-  const PetscInt  d = mpm->grid.dim;
   const PetscBool T = PETSC_TRUE, F = PETSC_FALSE;
 
-  switch (variant) {
+  switch (variant & (MPM_GENERIC_AFFINE | MPM_GENERIC_HOOP)) {
   case MPM_GENERIC_REFERENCE:
-    if (d == 3)
-      MPMGatherGeneric(mpm, A, pts, node, velocity, kinematics, work, F, F, 3);
-    else if (d == 2)
-      MPMGatherGeneric(mpm, A, pts, node, velocity, kinematics, work, F, F, 2);
-    else
-      MPMGatherGeneric(mpm, A, pts, node, velocity, kinematics, work, F, F, 1);
+    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, F, F);
     break;
   case MPM_GENERIC_AFFINE:
-    if (d == 3)
-      MPMGatherGeneric(mpm, A, pts, node, velocity, kinematics, work, T, F, 3);
-    else if (d == 2)
-      MPMGatherGeneric(mpm, A, pts, node, velocity, kinematics, work, T, F, 2);
-    else
-      MPMGatherGeneric(mpm, A, pts, node, velocity, kinematics, work, T, F, 1);
+    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, T, F);
     break;
   case MPM_GENERIC_HOOP:
-    MPMGatherGeneric(mpm, A, pts, node, velocity, kinematics, work, F, T, 2);
+    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, F, T);
     break;
   default:
-    MPMGatherGeneric(mpm, A, pts, node, velocity, kinematics, work, T, T, 2);
+    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, T, T);
   }
 }
 
