@@ -64,6 +64,35 @@ typedef struct {
   MPM_CLASS_HEADER(MPMObjectOps);
 } * MPMObject;
 
+#define MPM_CHUNK 256 /* points per chunk (MPMStageChunk) of the constitutive update */
+
+/* One chunk of one material's points as each stage of the material's constitutive update sees it
+   (src/core/constitutive.c). idx[i]: the point of entry i; per point (index idx[i]): the fields f[] (a type reaches
+   its declared fields as f[fid[k]]), and the state at t^n (rho, e, p, q, T), L (axisymmetric: L - L_tt I), F^{n+1}
+   and the stress s; per entry i: d(1/rho) and the stress work ws the core computed, and the state at t^{n+1} the
+   stages compute in order (rho1 from the core; e1, p, c^2 of the EOS, c_s^2 of the strength, T). */
+typedef struct {
+  PetscInt          d, n;
+  const PetscInt   *idx;
+  PetscReal         dt;
+  PetscBool         midpoint; /* -mpm_energy_update midpoint: the EOS stage takes pbar = (p^n + p^{n+1}) / 2 */
+  PetscReal *const *f;
+  const PetscReal  *L, *F, *m, *rho, *e, *p, *q, *T;
+  PetscReal        *S;
+  const PetscReal  *rho1, *dvol, *ws;
+  PetscReal        *e1, *pn, *c2, *cs2, *Tn;
+  MPMEOS            eos;          /* the material's EOS, for a stage that reads it (a solid past its spinodal has no shear) */
+  PetscReal        *plastic_work; /* sum m sigma_eq d eps_p / rho [erg] (the report's energy budget) */
+  PetscInt         *spalled;      /* point-steps whose EOS state spalled */
+} MPMStageChunk;
+
+/* A stage of a material's constitutive update: an object of a physics class (EOS, strength, later damage) and
+   its batched update of a chunk. A material is the list of its stages, run in order. */
+typedef struct {
+  void *obj;
+  PetscErrorCode (*update)(void *, MPMStageChunk *);
+} MPMStage;
+
 PETSC_INTERN PetscErrorCode MPMObjectCreate(MPI_Comm, const MPMClass *, size_t, void *);
 PETSC_INTERN PetscErrorCode MPMObjectSetType(void *, const char[]);
 PETSC_INTERN PetscErrorCode MPMObjectGetType(void *, const char **);

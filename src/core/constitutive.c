@@ -107,26 +107,36 @@ static inline __attribute__((always_inline)) PetscErrorCode MPMConstitutiveChunk
       }
     }
   }
-  if (Str) { /* s^{n+1}, eps_p (a plastic type's state, its first point field); the plastic work sum m sigma_eq d eps_p / rho for the report's energy budget */
-    PetscReal *epsp = Str->nfields ? pts->f[Str->fid[0]] : NULL, eps0[MPM_CHUNK];
-    if (epsp)
-      for (PetscInt i = 0; i < n; i++) eps0[i] = epsp[MPM_CP(i)];
-    PetscCall(MPMStrengthStressBatch(Str, d, dt, n, idx, Lsh ? Lsh : L, F, rho1, T, S, epsp, cs2));
-    if (E->spall_spinodal) /* stretched past the EOS's spinodal the solid has fractured: no shear stress, no shear wave */
-      for (PetscInt i = 0; i < n; i++)
-        if (MPMEOSFractured(E, rho1[i])) {
-          for (PetscInt a = 0; a < d * d; a++) S[MPM_CP(i) * d * d + a] = 0.0;
-          cs2[i] = 0.0;
-        }
-    for (PetscInt i = 0; epsp && i < n; i++)
-      if (epsp[MPM_CP(i)] > eps0[i]) mpm->diag.plastic_work += m[MPM_CP(i)] * MPMVonMisesStress(d, &S[MPM_CP(i) * d * d]) * (epsp[MPM_CP(i)] - eps0[i]) / rho1[i];
+  { /* the material's stages in order: s^{n+1}, c_s^2 (a solid's strength), p^{n+1}, c^2, T^{n+1} (its EOS) */
+    const MPMMaterial *mat = &mpm->mat[im];
+    MPMStageChunk      ck  = {.d            = d,
+                              .n            = n,
+                              .idx          = idx,
+                              .dt           = dt,
+                              .midpoint     = midpoint,
+                              .f            = pts->f,
+                              .L            = Lsh ? Lsh : L,
+                              .F            = F,
+                              .m            = m,
+                              .rho          = rho,
+                              .e            = e,
+                              .p            = pr,
+                              .q            = q,
+                              .T            = T,
+                              .S            = S,
+                              .rho1         = rho1,
+                              .dvol         = dvol,
+                              .ws           = ws,
+                              .e1           = e1,
+                              .pn           = pn,
+                              .c2           = c2,
+                              .cs2          = cs2,
+                              .Tn           = Tn,
+                              .eos          = E,
+                              .plastic_work = &mpm->diag.plastic_work,
+                              .spalled      = &mpm->diag.spalled};
+    for (PetscInt s = 0; s < mat->nstages; s++) PetscCall(mat->stage[s].update(mat->stage[s].obj, &ck));
   }
-  if (midpoint) {
-    PetscCall(MPMEOSPressureBatch(E, n, rho1, e1, pn, c2, NULL));                                                             /* predictor */
-    for (PetscInt i = 0; i < n; i++) e1[i] = e[MPM_CP(i)] - (0.5 * (pr[MPM_CP(i)] + pn[i]) + q[MPM_CP(i)]) * dvol[i] + ws[i]; /* the corrector keeps the stress work */
-  }
-  PetscCall(MPMEOSPressureBatch(E, n, rho1, e1, pn, c2, &mpm->diag.spalled));
-  PetscCall(MPMEOSTemperatureBatch(E, n, rho1, e1, Tn));
   if (ident)
     MPMConstitutiveStore(n, pn, Tn, e1, rho1, c2, cs2, &m[c0], &pr[c0], &T[c0], &e[c0], &rho[c0], &V[c0], &c[c0]);
   else

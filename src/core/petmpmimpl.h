@@ -22,7 +22,6 @@ PETSC_INTERN PetscErrorCode MPMCheckUnusedOptions(MPM);
 PETSC_INTERN PetscErrorCode MPMCreateGridOwned(MPM, PetscInt *[], const PetscInt[]);
 
 #define MPM_VOLUME_FILL_TOL 0.05 /* the points' volumes may fill their interior cells to within this fraction */
-#define MPM_CHUNK 256            /* points per batch of the constitutive update */
 #define MPM_MAX_CHECKS 64
 #define MPM_MAX_OUTPUT_TIMES 64
 

@@ -139,6 +139,25 @@ PetscErrorCode MPMEOSTemperatureBatch(MPMEOS eos, PetscInt n, const PetscReal rh
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The EOS stage of a material's constitutive update (MPMStage): p^{n+1}, c^2 and T^{n+1} of the chunk's points from
+   rho^{n+1} and e^{n+1}. With the midpoint energy update a predictor pass gives p^{n+1} first and
+   e^{n+1} = e^n - ((p^n + p^{n+1}) / 2 + q) d(1/rho) + ws (ws: the stress work, kept). */
+PetscErrorCode MPMEOSStageUpdate(void *obj, MPMStageChunk *ck)
+{
+  MPMEOS         E = (MPMEOS)obj;
+  const PetscInt n = ck->n, *idx = ck->idx;
+  PetscReal     *e1 = ck->e1;
+
+  PetscFunctionBegin;
+  if (ck->midpoint) {
+    PetscCall(MPMEOSPressureBatch(E, n, ck->rho1, e1, ck->pn, ck->c2, NULL));
+    for (PetscInt i = 0; i < n; i++) e1[i] = ck->e[idx[i]] - (0.5 * (ck->p[idx[i]] + ck->pn[i]) + ck->q[idx[i]]) * ck->dvol[i] + ck->ws[i];
+  }
+  PetscCall(MPMEOSPressureBatch(E, n, ck->rho1, e1, ck->pn, ck->c2, ck->spalled));
+  PetscCall(MPMEOSTemperatureBatch(E, n, ck->rho1, e1, ck->Tn));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* The specific internal energy at density rho1 on the isentrope through (rho0, e0), de = p / rho^2 drho: the type's
    closed form, or classical RK4 in steps of at most 5% in ln rho (relative error below 1e-8 for the EOS here). */
 PetscReal MPMEOSIsentrope(MPMEOS eos, PetscReal rho0, PetscReal e0, PetscReal rho1)

@@ -55,6 +55,7 @@ static inline PetscBool MPMEOSSpalled(MPMEOS eos, PetscReal rho, PetscReal p, Pe
 
 PETSC_INTERN PetscErrorCode MPMEOSPressureBatch(MPMEOS, PetscInt, const PetscReal[], const PetscReal[], PetscReal[], PetscReal[], PetscInt *);
 PETSC_INTERN PetscReal      MPMEOSIsentrope(MPMEOS, PetscReal, PetscReal, PetscReal);
+PETSC_INTERN PetscErrorCode MPMEOSStageUpdate(void *, MPMStageChunk *);
 PETSC_INTERN PetscErrorCode MPMEOSTemperatureBatch(MPMEOS, PetscInt, const PetscReal[], const PetscReal[], PetscReal[]);
 
 /* Pointwise EOS kernels for set-up and seeding. */

@@ -104,6 +104,17 @@ static PetscErrorCode MPMSceneCheckDuplicates(const char opt[], PetscInt n, char
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Appends a stage to a material's constitutive update. */
+static PetscErrorCode MPMMaterialAddStage(MPMMaterial *mat, void *obj, PetscErrorCode (*update)(void *, MPMStageChunk *))
+{
+  PetscFunctionBegin;
+  PetscCheck(mat->nstages < MPM_MAX_STAGES, PETSC_COMM_SELF, PETSC_ERR_SUP, "Material %s: more than %d stages", mat->name, MPM_MAX_STAGES);
+  mat->stage[mat->nstages].obj    = obj;
+  mat->stage[mat->nstages].update = update;
+  mat->nstages++;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode MPMSceneSetFromOptions(MPM mpm, PetscOptionItems *PetscOptionsObject)
 {
   char      names[MPM_MAX_REGIONS][MPM_MAX_NAME];
@@ -117,6 +128,7 @@ PetscErrorCode MPMSceneSetFromOptions(MPM mpm, PetscOptionItems *PetscOptionsObj
   for (PetscInt i = 0; i < mpm->nmat; i++) {
     char prefix[MPM_MAX_NAME + 16];
     PetscCall(PetscStrncpy(mpm->mat[i].name, names[i], MPM_MAX_NAME));
+    mpm->mat[i].nstages = 0;
     PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "mat_%s_", names[i]));
     PetscCall(MPMEOSCreate(mpm->comm, &mpm->mat[i].eos));
     PetscCall(MPMEOSSetOptionsPrefix(mpm->mat[i].eos, prefix));
@@ -142,6 +154,8 @@ PetscErrorCode MPMSceneSetFromOptions(MPM mpm, PetscOptionItems *PetscOptionsObj
       } else
         PetscCall(MPMRetireObject(mpm, &mpm->mat[i].strength)); /* a fluid: not in the stress path */
     }
+    if (mpm->mat[i].strength) PetscCall(MPMMaterialAddStage(&mpm->mat[i], mpm->mat[i].strength, MPMStrengthStageUpdate));
+    PetscCall(MPMMaterialAddStage(&mpm->mat[i], mpm->mat[i].eos, MPMEOSStageUpdate));
   }
   PetscCall(MPMSceneNames(PetscOptionsObject, "-mpm_regions", "Names of the regions that place the materials, in seeding priority", MPM_MAX_REGIONS, names, &mpm->nreg));
   if (!help) PetscCheck(mpm->nreg > 0, mpm->comm, PETSC_ERR_USER_INPUT, "The scene places no material: give -mpm_regions name[,name...] and -region_<name>_material");

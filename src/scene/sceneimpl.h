@@ -9,10 +9,17 @@
 #define MPM_MAX_MATERIALS 16
 #define MPM_MAX_REGIONS 32
 
+#define MPM_MAX_STAGES 4
+
+/* A material: its stages, the constitutive update in the order it runs them (a solid's strength, then the EOS; a
+   new class, such as damage, is one more stage), and the stages by class for the code that reads one of them (the
+   EOS's temperature, the strength's shear modulus). */
 typedef struct {
   char        name[MPM_MAX_NAME]; /* material name used in option prefixes -mat_<name>_ */
-  MPMEOS      eos;                /* equation of state                               */
-  MPMStrength strength;           /* stress besides the pressure; NULL for a fluid   */
+  PetscInt    nstages;
+  MPMStage    stage[MPM_MAX_STAGES];
+  MPMEOS      eos;      /* equation of state                               */
+  MPMStrength strength; /* stress besides the pressure; NULL for a fluid   */
 } MPMMaterial;
 
 typedef struct {

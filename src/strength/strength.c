@@ -3,6 +3,8 @@
    pressure, sigma = s - (p + q) I. Type none (the default) takes the material out of the stress path: a scene
    whose materials are all fluids never touches a stress tensor. */
 #include "strengthimpl.h"
+#include "strength/hypoelastic.h"
+#include "eos/eosimpl.h"
 
 PETSC_EXTERN PetscErrorCode MPMStrengthCreate_None(MPMStrength);
 PETSC_EXTERN PetscErrorCode MPMStrengthCreate_NeoHookean(MPMStrength);
@@ -84,6 +86,33 @@ PetscErrorCode MPMStrengthFlowStress(MPMStrength str, PetscReal epsp, PetscReal 
 {
   PetscFunctionBegin;
   *Y = str->ops.flow ? str->ops.flow(str->data, epsp, rate, T) : PETSC_MAX_REAL;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The strength stage of a material's constitutive update (MPMStage): s^{n+1} and c_s^2 of the chunk's points, their
+   plastic strain (a plastic type's first point field); past its EOS's spinodal (-mat_<m>_eos_spall_spinodal) a solid
+   has fractured and keeps no shear stress and no shear wave; the plastic work sum m sigma_eq d eps_p / rho for the
+   report's energy budget. */
+PetscErrorCode MPMStrengthStageUpdate(void *obj, MPMStageChunk *ck)
+{
+  MPMStrength      str = (MPMStrength)obj;
+  const PetscInt   d = ck->d, n = ck->n, *idx = ck->idx;
+  const MPMEOS     E = ck->eos;
+  const PetscReal *m = ck->m;
+  PetscReal       *S = ck->S, *epsp = str->nfields ? ck->f[str->fid[0]] : NULL, eps0[MPM_CHUNK];
+
+  PetscFunctionBegin;
+  if (epsp)
+    for (PetscInt i = 0; i < n; i++) eps0[i] = epsp[idx[i]];
+  PetscCall(MPMStrengthStressBatch(str, d, ck->dt, n, idx, ck->L, ck->F, ck->rho1, ck->T, S, epsp, ck->cs2));
+  if (E->spall_spinodal)
+    for (PetscInt i = 0; i < n; i++)
+      if (MPMEOSFractured(E, ck->rho1[i])) {
+        for (PetscInt a = 0; a < d * d; a++) S[idx[i] * d * d + a] = 0.0;
+        ck->cs2[i] = 0.0;
+      }
+  for (PetscInt i = 0; epsp && i < n; i++)
+    if (epsp[idx[i]] > eps0[i]) *ck->plastic_work += m[idx[i]] * MPMVonMisesStress(d, &S[idx[i] * d * d]) * (epsp[idx[i]] - eps0[i]) / ck->rho1[i];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -44,5 +44,6 @@ static inline PetscBool MPMStrengthIsSolid(MPMStrength str)
   return (PetscBool)(str && (str->G > 0.0 || str->needs_F));
 }
 
+PETSC_INTERN PetscErrorCode MPMStrengthStageUpdate(void *, MPMStageChunk *);
 PETSC_INTERN PetscErrorCode MPMStrengthStressBatch(MPMStrength, PetscInt, PetscReal, PetscInt, const PetscInt[], const PetscReal[], const PetscReal[], const PetscReal[], const PetscReal[], PetscReal[], PetscReal[], PetscReal[]);
 PETSC_INTERN PetscErrorCode MPMStrengthRegisterAll(void);
