@@ -101,6 +101,8 @@ struct _p_MPM {
   PetscBool            has_bodyforce; /* the exact solution drives the points with a body force (manufactured) */
   PetscBool            view;
   PetscInt             nmat, nreg;
+  PetscInt             nbodies; /* bodies of the scene (MPMSceneBodies), each with its own nodal velocity field */
+  char                 bodyname[MPM_MAX_BODIES][MPM_MAX_NAME];
   MPMMaterial          mat[MPM_MAX_MATERIALS];
   MPMRegion            reg[MPM_MAX_REGIONS];
   /* physics */
@@ -140,6 +142,9 @@ struct _p_MPM {
   PetscReal   *wL;                                       /* axisymmetric: L_p - L_tt,p I, what the strength models see */
   PetscReal   *work;                                     /* 8 values per point of a chunk of MPM_CHUNK points        */
   PetscInt     box_lo[MPM_MAX_DIM], box_hi[MPM_MAX_DIM]; /* owned nodes the node loops sweep, owned-box indices (MPMGridZeroForScatter) */
+  PetscInt     body;                                     /* the body whose nodes lnodes, box, lbox and xcell are now (MPMBodySelect) */
+  MPMBodyNodes bnodes[MPM_MAX_BODIES];                   /* several bodies: the others' nodes, swapped in by MPMBodySelect */
+  PetscInt     bstart[MPM_MAX_BODIES + 1];               /* several bodies: body b's local points are [bstart[b], bstart[b+1]) (MPMPointsSortByBody) */
   PetscReal   *xcell;                                    /* the cell rule, per extended cell (grid.xcs, xcm): the volume V_c and V_c P_c its points lend it; in the gather, its work per unit P V */
   DM           mean_da;                                  /* the point-exchange modules' nodal sums sum N w, sum N w q (nodemean.c) */
   Vec          mean_l;                                   /* its ghosted local vector (several ranks: summed by ghost_sf with mean_type) */

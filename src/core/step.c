@@ -17,7 +17,6 @@ static PetscErrorCode MPMGridAdvance(MPM mpm, const MPMStepContext *ctx)
   MPMNode        *node;
 
   PetscFunctionBegin;
-  PetscCall(PetscLogEventBegin(mpm->log.advance, 0, 0, 0, 0));
   PetscCall(VecGetArray(mpm->lnodes, (PetscScalar **)&node));
   MPM_FOR_BOX_NODES(mpm, c)
   {
@@ -36,7 +35,61 @@ static PetscErrorCode MPMGridAdvance(MPM mpm, const MPMStepContext *ctx)
   PetscCall(VecRestoreArray(mpm->lnodes, (PetscScalar **)&node));
   PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_VELOCITY, ctx));
   PetscCall(MPMGridGhostFill(mpm));
-  PetscCall(PetscLogEventEnd(mpm->log.advance, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The step's phases that run once per body, on its nodes and points (MPMBodyWindow): points to grid with the nodal
+   force modules; the kick; MUSL's velocity gather and remap; then the phases of every point. One body: no window. */
+typedef enum { MPM_BODY_P2G, MPM_BODY_ADVANCE, MPM_BODY_REMAP, MPM_BODY_POINTS } MPMBodyPhase;
+
+static PetscErrorCode MPMStepPoints(MPM, const MPMStepContext *, PetscInt *);
+
+static PetscErrorCode MPMBodyPhaseRun(MPM mpm, MPMBodyPhase phase, MPMStepContext *ctx, PetscInt *nbad)
+{
+  PetscFunctionBegin;
+  switch (phase) {
+  case MPM_BODY_P2G:
+    PetscCall(MPMParticlesToGrid(mpm, ctx));                    /* m_I, (mv)_I, f_I = f_int at t^n */
+    PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_FORCE, ctx)); /* f_I += f_ext: gravity          */
+    break;
+  case MPM_BODY_ADVANCE:
+    PetscCall(MPMGridAdvance(mpm, ctx)); /* (mv)_I += dt_kick f_I; walls */
+    break;
+  case MPM_BODY_REMAP:
+    PetscCall(MPMGridToParticles(mpm, ctx, PETSC_TRUE, PETSC_FALSE)); /* v_p (and the remap's momenta, MPM::remap_fused) */
+    PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_KINEMATICS, ctx)); /* the remap: v_I from the points' momenta; walls */
+    break;
+  case MPM_BODY_POINTS:
+    if (mpm->windowed) { /* window by window: a window's fields stay in cache from grid to points to the constitutive update */
+      MPMPoints pts;
+      PetscInt  n, p0 = mpm->win_n < 0 ? 0 : mpm->win_p0;
+      PetscCall(MPMPointsGetArrays(mpm, &pts));
+      n = pts.n;
+      for (PetscInt w = 0; w < n; w += mpm->point_window) {
+        PetscCall(MPMPointsSetWindow(mpm, p0 + w, PetscMin(mpm->point_window, n - w)));
+        PetscCall(MPMStepPoints(mpm, ctx, nbad));
+      }
+    } else
+      PetscCall(MPMStepPoints(mpm, ctx, nbad));
+    break;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A phase of the step on every body in turn; then body 0's nodes and all points again. */
+static PetscErrorCode MPMBodiesRun(MPM mpm, MPMBodyPhase phase, MPMStepContext *ctx, PetscInt *nbad)
+{
+  PetscFunctionBegin;
+  if (mpm->nbodies == 1) {
+    PetscCall(MPMBodyPhaseRun(mpm, phase, ctx, nbad));
+    if (phase == MPM_BODY_POINTS) PetscCall(MPMPointsSetWindow(mpm, 0, -1));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  for (PetscInt b = 0; b < mpm->nbodies; b++) {
+    PetscCall(MPMBodyWindow(mpm, b));
+    PetscCall(MPMBodyPhaseRun(mpm, phase, ctx, nbad));
+  }
+  PetscCall(MPMBodiesEnd(mpm));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -67,9 +120,9 @@ PetscErrorCode MPMStep(MPM mpm, PetscReal tn, PetscReal tmax, PetscReal *dt)
   PetscReal      t;
 
   PetscFunctionBegin;
-  PetscCall(MPMParticlesToGrid(mpm, &ctx));                    /* m_I, (mv)_I, f_I = f_int at t^n */
-  PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_FORCE, &ctx)); /* f_I += f_ext: gravity          */
-  PetscCall(MPMStepSize(mpm, tn, tmax, dt, &t));               /* dt_n, t^{n+1}                  */
+  if (mpm->nbodies > 1) PetscCall(MPMPointsSortByBody(mpm)); /* each body's points together */
+  PetscCall(MPMBodiesRun(mpm, MPM_BODY_P2G, &ctx, &nbad));   /* m_I, (mv)_I, f_I at t^n; gravity */
+  PetscCall(MPMStepSize(mpm, tn, tmax, dt, &t));             /* dt_n, t^{n+1}                    */
   if (mpm->failed) PetscFunctionReturn(PETSC_SUCCESS);
   mpm->steps++;
   mpm->time = t;
@@ -77,21 +130,17 @@ PetscErrorCode MPMStep(MPM mpm, PetscReal tn, PetscReal tmax, PetscReal *dt)
   ctx     = (MPMStepContext){.tn = t - *dt, .dt = *dt, .kick = 0.5 * (mpm->dt + *dt)}; /* mpm->dt: the previous step, 0 before the first */
   mpm->dt = *dt;
   mpm->point_steps += mpm->npoints;
-  PetscCall(MPMGridAdvance(mpm, &ctx)); /* (mv)_I += dt_kick f_I; walls */
+  PetscCall(PetscLogEventBegin(mpm->log.advance, 0, 0, 0, 0));
+  PetscCall(MPMBodiesRun(mpm, MPM_BODY_ADVANCE, &ctx, &nbad)); /* (mv)_I += dt_kick f_I; walls */
+  PetscCall(PetscLogEventEnd(mpm->log.advance, 0, 0, 0, 0));
+  PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_CONTACT, &ctx)); /* bodies that meet */
   if (mpm->scheme == MPM_SCHEME_MUSL) {
-    PetscCall(MPMGridToParticles(mpm, &ctx, PETSC_TRUE, PETSC_FALSE)); /* v_p (and the remap's momenta, MPM::remap_fused) */
-    PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_KINEMATICS, &ctx)); /* the remap: v_I from the points' momenta; walls */
+    PetscCall(MPMBodiesRun(mpm, MPM_BODY_REMAP, &ctx, &nbad));
+    ctx.remap = PETSC_TRUE;
+    PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_CONTACT, &ctx));
+    ctx.remap = PETSC_FALSE;
   }
-  if (mpm->windowed) {
-    PetscInt n;
-    PetscCall(DMSwarmGetLocalSize(mpm->swarm, &n));
-    for (PetscInt p0 = 0; p0 < n; p0 += mpm->point_window) {
-      PetscCall(MPMPointsSetWindow(mpm, p0, PetscMin(mpm->point_window, n - p0)));
-      PetscCall(MPMStepPoints(mpm, &ctx, &nbad));
-    }
-    PetscCall(MPMPointsSetWindow(mpm, 0, -1));
-  } else
-    PetscCall(MPMStepPoints(mpm, &ctx, &nbad));
+  PetscCall(MPMBodiesRun(mpm, MPM_BODY_POINTS, &ctx, &nbad));
   PetscCall(MPMConstitutiveFailure(mpm, nbad));
   if (mpm->failed) PetscFunctionReturn(PETSC_SUCCESS);                                           /* the time loop stops               */
   PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_ADAPT, &ctx));                                  /* domain reset, point splitting     */

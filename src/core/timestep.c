@@ -123,8 +123,9 @@ PetscErrorCode MPMComputeTimeStep(MPM mpm, PetscBool diagnose, PetscReal *dt)
       const PetscReal s = MPMSignalSpeed(&pts, p, d, PETSC_TRUE, hoop, mu, h, &div);
       if (s == mx[0] || s != s) pmax = p;
     }
-  {
+  for (PetscInt b = 0; b < mpm->nbodies; b++) { /* every body's nodes */
     const MPMNode *node;
+    PetscCall(MPMBodySelect(mpm, b));
     PetscCall(VecGetArrayRead(mpm->lnodes, (const PetscScalar **)&node));
     MPM_FOR_BOX_NODES(mpm, c)
     {
@@ -138,6 +139,7 @@ PetscErrorCode MPMComputeTimeStep(MPM mpm, PetscBool diagnose, PetscReal *dt)
     }
     PetscCall(VecRestoreArrayRead(mpm->lnodes, (const PetscScalar **)&node));
   }
+  PetscCall(MPMBodySelect(mpm, 0));
   lmax = mx[0];
   if (mx[0] != mx[0]) { /* a NaN speed makes the step NaN on every rank (MPI's maximum of a NaN is undefined): the time loop stops with the diagnosis */
     mx[0] = 0.0;

@@ -137,6 +137,7 @@ PetscErrorCode MPMCreateGridOwned(MPM mpm, PetscInt *own[], const PetscInt ranks
     g->nxcells *= g->xcm[k];
   }
   PetscCall(PetscCalloc1(2 * g->nxcells, &mpm->xcell));
+  PetscCall(MPMBodiesCreateNodes(mpm));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -144,6 +145,7 @@ PetscErrorCode MPMCreateGridOwned(MPM mpm, PetscInt *own[], const PetscInt ranks
 PetscErrorCode MPMDestroyGrid(MPM mpm)
 {
   PetscFunctionBegin;
+  PetscCall(MPMBodiesDestroyNodes(mpm));
   PetscCall(VecDestroy(&mpm->nodes));
   PetscCall(VecDestroy(&mpm->lnodes));
   if (mpm->ghost_sf) PetscCallMPI(MPI_Type_free(&mpm->node_type));

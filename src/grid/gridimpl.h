@@ -54,6 +54,14 @@ typedef struct {
 } MPMNode;
 #define MPM_NODE_DOF ((PetscInt)(sizeof(MPMNode) / sizeof(PetscScalar)))
 
+/* The nodes of one body when another's are in use (MPMBodySelect swaps them with the MPM object's): its ghosted local
+   nodal vector, its node boxes (MPMGridZeroForScatter) and its cell-rule sums. */
+typedef struct {
+  Vec        lnodes;
+  PetscInt   box_lo[MPM_MAX_DIM], box_hi[MPM_MAX_DIM], lbox_lo[MPM_MAX_DIM], lbox_hi[MPM_MAX_DIM];
+  PetscReal *xcell;
+} MPMBodyNodes;
+
 /* The nodes one point touches: flat indices into the ghosted local node array, weights N_I(x_p), gradients,
    and the sign of each vector component: -1 for component k where the entry is the mirror image, across a
    wall normal to k, of a node outside the domain (a symmetry plane by image points). An index may repeat. */
@@ -218,5 +226,8 @@ PETSC_INTERN PetscErrorCode MPMGridGhostSumForce(MPM);
 PETSC_INTERN PetscErrorCode MPMGridOwnedToGlobal(MPM);
 PETSC_INTERN PetscErrorCode MPMGhostExchange(MPM, MPI_Datatype, PetscScalar *, PetscBool, PetscBool);
 PETSC_INTERN PetscErrorCode MPMDestroyGrid(MPM);
+PETSC_INTERN PetscErrorCode MPMBodiesCreateNodes(MPM);
+PETSC_INTERN PetscErrorCode MPMBodiesDestroyNodes(MPM);
+PETSC_INTERN PetscErrorCode MPMBodySelect(MPM, PetscInt);
 PETSC_INTERN PetscErrorCode MPMGridGhostFill(MPM);
 PETSC_INTERN PetscErrorCode MPMGridZeroForScatter(MPM, PetscInt, const PetscReal[], MPMNode *);

@@ -455,7 +455,7 @@ struct _p_MPMReport {
   struct {
     char section[MPM_MAX_NAME]; /* "" for the top level */
     char key[MPM_MAX_NAME];
-    char value[256]; /* JSON text */
+    char value[8192]; /* JSON text */
   } entry[MPM_REPORT_MAX_KEYS];
   PetscReal removed;    /* energy that left the system through the modules [erg] */
   char      text[4096]; /* the modules' lines of the printed summary */
@@ -487,6 +487,7 @@ PetscErrorCode MPMReportAdd(MPMReport rep, const char section[], const char key[
   va_start(Argp, format);
   PetscCall(PetscVSNPrintf(rep->entry[rep->n].value, sizeof(rep->entry[0].value), format, &len, Argp));
   va_end(Argp);
+  PetscCheck(len <= sizeof(rep->entry[0].value), PETSC_COMM_SELF, PETSC_ERR_PLIB, "Report key %s: its value is longer than %d characters", key, (int)sizeof(rep->entry[0].value) - 1);
   rep->n++;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

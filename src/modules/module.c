@@ -15,6 +15,7 @@ PETSC_INTERN PetscErrorCode MPMModuleCreate_Popping(MPMModule);
 PETSC_INTERN PetscErrorCode MPMModuleCreate_Domain(MPMModule);
 PETSC_INTERN PetscErrorCode MPMModuleCreate_Split(MPMModule);
 PETSC_INTERN PetscErrorCode MPMModuleCreate_Damping(MPMModule);
+PETSC_INTERN PetscErrorCode MPMModuleCreate_Contact(MPMModule);
 
 #define MPM_MAX_MODULES 32
 static struct {
@@ -50,6 +51,7 @@ PetscErrorCode MPMModulesRegisterAll(void)
   PetscCall(MPMModuleRegister("domain", MPMModuleCreate_Domain));
   PetscCall(MPMModuleRegister("split", MPMModuleCreate_Split));
   PetscCall(MPMModuleRegister("damping", MPMModuleCreate_Damping));
+  PetscCall(MPMModuleRegister("contact", MPMModuleCreate_Contact));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

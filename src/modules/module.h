@@ -9,7 +9,8 @@
 /* Where in the step a module runs. Grid phases get the owned nodes of the ghosted local nodal vector. */
 typedef enum {
   MPM_PHASE_GRID_FORCE,       /* after points to grid: external nodal forces (gravity)                                            */
-  MPM_PHASE_GRID_VELOCITY,    /* wherever nodal velocities are formed (advance, MUSL remap): walls, damping, later contact */
+  MPM_PHASE_GRID_VELOCITY,    /* wherever nodal velocities are formed (advance, MUSL remap), on each body's nodes: walls, damping */
+  MPM_PHASE_GRID_CONTACT,     /* after the kick and after the MUSL remap, once on all bodies' nodes (node NULL): contact         */
   MPM_PHASE_POINT_KINEMATICS, /* after grid to points (MUSL: after its velocity gather, over all points): the MUSL remap          */
   MPM_PHASE_POINT_STATE,      /* before the constitutive update: artificial viscosity                                             */
   MPM_PHASE_POINT_ADAPT,      /* after the constitutive update: domain reset, point splitting                                     */

@@ -23,6 +23,7 @@ const MPMFieldInfo MPMFieldTable[MPM_NUM_FIELDS] = {
   {"id", 1, "-", "persistent id: the point's seeding lattice index; children of a split take ids from the number of lattice sites up", PETSC_TRUE},
   {"domainscale", 0, "-", "domain scale s_p: the point's domain is F_p diag(s_p h / (2 ppc)) [-1, 1]^d (halved along an axis at each split)", PETSC_FALSE},
   {"hooprate", 1, "1/s", "hoop strain rate L_tt = v_r / r (axisymmetric)", PETSC_FALSE},
+  {"body", 1, "-", "body index (-region_<r>_body): each body has its own nodal velocity field", PETSC_TRUE},
 };
 
 /* Block size of a table entry: 0 means d, -1 means d*d. */
@@ -95,6 +96,7 @@ PetscErrorCode MPMPointsSelectFields(MPM mpm)
   mpm->field_on[MPM_FIELD_REFPOSITION] = (PetscBool)(mpm->exact != NULL);
   mpm->field_on[MPM_FIELD_DOMAINSCALE] = mpm->field_req[MPM_FIELD_DOMAINSCALE];
   mpm->field_on[MPM_FIELD_HOOPRATE]    = mpm->grid.axisym;
+  mpm->field_on[MPM_FIELD_BODY]        = (PetscBool)(mpm->nbodies > 1);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -191,21 +193,22 @@ void MPMSiteAt(const MPMGrid *g, PetscInt ppc, PetscInt s, PetscReal x[], PetscR
 #define MPM_SEED_DEPTH 6
 
 typedef struct {
-  PetscInt  material, region;                      /* region: the only region of the part, -1 if several */
+  PetscInt  material, body, region;                /* region: the only region of the part, -1 if several */
   PetscReal x[MPM_MAX_DIM], V, m, mv[MPM_MAX_DIM]; /* centroid, volume, mass, momentum (velocity when done) */
 } MPMPiece;
 
-/* Adds the box of centre x and volume dV, which region r holds, to the site's part of r's material. */
+/* Adds the box of centre x and volume dV, which region r holds, to the site's part of r's material and body. */
 static void MPMPieceAdd(MPM mpm, PetscInt r, const PetscReal x[], PetscReal dV, PetscReal vol[], MPMPiece pc[], PetscInt *np)
 {
   const MPMRegion *reg = &mpm->reg[r];
   PetscInt         i;
 
-  for (i = 0; i < *np && pc[i].material != reg->material; i++) {
+  for (i = 0; i < *np && (pc[i].material != reg->material || pc[i].body != reg->body); i++) {
   }
   if (i == *np) {
     PetscMemzero(&pc[i], sizeof(pc[i]));
     pc[i].material = reg->material;
+    pc[i].body     = reg->body;
     pc[i].region   = r;
     (*np)++;
   } else if (pc[i].region != r)
@@ -300,7 +303,7 @@ static PetscInt MPMSiteSeed(MPM mpm, const PetscReal xs[], MPMPiece pc[], PetscR
     for (PetscInt r = 0; r < mpm->nreg && pc[i].region < 0; r++) { /* merged: along each isentrope to rho */
       const MPMRegion *reg = &mpm->reg[r];
       PetscReal        er, w2 = 0.0;
-      if (!vol[r] || reg->material != pc[i].material) continue;
+      if (!vol[r] || reg->material != pc[i].material || reg->body != pc[i].body) continue;
       MPMEOSEnergyKernel(eos, reg->rho, reg->T, &er);
       for (PetscInt s = 0; s < 8; s++) er = MPMIsentropeStep(MPMEOSPressureOf, eos, reg->rho + s * (rho[n] - reg->rho) / 8, er, (rho[n] - reg->rho) / 8);
       for (PetscInt k = 0; k < d; k++) w2 += PetscSqr(reg->v[k]);
@@ -385,7 +388,8 @@ PetscErrorCode MPMCreatePoints(MPM mpm)
         for (PetscInt k = 0; k < bs; k++) pts.f[f][n * bs + k] = 0.0;
       }
       pts.f[MPM_FIELD_MATERIAL][n] = (PetscReal)pc[i].material;
-      pts.f[MPM_FIELD_ID][n]       = id;
+      if (pts.f[MPM_FIELD_BODY]) pts.f[MPM_FIELD_BODY][n] = (PetscReal)pc[i].body;
+      pts.f[MPM_FIELD_ID][n] = id;
     }
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
@@ -709,47 +713,109 @@ PetscErrorCode MPMExactInitialize(MPMExact exact, MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Puts the local points in cell order (a stable counting sort on the owned cell), so that the points of a cell are
-   neighbours in memory and the transfers find their nodes in cache. Every field the points carry moves with its
-   point; the sums at the nodes then run in another order, which changes results at round-off. */
+/* Moves every field the points carry so that the point perm[i] goes to place i (n points). */
+static PetscErrorCode MPMPointsPermute(MPM mpm, const MPMPoints *pts, const PetscInt perm[])
+{
+  const PetscInt d = mpm->grid.dim, n = pts->n;
+  PetscInt       bsmax = 1;
+  PetscReal     *tmp;
+
+  PetscFunctionBegin;
+  for (PetscInt f = 0; f < mpm->nfields; f++) bsmax = PetscMax(bsmax, MPMFieldBlockSize(mpm->field[f].bs, d));
+  PetscCall(PetscMalloc1(n * bsmax, &tmp));
+  for (PetscInt f = 0; f < mpm->nfields; f++) {
+    const PetscInt bs = MPMFieldBlockSize(mpm->field[f].bs, d);
+    PetscReal     *a  = pts->f[f];
+    if (!a) continue;
+    for (PetscInt i = 0; i < n; i++)
+      for (PetscInt k = 0; k < bs; k++) tmp[i * bs + k] = a[perm[i] * bs + k];
+    PetscCall(PetscArraycpy(a, tmp, n * bs));
+  }
+  PetscCall(PetscFree(tmp));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Puts the local points in order of the keys key[p] in [0, nkeys) by a stable counting sort, unless they are in order
+   already; start[0 .. nkeys] (nkeys + 1 entries) returns where each key's points begin. */
+static PetscErrorCode MPMPointsSortByKey(MPM mpm, const MPMPoints *pts, const PetscInt key[], PetscInt nkeys, PetscInt start[])
+{
+  PetscBool sorted = PETSC_TRUE;
+  PetscInt *perm;
+
+  PetscFunctionBegin;
+  PetscCall(PetscArrayzero(start, nkeys + 1));
+  for (PetscInt p = 0; p < pts->n; p++) {
+    start[key[p] + 1]++;
+    if (p && key[p] < key[p - 1]) sorted = PETSC_FALSE;
+  }
+  for (PetscInt c = 0; c < nkeys; c++) start[c + 1] += start[c];
+  if (!sorted) {
+    PetscCall(PetscMalloc1(pts->n, &perm));
+    for (PetscInt p = 0; p < pts->n; p++) perm[start[key[p]]++] = p; /* perm[i]: the point that goes to place i */
+    for (PetscInt c = nkeys; c > 0; c--) start[c] = start[c - 1];    /* the counting moved each start to the next key's */
+    start[0] = 0;
+    PetscCall(MPMPointsPermute(mpm, pts, perm));
+    PetscCall(PetscFree(perm));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Puts the local points in cell order (a stable counting sort on the owned cell; with several bodies on the body, then
+   the cell), so that the points of a cell are neighbours in memory and the transfers find their nodes in cache. Every
+   field the points carry moves with its point; the sums at the nodes then run in another order, which changes results
+   at round-off. */
 PetscErrorCode MPMSortPoints(MPM mpm)
 {
   const MPMGrid *g = &mpm->grid;
-  PetscInt      *key, *start, *perm, n;
-  PetscReal     *x, *tmp;
-  PetscBool      sorted = PETSC_TRUE;
+  PetscInt      *key, *start;
   MPMPoints      pts;
 
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(mpm->log.sort, 0, 0, 0, 0));
   PetscCall(MPMPointsGetArrays(mpm, &pts));
-  n = pts.n;
-  x = pts.f[MPM_FIELD_POSITION];
-  PetscCall(PetscMalloc3(n, &key, g->ncells + 1, &start, n, &perm));
-  PetscCall(PetscArrayzero(start, g->ncells + 1));
-  for (PetscInt p = 0; p < n; p++) {
-    key[p] = PetscMax(0, MPMLocalCell(g, &x[p * g->dim])); /* after migration every point is in an owned cell */
-    start[key[p] + 1]++;
-    if (p && key[p] < key[p - 1]) sorted = PETSC_FALSE;
+  PetscCall(PetscMalloc2(pts.n, &key, PetscMax(1, mpm->nbodies) * g->ncells + 1, &start));
+  for (PetscInt p = 0; p < pts.n; p++) {
+    key[p] = PetscMax(0, MPMLocalCell(g, &pts.f[MPM_FIELD_POSITION][p * g->dim])); /* after migration every point is in an owned cell */
+    if (mpm->nbodies > 1) key[p] += (PetscInt)pts.f[MPM_FIELD_BODY][p] * g->ncells;
   }
-  if (!sorted) {
-    PetscInt bsmax = 1;
-    for (PetscInt c = 0; c < g->ncells; c++) start[c + 1] += start[c];
-    for (PetscInt p = 0; p < n; p++) perm[start[key[p]]++] = p; /* perm[i]: the point that goes to place i */
-    for (PetscInt f = 0; f < mpm->nfields; f++) bsmax = PetscMax(bsmax, MPMFieldBlockSize(mpm->field[f].bs, g->dim));
-    PetscCall(PetscMalloc1(n * bsmax, &tmp));
-    for (PetscInt f = 0; f < mpm->nfields; f++) {
-      const PetscInt bs = MPMFieldBlockSize(mpm->field[f].bs, g->dim);
-      PetscReal     *a  = pts.f[f];
-      if (!a) continue;
-      for (PetscInt i = 0; i < n; i++)
-        for (PetscInt k = 0; k < bs; k++) tmp[i * bs + k] = a[perm[i] * bs + k];
-      PetscCall(PetscArraycpy(a, tmp, n * bs));
-    }
-    PetscCall(PetscFree(tmp));
-  }
+  PetscCall(MPMPointsSortByKey(mpm, &pts, key, PetscMax(1, mpm->nbodies) * g->ncells, start));
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-  PetscCall(PetscFree3(key, start, perm));
+  PetscCall(PetscFree2(key, start));
   PetscCall(PetscLogEventEnd(mpm->log.sort, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Several bodies: the local points body by body (a stable sort on the body, which keeps the cell order within each),
+   and where each body's begin, MPM::bstart. */
+PetscErrorCode MPMPointsSortByBody(MPM mpm)
+{
+  PetscInt *key;
+  MPMPoints pts;
+
+  PetscFunctionBegin;
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  PetscCall(PetscMalloc1(pts.n, &key));
+  for (PetscInt p = 0; p < pts.n; p++) key[p] = (PetscInt)pts.f[MPM_FIELD_BODY][p];
+  PetscCall(MPMPointsSortByKey(mpm, &pts, key, mpm->nbodies, mpm->bstart));
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(PetscFree(key));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Body b's nodes, and its points as all points (MPMPointsSetWindow). */
+PetscErrorCode MPMBodyWindow(MPM mpm, PetscInt b)
+{
+  PetscFunctionBegin;
+  PetscCall(MPMBodySelect(mpm, b));
+  PetscCall(MPMPointsSetWindow(mpm, mpm->bstart[b], mpm->bstart[b + 1] - mpm->bstart[b]));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* After a loop over the bodies: body 0's nodes and all points again. */
+PetscErrorCode MPMBodiesEnd(MPM mpm)
+{
+  PetscFunctionBegin;
+  PetscCall(MPMPointsSetWindow(mpm, 0, -1));
+  PetscCall(MPMBodySelect(mpm, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

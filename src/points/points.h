@@ -25,6 +25,7 @@ typedef enum {
   MPM_FIELD_ID,
   MPM_FIELD_DOMAINSCALE,
   MPM_FIELD_HOOPRATE,
+  MPM_FIELD_BODY,
   MPM_NUM_FIELDS
 } MPMField;
 
@@ -59,6 +60,9 @@ PETSC_INTERN PetscErrorCode MPMPointsRelease(MPM);
 PETSC_INTERN PetscErrorCode MPMPointsSetWindow(MPM, PetscInt, PetscInt);
 PETSC_INTERN PetscErrorCode MPMMigrate(MPM);
 PETSC_INTERN PetscErrorCode MPMSortPoints(MPM);
+PETSC_INTERN PetscErrorCode MPMPointsSortByBody(MPM);
+PETSC_INTERN PetscErrorCode MPMBodyWindow(MPM, PetscInt);
+PETSC_INTERN PetscErrorCode MPMBodiesEnd(MPM);
 PETSC_INTERN PetscErrorCode MPMDiagnoseVacuum(MPM, PetscInt *, PetscInt *);
 PETSC_INTERN PetscErrorCode MPMExactInitialize(MPMExact, MPM);
 PETSC_INTERN PetscErrorCode MPMXProfile(MPM, PetscInt, PetscReal[], PetscReal[]);

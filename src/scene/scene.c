@@ -52,6 +52,11 @@ static PetscErrorCode MPMRegionSetFromOptions(MPM mpm, MPMRegion *r)
   r->axis = -1;
   PetscOptionsBegin(mpm->comm, prefix, "Region of the scene", "MPM");
   PetscCall(PetscOptionsString("-material", "Material that fills the region (one of -mpm_materials)", "", mat, mat, sizeof(mat), &set));
+  r->bodyname[0] = 0;
+  PetscCall(PetscOptionsString(
+    "-body",
+    "Body the region belongs to: regions with the same body name move on one velocity field (welded); bodies meet through -mpm_contact. Default: a solid region is a body of its own (named after the region), the fluid regions form the body fluid", "",
+    r->bodyname, r->bodyname, sizeof(r->bodyname), NULL));
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-lo", "Lower corner of the region's box [cm]", d, r->lo));
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-hi", "Upper corner of the region's box [cm]", d, r->hi));
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-center", "Centre of the region's shell rmin <= |x - center| <= rmax [cm]", d, r->center));
@@ -115,6 +120,33 @@ static PetscErrorCode MPMMaterialAddStage(MPMMaterial *mat, void *obj, PetscErro
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The scene's bodies, each with its own nodal velocity field: the regions with the same -region_<r>_body name form
+   one; a region without that option is a body of its own, named after it, where its material has strength (a
+   solid), and joins the body "fluid" where it has none (gases and liquids share one field). Bodies are numbered in
+   the order of their first region. */
+static PetscErrorCode MPMSceneBodies(MPM mpm)
+{
+  PetscFunctionBegin;
+  mpm->nbodies = 0;
+  for (PetscInt i = 0; i < mpm->nreg; i++) {
+    MPMRegion *r = &mpm->reg[i];
+    PetscInt   b;
+    if (!r->bodyname[0]) PetscCall(PetscStrncpy(r->bodyname, r->material >= 0 && mpm->mat[r->material].strength ? r->name : "fluid", sizeof(r->bodyname)));
+    for (b = 0; b < mpm->nbodies; b++) {
+      PetscBool same;
+      PetscCall(PetscStrcmp(mpm->bodyname[b], r->bodyname, &same));
+      if (same) break;
+    }
+    if (b == mpm->nbodies) {
+      PetscCheck(b < MPM_MAX_BODIES, mpm->comm, PETSC_ERR_USER_INPUT, "-region_%s_body %s: the scene has more than %d bodies; give regions the same body name to weld them", r->name, r->bodyname, MPM_MAX_BODIES);
+      PetscCall(PetscStrncpy(mpm->bodyname[b], r->bodyname, MPM_MAX_NAME));
+      mpm->nbodies++;
+    }
+    r->body = b;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode MPMSceneSetFromOptions(MPM mpm, PetscOptionItems *PetscOptionsObject)
 {
   char      names[MPM_MAX_REGIONS][MPM_MAX_NAME];
@@ -164,6 +196,7 @@ PetscErrorCode MPMSceneSetFromOptions(MPM mpm, PetscOptionItems *PetscOptionsObj
     PetscCall(PetscStrncpy(mpm->reg[i].name, names[i], MPM_MAX_NAME));
     PetscCall(MPMRegionSetFromOptions(mpm, &mpm->reg[i]));
   }
+  PetscCall(MPMSceneBodies(mpm));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -183,7 +216,8 @@ PetscErrorCode MPMSceneView(MPM mpm, PetscViewer viewer)
   }
   for (PetscInt i = 0; i < mpm->nreg; i++) {
     const MPMRegion *r = &mpm->reg[i];
-    PetscCall(PetscViewerASCIIPrintf(viewer, "Region %s: %s, x in [%g, %g], rho %g g/cm^3, T %g eV, v %g cm/s\n", r->name, mpm->mat[r->material].name, (double)r->lo[0], (double)r->hi[0], (double)r->rho, (double)r->T, (double)r->v[0]));
+    PetscCall(
+      PetscViewerASCIIPrintf(viewer, "Region %s: %s, body %s, x in [%g, %g], rho %g g/cm^3, T %g eV, v %g cm/s\n", r->name, mpm->mat[r->material].name, r->bodyname, (double)r->lo[0], (double)r->hi[0], (double)r->rho, (double)r->T, (double)r->v[0]));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -8,6 +8,7 @@
 
 #define MPM_MAX_MATERIALS 16
 #define MPM_MAX_REGIONS 32
+#define MPM_MAX_BODIES 16
 
 #define MPM_MAX_STAGES 4
 
@@ -32,6 +33,8 @@ typedef struct {
   PetscReal rho;                             /* initial density [g/cm^3]                            */
   PetscReal T;                               /* initial temperature [eV]                            */
   PetscReal v[MPM_MAX_DIM];                  /* initial velocity [cm/s]                             */
+  char      bodyname[MPM_MAX_NAME];          /* -region_<name>_body: the body it belongs to ("" until set-up: the default rule) */
+  PetscInt  body;                            /* index of its body, each with its own velocity field (MPM::nbodies) */
   PetscBool hydrostatic;                     /* -region_<name>_hydrostatic: rho is the density at the top; below it the
                                                 points start in hydrostatic equilibrium under -mpm_gravity */
 } MPMRegion;

@@ -77,6 +77,17 @@ def test_restart():
             r1, r2 = json.load(f1), json.load(f2)
         check(r2["outflow"] == r1["outflow"] and r2["outflow"]["points"] > 0 and r2["conservation"] == r1["conservation"] and not same_files(o, p),
               f"outflow: a restart after {r2['outflow']['points']} points left gives the uninterrupted tallies and conservation, bit for bit")
+        for ranks in (1, 2):  # two bodies in contact (inputs/disks_2d.opts): the body field and the contact module's tallies
+            u, w = os.path.join(d, f"u{ranks}"), os.path.join(d, f"w{ranks}")
+            disks = ["-options_file", os.path.join(SRC, "inputs", "disks_2d.opts"), "-mpm_cells", "20,20"]
+            run([*disks, "-mpm_output", u, "-mpm_report", os.path.join(u, "report.json")], ranks)
+            run([*disks, "-mpm_output", w, "-mpm_checkpoint_interval", "80", "-ts_max_steps", "80"], ranks)
+            run([*disks, "-mpm_output", w, "-mpm_restart", os.path.join(w, "checkpoint-80.h5"), "-mpm_report", os.path.join(w, "report.json")], ranks)
+            with open(os.path.join(u, "report.json")) as f1, open(os.path.join(w, "report.json")) as f2:
+                r1, r2 = json.load(f1), json.load(f2)
+            diff = same_files(u, w)
+            check(r2["contact"] == r1["contact"] and r1["contact"]["corrections"] > 0 and not diff,
+                  f"{ranks} rank(s): two bodies in contact restarted at step 80 (after the impact) equal the uninterrupted run bit for bit (contact work {r2['contact']['work']:.4e}; differing: {diff})")
         # a checkpoint of another version (its /state one value short, as before -mpm_dt_min_ratio's entry): refused, said why
         old = os.path.join(d, "old-checkpoint.h5")
         shutil.copy(os.path.join(p, "checkpoint-800.h5"), old)

@@ -1,0 +1,454 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* Contact between bodies (grid phase MPM_PHASE_GRID_CONTACT, in the step wherever the scene has several bodies): each
+   body moves on its own nodal velocity field (src/grid/bodies.c), and at a node that two or more bodies share this
+   module corrects their velocities after the kick and after the MUSL remap, the multi-velocity-field algorithm of
+   Bardenhagen, Brackbill & Sulsky, CMAME 187 (2000) 529, with Coulomb friction:
+     v_cm = sum_b m_b v_b / sum_b m_b, and for each body b at the node, dv = v_b - v_cm, dn = dv . n_b:
+     where the bodies approach (dn > 0) and touch (the gap test below), the normal part is removed, v_b -= dn n_b, and
+     the tangential part dv_t = dv - dn n_b by at most mu dn: v_b -= min(mu dn, |dv_t|) dv_t / |dv_t| (stick when
+     mu dn >= |dv_t|). Bodies that separate (dn <= 0) are left alone: no adhesion, no tension across the interface.
+   The outward normal n_b of body b from g_b,I = sum_p m_p grad N_I(x_p) over the body's points (minus the gradient of
+   its mass field at the node: it points out of the body): -mpm_contact_normal average (default), n_b along
+   g_b - sum_{c != b} g_c (the two bodies' normals averaged, equal and opposite for two bodies, so that momentum is
+   conserved exactly), or mass, along g_b; where a rigid body is present, minus the rigid body's own normal (its
+   surface is exact: the averaged normal tilts at a block's corners and slowed a frictionless block on an incline).
+   Gap test: the bodies touch at node I only where their volumes there fill it, sum_b sum_p N_I(x_p) V_p >= f V_I,
+   V_I the cell volume (r-z: times r_I), f = -mpm_contact_fill (default 0.5: a gap under about half a cell; 0: the
+   approach test alone, which lets bodies meet a cell early: the disks of inputs/disks_2d.opts lose 12% of their
+   kinetic energy to contact at 20^2 cells against 4% with f = 0.5). A rigid body (-body_<b>_rigid_velocity) moves at its prescribed velocity: its nodes
+   take it, and at a shared node v_cm is it (infinite mass); the force it exerts on the other bodies is the contact
+   force on it (report). The kinetic energy a correction takes out of the grid, m_b (v_b* - v_b') . (v_b^n + v_b') / 2
+   per body and node as for wall friction, heats the body's points at that node (MPMContactHeat: an inelastic impact
+   heats its interface), so the total energy is kept to round-off; the report gives its sum (contact.work) and the
+   frictional part (contact.friction_work). */
+#include "core/petmpmimpl.h"
+
+typedef enum { MPM_CONTACT_NORMAL_AVERAGE, MPM_CONTACT_NORMAL_MASS } MPMContactNormal;
+static const char *const MPMContactNormals[] = {"average", "mass", "MPMContactNormal", "MPM_CONTACT_NORMAL_", NULL};
+
+typedef struct {
+  PetscReal        mu[MPM_MAX_BODIES][MPM_MAX_BODIES]; /* Coulomb friction coefficient of each pair of bodies [-] */
+  MPMContactNormal normal;
+  PetscReal        fill;                       /* -mpm_contact_fill: the gap test's fraction f [-] */
+  PetscBool        rigid[MPM_MAX_BODIES];      /* -body_<b>_rigid_velocity given                  */
+  PetscReal        vrigid[MPM_MAX_BODIES][3];  /* its velocity [cm/s]                             */
+  Vec              geo[MPM_MAX_BODIES];        /* per body, ghosted local nodes: m = sum N V_p, p = grad m (MPMNode layout) */
+  PetscInt         gid;                        /* the grid the vectors were made for (MPMGrid::id)   */
+  char            *shared;                     /* per local node: two or more bodies have mass there */
+  PetscInt        *cand, ncand, maxcand;       /* the local points whose stencil reaches a shared node */
+  PetscReal        work, friction;             /* energy the corrections took out of the grid, its frictional part, this rank [erg] */
+  PetscReal        impulse[MPM_MAX_BODIES][3]; /* integral of the contact force on each rigid body, this rank [dyn s] */
+  PetscReal        force[MPM_MAX_BODIES][3];   /* the contact force on each rigid body in the last kick, all ranks [dyn] */
+  PetscReal        fmax[MPM_MAX_BODIES];       /* the largest |force| so far [dyn] */
+  PetscInt         nodes;                      /* node-corrections made, this rank */
+} MPMContact;
+
+static PetscErrorCode MPMContactSetFromOptions(MPMModule mod, MPM mpm, PetscOptionItems *PetscOptionsObject)
+{
+  MPMContact *ct = (MPMContact *)mod->data;
+  PetscReal   mu = 0.0;
+
+  PetscFunctionBegin;
+  PetscCall(PetscOptionsReal("-mpm_contact_friction", "Coulomb friction coefficient between every two bodies (-mpm_contact_friction_<a>_<b> for one pair) [-], >= 0 (0: frictionless)", "", mu, &mu, NULL));
+  PetscCall(MPMOptionsCheckRange("-mpm_contact_friction", mu, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+  for (PetscInt a = 0; a < mpm->nbodies; a++)
+    for (PetscInt b = 0; b < mpm->nbodies; b++) ct->mu[a][b] = mu;
+  for (PetscInt a = 0; a < mpm->nbodies; a++)
+    for (PetscInt b = a + 1; b < mpm->nbodies; b++) {
+      char      opt[2 * MPM_MAX_NAME + 32];
+      PetscBool set;
+      PetscCall(PetscSNPrintf(opt, sizeof(opt), "-mpm_contact_friction_%s_%s", mpm->bodyname[a], mpm->bodyname[b]));
+      PetscCall(PetscOptionsReal(opt, "Coulomb friction coefficient between these two bodies [-], >= 0", "", ct->mu[a][b], &mu, &set));
+      if (!set) {
+        PetscCall(PetscSNPrintf(opt, sizeof(opt), "-mpm_contact_friction_%s_%s", mpm->bodyname[b], mpm->bodyname[a]));
+        PetscCall(PetscOptionsReal(opt, "Coulomb friction coefficient between these two bodies [-], >= 0", "", ct->mu[a][b], &mu, &set));
+      }
+      if (set) {
+        PetscCall(MPMOptionsCheckRange(opt, mu, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+        ct->mu[a][b] = ct->mu[b][a] = mu;
+      }
+    }
+  PetscCall(PetscOptionsEnum("-mpm_contact_normal", "Outward normal of a body at a shared node: average (of its own and the other bodies' mass gradients; conserves momentum) or mass (its own mass gradient)", "", MPMContactNormals,
+                             (PetscEnum)ct->normal, (PetscEnum *)&ct->normal, NULL));
+  PetscCall(PetscOptionsReal("-mpm_contact_fill", "Gap test: bodies touch at a node where their volumes fill this fraction of its cell volume [-], in [0, 1] (0: wherever they approach)", "", ct->fill, &ct->fill, NULL));
+  PetscCall(MPMOptionsCheckRange("-mpm_contact_fill", ct->fill, 0.0, 1.0, PETSC_FALSE, PETSC_FALSE));
+  for (PetscInt b = 0; b < mpm->nbodies; b++) {
+    char     opt[MPM_MAX_NAME + 32];
+    PetscInt n = mpm->grid.dim;
+    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-body_%s_rigid_velocity", mpm->bodyname[b]));
+    PetscCall(PetscOptionsRealArray(opt, "A rigid body: its prescribed velocity, one value per dimension [cm/s]; it takes part in contact and the report gives the contact force on it", "", ct->vrigid[b], &n, &ct->rigid[b]));
+    PetscCheck(!ct->rigid[b] || n == mpm->grid.dim, mpm->comm, PETSC_ERR_USER_INPUT, "%s: %" PetscInt_FMT " values given, valid is one per dimension (%" PetscInt_FMT ")", opt, n, mpm->grid.dim);
+  }
+  mod->active = (PetscBool)(mpm->nbodies > 1);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Per body at the nodes two or more bodies share: sum N_I V_p and g_I = sum m_p grad N_I(x_p) (mirror images across
+   walls with their signs), summed over the ranks, from the points whose stencil reaches such a node (the candidates,
+   kept for MPMContactHeat). Once per step (the MUSL remap's pass reuses them: the points have not moved). The nodes'
+   masses are the kick's, ghosts filled. */
+static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const *node)
+{
+  const PetscInt d = mpm->grid.dim, nb = mpm->nbodies;
+  PetscInt       nloc;
+
+  PetscFunctionBegin;
+  PetscCall(VecGetLocalSize(mpm->lnodes, &nloc));
+  nloc /= MPM_NODE_DOF;
+  if (ct->gid != mpm->grid.id) { /* a new grid (set-up, rebalance): new vectors */
+    for (PetscInt b = 0; b < nb; b++) {
+      PetscCall(VecDestroy(&ct->geo[b]));
+      PetscCall(DMCreateLocalVector(mpm->da, &ct->geo[b]));
+    }
+    PetscCall(PetscFree(ct->shared));
+    PetscCall(PetscMalloc1(nloc, &ct->shared));
+    ct->gid = mpm->grid.id;
+  }
+  for (PetscInt c = 0; c < nloc; c++) { /* the shared nodes, ghosts included */
+    PetscInt nin = 0;
+    for (PetscInt b = 0; b < nb; b++) nin += node[b][c].m > 0.0;
+    ct->shared[c] = (char)(nin > 1);
+  }
+  ct->ncand = 0;
+  for (PetscInt b = 0; b < nb; b++) {
+    MPMNode  *geo;
+    MPMPoints pts;
+    PetscCall(VecZeroEntries(ct->geo[b]));
+    PetscCall(VecGetArray(ct->geo[b], (PetscScalar **)&geo));
+    PetscCall(MPMBodyWindow(mpm, b));
+    PetscCall(MPMPointsGetArrays(mpm, &pts));
+    for (PetscInt p = 0; p < pts.n; p++) {
+      const PetscReal m = pts.f[MPM_FIELD_MASS][p], V = pts.f[MPM_FIELD_VOLUME][p];
+      PetscReal       Fs[MPM_MAX_DIM * MPM_MAX_DIM];
+      PetscBool       near = PETSC_FALSE;
+      MPMStencil      st;
+      MPMShapeEvaluate(mpm->shape, &mpm->grid, &pts.f[MPM_FIELD_POSITION][p * d], MPMPointDomain(d, pts.f[MPM_FIELD_DEFGRAD], pts.f[MPM_FIELD_DOMAINSCALE], p, Fs), &st);
+      for (PetscInt a = 0; a < st.n && !near; a++) near = (PetscBool)ct->shared[st.node[a]];
+      if (!near) continue;
+      if (ct->ncand == ct->maxcand) {
+        PetscInt *c2;
+        ct->maxcand = PetscMax(1024, 2 * ct->maxcand);
+        PetscCall(PetscMalloc1(ct->maxcand, &c2));
+        PetscCall(PetscArraycpy(c2, ct->cand, ct->ncand));
+        PetscCall(PetscFree(ct->cand));
+        ct->cand = c2;
+      }
+      ct->cand[ct->ncand++] = mpm->bstart[b] + p;
+      for (PetscInt a = 0; a < st.n; a++) {
+        MPMNode *nd = &geo[st.node[a]];
+        nd->m += st.w[a] * V;
+        for (PetscInt k = 0; k < d; k++) nd->p[k] += st.s[a][k] * m * st.dw[a][k];
+      }
+    }
+    PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+    PetscCall(MPMGhostExchange(mpm, mpm->node_type, (PetscScalar *)geo, PETSC_TRUE, PETSC_TRUE));
+    PetscCall(VecRestoreArray(ct->geo[b], (PetscScalar **)&geo));
+  }
+  PetscCall(MPMBodiesEnd(mpm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The kinetic energy the corrections took out at node I, E_I = sum_b E_b,I (each body's in its geometry's f[0], ghosts
+   filled), goes into the internal energy of every point there, of every body, as its mass share of the
+   points-to-grid map: e_p += sum_I N_I(x_p) E_I / sum_b m_b,I, so that sum_p m_p de_p = sum_I E_I and the total
+   energy is kept (an inelastic impact heats both sides of its interface). Shared by all the node's mass, not by the
+   body's alone: a body's node that holds little of its mass (a point barely reaching it) gets a large velocity from
+   the kick, and its correction's energy given to that body alone would heat its few points without bound. Then E is
+   cleared. */
+static PetscErrorCode MPMContactHeat(MPMContact *ct, MPM mpm, MPMNode *const *node)
+{
+  const PetscInt d = mpm->grid.dim;
+  MPMNode       *geo[MPM_MAX_BODIES];
+  MPMPoints      pts;
+
+  PetscFunctionBegin;
+  for (PetscInt b = 0; b < mpm->nbodies; b++) {
+    PetscCall(VecGetArray(ct->geo[b], (PetscScalar **)&geo[b]));
+    PetscCall(MPMGhostExchange(mpm, mpm->node_type, (PetscScalar *)geo[b], PETSC_FALSE, PETSC_TRUE));
+  }
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt i = 0; i < ct->ncand; i++) {
+    const PetscInt p = ct->cand[i];
+    PetscReal      Fs[MPM_MAX_DIM * MPM_MAX_DIM], de = 0.0;
+    MPMStencil     st;
+    MPMShapeEvaluate(mpm->shape, &mpm->grid, &pts.f[MPM_FIELD_POSITION][p * d], MPMPointDomain(d, pts.f[MPM_FIELD_DEFGRAD], pts.f[MPM_FIELD_DOMAINSCALE], p, Fs), &st);
+    for (PetscInt a = 0; a < st.n; a++) {
+      const PetscInt c = st.node[a];
+      PetscReal      E = 0.0, M = 0.0;
+      for (PetscInt b = 0; b < mpm->nbodies; b++) {
+        E += geo[b][c].f[0];
+        M += node[b][c].m;
+      }
+      if (E != 0.0) de += st.w[a] * E / M;
+    }
+    pts.f[MPM_FIELD_ENERGY][p] += de;
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  for (PetscInt b = 0; b < mpm->nbodies; b++) {
+    PetscInt n;
+    PetscCall(VecGetLocalSize(ct->geo[b], &n));
+    for (PetscInt c = 0; c < n / MPM_NODE_DOF; c++) geo[b][c].f[0] = 0.0;
+    PetscCall(VecRestoreArray(ct->geo[b], (PetscScalar **)&geo[b]));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The local nodal vector of body b, whichever body's the MPM object holds now. */
+static Vec MPMContactNodes(MPM mpm, PetscInt b)
+{
+  return b == mpm->body ? mpm->lnodes : mpm->bnodes[b].lnodes;
+}
+
+/* Body b's unit outward normal n at node c (0 where the mass gradients cancel); own: from its own mass gradient alone. */
+static void MPMContactNormalAt(const MPMContact *ct, PetscInt d, PetscInt nb, PetscInt b, MPMNode *const *geo, PetscInt c, PetscBool own, PetscReal n[])
+{
+  PetscReal nn = 0.0;
+
+  for (PetscInt k = 0; k < d; k++) {
+    n[k] = geo[b][c].p[k];
+    if (!own && ct->normal == MPM_CONTACT_NORMAL_AVERAGE)
+      for (PetscInt o = 0; o < nb; o++)
+        if (o != b) n[k] -= geo[o][c].p[k];
+    nn += n[k] * n[k];
+  }
+  nn = nn > 0.0 ? 1.0 / PetscSqrtReal(nn) : 0.0;
+  for (PetscInt k = 0; k < d; k++) n[k] *= nn;
+}
+
+static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
+{
+  MPMContact    *ct = (MPMContact *)mod->data;
+  const MPMGrid *g  = &mpm->grid;
+  const PetscInt d = g->dim, nb = mpm->nbodies;
+  MPMNode       *node[MPM_MAX_BODIES], *geo[MPM_MAX_BODIES];
+  PetscInt       lo[MPM_MAX_DIM], hi[MPM_MAX_DIM];
+  PetscReal      frc[MPM_MAX_BODIES][3];
+  PetscBool      anyrigid = PETSC_FALSE;
+
+  PetscFunctionBegin;
+  for (PetscInt b = 0; b < nb; b++) PetscCall(VecGetArray(MPMContactNodes(mpm, b), (PetscScalar **)&node[b]));
+  if (!ctx->remap) PetscCall(MPMContactGeometry(ct, mpm, node));
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) { /* the union of the bodies' node boxes */
+    lo[k] = PETSC_MAX_INT;
+    hi[k] = -1;
+  }
+  for (PetscInt b = 0; b < nb; b++) {
+    const PetscInt *blo = b == mpm->body ? mpm->box_lo : mpm->bnodes[b].box_lo, *bhi = b == mpm->body ? mpm->box_hi : mpm->bnodes[b].box_hi;
+    PetscBool       empty = PETSC_FALSE;
+    for (PetscInt k = 0; k < MPM_MAX_DIM; k++) empty = (PetscBool)(empty || blo[k] >= bhi[k]);
+    for (PetscInt k = 0; k < MPM_MAX_DIM && !empty; k++) {
+      lo[k] = PetscMin(lo[k], blo[k]);
+      hi[k] = PetscMax(hi[k], bhi[k]);
+    }
+    PetscCall(VecGetArray(ct->geo[b], (PetscScalar **)&geo[b]));
+    for (PetscInt k = 0; k < 3; k++) frc[b][k] = 0.0;
+    anyrigid = (PetscBool)(anyrigid || ct->rigid[b]);
+  }
+  if (anyrigid) /* a rigid body's nodes move at its velocity */
+    for (PetscInt b = 0; b < nb; b++) {
+      const PetscInt *blo = b == mpm->body ? mpm->box_lo : mpm->bnodes[b].box_lo, *bhi = b == mpm->body ? mpm->box_hi : mpm->bnodes[b].box_hi;
+      if (!ct->rigid[b]) continue;
+      for (PetscInt i2 = blo[2]; i2 < bhi[2]; i2++)
+        for (PetscInt i1 = blo[1]; i1 < bhi[1]; i1++)
+          for (PetscInt i0 = blo[0]; i0 < bhi[0]; i0++) {
+            MPMNode *nd = &node[b][MPMOwnedToLocal(g, i0, i1, i2)];
+            if (nd->m > 0.0)
+              for (PetscInt k = 0; k < d; k++) nd->p[k] = nd->v0[k] = ct->vrigid[b][k];
+          }
+    }
+  for (PetscInt i2 = lo[2]; i2 < hi[2]; i2++)
+    for (PetscInt i1 = lo[1]; i1 < hi[1]; i1++)
+      for (PetscInt i0 = lo[0]; i0 < hi[0]; i0++) {
+        const PetscInt c   = MPMOwnedToLocal(g, i0, i1, i2);
+        PetscInt       nin = 0, rb = -1, heavy[MPM_MAX_BODIES];
+        PetscReal      M = 0.0, P[3] = {0.0, 0.0, 0.0}, vcm[3], Vsum = 0.0, Vnode = g->vcell;
+        for (PetscInt b = 0; b < nb; b++)
+          if (node[b][c].m > 0.0) {
+            nin++;
+            M += node[b][c].m;
+            Vsum += geo[b][c].m;
+            for (PetscInt k = 0; k < d; k++) P[k] += node[b][c].m * node[b][c].p[k];
+            if (ct->rigid[b]) rb = b;
+          }
+        if (nin < 2) continue;
+        if (g->axisym) Vnode *= g->lo[0] + (i0 + g->xs[0]) * g->h[0]; /* per radian: r_I h_r h_z */
+        if (ct->fill > 0.0 && Vsum < ct->fill * Vnode) continue;      /* a gap between them */
+        for (PetscInt k = 0; k < d; k++) vcm[k] = rb >= 0 ? ct->vrigid[rb][k] : P[k] / M;
+        for (PetscInt b = 0; b < nb; b++) { /* each body's heaviest partner at the node, whose friction coefficient it feels */
+          heavy[b] = -1;
+          for (PetscInt o = 0; o < nb; o++)
+            if (o != b && node[o][c].m > 0.0 && (heavy[b] < 0 || ct->rigid[o] || (node[o][c].m > node[heavy[b]][c].m && !ct->rigid[heavy[b]]))) heavy[b] = o;
+        }
+        for (PetscInt b = 0; b < nb; b++) {
+          MPMNode  *nd = &node[b][c];
+          PetscReal n[3], dv[3], dn = 0.0, dvt[3], t2 = 0.0, mu, vold[3], wn = 0.0, wt = 0.0;
+          if (!(nd->m > 0.0) || ct->rigid[b]) continue;
+          if (rb >= 0) { /* a rigid body's surface gives the normal: n_b = -n_rigid */
+            MPMContactNormalAt(ct, d, nb, rb, geo, c, PETSC_TRUE, n);
+            for (PetscInt k = 0; k < d; k++) n[k] = -n[k];
+          } else
+            MPMContactNormalAt(ct, d, nb, b, geo, c, PETSC_FALSE, n);
+          for (PetscInt k = 0; k < d; k++) {
+            dv[k] = nd->p[k] - vcm[k];
+            dn += dv[k] * n[k];
+          }
+          if (!(dn > 0.0)) continue; /* separating, or no normal */
+          mu = ct->mu[b][heavy[b]];
+          for (PetscInt k = 0; k < d; k++) {
+            dvt[k] = dv[k] - dn * n[k];
+            t2 += dvt[k] * dvt[k];
+            vold[k] = nd->p[k];
+            nd->p[k] -= dn * n[k];
+            wn += nd->m * (vold[k] - nd->p[k]) * (nd->v0[k] + nd->p[k]) * 0.5;
+          }
+          if (mu > 0.0 && t2 > 0.0) {
+            const PetscReal t = PetscSqrtReal(t2), s = PetscMin(mu * dn, t) / t;
+            for (PetscInt k = 0; k < d; k++) {
+              const PetscReal vk = nd->p[k];
+              nd->p[k] -= s * dvt[k];
+              wt += nd->m * (vk - nd->p[k]) * (nd->v0[k] + nd->p[k]) * 0.5;
+            }
+          }
+          geo[b][c].f[0] = wn + wt; /* heats the body's points there (MPMContactHeat) */
+          ct->work += wn + wt;
+          ct->friction += wt;
+          ct->nodes++;
+          if (rb >= 0)
+            for (PetscInt k = 0; k < d; k++) frc[rb][k] += nd->m * (vold[k] - nd->p[k]) / ctx->kick; /* the push the rigid body gave, reversed */
+        }
+      }
+  for (PetscInt b = 0; b < nb; b++) PetscCall(VecRestoreArray(ct->geo[b], (PetscScalar **)&geo[b]));
+  PetscCall(MPMContactHeat(ct, mpm, node));
+  for (PetscInt b = 0; b < nb; b++) PetscCall(VecRestoreArray(MPMContactNodes(mpm, b), (PetscScalar **)&node[b]));
+  if (anyrigid) { /* the contact force on each rigid body, all ranks; its impulse over the kicks */
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &frc[0][0], 3 * MPM_MAX_BODIES, MPIU_REAL, MPIU_SUM, mpm->comm));
+    for (PetscInt b = 0; b < nb; b++) {
+      PetscReal f2 = 0.0;
+      if (!ct->rigid[b]) continue;
+      for (PetscInt k = 0; k < 3; k++) {
+        if (!ctx->remap) ct->force[b][k] = 0.0;
+        ct->force[b][k] += frc[b][k];
+        ct->impulse[b][k] += frc[b][k] * ctx->kick;
+        f2 += ct->force[b][k] * ct->force[b][k];
+      }
+      ct->fmax[b] = PetscMax(ct->fmax[b], PetscSqrtReal(f2));
+    }
+  }
+  for (PetscInt b = 0; b < nb; b++) { /* the ghosts of the corrected nodes */
+    PetscCall(MPMBodySelect(mpm, b));
+    PetscCall(MPMGridGhostFill(mpm));
+  }
+  PetscCall(MPMBodySelect(mpm, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMContactView(MPMModule mod, MPM mpm, PetscViewer viewer)
+{
+  MPMContact *ct = (MPMContact *)mod->data;
+
+  PetscFunctionBegin;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "contact between %" PetscInt_FMT " bodies: normal %s, fill %g, friction", mpm->nbodies, MPMContactNormals[ct->normal], (double)ct->fill));
+  PetscCall(PetscViewerASCIIUseTabs(viewer, PETSC_FALSE));
+  for (PetscInt a = 0; a < mpm->nbodies; a++)
+    for (PetscInt b = a + 1; b < mpm->nbodies; b++) PetscCall(PetscViewerASCIIPrintf(viewer, " %s-%s %g", mpm->bodyname[a], mpm->bodyname[b], (double)ct->mu[a][b]));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "\n"));
+  PetscCall(PetscViewerASCIIUseTabs(viewer, PETSC_TRUE));
+  for (PetscInt b = 0; b < mpm->nbodies; b++)
+    if (ct->rigid[b]) PetscCall(PetscViewerASCIIPrintf(viewer, "  body %s is rigid, velocity %g %g %g cm/s\n", mpm->bodyname[b], (double)ct->vrigid[b][0], (double)ct->vrigid[b][1], (double)ct->vrigid[b][2]));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Each body's mass, mean velocity and kinetic energy from its points; the contact work (turned into heat), its
+   frictional part; each rigid body's contact force and impulse. */
+static PetscErrorCode MPMContactReport(MPMModule mod, MPM mpm, MPMReport rep)
+{
+  MPMContact    *ct = (MPMContact *)mod->data;
+  const PetscInt d = mpm->grid.dim, nb = mpm->nbodies;
+  PetscReal      s[MPM_MAX_BODIES][5] = {{0}}, w[3] = {ct->work, ct->friction, (PetscReal)ct->nodes}, imp[MPM_MAX_BODIES][3];
+  MPMPoints      pts;
+  char           buf[8000];
+  size_t         len = 0;
+
+  PetscFunctionBegin;
+  if (!mod->active) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt p = 0; p < pts.n; p++) { /* per body: m, m v, m |v|^2 / 2 */
+    const PetscInt  b = (PetscInt)pts.f[MPM_FIELD_BODY][p];
+    const PetscReal m = pts.f[MPM_FIELD_MASS][p], *v = &pts.f[MPM_FIELD_VELOCITY][p * d];
+    s[b][0] += m;
+    for (PetscInt k = 0; k < d; k++) {
+      s[b][1 + k] += m * v[k];
+      s[b][4] += 0.5 * m * v[k] * v[k];
+    }
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(PetscArraycpy(&imp[0][0], &ct->impulse[0][0], 3 * MPM_MAX_BODIES));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &s[0][0], 5 * MPM_MAX_BODIES, MPIU_REAL, MPIU_SUM, mpm->comm));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, w, 3, MPIU_REAL, MPIU_SUM, mpm->comm));
+  PetscCall(MPMReportPrintf(rep, "  contact: work %.6g erg (friction %.6g; heat at the interfaces), %.4f of the initial kinetic energy, in %.0f node corrections\n", (double)w[0], (double)w[1],
+                            (double)(mpm->kinetic0 > 0.0 ? w[0] / mpm->kinetic0 : 0.0), (double)w[2]));
+  PetscCall(PetscSNPrintf(buf, sizeof(buf), "["));
+  for (PetscInt b = 0; b < nb; b++) {
+    const PetscReal m = s[b][0], minv = m > 0.0 ? 1.0 / m : 0.0;
+    PetscCall(PetscStrlen(buf, &len));
+    PetscCall(PetscSNPrintf(buf + len, sizeof(buf) - len, "%s{\"name\": \"%s\", \"mass\": %.6e, \"velocity\": [%.6e, %.6e, %.6e], \"kinetic\": %.6e, \"rigid\": %s", b ? ", " : "", mpm->bodyname[b], (double)m, (double)(s[b][1] * minv),
+                            (double)(d > 1 ? s[b][2] * minv : 0.0), (double)(d > 2 ? s[b][3] * minv : 0.0), (double)s[b][4], ct->rigid[b] ? "true" : "false"));
+    PetscCall(PetscStrlen(buf, &len));
+    if (ct->rigid[b])
+      PetscCall(PetscSNPrintf(buf + len, sizeof(buf) - len, ", \"force\": [%.6e, %.6e, %.6e], \"force_max\": %.6e, \"impulse\": [%.6e, %.6e, %.6e]}", (double)ct->force[b][0], (double)ct->force[b][1], (double)ct->force[b][2], (double)ct->fmax[b],
+                              (double)imp[b][0], (double)imp[b][1], (double)imp[b][2]));
+    else
+      PetscCall(PetscSNPrintf(buf + len, sizeof(buf) - len, "}"));
+    PetscCall(MPMReportPrintf(rep, "  body %s: mass %.6g g, velocity %.6g %.6g %.6g cm/s, kinetic energy %.6g erg%s\n", mpm->bodyname[b], (double)m, (double)(s[b][1] * minv), (double)(d > 1 ? s[b][2] * minv : 0.0),
+                              (double)(d > 2 ? s[b][3] * minv : 0.0), (double)s[b][4], ct->rigid[b] ? " (rigid)" : ""));
+  }
+  PetscCall(PetscStrlen(buf, &len));
+  PetscCall(PetscSNPrintf(buf + len, sizeof(buf) - len, "]"));
+  PetscCall(MPMReportAdd(rep, NULL, "contact", "{\"work\": %.6e, \"friction_work\": %.6e, \"corrections\": %.0f, \"bodies\": %s}", (double)w[0], (double)w[1], (double)w[2], buf));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMContactCheckpoint(MPMModule mod, MPM mpm, MPMCheckpoint ck)
+{
+  MPMContact *ct = (MPMContact *)mod->data;
+
+  PetscFunctionBegin;
+  PetscCall(MPMCheckpointReals(ck, "work", 1, &ct->work, MPM_CKPT_RANK_SUM));
+  PetscCall(MPMCheckpointReals(ck, "friction_work", 1, &ct->friction, MPM_CKPT_RANK_SUM));
+  PetscCall(MPMCheckpointInts(ck, "corrections", 1, &ct->nodes, MPM_CKPT_RANK_SUM));
+  PetscCall(MPMCheckpointReals(ck, "impulse", 3 * MPM_MAX_BODIES, &ct->impulse[0][0], MPM_CKPT_GLOBAL));
+  PetscCall(MPMCheckpointReals(ck, "force_max", MPM_MAX_BODIES, ct->fmax, MPM_CKPT_GLOBAL));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMContactDestroy(MPMModule mod)
+{
+  MPMContact *ct = (MPMContact *)mod->data;
+
+  PetscFunctionBegin;
+  for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) PetscCall(VecDestroy(&ct->geo[b]));
+  PetscCall(PetscFree(ct->shared));
+  PetscCall(PetscFree(ct->cand));
+  PetscCall(PetscFree(mod->data));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MPMModuleCreate_Contact(MPMModule mod)
+{
+  MPMContact *ct;
+
+  PetscFunctionBegin;
+  PetscCall(PetscNew(&ct));
+  ct->fill                = 0.5;
+  ct->gid                 = -1;
+  mod->data               = ct;
+  mod->phase              = MPM_PHASE_GRID_CONTACT;
+  mod->ops.setfromoptions = MPMContactSetFromOptions;
+  mod->ops.apply          = MPMContactApply;
+  mod->ops.view           = MPMContactView;
+  mod->ops.report         = MPMContactReport;
+  mod->ops.checkpoint     = MPMContactCheckpoint;
+  mod->ops.destroy        = MPMContactDestroy;
+  PetscCall(PetscStrncpy(mod->event, "MPMContact", sizeof(mod->event)));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
