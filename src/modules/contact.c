@@ -283,7 +283,9 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
           MPMNode  *nd = &node[b][c];
           PetscReal n[3], dv[3], dn = 0.0, dvt[3], t2 = 0.0, mu, vold[3], wn = 0.0, wt = 0.0;
           if (!(nd->m > 0.0) || ct->rigid[b]) continue;
-          if (rb >= 0) { /* a rigid body's surface gives the normal: n_b = -n_rigid */
+          PetscReal g2 = 0.0;
+          for (PetscInt k = 0; rb >= 0 && k < d; k++) g2 += PetscSqr(geo[rb][c].p[k]);
+          if (rb >= 0 && g2 * PetscSqr(g->hmin) >= 0.01 * PetscSqr(node[rb][c].m)) { /* at a rigid body's surface (|g| h >= m / 10) its own normal: n_b = -n_rigid */
             MPMContactNormalAt(ct, d, nb, rb, geo, c, PETSC_TRUE, n);
             for (PetscInt k = 0; k < d; k++) n[k] = -n[k];
           } else

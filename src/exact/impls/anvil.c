@@ -13,7 +13,10 @@
    (by more than 0.5%) has no shot to compare with, and its checks report the measured values with null references
    (a warning at set-up says so) instead of errors against another shot.
    A quarter rod on the symmetry walls x = 0 and y = 0 (centre on the axis there) measures the whole rod's D and W;
-   on an axisymmetric grid (-mpm_axisymmetric) the rod is a box at x = r >= 0 and r is x itself.
+   on an axisymmetric grid (-mpm_axisymmetric) the rod is a box at x = r >= 0 and r is x itself. With
+   -mpm_exact_anvil_surface z0 the anvil is a body whose face is at x_a = z0 (a rigid anvil, or the mirror rod of a
+   symmetric rod-on-rod impact, through the contact module): lengths are measured from z0 and the footprint over the
+   points whose domain reaches above it.
    The numbers of the shots are in ../shared/reference/taylor_ofhc_copper.csv (Johnson & Cook 1983; Wilkins &
    Guinan 1973); the scene inputs/taylor_anvil_3d.opts gives the 190 m/s shot's. */
 #include "../exactimpl.h"
@@ -24,6 +27,7 @@ typedef struct {
   PetscBool other;          /* the rod strikes at another speed than the shot's: no reference                     */
   PetscInt  a;              /* the rod's axis: the last coordinate                                                */
   PetscReal lo, L0;         /* the anvil's position and the rod's initial length along it [cm]                     */
+  PetscBool surface;        /* -mpm_exact_anvil_surface given: the anvil is a body (rigid, or a second rod) whose face is at lo */
   PetscReal c[MPM_MAX_DIM]; /* a point of the rod's axis                                                          */
 } Exact_Anvil;
 
@@ -36,7 +40,8 @@ static PetscErrorCode MPMExactSetUp_Anvil(MPMExact exact, const MPMScene *sc)
   PetscCheck(sc->nreg > 0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type anvil: the scene has no region for the rod");
   rod   = &sc->reg[0];
   ea->a = sc->grid->dim - 1;
-  PetscCheck(sc->bc_lo[ea->a] == MPM_BC_WALL, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type anvil: the anvil is the wall at the lower end of the last coordinate; -mpm_bc_lo must be wall there");
+  PetscCheck(ea->surface || sc->bc_lo[ea->a] == MPM_BC_WALL, sc->comm, PETSC_ERR_USER_INPUT,
+             "-mpm_exact_type anvil: the anvil is the wall at the lower end of the last coordinate (-mpm_bc_lo must be wall there), or a body whose face -mpm_exact_anvil_surface gives");
   PetscCheck(rod->axis < 0 || rod->axis == ea->a, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type anvil: the rod (-region_%s_axis) must lie along the last coordinate", rod->name);
   PetscCheck(ea->Lf > 0.0 && ea->Dmax > 0.0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_anvil_length %g and -mpm_exact_anvil_diameter %g: give the shot's final length and footprint diameter [cm], both > 0", (double)ea->Lf, (double)ea->Dmax);
   PetscCheck(ea->W >= 0.0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_anvil_width %g: valid is >= 0 cm (0: not measured)", (double)ea->W);
@@ -51,7 +56,7 @@ static PetscErrorCode MPMExactSetUp_Anvil(MPMExact exact, const MPMScene *sc)
                             "(-mpm_exact_anvil_speed, _length, _diameter, _width)\n",
                             rod->name, (double)PetscSqrtReal(v2), (double)ea->V));
   }
-  ea->lo = sc->grid->lo[ea->a];
+  if (!ea->surface) ea->lo = sc->grid->lo[ea->a];
   ea->L0 = rod->hi[ea->a] - PetscMax(rod->lo[ea->a], ea->lo);
   for (PetscInt k = 0; k < sc->grid->dim; k++) ea->c[k] = sc->grid->axisym ? 0.0 : (rod->axis >= 0 ? rod->center[k] : 0.5 * (rod->lo[k] + rod->hi[k])); /* axisymmetric: the axis x = 0 */
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -64,7 +69,7 @@ static PetscErrorCode MPMExactChecks_Anvil(MPMExact exact, MPMProbe probe)
   PetscBool    found;
 
   PetscFunctionBegin;
-  PetscCall(MPMProbeExtent(probe, ea->a, ea->c, ea->lo, PETSC_MAX_REAL, &zmax, &rmax, &found));
+  PetscCall(MPMProbeExtent(probe, ea->a, ea->c, ea->lo + (ea->surface ? 1e-6 * ea->L0 : 0.0), PETSC_MAX_REAL, &zmax, &rmax, &found)); /* a body anvil: its own points, whose domains end at its face, left out */
   if (!found) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(MPMProbeAddCheck(probe, "final_length", zmax - ea->lo, ea->other ? PETSC_NAN : ea->Lf));
   PetscCall(MPMProbeAddCheck(probe, "footprint", 2.0 * rmax, ea->other ? PETSC_NAN : ea->Dmax));
@@ -82,6 +87,8 @@ static PetscErrorCode MPMExactSetFromOptions_Anvil(MPMExact exact, PetscOptionIt
   PetscCall(PetscOptionsReal("-exact_anvil_length", "The shot's final rod length Lf [cm], > 0", "", ea->Lf, &ea->Lf, NULL));
   PetscCall(PetscOptionsReal("-exact_anvil_diameter", "The shot's footprint (mushroom) diameter Dmax [cm], > 0", "", ea->Dmax, &ea->Dmax, NULL));
   PetscCall(PetscOptionsReal("-exact_anvil_width", "The shot's rod diameter at 0.2 L0 from the anvil [cm], >= 0 (0: not measured)", "", ea->W, &ea->W, NULL));
+  PetscCall(
+    PetscOptionsReal("-exact_anvil_surface", "The anvil's face along the rod's axis [cm] where the anvil is a body (a rigid body, or the mirror rod of a rod-on-rod impact) rather than the wall at the lower end", "", ea->lo, &ea->lo, &ea->surface));
   PetscCall(PetscOptionsReal("-exact_anvil_speed", "The shot's impact speed [cm/s], >= 0 (0: not given); a rod at another speed gets no reference", "", ea->V, &ea->V, NULL));
   PetscOptionsHeadEnd();
   PetscFunctionReturn(PETSC_SUCCESS);
