@@ -260,7 +260,7 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
     for (PetscInt i1 = lo[1]; i1 < hi[1]; i1++)
       for (PetscInt i0 = lo[0]; i0 < hi[0]; i0++) {
         const PetscInt c   = MPMOwnedToLocal(g, i0, i1, i2);
-        PetscInt       nin = 0, rb = -1, heavy[MPM_MAX_BODIES];
+        PetscInt       nin = 0, rb = -1, heavy[MPM_MAX_BODIES], onwall;
         PetscReal      M = 0.0, P[3] = {0.0, 0.0, 0.0}, vcm[3], Vsum = 0.0, Vnode = g->vcell;
         for (PetscInt b = 0; b < nb; b++)
           if (node[b][c].m > 0.0) {
@@ -271,6 +271,11 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
             if (ct->rigid[b]) rb = b;
           }
         if (nin < 2) continue;
+        onwall = 0; /* bit k: the node lies on a wall normal to k */
+        for (PetscInt k = 0; k < d; k++) {
+          const PetscInt gi = (k == 0 ? i0 : k == 1 ? i1 : i2) + g->xs[k];
+          if ((gi == 0 && mpm->bc_lo[k] == MPM_BC_WALL) || (gi == g->cells[k] && mpm->bc_hi[k] == MPM_BC_WALL)) onwall |= 1 << k;
+        }
         if (g->axisym) Vnode *= g->lo[0] + (i0 + g->xs[0]) * g->h[0]; /* per radian: r_I h_r h_z */
         if (ct->fill > 0.0 && Vsum < ct->fill * Vnode) continue;      /* a gap between them */
         for (PetscInt k = 0; k < d; k++) vcm[k] = rb >= 0 ? ct->vrigid[rb][k] : P[k] / M;
@@ -290,6 +295,16 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
             for (PetscInt k = 0; k < d; k++) n[k] = -n[k];
           } else
             MPMContactNormalAt(ct, d, nb, b, geo, c, PETSC_FALSE, n);
+          if (onwall) { /* a symmetry plane: the mirrored mass field has no gradient across it (the points' images, which the
+                           stencil folds onto the nodes beyond the plane, are not summed at the plane's own nodes) */
+            PetscReal nn = 0.0;
+            for (PetscInt k = 0; k < d; k++) {
+              if ((onwall >> k) & 1) n[k] = 0.0;
+              nn += n[k] * n[k];
+            }
+            nn = nn > 0.0 ? 1.0 / PetscSqrtReal(nn) : 0.0;
+            for (PetscInt k = 0; k < d; k++) n[k] *= nn;
+          }
           for (PetscInt k = 0; k < d; k++) {
             dv[k] = nd->p[k] - vcm[k];
             dn += dv[k] * n[k];
