@@ -313,6 +313,24 @@ static PetscErrorCode MPMWriteOutputRow(MPM mpm, const char name[], PetscReal va
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Row k (the output being written) of the dataset /<name> of n values per output, by rank 0: a module's history. */
+PetscErrorCode MPMOutputHistory(MPM mpm, const char name[], PetscInt n, const PetscReal values[])
+{
+  hsize_t       dims[2] = {(hsize_t)mpm->noutputs + 1, (hsize_t)n}, start[2] = {(hsize_t)mpm->noutputs, 0}, count[2] = {1, (hsize_t)n};
+  const hsize_t maxdims[2] = {H5S_UNLIMITED, (hsize_t)n}, chunk[2] = {64, (hsize_t)n};
+  hid_t         file, dset;
+  PetscMPIInt   rank;
+
+  PetscFunctionBegin;
+  PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
+  if (rank) count[0] = count[1] = 0;
+  PetscCall(PetscViewerHDF5GetFileId(mpm->h5, &file));
+  PetscCall(MPMH5Extendable(file, name, 2, dims, maxdims, chunk, H5T_NATIVE_DOUBLE, PETSC_FALSE, &dset));
+  PetscCall(MPMH5Block(dset, PETSC_TRUE, start, count, (void *)values, name));
+  H5Dclose(dset);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Every point field marked output, and the positions padded to three components for the XDMF geometry. */
 static PetscErrorCode MPMWritePoints(MPM mpm)
 {
@@ -411,6 +429,8 @@ PetscErrorCode MPMOutputWrite(MPM mpm, PetscInt step, PetscReal t)
   }
   PetscCall(MPMWritePoints(mpm));
   PetscCall(MPMWriteGrid(mpm));
+  for (PetscInt i = 0; i < mpm->nmods; i++) /* the modules' histories (the loop here: module.c calls the modules' files, which call this file) */
+    if (mpm->mods[i]->active && mpm->mods[i]->ops.output) PetscCall(mpm->mods[i]->ops.output(mpm->mods[i], mpm));
   PetscCall(MPMWriteOutputRow(mpm, "particle_count", (PetscReal)mpm->output_count[mpm->noutputs]));
   PetscCall(MPMWriteOutputRow(mpm, "time", t)); /* last: the output is complete */
   mpm->output_times[mpm->noutputs++] = t;

@@ -425,6 +425,25 @@ static PetscErrorCode MPMContactReport(MPMModule mod, MPM mpm, MPMReport rep)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Each rigid body's contact force of the last step and impulse so far, at every output: the HDF5 datasets
+   /contact_force_<b> and /contact_impulse_<b> (outputs x 3, dyn and dyn s; the impulse's change over an interval is
+   the mean force times it). */
+static PetscErrorCode MPMContactOutput(MPMModule mod, MPM mpm)
+{
+  MPMContact *ct = (MPMContact *)mod->data;
+  char        name[MPM_MAX_NAME + 32];
+
+  PetscFunctionBegin;
+  for (PetscInt b = 0; b < mpm->nbodies; b++) {
+    if (!ct->rigid[b]) continue;
+    PetscCall(PetscSNPrintf(name, sizeof(name), "contact_force_%s", mpm->bodyname[b]));
+    PetscCall(MPMOutputHistory(mpm, name, 3, ct->force[b]));
+    PetscCall(PetscSNPrintf(name, sizeof(name), "contact_impulse_%s", mpm->bodyname[b]));
+    PetscCall(MPMOutputHistory(mpm, name, 3, ct->impulse[b]));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode MPMContactCheckpoint(MPMModule mod, MPM mpm, MPMCheckpoint ck)
 {
   MPMContact *ct = (MPMContact *)mod->data;
@@ -435,6 +454,7 @@ static PetscErrorCode MPMContactCheckpoint(MPMModule mod, MPM mpm, MPMCheckpoint
   PetscCall(MPMCheckpointInts(ck, "corrections", 1, &ct->nodes, MPM_CKPT_RANK_SUM));
   PetscCall(MPMCheckpointReals(ck, "impulse", 3 * MPM_MAX_BODIES, &ct->impulse[0][0], MPM_CKPT_GLOBAL));
   PetscCall(MPMCheckpointReals(ck, "force_max", MPM_MAX_BODIES, ct->fmax, MPM_CKPT_GLOBAL));
+  PetscCall(MPMCheckpointReals(ck, "force", 3 * MPM_MAX_BODIES, &ct->force[0][0], MPM_CKPT_GLOBAL));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -465,6 +485,7 @@ PetscErrorCode MPMModuleCreate_Contact(MPMModule mod)
   mod->ops.view           = MPMContactView;
   mod->ops.report         = MPMContactReport;
   mod->ops.checkpoint     = MPMContactCheckpoint;
+  mod->ops.output         = MPMContactOutput;
   mod->ops.destroy        = MPMContactDestroy;
   PetscCall(PetscStrncpy(mod->event, "MPMContact", sizeof(mod->event)));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -35,6 +35,7 @@ typedef struct {
   PetscErrorCode (*view)(MPMModule, MPM, PetscViewer);
   PetscErrorCode (*report)(MPMModule, MPM, MPMReport);         /* every module, in the step or not: its report keys (zeros when out) */
   PetscErrorCode (*checkpoint)(MPMModule, MPM, MPMCheckpoint); /* its state, written or read by name (MPMCheckpointReals) */
+  PetscErrorCode (*output)(MPMModule, MPM);                    /* at each output: its histories (MPMOutputHistory)      */
   PetscErrorCode (*destroy)(MPMModule);                        /* frees data (default: PetscFree)                          */
 } MPMModuleOps;
 
@@ -70,6 +71,9 @@ PETSC_INTERN PetscBool      MPMModulesPointwise(MPM, MPMPhase, MPMPhase);
 PETSC_INTERN PetscErrorCode MPMReportAdd(MPMReport, const char[], const char[], const char[], ...) PETSC_ATTRIBUTE_FORMAT(4, 5);
 PETSC_INTERN PetscErrorCode MPMReportAddRemovedEnergy(MPMReport, PetscReal);
 PETSC_INTERN PetscErrorCode MPMReportPrintf(MPMReport, const char[], ...) PETSC_ATTRIBUTE_FORMAT(2, 3);
+
+/* At an output: row k of the HDF5 dataset /<name> (outputs x n values, the same on every rank), a module's history. */
+PETSC_INTERN PetscErrorCode MPMOutputHistory(MPM, const char[], PetscInt, const PetscReal[]);
 
 /* Writes or reads (as the checkpoint is being written or read) n values of this rank under the module's name. */
 PETSC_INTERN PetscErrorCode MPMCheckpointReals(MPMCheckpoint, const char[], PetscInt, PetscReal[], MPMCheckpointMerge);
