@@ -35,7 +35,9 @@ typedef struct {
   Vec              geo[MPM_MAX_BODIES];        /* per body, ghosted local nodes: m = sum N V_p, p = grad m (MPMNode layout) */
   PetscInt         gid;                        /* the grid the vectors were made for (MPMGrid::id)   */
   char            *shared;                     /* per local node: two or more bodies have mass there */
+  char            *near;                       /* per local node: a shared node within the ghost width sw (a point whose cell starts there may reach one) */
   PetscInt        *cand, ncand, maxcand;       /* the local points whose stencil reaches a shared node */
+  PetscInt         nshared;                    /* shared nodes on all ranks this step (0: the bodies are apart) */
   PetscReal        work, friction;             /* energy the corrections took out of the grid, its frictional part, this rank [erg] */
   PetscReal        impulse[MPM_MAX_BODIES][3]; /* integral of the contact force on each rigid body, this rank [dyn s] */
   PetscReal        force[MPM_MAX_BODIES][3];   /* the contact force on each rigid body in the last kick, all ranks [dyn] */
@@ -83,6 +85,39 @@ static PetscErrorCode MPMContactSetFromOptions(MPMModule mod, MPM mpm, PetscOpti
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The ghosted-local index of the first node of the cell that holds x (clamped to the ghosted box). */
+static inline PetscInt MPMContactCellNode(const MPMGrid *g, const PetscReal x[])
+{
+  PetscInt i[MPM_MAX_DIM] = {0, 0, 0};
+
+  for (PetscInt k = 0; k < g->dim; k++) i[k] = PetscMin(PetscMax((PetscInt)PetscFloorReal((x[k] - g->lo[k]) * g->hinv[k]) - g->gs[k], 0), g->gm[k] - 1);
+  return (i[2] * g->gm[1] + i[1]) * g->gm[0] + i[0];
+}
+
+/* near = shared dilated by sw + 1 nodes along each direction of the ghosted local box (a point touches only nodes
+   within sw cells of its own cell). */
+static PetscErrorCode MPMContactDilate(const MPMGrid *g, const char shared[], char near[])
+{
+  const PetscInt n = g->gm[0] * g->gm[1] * g->gm[2], r = g->sw + 1;
+  char          *tmp;
+
+  PetscFunctionBegin;
+  PetscCall(PetscMalloc1(n, &tmp));
+  PetscCall(PetscArraycpy(near, shared, n));
+  for (PetscInt k = 0; k < g->dim; k++) {
+    const PetscInt stride = k == 0 ? 1 : k == 1 ? g->gm[0] : g->gm[0] * g->gm[1], len = g->gm[k];
+    PetscCall(PetscArraycpy(tmp, near, n));
+    for (PetscInt c = 0; c < n; c++) {
+      const PetscInt ik  = (c / stride) % len;
+      char           any = 0;
+      for (PetscInt j = PetscMax(0, ik - r); j <= PetscMin(len - 1, ik + r) && !any; j++) any = tmp[c + (j - ik) * stride];
+      near[c] = any;
+    }
+  }
+  PetscCall(PetscFree(tmp));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Per body at the nodes two or more bodies share: sum N_I V_p and g_I = sum m_p grad N_I(x_p) (mirror images across
    walls with their signs), summed over the ranks, from the points whose stencil reaches such a node (the candidates,
    kept for MPMContactHeat). Once per step (the MUSL remap's pass reuses them: the points have not moved). The nodes'
@@ -90,7 +125,7 @@ static PetscErrorCode MPMContactSetFromOptions(MPMModule mod, MPM mpm, PetscOpti
 static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const *node)
 {
   const PetscInt d = mpm->grid.dim, nb = mpm->nbodies;
-  PetscInt       nloc;
+  PetscInt       nloc, ns              = 0;
 
   PetscFunctionBegin;
   PetscCall(VecGetLocalSize(mpm->lnodes, &nloc));
@@ -100,16 +135,20 @@ static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const
       PetscCall(VecDestroy(&ct->geo[b]));
       PetscCall(DMCreateLocalVector(mpm->da, &ct->geo[b]));
     }
-    PetscCall(PetscFree(ct->shared));
-    PetscCall(PetscMalloc1(nloc, &ct->shared));
+    PetscCall(PetscFree2(ct->shared, ct->near));
+    PetscCall(PetscMalloc2(nloc, &ct->shared, nloc, &ct->near));
     ct->gid = mpm->grid.id;
   }
   for (PetscInt c = 0; c < nloc; c++) { /* the shared nodes, ghosts included */
     PetscInt nin = 0;
     for (PetscInt b = 0; b < nb; b++) nin += node[b][c].m > 0.0;
     ct->shared[c] = (char)(nin > 1);
+    ns += nin > 1;
   }
+  PetscCall(MPIU_Allreduce(&ns, &ct->nshared, 1, MPIU_INT, MPIU_SUM, mpm->comm));
   ct->ncand = 0;
+  if (!ct->nshared) PetscFunctionReturn(PETSC_SUCCESS); /* the bodies are apart: nothing to correct this step */
+  PetscCall(MPMContactDilate(&mpm->grid, ct->shared, ct->near));
   for (PetscInt b = 0; b < nb; b++) {
     MPMNode  *geo;
     MPMPoints pts;
@@ -122,6 +161,7 @@ static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const
       PetscReal       Fs[MPM_MAX_DIM * MPM_MAX_DIM];
       PetscBool       near = PETSC_FALSE;
       MPMStencil      st;
+      if (!ct->near[MPMContactCellNode(&mpm->grid, &pts.f[MPM_FIELD_POSITION][p * d])]) continue; /* no shared node within its reach */
       MPMShapeEvaluate(mpm->shape, &mpm->grid, &pts.f[MPM_FIELD_POSITION][p * d], MPMPointDomain(d, pts.f[MPM_FIELD_DEFGRAD], pts.f[MPM_FIELD_DOMAINSCALE], p, Fs), &st);
       for (PetscInt a = 0; a < st.n && !near; a++) near = (PetscBool)ct->shared[st.node[a]];
       if (!near) continue;
@@ -220,7 +260,7 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
   MPMContact    *ct = (MPMContact *)mod->data;
   const MPMGrid *g  = &mpm->grid;
   const PetscInt d = g->dim, nb = mpm->nbodies;
-  MPMNode       *node[MPM_MAX_BODIES], *geo[MPM_MAX_BODIES];
+  MPMNode       *node[MPM_MAX_BODIES] = {NULL}, *geo[MPM_MAX_BODIES] = {NULL};
   PetscInt       lo[MPM_MAX_DIM], hi[MPM_MAX_DIM];
   PetscReal      frc[MPM_MAX_BODIES][3];
   PetscBool      anyrigid = PETSC_FALSE;
@@ -256,7 +296,7 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
               for (PetscInt k = 0; k < d; k++) nd->p[k] = nd->v0[k] = ct->vrigid[b][k];
           }
     }
-  for (PetscInt i2 = lo[2]; i2 < hi[2]; i2++)
+  for (PetscInt i2 = lo[2]; ct->nshared && i2 < hi[2]; i2++) /* where the bodies share nodes */
     for (PetscInt i1 = lo[1]; i1 < hi[1]; i1++)
       for (PetscInt i0 = lo[0]; i0 < hi[0]; i0++) {
         const PetscInt c   = MPMOwnedToLocal(g, i0, i1, i2);
@@ -335,7 +375,7 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
         }
       }
   for (PetscInt b = 0; b < nb; b++) PetscCall(VecRestoreArray(ct->geo[b], (PetscScalar **)&geo[b]));
-  PetscCall(MPMContactHeat(ct, mpm, node));
+  if (ct->nshared) PetscCall(MPMContactHeat(ct, mpm, node));
   for (PetscInt b = 0; b < nb; b++) PetscCall(VecRestoreArray(MPMContactNodes(mpm, b), (PetscScalar **)&node[b]));
   if (anyrigid) { /* the contact force on each rigid body, all ranks; its impulse over the kicks */
     PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &frc[0][0], 3 * MPM_MAX_BODIES, MPIU_REAL, MPIU_SUM, mpm->comm));
@@ -351,7 +391,7 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
       ct->fmax[b] = PetscMax(ct->fmax[b], PetscSqrtReal(f2));
     }
   }
-  for (PetscInt b = 0; b < nb; b++) { /* the ghosts of the corrected nodes */
+  for (PetscInt b = 0; (ct->nshared || anyrigid) && b < nb; b++) { /* the ghosts of the corrected nodes */
     PetscCall(MPMBodySelect(mpm, b));
     PetscCall(MPMGridGhostFill(mpm));
   }
@@ -464,7 +504,7 @@ static PetscErrorCode MPMContactDestroy(MPMModule mod)
 
   PetscFunctionBegin;
   for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) PetscCall(VecDestroy(&ct->geo[b]));
-  PetscCall(PetscFree(ct->shared));
+  PetscCall(PetscFree2(ct->shared, ct->near));
   PetscCall(PetscFree(ct->cand));
   PetscCall(PetscFree(mod->data));
   PetscFunctionReturn(PETSC_SUCCESS);
