@@ -225,22 +225,6 @@ PetscErrorCode MPMProbeRadialProfile(MPMProbe probe, const PetscReal c[], PetscI
    of x_p from the line and n_p the unit vector away from it. A point's domain is the parallelepiped with edges
    F diag(s) l0 (l0 the lattice spacing h / ppc), its half extent along n e_p(n) = sum_j |n . R e_j| / 2; a point
    without F is the cube of its volume. On every rank; found is false where no point reaches the band. */
-/* Half the extent of point p's domain along the unit vector n [cm]: its lattice site deformed by F diag(s) where the
-   points carry F, else a cube of its volume. */
-static PetscReal MPMPointHalfExtent(MPM mpm, const MPMPoints *pts, PetscInt p, const PetscReal n[])
-{
-  const PetscInt   d = mpm->grid.dim;
-  PetscReal        Rs[MPM_MAX_DIM * MPM_MAX_DIM], e = 0.0;
-  const PetscReal *R = pts->f[MPM_FIELD_DEFGRAD] ? MPMPointDomain(d, pts->f[MPM_FIELD_DEFGRAD], pts->f[MPM_FIELD_DOMAINSCALE], p, Rs) : NULL;
-
-  if (!R) return 0.5 * PetscPowReal(pts->f[MPM_FIELD_VOLUME][p], 1.0 / d);
-  for (PetscInt j = 0; j < d; j++) {
-    PetscReal nr = 0.0;
-    for (PetscInt k = 0; k < d; k++) nr += n[k] * R[k * d + j];
-    e += 0.5 * PetscAbsReal(nr) * (mpm->grid.h[j] / mpm->ppc);
-  }
-  return e;
-}
 
 /* Over the points whose domain reaches lo <= x_a <= hi: the farthest reach of the domains along the axis a (zmax,
    over every point) and from the axis through c (rmax: |x - c| over the other directions plus the half extent). */

@@ -12,24 +12,31 @@
    g_b - sum_{c != b} g_c (the two bodies' normals averaged, equal and opposite for two bodies, so that momentum is
    conserved exactly), or mass, along g_b; where a rigid body is present, minus the rigid body's own normal (its
    surface is exact: the averaged normal tilts at a block's corners and slowed a frictionless block on an incline).
-   Gap test: the bodies touch at node I only where their volumes there fill it, sum_b sum_p N_I(x_p) V_p >= f V_I,
-   V_I the cell volume (r-z: times r_I), f = -mpm_contact_fill (default 0.5: a gap under about half a cell; 0: the
-   approach test alone, which lets bodies meet a cell early: the disks of inputs/disks_2d.opts lose 12% of their
-   kinetic energy to contact at 20^2 cells against 4% with f = 0.5). A rigid body (-body_<b>_rigid_velocity) moves at its prescribed velocity: its nodes
-   take it, and at a shared node v_cm is it (infinite mass); the force it exerts on the other bodies is the contact
-   force on it (report). The kinetic energy a correction takes out of the grid, m_b (v_b* - v_b') . (v_b^n + v_b') / 2
-   per body and node as for wall friction, heats the body's points at that node (MPMContactHeat: an inelastic impact
-   heats its interface), so the total energy is kept to round-off; the report gives its sum (contact.work) and the
+   Gap test (-mpm_contact_gap): volume (default), the bodies touch at node I only where their volumes there fill it,
+   sum_b sum_p N_I(x_p) V_p >= f V_I, V_I the cell volume (r-z: times r_I), f = -mpm_contact_fill (default 0.5; the
+   approach test alone, none, lets bodies meet a cell early: the disks of inputs/disks_2d.opts lose 12% of their
+   kinetic energy to contact at 20^2 cells against 4% with f = 0.5); surface, where the points' domains of the two
+   bodies reach each other along the normal (MPMContactExtents; docs/contact.md gives what each measured).
+   A rigid body (-body_<b>_rigid_velocity) moves at its prescribed velocity: its nodes take it, and at a shared node
+   v_cm is it (infinite mass); the force it exerts on the other bodies is the contact force on it (report, HDF5
+   history). The kinetic energy a correction takes out of the grid, m_b (v_b* - v_b') . (v_b^n + v_b') / 2 per body and
+   node as for wall friction, heats the points of every body at that node by their mass shares (MPMContactHeat: an
+   inelastic impact heats its interface), so the total energy is kept to round-off; the report gives its sum (contact.work) and the
    frictional part (contact.friction_work). */
 #include "core/petmpmimpl.h"
 
 typedef enum { MPM_CONTACT_NORMAL_AVERAGE, MPM_CONTACT_NORMAL_MASS } MPMContactNormal;
 static const char *const MPMContactNormals[] = {"average", "mass", "MPMContactNormal", "MPM_CONTACT_NORMAL_", NULL};
 
+typedef enum { MPM_CONTACT_GAP_SURFACE, MPM_CONTACT_GAP_VOLUME, MPM_CONTACT_GAP_NONE } MPMContactGap;
+static const char *const MPMContactGaps[] = {"surface", "volume", "none", "MPMContactGap", "MPM_CONTACT_GAP_", NULL};
+
 typedef struct {
   PetscReal        mu[MPM_MAX_BODIES][MPM_MAX_BODIES]; /* Coulomb friction coefficient of each pair of bodies [-] */
   MPMContactNormal normal;
-  PetscReal        fill;                       /* -mpm_contact_fill: the gap test's fraction f [-] */
+  MPMContactGap    gap;                        /* -mpm_contact_gap                                   */
+  PetscReal        fill;                       /* -mpm_contact_fill: the volume gap test's fraction f [-] */
+  PetscReal       *ext[MPM_MAX_BODIES];        /* surface gap test, per local node: max_p (x_p . n_b + a_p) over the body's points there [cm] */
   PetscBool        rigid[MPM_MAX_BODIES];      /* -body_<b>_rigid_velocity given                  */
   PetscReal        vrigid[MPM_MAX_BODIES][3];  /* its velocity [cm/s]                             */
   Vec              geo[MPM_MAX_BODIES];        /* per body, ghosted local nodes: m = sum N V_p, p = grad m (MPMNode layout) */
@@ -72,7 +79,9 @@ static PetscErrorCode MPMContactSetFromOptions(MPMModule mod, MPM mpm, PetscOpti
     }
   PetscCall(PetscOptionsEnum("-mpm_contact_normal", "Outward normal of a body at a shared node: average (of its own and the other bodies' mass gradients; conserves momentum) or mass (its own mass gradient)", "", MPMContactNormals,
                              (PetscEnum)ct->normal, (PetscEnum *)&ct->normal, NULL));
-  PetscCall(PetscOptionsReal("-mpm_contact_fill", "Gap test: bodies touch at a node where their volumes fill this fraction of its cell volume [-], in [0, 1] (0: wherever they approach)", "", ct->fill, &ct->fill, NULL));
+  PetscCall(PetscOptionsEnum("-mpm_contact_gap", "Gap test at a shared node: surface (the bodies' point domains reach each other along the normal), volume (their volumes fill -mpm_contact_fill of the cell) or none (wherever they approach)", "",
+                             MPMContactGaps, (PetscEnum)ct->gap, (PetscEnum *)&ct->gap, NULL));
+  PetscCall(PetscOptionsReal("-mpm_contact_fill", "Volume gap test (-mpm_contact_gap volume): bodies touch at a node where their volumes fill this fraction of its cell volume [-], in [0, 1]", "", ct->fill, &ct->fill, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_contact_fill", ct->fill, 0.0, 1.0, PETSC_FALSE, PETSC_FALSE));
   for (PetscInt b = 0; b < mpm->nbodies; b++) {
     char     opt[MPM_MAX_NAME + 32];
@@ -137,6 +146,10 @@ static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const
     }
     PetscCall(PetscFree2(ct->shared, ct->near));
     PetscCall(PetscMalloc2(nloc, &ct->shared, nloc, &ct->near));
+    for (PetscInt b = 0; b < nb; b++) {
+      PetscCall(PetscFree(ct->ext[b]));
+      if (ct->gap == MPM_CONTACT_GAP_SURFACE) PetscCall(PetscMalloc1(nloc, &ct->ext[b]));
+    }
     ct->gid = mpm->grid.id;
   }
   for (PetscInt c = 0; c < nloc; c++) { /* the shared nodes, ghosts included */
@@ -255,6 +268,96 @@ static void MPMContactNormalAt(const MPMContact *ct, PetscInt d, PetscInt nb, Pe
   for (PetscInt k = 0; k < d; k++) n[k] *= nn;
 }
 
+/* Bit k set: the ghosted-local node c lies on a wall (a symmetry plane) normal to direction k. */
+static PetscInt MPMContactOnWall(MPM mpm, PetscInt c)
+{
+  const MPMGrid *g    = &mpm->grid;
+  const PetscInt i[3] = {c % g->gm[0], (c / g->gm[0]) % g->gm[1], c / (g->gm[0] * g->gm[1])};
+  PetscInt       w    = 0;
+
+  for (PetscInt k = 0; k < g->dim; k++) {
+    const PetscInt gi = i[k] + g->gs[k];
+    if ((gi == 0 && mpm->bc_lo[k] == MPM_BC_WALL) || (gi == g->cells[k] && mpm->bc_hi[k] == MPM_BC_WALL)) w |= 1 << k;
+  }
+  return w;
+}
+
+/* Body b's unit outward normal at node c: a rigid body's own; beside a rigid body, minus the rigid body's own where
+   its surface is (|g| h >= m / 10); else the averaged (or own) mass gradient. On a symmetry plane without the component
+   across it (the points' mirror images are folded onto the nodes beyond the plane, not summed at the plane's own
+   nodes, so g there has a spurious component across it). n = 0 where the gradients cancel. */
+static void MPMContactNormalOf(const MPMContact *ct, MPM mpm, MPMNode *const *node, MPMNode *const *geo, PetscInt b, PetscInt c, PetscReal n[])
+{
+  const PetscInt d = mpm->grid.dim, nb = mpm->nbodies, onwall = MPMContactOnWall(mpm, c);
+  PetscInt       rb = -1;
+  PetscReal      g2 = 0.0, nn = 0.0;
+
+  for (PetscInt o = 0; o < nb && !ct->rigid[b]; o++)
+    if (o != b && ct->rigid[o] && node[o][c].m > 0.0) rb = o;
+  for (PetscInt k = 0; rb >= 0 && k < d; k++) g2 += PetscSqr(geo[rb][c].p[k]);
+  if (ct->rigid[b])
+    MPMContactNormalAt(ct, d, nb, b, geo, c, PETSC_TRUE, n);
+  else if (rb >= 0 && g2 * PetscSqr(mpm->grid.hmin) >= 0.01 * PetscSqr(node[rb][c].m)) {
+    MPMContactNormalAt(ct, d, nb, rb, geo, c, PETSC_TRUE, n);
+    for (PetscInt k = 0; k < d; k++) n[k] = -n[k];
+  } else
+    MPMContactNormalAt(ct, d, nb, b, geo, c, PETSC_FALSE, n);
+  if (!onwall) return;
+  for (PetscInt k = 0; k < d; k++) {
+    if ((onwall >> k) & 1) n[k] = 0.0;
+    nn += n[k] * n[k];
+  }
+  nn = nn > 0.0 ? 1.0 / PetscSqrtReal(nn) : 0.0;
+  for (PetscInt k = 0; k < d; k++) n[k] *= nn;
+}
+
+/* Surface gap test: per body at each shared node, how far its points' domains reach along its outward normal there,
+   ext_b = max_p (x_p . n_b + a_p(n_b)) with a_p the half extent of p's domain along n_b; ranks' maxima combined. Two
+   bodies touch at the node where ext_b + ext_o >= 0 (n_o = -n_b: their surfaces meet or overlap), whatever their
+   compression. */
+static PetscErrorCode MPMContactExtents(MPMContact *ct, MPM mpm, MPMNode *const *node)
+{
+  const PetscInt d = mpm->grid.dim, nb = mpm->nbodies;
+  MPMNode       *geo[MPM_MAX_BODIES];
+  MPMPoints      pts;
+  PetscInt       nloc;
+
+  PetscFunctionBegin;
+  PetscCall(VecGetLocalSize(mpm->lnodes, &nloc));
+  nloc /= MPM_NODE_DOF;
+  for (PetscInt b = 0; b < nb; b++) {
+    for (PetscInt c = 0; c < nloc; c++) ct->ext[b][c] = -PETSC_MAX_REAL;
+    PetscCall(VecGetArray(ct->geo[b], (PetscScalar **)&geo[b]));
+  }
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt i = 0; i < ct->ncand; i++) {
+    const PetscInt   p = ct->cand[i], b = (PetscInt)pts.f[MPM_FIELD_BODY][p];
+    const PetscReal *x = &pts.f[MPM_FIELD_POSITION][p * d];
+    PetscReal        Fs[MPM_MAX_DIM * MPM_MAX_DIM];
+    MPMStencil       st;
+    MPMShapeEvaluate(mpm->shape, &mpm->grid, x, MPMPointDomain(d, pts.f[MPM_FIELD_DEFGRAD], pts.f[MPM_FIELD_DOMAINSCALE], p, Fs), &st);
+    for (PetscInt a = 0; a < st.n; a++) {
+      const PetscInt c = st.node[a];
+      PetscReal      n[3], e = 0.0;
+      if (!ct->shared[c] || st.w[a] <= 0.0) continue;
+      MPMContactNormalOf(ct, mpm, node, geo, b, c, n);
+      for (PetscInt k = 0; k < d; k++) e += x[k] * n[k];
+      ct->ext[b][c] = PetscMax(ct->ext[b][c], e + MPMPointHalfExtent(mpm, &pts, p, n));
+    }
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  for (PetscInt b = 0; b < nb; b++) {
+    PetscCall(VecRestoreArray(ct->geo[b], (PetscScalar **)&geo[b]));
+    if (mpm->ghost_sf) {
+      PetscCall(PetscSFReduceBegin(mpm->ghost_sf, MPIU_REAL, ct->ext[b], ct->ext[b], MPI_MAX));
+      PetscCall(PetscSFReduceEnd(mpm->ghost_sf, MPIU_REAL, ct->ext[b], ct->ext[b], MPI_MAX));
+      PetscCall(PetscSFBcastBegin(mpm->ghost_sf, MPIU_REAL, ct->ext[b], ct->ext[b], MPI_REPLACE));
+      PetscCall(PetscSFBcastEnd(mpm->ghost_sf, MPIU_REAL, ct->ext[b], ct->ext[b], MPI_REPLACE));
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
 {
   MPMContact    *ct = (MPMContact *)mod->data;
@@ -268,6 +371,7 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
   PetscFunctionBegin;
   for (PetscInt b = 0; b < nb; b++) PetscCall(VecGetArray(MPMContactNodes(mpm, b), (PetscScalar **)&node[b]));
   if (!ctx->remap) PetscCall(MPMContactGeometry(ct, mpm, node));
+  if (!ctx->remap && ct->nshared && ct->gap == MPM_CONTACT_GAP_SURFACE) PetscCall(MPMContactExtents(ct, mpm, node));
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) { /* the union of the bodies' node boxes */
     lo[k] = PETSC_MAX_INT;
     hi[k] = -1;
@@ -300,7 +404,7 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
     for (PetscInt i1 = lo[1]; i1 < hi[1]; i1++)
       for (PetscInt i0 = lo[0]; i0 < hi[0]; i0++) {
         const PetscInt c   = MPMOwnedToLocal(g, i0, i1, i2);
-        PetscInt       nin = 0, rb = -1, heavy[MPM_MAX_BODIES], onwall;
+        PetscInt       nin = 0, rb = -1, heavy[MPM_MAX_BODIES];
         PetscReal      M = 0.0, P[3] = {0.0, 0.0, 0.0}, vcm[3], Vsum = 0.0, Vnode = g->vcell;
         for (PetscInt b = 0; b < nb; b++)
           if (node[b][c].m > 0.0) {
@@ -311,13 +415,8 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
             if (ct->rigid[b]) rb = b;
           }
         if (nin < 2) continue;
-        onwall = 0; /* bit k: the node lies on a wall normal to k */
-        for (PetscInt k = 0; k < d; k++) {
-          const PetscInt gi = (k == 0 ? i0 : k == 1 ? i1 : i2) + g->xs[k];
-          if ((gi == 0 && mpm->bc_lo[k] == MPM_BC_WALL) || (gi == g->cells[k] && mpm->bc_hi[k] == MPM_BC_WALL)) onwall |= 1 << k;
-        }
-        if (g->axisym) Vnode *= g->lo[0] + (i0 + g->xs[0]) * g->h[0]; /* per radian: r_I h_r h_z */
-        if (ct->fill > 0.0 && Vsum < ct->fill * Vnode) continue;      /* a gap between them */
+        if (g->axisym) Vnode *= g->lo[0] + (i0 + g->xs[0]) * g->h[0];               /* per radian: r_I h_r h_z */
+        if (ct->gap == MPM_CONTACT_GAP_VOLUME && Vsum < ct->fill * Vnode) continue; /* a gap between them */
         for (PetscInt k = 0; k < d; k++) vcm[k] = rb >= 0 ? ct->vrigid[rb][k] : P[k] / M;
         for (PetscInt b = 0; b < nb; b++) { /* each body's heaviest partner at the node, whose friction coefficient it feels */
           heavy[b] = -1;
@@ -328,23 +427,8 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
           MPMNode  *nd = &node[b][c];
           PetscReal n[3], dv[3], dn = 0.0, dvt[3], t2 = 0.0, mu, vold[3], wn = 0.0, wt = 0.0;
           if (!(nd->m > 0.0) || ct->rigid[b]) continue;
-          PetscReal g2 = 0.0;
-          for (PetscInt k = 0; rb >= 0 && k < d; k++) g2 += PetscSqr(geo[rb][c].p[k]);
-          if (rb >= 0 && g2 * PetscSqr(g->hmin) >= 0.01 * PetscSqr(node[rb][c].m)) { /* at a rigid body's surface (|g| h >= m / 10) its own normal: n_b = -n_rigid */
-            MPMContactNormalAt(ct, d, nb, rb, geo, c, PETSC_TRUE, n);
-            for (PetscInt k = 0; k < d; k++) n[k] = -n[k];
-          } else
-            MPMContactNormalAt(ct, d, nb, b, geo, c, PETSC_FALSE, n);
-          if (onwall) { /* a symmetry plane: the mirrored mass field has no gradient across it (the points' images, which the
-                           stencil folds onto the nodes beyond the plane, are not summed at the plane's own nodes) */
-            PetscReal nn = 0.0;
-            for (PetscInt k = 0; k < d; k++) {
-              if ((onwall >> k) & 1) n[k] = 0.0;
-              nn += n[k] * n[k];
-            }
-            nn = nn > 0.0 ? 1.0 / PetscSqrtReal(nn) : 0.0;
-            for (PetscInt k = 0; k < d; k++) n[k] *= nn;
-          }
+          MPMContactNormalOf(ct, mpm, node, geo, b, c, n);
+          if (ct->gap == MPM_CONTACT_GAP_SURFACE && ct->ext[b][c] + ct->ext[heavy[b]][c] < -1e-9 * g->hmin) continue; /* their surfaces apart along n */
           for (PetscInt k = 0; k < d; k++) {
             dv[k] = nd->p[k] - vcm[k];
             dn += dv[k] * n[k];
@@ -506,6 +590,7 @@ static PetscErrorCode MPMContactDestroy(MPMModule mod)
   for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) PetscCall(VecDestroy(&ct->geo[b]));
   PetscCall(PetscFree2(ct->shared, ct->near));
   PetscCall(PetscFree(ct->cand));
+  for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) PetscCall(PetscFree(ct->ext[b]));
   PetscCall(PetscFree(mod->data));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -517,6 +602,7 @@ PetscErrorCode MPMModuleCreate_Contact(MPMModule mod)
   PetscFunctionBegin;
   PetscCall(PetscNew(&ct));
   ct->fill                = 0.5;
+  ct->gap                 = MPM_CONTACT_GAP_VOLUME;
   ct->gid                 = -1;
   mod->data               = ct;
   mod->phase              = MPM_PHASE_GRID_CONTACT;

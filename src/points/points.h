@@ -61,6 +61,7 @@ PETSC_INTERN PetscErrorCode MPMPointsSetWindow(MPM, PetscInt, PetscInt);
 PETSC_INTERN PetscErrorCode MPMMigrate(MPM);
 PETSC_INTERN PetscErrorCode MPMSortPoints(MPM);
 PETSC_INTERN PetscErrorCode MPMPointsSortByBody(MPM);
+PETSC_INTERN PetscReal      MPMPointHalfExtent(MPM, const MPMPoints *, PetscInt, const PetscReal[]);
 PETSC_INTERN PetscErrorCode MPMBodyWindow(MPM, PetscInt);
 PETSC_INTERN PetscErrorCode MPMBodiesEnd(MPM);
 PETSC_INTERN PetscErrorCode MPMDiagnoseVacuum(MPM, PetscInt *, PetscInt *);
