@@ -85,10 +85,14 @@ static PetscErrorCode MPMContactSetFromOptions(MPMModule mod, MPM mpm, PetscOpti
   PetscCall(MPMOptionsCheckRange("-mpm_contact_fill", ct->fill, 0.0, 1.0, PETSC_FALSE, PETSC_FALSE));
   for (PetscInt b = 0; b < mpm->nbodies; b++) {
     char     opt[MPM_MAX_NAME + 32];
-    PetscInt n = mpm->grid.dim;
+    PetscInt n = 3; /* at most 3: more than the dimension is refused below */
     PetscCall(PetscSNPrintf(opt, sizeof(opt), "-body_%s_rigid_velocity", mpm->bodyname[b]));
     PetscCall(PetscOptionsRealArray(opt, "A rigid body: its prescribed velocity, one value per dimension [cm/s]; it takes part in contact and the report gives the contact force on it", "", ct->vrigid[b], &n, &ct->rigid[b]));
     PetscCheck(!ct->rigid[b] || n == mpm->grid.dim, mpm->comm, PETSC_ERR_USER_INPUT, "%s: %" PetscInt_FMT " values given, valid is one per dimension (%" PetscInt_FMT ")", opt, n, mpm->grid.dim);
+    for (PetscInt r = 0; ct->rigid[b] && r < mpm->nreg; r++) /* its points start at its velocity: nothing would change theirs */
+      for (PetscInt k = 0; mpm->reg[r].body == b && k < mpm->grid.dim; k++)
+        PetscCheck(mpm->reg[r].v[k] == ct->vrigid[b][k], mpm->comm, PETSC_ERR_USER_INPUT, "%s: region %s of the rigid body starts at another velocity (-region_%s_velocity, component %" PetscInt_FMT ": %g, not %g cm/s); give it the rigid velocity",
+                   opt, mpm->reg[r].name, mpm->reg[r].name, k, (double)mpm->reg[r].v[k], (double)ct->vrigid[b][k]);
   }
   mod->active = (PetscBool)(mpm->nbodies > 1);
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -15,6 +15,7 @@ from common import SRC, SCENE, SCENE_CTH, check, run, sod, main  # noqa: E402
 FLYER = os.path.join(SRC, "inputs", "flyer_plate.opts")
 RZ = os.path.join(SRC, "inputs", "taylor_anvil_rz.opts")
 HYDRO = os.path.join(SRC, "inputs", "hydrostatic_2d.opts")
+BARS = os.path.join(SRC, "inputs", "bars_1d.opts")
 
 
 def test_bad_input():
@@ -28,6 +29,11 @@ def test_bad_input():
             ([*SCENE_CTH, "-mpm_update_type", "apik", "-mpm_output", d], "-mpm_update_type"),
             ([*SCENE_CTH, "-mpm_viscosity_type", "huge", "-mpm_output", d], "-mpm_viscosity_type"),
             (["-mpm_output", d], "-mpm_materials"),
+            (["-options_file", BARS, "-body_right_rigid_velocity", "0", "-mpm_output", d], "-body_right_rigid_velocity"),
+            (["-options_file", BARS, "-body_right_rigid_velocity", "0,0", "-region_right_velocity", "0", "-mpm_output", d], "-body_right_rigid_velocity"),
+            (["-options_file", BARS, "-mpm_contact_friction", "-0.1", "-mpm_output", d], "-mpm_contact_friction"),
+            (["-options_file", BARS, "-mpm_contact_fill", "1.5", "-mpm_output", d], "-mpm_contact_fill"),
+            (["-options_file", BARS, "-mpm_contact_gap", "touching", "-mpm_output", d], "-mpm_contact_gap"),
             ([*SCENE_CTH, "-mpm_output", "/proc/petmpm/none"], "/proc/petmpm/none"),
             ([*SCENE_CTH, "-mpm_output", d, "-mpm_report", "/proc/petmpm/r.json"], "-mpm_report"),
             ([*SCENE_CTH, "-mpm_shpae_type", "linear", "-mpm_output", d], "-mpm_shpae_type"),
