@@ -31,31 +31,49 @@ PetscErrorCode MPMBodiesDestroyNodes(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Makes body b's nodes the MPM object's (lnodes, box, lbox, xcell), keeping the current body's in MPM::bnodes. */
+/* Exchanges the MPM object's nodes (lnodes, box, lbox, xcell) with those kept in bn. */
+static void MPMBodyNodesExchange(MPM mpm, MPMBodyNodes *bn)
+{
+  Vec        v = mpm->lnodes;
+  PetscReal *x = mpm->xcell;
+
+  mpm->lnodes = bn->lnodes;
+  mpm->xcell  = bn->xcell;
+  bn->lnodes  = v;
+  bn->xcell   = x;
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
+    PetscInt t[4]   = {mpm->box_lo[k], mpm->box_hi[k], mpm->lbox_lo[k], mpm->lbox_hi[k]};
+    mpm->box_lo[k]  = bn->box_lo[k];
+    mpm->box_hi[k]  = bn->box_hi[k];
+    mpm->lbox_lo[k] = bn->lbox_lo[k];
+    mpm->lbox_hi[k] = bn->lbox_hi[k];
+    bn->box_lo[k]   = t[0];
+    bn->box_hi[k]   = t[1];
+    bn->lbox_lo[k]  = t[2];
+    bn->lbox_hi[k]  = t[3];
+  }
+}
+
+/* Makes body b's nodes the MPM object's, keeping the current body's in MPM::bnodes (the current body's own slot
+   there is empty while it is current). */
 PetscErrorCode MPMBodySelect(MPM mpm, PetscInt b)
 {
-  MPMBodyNodes *cur = &mpm->bnodes[mpm->body], *next = &mpm->bnodes[b];
-
   PetscFunctionBegin;
   if (b == mpm->body) PetscFunctionReturn(PETSC_SUCCESS);
-  cur->lnodes = mpm->lnodes;
-  cur->xcell  = mpm->xcell;
-  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
-    cur->box_lo[k]  = mpm->box_lo[k];
-    cur->box_hi[k]  = mpm->box_hi[k];
-    cur->lbox_lo[k] = mpm->lbox_lo[k];
-    cur->lbox_hi[k] = mpm->lbox_hi[k];
-  }
-  mpm->lnodes = next->lnodes;
-  mpm->xcell  = next->xcell;
-  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
-    mpm->box_lo[k]  = next->box_lo[k];
-    mpm->box_hi[k]  = next->box_hi[k];
-    mpm->lbox_lo[k] = next->lbox_lo[k];
-    mpm->lbox_hi[k] = next->lbox_hi[k];
-  }
-  next->lnodes = NULL;
-  next->xcell  = NULL;
-  mpm->body    = b;
+  MPMBodyNodesExchange(mpm, &mpm->bnodes[mpm->body]); /* the current body's nodes to its slot */
+  MPMBodyNodesExchange(mpm, &mpm->bnodes[b]);         /* body b's from its slot */
+  mpm->body = b;
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Body b's ghosted local nodal vector and owned-node box, whichever body's the MPM object holds now. */
+Vec MPMBodyNodesVec(MPM mpm, PetscInt b)
+{
+  return b == mpm->body ? mpm->lnodes : mpm->bnodes[b].lnodes;
+}
+
+void MPMBodyBox(MPM mpm, PetscInt b, const PetscInt **lo, const PetscInt **hi)
+{
+  *lo = b == mpm->body ? mpm->box_lo : mpm->bnodes[b].box_lo;
+  *hi = b == mpm->body ? mpm->box_hi : mpm->bnodes[b].box_hi;
 }

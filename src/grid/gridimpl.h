@@ -229,5 +229,7 @@ PETSC_INTERN PetscErrorCode MPMDestroyGrid(MPM);
 PETSC_INTERN PetscErrorCode MPMBodiesCreateNodes(MPM);
 PETSC_INTERN PetscErrorCode MPMBodiesDestroyNodes(MPM);
 PETSC_INTERN PetscErrorCode MPMBodySelect(MPM, PetscInt);
+PETSC_INTERN Vec            MPMBodyNodesVec(MPM, PetscInt);
+PETSC_INTERN void           MPMBodyBox(MPM, PetscInt, const PetscInt **, const PetscInt **);
 PETSC_INTERN PetscErrorCode MPMGridGhostFill(MPM);
 PETSC_INTERN PetscErrorCode MPMGridZeroForScatter(MPM, PetscInt, const PetscReal[], MPMNode *);

@@ -250,12 +250,6 @@ static PetscErrorCode MPMContactHeat(MPMContact *ct, MPM mpm, MPMNode *const *no
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The local nodal vector of body b, whichever body's the MPM object holds now. */
-static Vec MPMContactNodes(MPM mpm, PetscInt b)
-{
-  return b == mpm->body ? mpm->lnodes : mpm->bnodes[b].lnodes;
-}
-
 /* Body b's unit outward normal n at node c (0 where the mass gradients cancel); own: from its own mass gradient alone. */
 static void MPMContactNormalAt(const MPMContact *ct, PetscInt d, PetscInt nb, PetscInt b, MPMNode *const *geo, PetscInt c, PetscBool own, PetscReal n[])
 {
@@ -373,7 +367,7 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
   PetscBool      anyrigid = PETSC_FALSE;
 
   PetscFunctionBegin;
-  for (PetscInt b = 0; b < nb; b++) PetscCall(VecGetArray(MPMContactNodes(mpm, b), (PetscScalar **)&node[b]));
+  for (PetscInt b = 0; b < nb; b++) PetscCall(VecGetArray(MPMBodyNodesVec(mpm, b), (PetscScalar **)&node[b]));
   if (!ctx->remap) PetscCall(MPMContactGeometry(ct, mpm, node));
   if (!ctx->remap && ct->nshared && ct->gap == MPM_CONTACT_GAP_SURFACE) PetscCall(MPMContactExtents(ct, mpm, node));
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) { /* the union of the bodies' node boxes */
@@ -381,8 +375,9 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
     hi[k] = -1;
   }
   for (PetscInt b = 0; b < nb; b++) {
-    const PetscInt *blo = b == mpm->body ? mpm->box_lo : mpm->bnodes[b].box_lo, *bhi = b == mpm->body ? mpm->box_hi : mpm->bnodes[b].box_hi;
+    const PetscInt *blo, *bhi;
     PetscBool       empty = PETSC_FALSE;
+    MPMBodyBox(mpm, b, &blo, &bhi);
     for (PetscInt k = 0; k < MPM_MAX_DIM; k++) empty = (PetscBool)(empty || blo[k] >= bhi[k]);
     for (PetscInt k = 0; k < MPM_MAX_DIM && !empty; k++) {
       lo[k] = PetscMin(lo[k], blo[k]);
@@ -394,8 +389,9 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
   }
   if (anyrigid) /* a rigid body's nodes move at its velocity */
     for (PetscInt b = 0; b < nb; b++) {
-      const PetscInt *blo = b == mpm->body ? mpm->box_lo : mpm->bnodes[b].box_lo, *bhi = b == mpm->body ? mpm->box_hi : mpm->bnodes[b].box_hi;
+      const PetscInt *blo, *bhi;
       if (!ct->rigid[b]) continue;
+      MPMBodyBox(mpm, b, &blo, &bhi);
       for (PetscInt i2 = blo[2]; i2 < bhi[2]; i2++)
         for (PetscInt i1 = blo[1]; i1 < bhi[1]; i1++)
           for (PetscInt i0 = blo[0]; i0 < bhi[0]; i0++) {
@@ -464,7 +460,7 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
       }
   for (PetscInt b = 0; b < nb; b++) PetscCall(VecRestoreArray(ct->geo[b], (PetscScalar **)&geo[b]));
   if (ct->nshared) PetscCall(MPMContactHeat(ct, mpm, node));
-  for (PetscInt b = 0; b < nb; b++) PetscCall(VecRestoreArray(MPMContactNodes(mpm, b), (PetscScalar **)&node[b]));
+  for (PetscInt b = 0; b < nb; b++) PetscCall(VecRestoreArray(MPMBodyNodesVec(mpm, b), (PetscScalar **)&node[b]));
   if (anyrigid) { /* the contact force on each rigid body, all ranks; its impulse over the kicks */
     PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &frc[0][0], 3 * MPM_MAX_BODIES, MPIU_REAL, MPIU_SUM, mpm->comm));
     for (PetscInt b = 0; b < nb; b++) {
