@@ -96,7 +96,15 @@ def get(report, path, h=None):
     checks.plateau_pressure.rel_error
     (checks are found by name), checks.shock_position.error_cells (|value - reference| / h, the cell size h given),
     particles_per_cell (particles over the product of the cells), ns_per_point_step (the cost per point-step and rank),
-    points_per_rank_mismatch (the sum of balance.points_per_rank less particles: 0 when every point is counted once)."""
+    points_per_rank_mismatch (the sum of balance.points_per_rank less particles: 0 when every point is counted once);
+    a sum of such paths, each with an optional factor, "KEY + 0.5*KEY" (a law that ties two values: Coulomb friction's
+    tangential and normal impulses)."""
+    if "+" in path:
+        total = 0.0
+        for term in path.split("+"):
+            factor, _, key = term.strip().rpartition("*")
+            total += (float(factor) if factor else 1.0) * get(report, key.strip(), h)
+        return total
     parts = path.split(".")
     if path == "particles_per_cell":  # derived: points over cells (a point lost or duplicated shows)
         return report["particles"] / math.prod(report["cells"])

@@ -90,6 +90,46 @@ PetscErrorCode MPMOptionsDimReals(PetscOptionItems *PetscOptionsObject, const ch
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Reads the table -<opt> (dim values per row, the rows one after the other) with its times -<opt>_times; without
+   times, one row of dim values, a constant. Errors name the option, the count given and the valid one. */
+PetscErrorCode MPMOptionsTable(PetscOptionItems *PetscOptionsObject, const char opt[], const char text[], PetscInt dim, MPMTable *tab, PetscBool *set)
+{
+  char      topt[256], ttext[512];
+  PetscInt  n = MPM_MAX_TABLE * MPM_MAX_DIM, nt = MPM_MAX_TABLE;
+  PetscBool tset;
+
+  PetscFunctionBegin;
+  tab->dim = dim;
+  PetscCall(PetscOptionsRealArray(opt, text, "", tab->v, &n, set));
+  PetscCall(PetscSNPrintf(topt, sizeof(topt), "%s_times", opt));
+  PetscCall(PetscSNPrintf(ttext, sizeof(ttext), "Times t1 < t2 < ... of the rows of %s [s]: linear in between, held beyond the ends", opt));
+  PetscCall(PetscOptionsRealArray(topt, ttext, "", tab->t, &nt, &tset));
+  PetscCheck(!tset || *set, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s given without %s", topt, opt);
+  if (!*set) PetscFunctionReturn(PETSC_SUCCESS);
+  if (!tset) {
+    nt        = 1;
+    tab->t[0] = 0.0;
+  }
+  PetscCheck(n == dim * nt, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: %" PetscInt_FMT " values given, valid is %" PetscInt_FMT " (one per dimension for each of the %" PetscInt_FMT " time(s) of %s)", opt, n, dim * nt, nt, topt);
+  for (PetscInt i = 1; i < nt; i++)
+    PetscCheck(tab->t[i] > tab->t[i - 1], PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: time %" PetscInt_FMT " (%g s) is not after the one before (%g s); valid are increasing times", topt, i + 1, (double)tab->t[i], (double)tab->t[i - 1]);
+  tab->n = nt;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* v = the table's value at time t: linear between its rows, the first or last row beyond them. */
+void MPMTableEval(const MPMTable *tab, PetscReal t, PetscReal v[])
+{
+  PetscInt  i = 0;
+  PetscReal s = 0.0;
+
+  if (tab->n > 1 && t > tab->t[0]) {
+    while (i < tab->n - 1 && t >= tab->t[i + 1]) i++;
+    if (i < tab->n - 1) s = (t - tab->t[i]) / (tab->t[i + 1] - tab->t[i]);
+  }
+  for (PetscInt k = 0; k < tab->dim; k++) v[k] = (1.0 - s) * tab->v[i * tab->dim + k] + (s > 0.0 ? s * tab->v[(i + 1) * tab->dim + k] : 0.0);
+}
+
 PetscErrorCode MPMOptionsDimEnums(PetscOptionItems *PetscOptionsObject, const char opt[], const char text[], const char *const names[], PetscInt dim, PetscEnum v[])
 {
   PetscEnum vals[MPM_MAX_DIM];

@@ -153,6 +153,16 @@ PETSC_INTERN PetscErrorCode MPMObjectOtherTypeOption(void *, const char[], const
 PETSC_INTERN PetscErrorCode MPMOptionsCheckRange(const char[], PetscReal, PetscReal, PetscReal, PetscBool, PetscBool);
 PETSC_INTERN PetscErrorCode MPMOptionsRangeInt(PetscOptionItems *, const char[], const char[], PetscInt *, PetscInt, PetscInt);
 PETSC_INTERN PetscErrorCode MPMOptionsDimReals(PetscOptionItems *, const char[], const char[], PetscInt, PetscReal[]);
+/* A vector of dim values over time: rows (t_i, v_i) with t_i increasing, linear in between and held beyond the ends
+   (one row: a constant). Read from -<name> (dim values per row) and -<name>_times (one time per row) [s]. */
+#define MPM_MAX_TABLE 64
+typedef struct {
+  PetscInt  n, dim;                         /* rows, values per row        */
+  PetscReal t[MPM_MAX_TABLE];               /* the rows' times [s]          */
+  PetscReal v[MPM_MAX_TABLE * MPM_MAX_DIM]; /* row i: v[i * dim .. + dim)   */
+} MPMTable;
+PETSC_INTERN PetscErrorCode MPMOptionsTable(PetscOptionItems *, const char[], const char[], PetscInt, MPMTable *, PetscBool *);
+PETSC_INTERN void           MPMTableEval(const MPMTable *, PetscReal, PetscReal[]);
 PETSC_INTERN PetscErrorCode MPMOptionsDimEnums(PetscOptionItems *, const char[], const char[], const char *const[], PetscInt, PetscEnum[]);
 PETSC_INTERN PetscErrorCode MPMClassSetType(PetscFunctionList, const char[], const char[], const char[], PetscErrorCode (**)(void *));
 PETSC_INTERN PetscErrorCode MPMClassTypeList(PetscFunctionList, char[], size_t);

@@ -19,8 +19,10 @@
    bodies reach each other along the normal (MPMContactExtents; docs/contact.md gives what each measured).
    A rigid body (-body_<b>_rigid_velocity) moves at its prescribed velocity: its nodes take it, and at a shared node
    v_cm is it (infinite mass); the force it exerts on the other bodies is the contact force on it (report, HDF5
-   history). The kinetic energy a correction takes out of the grid, m_b (v_b* - v_b') . (v_b^n + v_b') / 2 per body and
-   node as for wall friction, heats the points of every body at that node by their mass shares (MPMContactHeat: an
+   history). The kinetic energy a correction takes out of the grid, m_b (v_b* - v_b') . ((v_b^n + v_b') / 2 - v_r) per
+   body and node as for wall friction, in the frame of the rigid body there (v_r; 0 without one; the rest,
+   m_b (v_b' - v_b*) . v_r, is the work the moving rigid body does, energy from outside that the report's budgets add
+   with the rigid bodies' kinetic energy change), heats the points of every body at that node by their mass shares (MPMContactHeat: an
    inelastic impact heats its interface), so the total energy is kept to round-off; the report gives its sum (contact.work) and the
    frictional part (contact.friction_work). */
 #include "core/petmpmimpl.h"
@@ -38,7 +40,8 @@ typedef struct {
   PetscReal        fill;                       /* -mpm_contact_fill: the volume gap test's fraction f [-] */
   PetscReal       *ext[MPM_MAX_BODIES];        /* surface gap test, per local node: max_p (x_p . n_b + a_p) over the body's points there [cm] */
   PetscBool        rigid[MPM_MAX_BODIES];      /* -body_<b>_rigid_velocity given                  */
-  PetscReal        vrigid[MPM_MAX_BODIES][3];  /* its velocity [cm/s]                             */
+  MPMTable         vtab[MPM_MAX_BODIES];       /* its velocity over time (-body_<b>_rigid_velocity[_times]) [cm/s] */
+  PetscReal        vrigid[MPM_MAX_BODIES][3];  /* its velocity in this kick, v(t^n + dt_n / 2) [cm/s] */
   Vec              geo[MPM_MAX_BODIES];        /* per body, ghosted local nodes: m = sum N V_p, p = grad m (MPMNode layout) */
   PetscInt         gid;                        /* the grid the vectors were made for (MPMGrid::id)   */
   char            *shared;                     /* per local node: two or more bodies have mass there */
@@ -49,6 +52,7 @@ typedef struct {
   PetscReal        impulse[MPM_MAX_BODIES][3]; /* integral of the contact force on each rigid body, this rank [dyn s] */
   PetscReal        force[MPM_MAX_BODIES][3];   /* the contact force on each rigid body in the last kick, all ranks [dyn] */
   PetscReal        fmax[MPM_MAX_BODIES];       /* the largest |force| so far [dyn] */
+  PetscReal        rwork;                      /* the work the moving rigid bodies did on the others, all ranks [erg] */
   PetscInt         nodes;                      /* node-corrections made, this rank */
 } MPMContact;
 
@@ -84,15 +88,17 @@ static PetscErrorCode MPMContactSetFromOptions(MPMModule mod, MPM mpm, PetscOpti
   PetscCall(PetscOptionsReal("-mpm_contact_fill", "Volume gap test (-mpm_contact_gap volume): bodies touch at a node where their volumes fill this fraction of its cell volume [-], in [0, 1]", "", ct->fill, &ct->fill, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_contact_fill", ct->fill, 0.0, 1.0, PETSC_FALSE, PETSC_FALSE));
   for (PetscInt b = 0; b < mpm->nbodies; b++) {
-    char     opt[MPM_MAX_NAME + 32];
-    PetscInt n = 3; /* at most 3: more than the dimension is refused below */
+    char opt[MPM_MAX_NAME + 32];
     PetscCall(PetscSNPrintf(opt, sizeof(opt), "-body_%s_rigid_velocity", mpm->bodyname[b]));
-    PetscCall(PetscOptionsRealArray(opt, "A rigid body: its prescribed velocity, one value per dimension [cm/s]; it takes part in contact and the report gives the contact force on it", "", ct->vrigid[b], &n, &ct->rigid[b]));
-    PetscCheck(!ct->rigid[b] || n == mpm->grid.dim, mpm->comm, PETSC_ERR_USER_INPUT, "%s: %" PetscInt_FMT " values given, valid is one per dimension (%" PetscInt_FMT ")", opt, n, mpm->grid.dim);
+    PetscCall(MPMOptionsTable(PetscOptionsObject, opt,
+                              "A rigid body: its prescribed velocity, one value per dimension [cm/s], or one row per time of -body_<b>_rigid_velocity_times (linear in between); it takes part in contact and the report gives the contact force on it",
+                              mpm->grid.dim, &ct->vtab[b], &ct->rigid[b]));
+    if (ct->rigid[b]) MPMTableEval(&ct->vtab[b], 0.0, ct->vrigid[b]);
     for (PetscInt r = 0; ct->rigid[b] && r < mpm->nreg; r++) /* its points start at its velocity: nothing would change theirs */
       for (PetscInt k = 0; mpm->reg[r].body == b && k < mpm->grid.dim; k++)
-        PetscCheck(mpm->reg[r].v[k] == ct->vrigid[b][k], mpm->comm, PETSC_ERR_USER_INPUT, "%s: region %s of the rigid body starts at another velocity (-region_%s_velocity, component %" PetscInt_FMT ": %g, not %g cm/s); give it the rigid velocity",
-                   opt, mpm->reg[r].name, mpm->reg[r].name, k, (double)mpm->reg[r].v[k], (double)ct->vrigid[b][k]);
+        PetscCheck(mpm->reg[r].v[k] == ct->vrigid[b][k], mpm->comm, PETSC_ERR_USER_INPUT,
+                   "%s: region %s of the rigid body starts at another velocity (-region_%s_velocity, component %" PetscInt_FMT ": %g, not %g cm/s); give it the rigid velocity at t = 0", opt, mpm->reg[r].name, mpm->reg[r].name, k,
+                   (double)mpm->reg[r].v[k], (double)ct->vrigid[b][k]);
   }
   mod->active = (PetscBool)(mpm->nbodies > 1);
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -387,17 +393,23 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
     for (PetscInt k = 0; k < 3; k++) frc[b][k] = 0.0;
     anyrigid = (PetscBool)(anyrigid || ct->rigid[b]);
   }
-  if (anyrigid) /* a rigid body's nodes move at its velocity */
+  if (anyrigid) /* a rigid body's nodes move at its velocity: v^{n+1/2} = v(t^n + dt_n/2), before the kick v^{n-1/2} */
     for (PetscInt b = 0; b < nb; b++) {
       const PetscInt *blo, *bhi;
+      PetscReal       vold[3] = {0.0, 0.0, 0.0};
       if (!ct->rigid[b]) continue;
+      MPMTableEval(&ct->vtab[b], ctx->tn + 0.5 * ctx->dt, ct->vrigid[b]);
+      MPMTableEval(&ct->vtab[b], ctx->tn + 0.5 * ctx->dt - ctx->kick, vold);
       MPMBodyBox(mpm, b, &blo, &bhi);
       for (PetscInt i2 = blo[2]; i2 < bhi[2]; i2++)
         for (PetscInt i1 = blo[1]; i1 < bhi[1]; i1++)
           for (PetscInt i0 = blo[0]; i0 < bhi[0]; i0++) {
             MPMNode *nd = &node[b][MPMOwnedToLocal(g, i0, i1, i2)];
             if (nd->m > 0.0)
-              for (PetscInt k = 0; k < d; k++) nd->p[k] = nd->v0[k] = ct->vrigid[b][k];
+              for (PetscInt k = 0; k < d; k++) {
+                nd->p[k]  = ct->vrigid[b][k];
+                nd->v0[k] = vold[k];
+              }
           }
     }
   for (PetscInt i2 = lo[2]; ct->nshared && i2 < hi[2]; i2++) /* where the bodies share nodes */
@@ -405,7 +417,7 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
       for (PetscInt i0 = lo[0]; i0 < hi[0]; i0++) {
         const PetscInt c   = MPMOwnedToLocal(g, i0, i1, i2);
         PetscInt       nin = 0, rb = -1, heavy[MPM_MAX_BODIES];
-        PetscReal      M = 0.0, P[3] = {0.0, 0.0, 0.0}, vcm[3], Vsum = 0.0, Vnode = g->vcell;
+        PetscReal      M = 0.0, P[3] = {0.0, 0.0, 0.0}, vcm[3], vref[3], Vsum = 0.0, Vnode = g->vcell;
         for (PetscInt b = 0; b < nb; b++)
           if (node[b][c].m > 0.0) {
             nin++;
@@ -417,7 +429,10 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
         if (nin < 2) continue;
         if (g->axisym) Vnode *= g->lo[0] + (i0 + g->xs[0]) * g->h[0];               /* per radian: r_I h_r h_z */
         if (ct->gap == MPM_CONTACT_GAP_VOLUME && Vsum < ct->fill * Vnode) continue; /* a gap between them */
-        for (PetscInt k = 0; k < d; k++) vcm[k] = rb >= 0 ? ct->vrigid[rb][k] : P[k] / M;
+        for (PetscInt k = 0; k < d; k++) {
+          vcm[k]  = rb >= 0 ? ct->vrigid[rb][k] : P[k] / M;
+          vref[k] = rb >= 0 ? ct->vrigid[rb][k] : 0.0; /* the frame whose kinetic energy the correction turns into heat */
+        }
         for (PetscInt b = 0; b < nb; b++) { /* each body's heaviest partner at the node, whose friction coefficient it feels */
           heavy[b] = -1;
           for (PetscInt o = 0; o < nb; o++)
@@ -440,14 +455,14 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
             t2 += dvt[k] * dvt[k];
             vold[k] = nd->p[k];
             nd->p[k] -= dn * n[k];
-            wn += nd->m * (vold[k] - nd->p[k]) * (nd->v0[k] + nd->p[k]) * 0.5;
+            wn += nd->m * (vold[k] - nd->p[k]) * ((nd->v0[k] + nd->p[k]) * 0.5 - vref[k]);
           }
           if (mu > 0.0 && t2 > 0.0) {
             const PetscReal t = PetscSqrtReal(t2), s = PetscMin(mu * dn, t) / t;
             for (PetscInt k = 0; k < d; k++) {
               const PetscReal vk = nd->p[k];
               nd->p[k] -= s * dvt[k];
-              wt += nd->m * (vk - nd->p[k]) * (nd->v0[k] + nd->p[k]) * 0.5;
+              wt += nd->m * (vk - nd->p[k]) * ((nd->v0[k] + nd->p[k]) * 0.5 - vref[k]);
             }
           }
           geo[b][c].f[0] = wn + wt; /* heats the body's points there (MPMContactHeat) */
@@ -470,6 +485,7 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
         if (!ctx->remap) ct->force[b][k] = 0.0;
         ct->force[b][k] += frc[b][k];
         ct->impulse[b][k] += frc[b][k] * ctx->kick;
+        ct->rwork += -frc[b][k] * ct->vrigid[b][k] * ctx->kick;
         f2 += ct->force[b][k] * ct->force[b][k];
       }
       ct->fmax[b] = PetscMax(ct->fmax[b], PetscSqrtReal(f2));
@@ -499,32 +515,34 @@ static PetscErrorCode MPMContactView(MPMModule mod, MPM mpm, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Each body's mass, mean velocity and kinetic energy from its points; the contact work (turned into heat), its
+/* Each body's mass, centre of mass, mean velocity and kinetic energy from its points; the contact work (turned into heat), its
    frictional part; each rigid body's contact force and impulse. */
 static PetscErrorCode MPMContactReport(MPMModule mod, MPM mpm, MPMReport rep)
 {
   MPMContact    *ct = (MPMContact *)mod->data;
   const PetscInt d = mpm->grid.dim, nb = mpm->nbodies;
-  PetscReal      s[MPM_MAX_BODIES][5] = {{0}}, w[3] = {ct->work, ct->friction, (PetscReal)ct->nodes}, imp[MPM_MAX_BODIES][3];
+  PetscReal      s[MPM_MAX_BODIES][8] = {{0}}, w[3] = {ct->work, ct->friction, (PetscReal)ct->nodes}, imp[MPM_MAX_BODIES][3];
   MPMPoints      pts;
   char           buf[8000];
   size_t         len = 0;
+  PetscReal      Ein = 0.0;
 
   PetscFunctionBegin;
   if (!mod->active) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(MPMPointsGetArrays(mpm, &pts));
-  for (PetscInt p = 0; p < pts.n; p++) { /* per body: m, m v, m |v|^2 / 2 */
+  for (PetscInt p = 0; p < pts.n; p++) { /* per body: m, m v, m |v|^2 / 2, m x */
     const PetscInt  b = (PetscInt)pts.f[MPM_FIELD_BODY][p];
-    const PetscReal m = pts.f[MPM_FIELD_MASS][p], *v = &pts.f[MPM_FIELD_VELOCITY][p * d];
+    const PetscReal m = pts.f[MPM_FIELD_MASS][p], *v = &pts.f[MPM_FIELD_VELOCITY][p * d], *x = &pts.f[MPM_FIELD_POSITION][p * d];
     s[b][0] += m;
     for (PetscInt k = 0; k < d; k++) {
       s[b][1 + k] += m * v[k];
       s[b][4] += 0.5 * m * v[k] * v[k];
+      s[b][5 + k] += m * x[k];
     }
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   PetscCall(PetscArraycpy(&imp[0][0], &ct->impulse[0][0], 3 * MPM_MAX_BODIES));
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &s[0][0], 5 * MPM_MAX_BODIES, MPIU_REAL, MPIU_SUM, mpm->comm));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &s[0][0], 8 * MPM_MAX_BODIES, MPIU_REAL, MPIU_SUM, mpm->comm));
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, w, 3, MPIU_REAL, MPIU_SUM, mpm->comm));
   PetscCall(MPMReportPrintf(rep, "  contact: work %.6g erg (friction %.6g; heat at the interfaces), %.4f of the initial kinetic energy, in %.0f node corrections\n", (double)w[0], (double)w[1],
                             (double)(mpm->kinetic0 > 0.0 ? w[0] / mpm->kinetic0 : 0.0), (double)w[2]));
@@ -532,8 +550,9 @@ static PetscErrorCode MPMContactReport(MPMModule mod, MPM mpm, MPMReport rep)
   for (PetscInt b = 0; b < nb; b++) {
     const PetscReal m = s[b][0], minv = m > 0.0 ? 1.0 / m : 0.0;
     PetscCall(PetscStrlen(buf, &len));
-    PetscCall(PetscSNPrintf(buf + len, sizeof(buf) - len, "%s{\"name\": \"%s\", \"mass\": %.6e, \"velocity\": [%.6e, %.6e, %.6e], \"kinetic\": %.6e, \"rigid\": %s", b ? ", " : "", mpm->bodyname[b], (double)m, (double)(s[b][1] * minv),
-                            (double)(d > 1 ? s[b][2] * minv : 0.0), (double)(d > 2 ? s[b][3] * minv : 0.0), (double)s[b][4], ct->rigid[b] ? "true" : "false"));
+    PetscCall(PetscSNPrintf(buf + len, sizeof(buf) - len, "%s{\"name\": \"%s\", \"mass\": %.6e, \"position\": [%.9e, %.9e, %.9e], \"velocity\": [%.6e, %.6e, %.6e], \"kinetic\": %.6e, \"rigid\": %s", b ? ", " : "", mpm->bodyname[b], (double)m,
+                            (double)(s[b][5] * minv), (double)(d > 1 ? s[b][6] * minv : 0.0), (double)(d > 2 ? s[b][7] * minv : 0.0), (double)(s[b][1] * minv), (double)(d > 1 ? s[b][2] * minv : 0.0), (double)(d > 2 ? s[b][3] * minv : 0.0),
+                            (double)s[b][4], ct->rigid[b] ? "true" : "false"));
     PetscCall(PetscStrlen(buf, &len));
     if (ct->rigid[b])
       PetscCall(PetscSNPrintf(buf + len, sizeof(buf) - len, ", \"force\": [%.6e, %.6e, %.6e], \"force_max\": %.6e, \"impulse\": [%.6e, %.6e, %.6e]}", (double)ct->force[b][0], (double)ct->force[b][1], (double)ct->force[b][2], (double)ct->fmax[b],
@@ -545,7 +564,15 @@ static PetscErrorCode MPMContactReport(MPMModule mod, MPM mpm, MPMReport rep)
   }
   PetscCall(PetscStrlen(buf, &len));
   PetscCall(PetscSNPrintf(buf + len, sizeof(buf) - len, "]"));
-  PetscCall(MPMReportAdd(rep, NULL, "contact", "{\"work\": %.6e, \"friction_work\": %.6e, \"corrections\": %.0f, \"bodies\": %s}", (double)w[0], (double)w[1], (double)w[2], buf));
+  PetscCall(MPMReportAdd(rep, NULL, "contact", "{\"work\": %.6e, \"friction_work\": %.6e, \"rigid_work\": %.6e, \"corrections\": %.0f, \"bodies\": %s}", (double)w[0], (double)w[1], (double)ct->rwork, (double)w[2], buf));
+  for (PetscInt b = 0; b < nb; b++) /* moving rigid bodies: their work and their kinetic energy's change came from outside */
+    if (ct->rigid[b]) {
+      PetscReal v0[3] = {0.0, 0.0, 0.0}, e0 = 0.0;
+      MPMTableEval(&ct->vtab[b], 0.0, v0);
+      for (PetscInt k = 0; k < d; k++) e0 += 0.5 * s[b][0] * v0[k] * v0[k];
+      Ein += s[b][4] - e0;
+    }
+  PetscCall(MPMReportAddRemovedEnergy(rep, -(Ein + ct->rwork)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -579,6 +606,7 @@ static PetscErrorCode MPMContactCheckpoint(MPMModule mod, MPM mpm, MPMCheckpoint
   PetscCall(MPMCheckpointReals(ck, "impulse", 3 * MPM_MAX_BODIES, &ct->impulse[0][0], MPM_CKPT_GLOBAL));
   PetscCall(MPMCheckpointReals(ck, "force_max", MPM_MAX_BODIES, ct->fmax, MPM_CKPT_GLOBAL));
   PetscCall(MPMCheckpointReals(ck, "force", 3 * MPM_MAX_BODIES, &ct->force[0][0], MPM_CKPT_GLOBAL));
+  PetscCall(MPMCheckpointReals(ck, "rigid_work", 1, &ct->rwork, MPM_CKPT_GLOBAL));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -5,6 +5,7 @@
 #include "core/petmpmimpl.h"
 
 PETSC_INTERN PetscErrorCode MPMModuleCreate_Gravity(MPMModule);
+PETSC_INTERN PetscErrorCode MPMModuleCreate_Load(MPMModule);
 PETSC_INTERN PetscErrorCode MPMModuleCreate_Walls(MPMModule);
 PETSC_INTERN PetscErrorCode MPMModuleCreate_Remap(MPMModule);
 PETSC_INTERN PetscErrorCode MPMModuleCreate_Viscosity(MPMModule);
@@ -41,6 +42,7 @@ PetscErrorCode MPMModulesRegisterAll(void)
   if (MPMModulesRegisterAllCalled) PetscFunctionReturn(PETSC_SUCCESS);
   MPMModulesRegisterAllCalled = PETSC_TRUE;
   PetscCall(MPMModuleRegister("gravity", MPMModuleCreate_Gravity));
+  PetscCall(MPMModuleRegister("load", MPMModuleCreate_Load));
   PetscCall(MPMModuleRegister("wall", MPMModuleCreate_Walls));
   PetscCall(MPMModuleRegister("remap", MPMModuleCreate_Remap));
   PetscCall(MPMModuleRegister("viscosity", MPMModuleCreate_Viscosity));

@@ -88,6 +88,21 @@ def test_restart():
             diff = same_files(u, w)
             check(r2["contact"] == r1["contact"] and r1["contact"]["corrections"] > 0 and not diff,
                   f"{ranks} rank(s): two bodies in contact restarted at step 80 (after the impact) equal the uninterrupted run bit for bit (contact work {r2['contact']['work']:.4e}; differing: {diff})")
+        # a load ramp (the pushed block, inputs/pushed_block_2d.opts) and a rigid body's velocity table (a piston on the
+        # bars of inputs/bars_1d.opts), each checkpointed during its ramp: the load's work and the rigid body's travel go on
+        pushed = ["-options_file", os.path.join(SRC, "inputs", "pushed_block_2d.opts"), "-ts_max_time", "2e-4"]
+        piston = ["-options_file", os.path.join(SRC, "inputs", "bars_1d.opts"), "-region_left_velocity", "0", "-region_right_velocity", "0", "-body_right_rigid_velocity", "0,-1e4",
+                  "-body_right_rigid_velocity_times", "0,2e-6", "-ts_max_time", "4e-6"]
+        for name, sc, ranks, at in (("pushed", pushed, 2, "300"), ("piston", piston, 1, "100")):
+            u, w = os.path.join(d, name + "u"), os.path.join(d, name + "w")
+            run([*sc, "-mpm_output", u, "-mpm_report", os.path.join(u, "report.json")], ranks)
+            run([*sc, "-mpm_output", w, "-mpm_checkpoint_interval", at, "-ts_max_steps", at], ranks)
+            run([*sc, "-mpm_output", w, "-mpm_restart", os.path.join(w, f"checkpoint-{at}.h5"), "-mpm_report", os.path.join(w, "report.json")], ranks)
+            with open(os.path.join(u, "report.json")) as f1, open(os.path.join(w, "report.json")) as f2:
+                r1, r2 = json.load(f1), json.load(f2)
+            diff = same_files(u, w)
+            check(r2["contact"] == r1["contact"] and r2.get("load") == r1.get("load") and r2["energy_accounted"] == r1["energy_accounted"] and not diff,
+                  f"{name} on {ranks} rank(s), restarted at step {at} inside its ramp: equal to the uninterrupted run bit for bit (differing: {diff})")
         # a checkpoint of another version (its /state one value short, as before -mpm_dt_min_ratio's entry): refused, said why
         old = os.path.join(d, "old-checkpoint.h5")
         shutil.copy(os.path.join(p, "checkpoint-800.h5"), old)
