@@ -52,6 +52,7 @@ typedef struct {
   PetscReal        impulse[MPM_MAX_BODIES][3]; /* integral of the contact force on each rigid body, this rank [dyn s] */
   PetscReal        force[MPM_MAX_BODIES][3];   /* the contact force on each rigid body in the last kick, all ranks [dyn] */
   PetscReal        fmax[MPM_MAX_BODIES];       /* the largest |force| so far [dyn] */
+  PetscReal        patch[MPM_MAX_BODIES];      /* the rms radius of the normal forces on it in the last kick, across the force [cm] */
   PetscReal        rwork;                      /* the work the moving rigid bodies did on the others, all ranks [erg] */
   PetscInt         nodes;                      /* node-corrections made, this rank */
 } MPMContact;
@@ -362,6 +363,32 @@ static PetscErrorCode MPMContactExtents(MPMContact *ct, MPM mpm, MPMNode *const 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The spread of the normal contact forces on a rigid body across its force's direction n: with the moments
+   S = sum f_n, c = sum f_n x / S and C = sum f_n x x^T / S - c c^T, r_rms = sqrt(tr C - n . C n). The Hertz patch
+   has r_rms = b / 2 for a cylinder (half-width b; p = p0 sqrt(1 - x^2 / b^2)) and a sqrt(2 / 5) for a sphere (radius a).
+   In r-z the radial moments are about the axis. */
+static PetscReal MPMContactPatch(const PetscReal m[], const PetscReal F[], PetscBool axisym)
+{
+  PetscReal C[3][3], c[3], n[3], F2 = F[0] * F[0] + F[1] * F[1] + F[2] * F[2], r2;
+
+  if (!(m[3] > 0.0) || !(F2 > 0.0)) return 0.0;
+  for (PetscInt k = 0; k < 3; k++) {
+    c[k] = m[4 + k] / m[3];
+    n[k] = F[k] / PetscSqrtReal(F2);
+  }
+  if (axisym) c[0] = 0.0; /* r-z: radii about the axis */
+  C[0][0] = m[7] / m[3] - c[0] * c[0];
+  C[1][1] = m[8] / m[3] - c[1] * c[1];
+  C[2][2] = m[9] / m[3] - c[2] * c[2];
+  C[0][1] = C[1][0] = m[10] / m[3] - c[0] * c[1];
+  C[0][2] = C[2][0] = m[11] / m[3] - c[0] * c[2];
+  C[1][2] = C[2][1] = m[12] / m[3] - c[1] * c[2];
+  r2                = C[0][0] + C[1][1] + C[2][2];
+  for (PetscInt i = 0; i < 3; i++)
+    for (PetscInt j = 0; j < 3; j++) r2 -= n[i] * C[i][j] * n[j];
+  return PetscSqrtReal(PetscMax(r2, 0.0));
+}
+
 static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
 {
   MPMContact    *ct = (MPMContact *)mod->data;
@@ -369,7 +396,7 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
   const PetscInt d = g->dim, nb = mpm->nbodies;
   MPMNode       *node[MPM_MAX_BODIES] = {NULL}, *geo[MPM_MAX_BODIES] = {NULL};
   PetscInt       lo[MPM_MAX_DIM], hi[MPM_MAX_DIM];
-  PetscReal      frc[MPM_MAX_BODIES][3];
+  PetscReal      frc[MPM_MAX_BODIES][13]; /* per rigid body: the force on it; the normal forces' moments sum f_n, sum f_n x, sum f_n x_i x_j (xx yy zz xy xz yz) */
   PetscBool      anyrigid = PETSC_FALSE;
 
   PetscFunctionBegin;
@@ -390,7 +417,7 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
       hi[k] = PetscMax(hi[k], bhi[k]);
     }
     PetscCall(VecGetArray(ct->geo[b], (PetscScalar **)&geo[b]));
-    for (PetscInt k = 0; k < 3; k++) frc[b][k] = 0.0;
+    for (PetscInt k = 0; k < 13; k++) frc[b][k] = 0.0;
     anyrigid = (PetscBool)(anyrigid || ct->rigid[b]);
   }
   if (anyrigid) /* a rigid body's nodes move at its velocity: v^{n+1/2} = v(t^n + dt_n/2), before the kick v^{n-1/2} */
@@ -469,15 +496,24 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
           ct->work += wn + wt;
           ct->friction += wt;
           ct->nodes++;
-          if (rb >= 0)
-            for (PetscInt k = 0; k < d; k++) frc[rb][k] += nd->m * (vold[k] - nd->p[k]) / ctx->kick; /* the push the rigid body gave, reversed */
+          if (rb >= 0) {
+            const PetscReal fn = nd->m * dn / ctx->kick, ij[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
+            PetscReal       x[3] = {0.0, 0.0, 0.0};
+            for (PetscInt k = 0; k < d; k++) {
+              frc[rb][k] += nd->m * (vold[k] - nd->p[k]) / ctx->kick; /* the push the rigid body gave, reversed */
+              x[k] = g->lo[k] + (i0 * (k == 0) + i1 * (k == 1) + i2 * (k == 2) + g->xs[k]) * g->h[k];
+            }
+            frc[rb][3] += fn;
+            for (PetscInt k = 0; k < 3; k++) frc[rb][4 + k] += fn * x[k];
+            for (PetscInt k = 0; k < 6; k++) frc[rb][7 + k] += fn * x[(PetscInt)ij[k][0]] * x[(PetscInt)ij[k][1]];
+          }
         }
       }
   for (PetscInt b = 0; b < nb; b++) PetscCall(VecRestoreArray(ct->geo[b], (PetscScalar **)&geo[b]));
   if (ct->nshared) PetscCall(MPMContactHeat(ct, mpm, node));
   for (PetscInt b = 0; b < nb; b++) PetscCall(VecRestoreArray(MPMBodyNodesVec(mpm, b), (PetscScalar **)&node[b]));
   if (anyrigid) { /* the contact force on each rigid body, all ranks; its impulse over the kicks */
-    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &frc[0][0], 3 * MPM_MAX_BODIES, MPIU_REAL, MPIU_SUM, mpm->comm));
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &frc[0][0], 13 * MPM_MAX_BODIES, MPIU_REAL, MPIU_SUM, mpm->comm));
     for (PetscInt b = 0; b < nb; b++) {
       PetscReal f2 = 0.0;
       if (!ct->rigid[b]) continue;
@@ -489,6 +525,7 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
         f2 += ct->force[b][k] * ct->force[b][k];
       }
       ct->fmax[b] = PetscMax(ct->fmax[b], PetscSqrtReal(f2));
+      if (!ctx->remap) ct->patch[b] = MPMContactPatch(frc[b], ct->force[b], mpm->grid.axisym);
     }
   }
   for (PetscInt b = 0; (ct->nshared || anyrigid) && b < nb; b++) { /* the ghosts of the corrected nodes */
@@ -555,8 +592,8 @@ static PetscErrorCode MPMContactReport(MPMModule mod, MPM mpm, MPMReport rep)
                             (double)s[b][4], ct->rigid[b] ? "true" : "false"));
     PetscCall(PetscStrlen(buf, &len));
     if (ct->rigid[b])
-      PetscCall(PetscSNPrintf(buf + len, sizeof(buf) - len, ", \"force\": [%.6e, %.6e, %.6e], \"force_max\": %.6e, \"impulse\": [%.6e, %.6e, %.6e]}", (double)ct->force[b][0], (double)ct->force[b][1], (double)ct->force[b][2], (double)ct->fmax[b],
-                              (double)imp[b][0], (double)imp[b][1], (double)imp[b][2]));
+      PetscCall(PetscSNPrintf(buf + len, sizeof(buf) - len, ", \"force\": [%.6e, %.6e, %.6e], \"force_max\": %.6e, \"patch_rms\": %.6e, \"impulse\": [%.6e, %.6e, %.6e]}", (double)ct->force[b][0], (double)ct->force[b][1], (double)ct->force[b][2],
+                              (double)ct->fmax[b], (double)ct->patch[b], (double)imp[b][0], (double)imp[b][1], (double)imp[b][2]));
     else
       PetscCall(PetscSNPrintf(buf + len, sizeof(buf) - len, "}"));
     PetscCall(MPMReportPrintf(rep, "  body %s: mass %.6g g, velocity %.6g %.6g %.6g cm/s, kinetic energy %.6g erg%s\n", mpm->bodyname[b], (double)m, (double)(s[b][1] * minv), (double)(d > 1 ? s[b][2] * minv : 0.0),
@@ -607,6 +644,7 @@ static PetscErrorCode MPMContactCheckpoint(MPMModule mod, MPM mpm, MPMCheckpoint
   PetscCall(MPMCheckpointReals(ck, "force_max", MPM_MAX_BODIES, ct->fmax, MPM_CKPT_GLOBAL));
   PetscCall(MPMCheckpointReals(ck, "force", 3 * MPM_MAX_BODIES, &ct->force[0][0], MPM_CKPT_GLOBAL));
   PetscCall(MPMCheckpointReals(ck, "rigid_work", 1, &ct->rwork, MPM_CKPT_GLOBAL));
+  PetscCall(MPMCheckpointReals(ck, "patch", MPM_MAX_BODIES, ct->patch, MPM_CKPT_GLOBAL));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

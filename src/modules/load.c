@@ -4,11 +4,12 @@
    time (-body_<b>_force_times [s], linear in between: a ramp). It acts as a body force per unit mass,
      f_I += m_I F(t^n) / M_b,   M_b = sum_I m_I (the body's mass on all ranks, summed each step),
    so that the body's centre of mass moves as under a load on its surface (the load is spread by mass, not over a
-   face). Its work on the body, exact for the leapfrog kick of the centre of mass from V^{n-1/2} = P_b / M_b
-   (P_b = sum_I (mv)_I):
-     W += F . (V^{n-1/2} + V^{n+1/2}) / 2 dt_kick = dt_kick F . P_b / M_b + dt_kick^2 |F|^2 / (2 M_b),
-   enters the energy budgets (the report adds it back as energy that came in). The forces come before the step size
-   (which reads them), so a step's term is added at the next step, when dt_kick = (dt_{n-1} + dt_n) / 2 is known. */
+   face). Its work on the body in the kick, as for every nodal force (walls.c, damping.c), at the mean of the velocities
+   before and after it, V^{n-1/2} = P_b^n / M_b and V^{n+1/2} = P_b^{n+1} / M_b (P_b = sum_I (mv)_I of points to grid,
+   the points' momentum, after every other force and correction of the step):
+     W += F^n . (P_b^n + P_b^{n+1}) / (2 M_b) dt_kick,   dt_kick = (dt_{n-1} + dt_n) / 2,
+   enters the energy budgets (the report adds it back as energy that came in). A step's term is added at the next
+   step's points to grid (or at the report, from the points), when P_b^{n+1} and dt_n are known. */
 #include "core/petmpmimpl.h"
 
 typedef struct {
@@ -16,14 +17,33 @@ typedef struct {
   MPMTable  F[MPM_MAX_BODIES];       /* its force over time [dyn]      */
   PetscReal now[MPM_MAX_BODIES][3];  /* the force in the last step [dyn] */
   PetscReal work[MPM_MAX_BODIES];    /* its work so far, all ranks [erg] */
-  PetscReal last[MPM_MAX_BODIES][4]; /* the last step's F . P_b / M_b, |F|^2 / (2 M_b), and dt_{n-1}; its work is not yet in work */
+  PetscReal last[MPM_MAX_BODIES][5]; /* the last step's F . P_b^n / M_b, dt_{n-1}, F / M_b; its work is not yet in work */
 } MPMLoad;
 
-/* The work of the last step whose kick is now known (dt_n = MPM::dt). */
-static PetscReal MPMLoadLastWork(const MPMLoad *ld, MPM mpm, PetscInt b)
+/* The work of the last step, now that dt_n = MPM::dt and the body's momentum after it, P1, are known. */
+static PetscReal MPMLoadLastWork(const MPMLoad *ld, MPM mpm, PetscInt b, const PetscReal P1[])
 {
-  const PetscReal kick = 0.5 * (ld->last[b][2] + mpm->dt);
-  return kick * ld->last[b][0] + kick * kick * ld->last[b][1];
+  const PetscReal kick = 0.5 * (ld->last[b][1] + mpm->dt);
+  PetscReal       FP1  = 0.0;
+  for (PetscInt k = 0; k < mpm->grid.dim; k++) FP1 += ld->last[b][2 + k] * P1[k];
+  return 0.5 * kick * (ld->last[b][0] + FP1);
+}
+
+/* Body b's momentum from its points, all ranks [g cm/s]. */
+static PetscErrorCode MPMLoadMomentum(MPM mpm, PetscInt b, PetscReal P[])
+{
+  const PetscInt d = mpm->grid.dim;
+  MPMPoints      pts;
+
+  PetscFunctionBegin;
+  for (PetscInt k = 0; k < 3; k++) P[k] = 0.0;
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt p = 0; p < pts.n; p++)
+    if (mpm->nbodies == 1 || (PetscInt)pts.f[MPM_FIELD_BODY][p] == b)
+      for (PetscInt k = 0; k < d; k++) P[k] += pts.f[MPM_FIELD_MASS][p] * pts.f[MPM_FIELD_VELOCITY][p * d + k];
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, P, 3, MPIU_REAL, MPIU_SUM, mpm->comm));
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 static PetscErrorCode MPMLoadSetFromOptions(MPMModule mod, MPM mpm, PetscOptionItems *PetscOptionsObject)
@@ -47,32 +67,31 @@ static PetscErrorCode MPMLoadApply(MPMModule mod, MPM mpm, const MPMStepContext 
 {
   MPMLoad       *ld = (MPMLoad *)mod->data;
   const PetscInt d = mpm->grid.dim, b = mpm->body;
-  PetscReal      MP[4] = {0.0, 0.0, 0.0, 0.0}, *F = ld->now[b], a[3], FP = 0.0, F2 = 0.0;
+  PetscReal      MP[4] = {0.0, 0.0, 0.0, 0.0}, *F = ld->now[b], a[3], FP = 0.0;
 
   PetscFunctionBegin;
   if (!ld->loaded[b]) PetscFunctionReturn(PETSC_SUCCESS);
-  ld->work[b] += MPMLoadLastWork(ld, mpm, b);
-  ld->last[b][0] = ld->last[b][1] = 0.0;
-  ld->last[b][2]                  = mpm->dt;
   MPM_FOR_BOX_NODES(mpm, c)
   {
     MP[0] += node[c].m;
     for (PetscInt k = 0; k < d; k++) MP[1 + k] += node[c].p[k];
   }
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, MP, 4, MPIU_REAL, MPIU_SUM, mpm->comm));
+  ld->work[b] += MPMLoadLastWork(ld, mpm, b, &MP[1]);
+  for (PetscInt k = 0; k < 5; k++) ld->last[b][k] = 0.0;
+  ld->last[b][1] = mpm->dt;
   if (!(MP[0] > 0.0)) PetscFunctionReturn(PETSC_SUCCESS); /* the body has left the grid */
   MPMTableEval(&ld->F[b], ctx->tn, F);
   for (PetscInt k = 0; k < d; k++) {
     a[k] = F[k] / MP[0];
     FP += F[k] * MP[1 + k];
-    F2 += F[k] * F[k];
   }
   MPM_FOR_BOX_NODES(mpm, c)
   {
     for (PetscInt k = 0; k < d; k++) node[c].f[k] += node[c].m * a[k];
   }
   ld->last[b][0] = FP / MP[0];
-  ld->last[b][1] = 0.5 * F2 / MP[0];
+  for (PetscInt k = 0; k < d; k++) ld->last[b][2 + k] = a[k];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -101,7 +120,9 @@ static PetscErrorCode MPMLoadReport(MPMModule mod, MPM mpm, MPMReport rep)
   PetscCall(PetscSNPrintf(buf, sizeof(buf), "["));
   for (PetscInt b = 0, i = 0; b < mpm->nbodies; b++) {
     if (!ld->loaded[b]) continue;
-    const PetscReal Wb = ld->work[b] + MPMLoadLastWork(ld, mpm, b);
+    PetscReal P[3], Wb;
+    PetscCall(MPMLoadMomentum(mpm, b, P));
+    Wb = ld->work[b] + MPMLoadLastWork(ld, mpm, b, P);
     W += Wb;
     PetscCall(PetscStrlen(buf, &len));
     PetscCall(PetscSNPrintf(buf + len, sizeof(buf) - len, "%s{\"name\": \"%s\", \"force\": [%.6e, %.6e, %.6e], \"work\": %.6e}", i++ ? ", " : "", mpm->bodyname[b], (double)ld->now[b][0], (double)ld->now[b][1], (double)ld->now[b][2], (double)Wb));
@@ -121,7 +142,7 @@ static PetscErrorCode MPMLoadCheckpoint(MPMModule mod, MPM mpm, MPMCheckpoint ck
   PetscFunctionBegin;
   PetscCall(MPMCheckpointReals(ck, "work", MPM_MAX_BODIES, ld->work, MPM_CKPT_GLOBAL));
   PetscCall(MPMCheckpointReals(ck, "force", 3 * MPM_MAX_BODIES, &ld->now[0][0], MPM_CKPT_GLOBAL));
-  PetscCall(MPMCheckpointReals(ck, "last", 4 * MPM_MAX_BODIES, &ld->last[0][0], MPM_CKPT_GLOBAL));
+  PetscCall(MPMCheckpointReals(ck, "last", 5 * MPM_MAX_BODIES, &ld->last[0][0], MPM_CKPT_GLOBAL));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
