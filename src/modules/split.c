@@ -76,29 +76,44 @@ static PetscErrorCode MPMSplitCheckpoint(MPMModule mod, MPM mpm, MPMCheckpoint c
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The axis along which point p should split (-1: none) and whether a split was refused at the level limit. */
-static inline PetscInt MPMSplitAxis(const MPM mpm, const MPMSplit *sp, const PetscReal *x, const PetscReal *F, const PetscReal *s, PetscBool *refused)
+/* The axes along which point p splits (bit k set; 0: none) and whether a split was refused at the level limit: the
+   reference axis k along which its domain is longest, 2 |F_p e_k| s_k l0_k in cells, where that exceeds
+   -mpm_split_length, and with it every axis as long to a relative 1e-9 (a tie), so that no axis is preferred where
+   none is longer: a point stretched alike along x and y, as on the diagonal of a scene symmetric about it, splits
+   into four, not first along x (which made such scenes' answers asymmetric, more so with refinement). */
+static inline PetscInt MPMSplitAxes(const MPM mpm, const MPMSplit *sp, const PetscReal *x, const PetscReal *F, const PetscReal *s, PetscBool *refused)
 {
-  const MPMGrid *g    = &mpm->grid;
-  const PetscInt d    = g->dim;
-  PetscReal      best = sp->length;
-  PetscInt       axis = -1;
+  const MPMGrid *g = &mpm->grid;
+  const PetscInt d = g->dim;
+  PetscReal      len[MPM_MAX_DIM], best = sp->length;
+  PetscInt       axes = 0;
 
   for (PetscInt k = 0; k < d; k++) {
-    PetscReal len2 = 0.0, len;
+    PetscReal len2 = 0.0;
     for (PetscInt i = 0; i < d; i++) len2 += PetscSqr(F[i * d + k] / g->h[i]);
-    len = 2.0 * PetscSqrtReal(len2) * s[k] * MPMLatticeHalfWidth(mpm, k); /* cells */
-    if (len > best) {
-      best = len;
-      axis = k;
+    len[k] = 2.0 * PetscSqrtReal(len2) * s[k] * MPMLatticeHalfWidth(mpm, k); /* cells */
+    best   = PetscMax(best, len[k]);
+  }
+  if (!(best > sp->length)) return 0;
+  for (PetscInt k = 0; k < d; k++) {
+    if (!(len[k] >= best * (1.0 - 1e-9))) continue;
+    if (s[k] < sp->min_scale) {
+      *refused = PETSC_TRUE;
+      continue;
     }
+    if (g->axisym && x[0] <= PetscAbsReal(F[k]) * 0.5 * s[k] * MPMLatticeHalfWidth(mpm, k)) continue; /* a child would sit on or beyond the axis r = 0 */
+    axes |= 1 << k;
   }
-  if (axis >= 0 && s[axis] < sp->min_scale) {
-    *refused = PETSC_TRUE;
-    axis     = -1;
-  }
-  if (axis >= 0 && g->axisym && x[0] <= PetscAbsReal(F[axis]) * 0.5 * s[axis] * MPMLatticeHalfWidth(mpm, axis)) axis = -1; /* a child would sit on or beyond the axis r = 0 */
-  return axis;
+  return axes;
+}
+
+/* Points a split along the axes makes: 2^(number of axes) - 1 besides the parent. */
+static inline PetscInt MPMSplitChildren(PetscInt axes)
+{
+  PetscInt n = 1;
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++)
+    if ((axes >> k) & 1) n *= 2;
+  return n - 1;
 }
 
 /* Orders splitting parents by id, then material (the parts of a cut lattice site share its id). */
@@ -108,94 +123,117 @@ static int MPMSplitCompare(const void *a, const void *b)
   return x[0] < y[0] ? -1 : x[0] > y[0] ? 1 : x[1] < y[1] ? -1 : x[1] > y[1] ? 1 : 0;
 }
 
+/* Splits point p along reference axis k into p and c (the two halves of its domain). */
+static void MPMSplitAlong(MPM mpm, MPMPoints *pts, PetscInt p, PetscInt c, PetscInt k)
+{
+  const MPMGrid   *g = &mpm->grid;
+  const PetscInt   d = g->dim;
+  const PetscReal *F = &pts->f[MPM_FIELD_DEFGRAD][p * d * d], sk = pts->f[MPM_FIELD_DOMAINSCALE][p * d + k];
+  const PetscReal  a = 0.5 * sk * MPMLatticeHalfWidth(mpm, k); /* half of the half-width */
+
+  for (PetscInt f = 0; f < mpm->nfields; f++) {
+    const PetscInt bs = MPMFieldBlockSize(mpm->field[f].bs, d);
+    if (pts->f[f]) PetscArraycpy(&pts->f[f][c * bs], &pts->f[f][p * bs], bs);
+  }
+  for (PetscInt i = 0; i < d; i++) {
+    pts->f[MPM_FIELD_POSITION][p * d + i] -= F[i * d + k] * a;
+    pts->f[MPM_FIELD_POSITION][c * d + i] += F[i * d + k] * a;
+  }
+  if (pts->f[MPM_FIELD_REFPOSITION]) {
+    pts->f[MPM_FIELD_REFPOSITION][p * d + k] -= a;
+    pts->f[MPM_FIELD_REFPOSITION][c * d + k] += a;
+  }
+  {                                                                    /* the halves' shares: 1/2 each, or on an axisymmetric grid r_child / (2 r_p), the per-radian volume r dA of each half */
+    const PetscReal r  = pts->f[MPM_FIELD_POSITION][p * d] + F[k] * a; /* the parent's radius (p has moved by -F e_k a) */
+    const PetscReal wp = g->axisym ? 0.5 * pts->f[MPM_FIELD_POSITION][p * d] / r : 0.5, wc = 1.0 - wp;
+    pts->f[MPM_FIELD_MASS][c]   = wc * pts->f[MPM_FIELD_MASS][p];
+    pts->f[MPM_FIELD_MASS][p]   = wp * pts->f[MPM_FIELD_MASS][p];
+    pts->f[MPM_FIELD_VOLUME][c] = wc * pts->f[MPM_FIELD_VOLUME][p];
+    pts->f[MPM_FIELD_VOLUME][p] = wp * pts->f[MPM_FIELD_VOLUME][p];
+  }
+  pts->f[MPM_FIELD_DOMAINSCALE][p * d + k] = pts->f[MPM_FIELD_DOMAINSCALE][c * d + k] = 0.5 * sk;
+}
+
 static PetscErrorCode MPMSplitApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
 {
   MPMSplit      *sp = (MPMSplit *)mod->data;
   const MPMGrid *g  = &mpm->grid;
   const PetscInt d  = g->dim;
-  PetscInt      *axis, *place, n, nsplit = 0, nrefused = 0, counts[2];
+  PetscInt      *axes, *place, n, nsplit = 0, nnew = 0, nrefused = 0, counts[3];
   MPMPoints      pts;
 
   PetscFunctionBegin;
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   n = pts.n;
-  PetscCall(PetscMalloc2(n + 1, &axis, n + 1, &place));
+  PetscCall(PetscMalloc2(n + 1, &axes, n + 1, &place));
   for (PetscInt p = 0; p < n; p++) {
     PetscBool refused = PETSC_FALSE;
-    axis[p]           = MPMSplitAxis(mpm, sp, &pts.f[MPM_FIELD_POSITION][p * d], &pts.f[MPM_FIELD_DEFGRAD][p * d * d], &pts.f[MPM_FIELD_DOMAINSCALE][p * d], &refused);
-    nsplit += axis[p] >= 0;
+    axes[p]           = MPMSplitAxes(mpm, sp, &pts.f[MPM_FIELD_POSITION][p * d], &pts.f[MPM_FIELD_DEFGRAD][p * d * d], &pts.f[MPM_FIELD_DOMAINSCALE][p * d], &refused);
+    nsplit += axes[p] != 0;
+    nnew += MPMSplitChildren(axes[p]);
     nrefused += refused;
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   counts[0] = nsplit;
   counts[1] = nrefused;
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, counts, 2, MPIU_INT, MPI_SUM, mpm->comm));
+  counts[2] = nnew;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, counts, 3, MPIU_INT, MPI_SUM, mpm->comm));
   sp->refused += nrefused;
   if (!counts[0]) {
-    PetscCall(PetscFree2(axis, place));
+    PetscCall(PetscFree2(axes, place));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(MPMPointsRelease(mpm));
-  PetscCall(DMSwarmAddNPoints(mpm->swarm, nsplit));
+  PetscCall(DMSwarmAddNPoints(mpm->swarm, nnew));
   PetscCall(MPMPointsGetArrays(mpm, &pts));
-  { /* every rank gathers the (id, material) of every splitting parent and sorts them: child i of the sorted list takes next_id + i */
-    PetscMPIInt size, *rcount, *displ, nloc = (PetscMPIInt)(2 * nsplit);
+  { /* every rank gathers the (id, material, new children) of every splitting parent and sorts them by (id, material):
+       the children of the i-th parent of the sorted list take the ids next_id + the children of the parents before it */
+    PetscMPIInt size, *rcount, *displ, nloc = (PetscMPIInt)(3 * nsplit);
     PetscReal  *mine, *all;
     PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
-    PetscCall(PetscMalloc4(2 * nsplit + 1, &mine, 2 * counts[0], &all, size, &rcount, size, &displ));
+    PetscCall(PetscMalloc4(3 * nsplit + 1, &mine, 3 * counts[0], &all, size, &rcount, size, &displ));
     for (PetscInt p = 0, i = 0; p < n; p++)
-      if (axis[p] >= 0) {
+      if (axes[p]) {
         mine[i++] = pts.f[MPM_FIELD_ID][p];
         mine[i++] = pts.f[MPM_FIELD_MATERIAL][p];
+        mine[i++] = (PetscReal)MPMSplitChildren(axes[p]);
       }
     PetscCallMPI(MPI_Allgather(&nloc, 1, MPI_INT, rcount, 1, MPI_INT, mpm->comm));
     displ[0] = 0;
     for (PetscMPIInt r = 1; r < size; r++) displ[r] = displ[r - 1] + rcount[r - 1];
     PetscCallMPI(MPI_Allgatherv(mine, nloc, MPIU_REAL, all, rcount, displ, MPIU_REAL, mpm->comm));
-    qsort(all, counts[0], 2 * sizeof(PetscReal), MPMSplitCompare);
-    for (PetscInt p = 0; p < n; p++) /* the parent's place in the sorted list */
-      if (axis[p] >= 0) {
+    qsort(all, counts[0], 3 * sizeof(PetscReal), MPMSplitCompare);
+    for (PetscInt i = 0, off = 0; i < counts[0]; i++) { /* the third entry becomes the first child's id offset */
+      const PetscInt c = (PetscInt)all[3 * i + 2];
+      all[3 * i + 2]   = (PetscReal)off;
+      off += c;
+    }
+    for (PetscInt p = 0; p < n; p++) /* the parent's first child id offset */
+      if (axes[p]) {
         const PetscReal  key[2] = {pts.f[MPM_FIELD_ID][p], pts.f[MPM_FIELD_MATERIAL][p]};
-        const PetscReal *hit    = (const PetscReal *)bsearch(key, all, counts[0], 2 * sizeof(PetscReal), MPMSplitCompare);
+        const PetscReal *hit    = (const PetscReal *)bsearch(key, all, counts[0], 3 * sizeof(PetscReal), MPMSplitCompare);
         PetscCheck(hit, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Point %.0f: not among the splitting parents", (double)key[0]);
-        place[p] = (PetscInt)((hit - all) / 2);
+        place[p] = (PetscInt)hit[2];
       }
     PetscCall(PetscFree4(mine, all, rcount, displ));
   }
   for (PetscInt p = 0, c = n; p < n; p++) {
-    const PetscInt   k = axis[p];
-    const PetscReal *F = &pts.f[MPM_FIELD_DEFGRAD][p * d * d];
-    PetscReal        sk, a;
-    if (k < 0) continue;
-    sk = pts.f[MPM_FIELD_DOMAINSCALE][p * d + k];
-    a  = 0.5 * sk * MPMLatticeHalfWidth(mpm, k); /* half of the half-width */
-    for (PetscInt f = 0; f < mpm->nfields; f++) {
-      const PetscInt bs = MPMFieldBlockSize(mpm->field[f].bs, d);
-      if (pts.f[f]) PetscCall(PetscArraycpy(&pts.f[f][c * bs], &pts.f[f][p * bs], bs));
+    PetscInt fam[1 << MPM_MAX_DIM], nf = 1, id = 0;
+    if (!axes[p]) continue;
+    fam[0] = p;
+    for (PetscInt k = 0; k < d; k++) { /* split every member of the family along k: the children tile the parent's domain */
+      if (!((axes[p] >> k) & 1)) continue;
+      for (PetscInt i = 0, m = nf; i < m; i++, c++) {
+        MPMSplitAlong(mpm, &pts, fam[i], c, k);
+        pts.f[MPM_FIELD_ID][c] = mpm->next_id + place[p] + id++;
+        fam[nf++]              = c;
+      }
     }
-    for (PetscInt i = 0; i < d; i++) {
-      pts.f[MPM_FIELD_POSITION][p * d + i] -= F[i * d + k] * a;
-      pts.f[MPM_FIELD_POSITION][c * d + i] += F[i * d + k] * a;
-    }
-    if (pts.f[MPM_FIELD_REFPOSITION]) {
-      pts.f[MPM_FIELD_REFPOSITION][p * d + k] -= a;
-      pts.f[MPM_FIELD_REFPOSITION][c * d + k] += a;
-    }
-    { /* the halves' shares: 1/2 each, or on an axisymmetric grid r_child / (2 r_p), the per-radian volume r dA of each half */
-      const PetscReal wp = g->axisym ? 0.5 * pts.f[MPM_FIELD_POSITION][p * d] / (pts.f[MPM_FIELD_POSITION][p * d] + F[k] * a) : 0.5, wc = 1.0 - wp;
-      pts.f[MPM_FIELD_MASS][c]   = wc * pts.f[MPM_FIELD_MASS][p];
-      pts.f[MPM_FIELD_MASS][p]   = wp * pts.f[MPM_FIELD_MASS][p];
-      pts.f[MPM_FIELD_VOLUME][c] = wc * pts.f[MPM_FIELD_VOLUME][p];
-      pts.f[MPM_FIELD_VOLUME][p] = wp * pts.f[MPM_FIELD_VOLUME][p];
-    }
-    pts.f[MPM_FIELD_DOMAINSCALE][p * d + k] = pts.f[MPM_FIELD_DOMAINSCALE][c * d + k] = 0.5 * sk;
-    pts.f[MPM_FIELD_ID][c]                                                            = mpm->next_id + place[p];
-    c++;
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-  PetscCall(PetscFree2(axis, place));
-  mpm->next_id += counts[0];
-  mpm->npoints += counts[0];
+  PetscCall(PetscFree2(axes, place));
+  mpm->next_id += counts[2];
+  mpm->npoints += counts[2];
   sp->split += nsplit;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
