@@ -1,0 +1,127 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-2-Clause
+"""petmpm on Lax & Liu's 2D Riemann problems against grid codes on the same grid (scripts/fv2d.py).
+
+For each configuration and unit-square resolution N, petmpm runs the four-quadrant problem (the states of
+fv2d.LAX_LIU, gamma = 1.4, cv = 2.5 so that T = p / rho) in its default method, or with the given options, on
+[-0.5, 1.5]^2 at 2N x 2N cells with outflow faces (the grid codes' faces are transmissive; petmpm's gas leaves
+vacuum behind at an inflow face, whose rarefaction stays outside the unit square until the final time). Its final
+points are binned on the unit square's N x N cells, rho_c = sum m / sum V over the points in the cell (a cell with
+no point takes the mean of its neighbours' and is counted as emptied). The grid codes run on the unit square at N:
+first-order Godunov and second-order MUSCL-Hancock, HLLC fluxes; the reference is the second-order code at
+--ref-factor N cells averaged down to N. Reported per run, as a table and as JSON (--json):
+  L1         sum |rho - rho_ref| / sum rho_ref over the N^2 cells, of petmpm and of both grid codes;
+  asym       max |rho(i,j) - rho(j,i)| / (max rho_ref - min rho_ref), for configurations symmetric about x = y, and
+             its mean over the cells (asym_mean);
+  emptied    unit-square cells with no point;
+  min_ratio  petmpm's smallest point density over the reference's smallest cell density;
+  cost       petmpm's wall time and point-steps.
+
+usage: scripts/riemann2d.py [--configs 3,4,6,12] [--cells 100,200] [--ref-factor 4] [--json out.json] [-- petmpm options]
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import fv2d  # noqa: E402
+
+SYMMETRIC = {3, 4, 12}  # configurations whose data are symmetric about x = y
+
+
+def scene(config, cells):
+    """petmpm options of the four-quadrant problem on [-0.5, 1.5]^2 at 2N cells (quadrant q: rho, u, v, p)."""
+    tf, states = fv2d.LAX_LIU[config]
+    boxes = {1: ((0.5, 0.5), (1.5, 1.5)), 2: ((-0.5, 0.5), (0.5, 1.5)), 3: ((-0.5, -0.5), (0.5, 0.5)), 4: ((0.5, -0.5), (1.5, 0.5))}
+    o = ["-mpm_scene_name", f"lax_liu{config}_2d", "-mpm_dim", "2", "-mpm_lo", "-0.5,-0.5", "-mpm_hi", "1.5,1.5",
+         "-mpm_cells", f"{2 * cells},{2 * cells}", "-mpm_bc_lo", "outflow,outflow", "-mpm_bc_hi", "outflow,outflow",
+         "-ts_max_time", repr(tf), "-mpm_materials", "gas", "-mat_gas_eos_type", "idealgas",
+         "-mat_gas_eos_idealgas_gamma", "1.4", "-mat_gas_eos_idealgas_cv", "2.5", "-mpm_regions", "q1,q2,q3,q4"]
+    for q in (1, 2, 3, 4):
+        rho, u, v, p = states[q - 1]
+        (x0, y0), (x1, y1) = boxes[q]
+        o += [f"-region_q{q}_material", "gas", f"-region_q{q}_lo", f"{x0},{y0}", f"-region_q{q}_hi", f"{x1},{y1}",
+              f"-region_q{q}_density", repr(rho), f"-region_q{q}_temperature", repr(p / rho),
+              f"-region_q{q}_velocity", f"{u!r},{v!r}"]
+    return o, tf
+
+
+def binned(h5, N):
+    """Density on the unit square's N x N cells from the final points (index [j, i]), the emptied-cell count and the
+    smallest point density in the unit square."""
+    import h5py
+    with h5py.File(h5, "r") as f:
+        n = int(f["particle_count"][-1])
+        x, m, rho = (f["particle_fields/" + k][-1][:n] for k in ("position", "mass", "density"))
+    i, j = np.floor(x[:, 0] * N).astype(int), np.floor(x[:, 1] * N).astype(int)
+    ok = (i >= 0) & (i < N) & (j >= 0) & (j < N)
+    M, V = np.zeros((N, N)), np.zeros((N, N))
+    np.add.at(M, (j[ok], i[ok]), m[ok])
+    np.add.at(V, (j[ok], i[ok]), (m / rho)[ok])
+    r = np.where(V > 0, M / np.where(V > 0, V, 1.0), np.nan)
+    empty = np.isnan(r)
+    if empty.any():  # the mean of the occupied neighbours (repeated for clusters of emptied cells)
+        for _ in range(N):
+            p = np.pad(r, 1, constant_values=np.nan)
+            nb = np.stack([p[:-2, 1:-1], p[2:, 1:-1], p[1:-1, :-2], p[1:-1, 2:]])
+            fill = np.nanmean(np.where(np.isnan(nb), np.nan, nb), axis=0) if not np.all(np.isnan(nb)) else r
+            r = np.where(np.isnan(r), fill, r)
+            if not np.isnan(r).any():
+                break
+    return r, int(empty.sum()), float(rho[ok].min())
+
+
+def average_down(a, k):
+    ny, nx = a.shape
+    return a.reshape(ny // k, k, nx // k, k).mean(axis=(1, 3))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--configs", default="3,4,6,12")
+    ap.add_argument("--cells", default="100,200", help="unit-square cells N per direction")
+    ap.add_argument("--ref-factor", type=int, default=4, help="the reference's cells over N (second order)")
+    ap.add_argument("--build", default=os.path.join(os.path.dirname(HERE), "build"))
+    ap.add_argument("--json")
+    ap.add_argument("extra", nargs="*", help="petmpm options after --")
+    a = ap.parse_args()
+    rows = []
+    for c in [int(s) for s in a.configs.split(",")]:
+        for N in [int(s) for s in a.cells.split(",")]:
+            U, tf = fv2d.lax_liu(c, a.ref_factor * N)
+            ref = average_down(fv2d.solve(U, (0, 1, 0, 1), tf, order=2)["rho"], a.ref_factor)
+            fv = {o: fv2d.solve(fv2d.lax_liu(c, N)[0], (0, 1, 0, 1), tf, order=o)["rho"] for o in (1, 2)}
+            opts, _ = scene(c, N)
+            with tempfile.TemporaryDirectory() as d:
+                t0 = time.time()
+                rep = os.path.join(d, "report.json")
+                subprocess.run([os.path.join(a.build, "petmpm"), *opts, *a.extra, "-mpm_output", d, "-mpm_report", rep], check=True, stdout=subprocess.DEVNULL)
+                wall = time.time() - t0
+                r, empty, rmin = binned(os.path.join(d, "petmpm.h5"), N)
+                with open(rep) as f:
+                    R = json.load(f)
+            l1 = lambda q: float(np.abs(q - ref).sum() / ref.sum())  # noqa: E731
+            rng = float(ref.max() - ref.min())
+            row = {"config": c, "cells": N, "L1": l1(r), "L1_fv1": l1(fv[1]), "L1_fv2": l1(fv[2]), "emptied": empty,
+                   "min_ratio": rmin / float(ref.min()), "wall_s": wall, "point_steps": R.get("particle_steps")}
+            if c in SYMMETRIC:
+                row["asym"] = float(np.abs(r - r.T).max() / rng)
+                row["asym_mean"] = float(np.abs(r - r.T).mean() / rng)
+            rows.append(row)
+            print(f"config {c:2d} N {N:4d}: L1 petmpm {row['L1']:.4f}  first order {row['L1_fv1']:.4f}  second order {row['L1_fv2']:.4f}"
+                  + (f"  asym max {row['asym']:.3f} mean {row['asym_mean']:.2e}" if "asym" in row else "")
+                  + f"  emptied {empty}  min/ref {row['min_ratio']:.2f}  {wall:.1f} s", flush=True)
+    if a.json:
+        with open(a.json, "w") as f:
+            json.dump({"petmpm_options": a.extra, "ref_factor": a.ref_factor, "runs": rows}, f, indent=1)
+
+
+if __name__ == "__main__":
+    main()
