@@ -55,6 +55,7 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   m->win_n                   = -1;
   m->update                  = MPM_UPDATE_BLEND;
   m->affine                  = -1;
+  m->affine_ke               = -1;
   m->alpha                   = 0.99;
   m->rest_time               = -1.0;
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
@@ -146,10 +147,8 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   }
   PetscCall(PetscOptionsEnum("-mpm_transfer_kernel", "Point-grid transfer kernels: specialised for the dimension and shape family (where the family has them) or the generic reference", "", MPMTransferKernelTypes, (PetscEnum)mpm->transfer_kernel,
                              (PetscEnum *)&mpm->transfer_kernel, NULL));
-  if (mpm->update == MPM_UPDATE_APIC) mpm->ke_fix = PETSC_FALSE; /* its accounting assumes m_I v_I = sum N_I m_p v_p, which the affine part breaks */
-  PetscCall(PetscOptionsBool("-mpm_ke_fix", "Turn the kinetic energy the grid-to-point velocity map discards into internal energy of the point (not with -mpm_update_type apic)", "", mpm->ke_fix, &mpm->ke_fix, NULL));
-  PetscCheck(!(mpm->ke_fix && mpm->update == MPM_UPDATE_APIC), mpm->comm, PETSC_ERR_USER_INPUT,
-             "-mpm_ke_fix with -mpm_update_type apic: the fix's energy accounting assumes the grid's momentum is sum N_I m_p v_p, which APIC's affine part changes; valid is -mpm_ke_fix false");
+  if (mpm->update == MPM_UPDATE_APIC) mpm->ke_fix = PETSC_FALSE; /* off by default for APIC: measured in docs/verification_2d.md */
+  PetscCall(PetscOptionsBool("-mpm_ke_fix", "Turn the kinetic energy the grid-to-point velocity map discards into internal energy of the point (with -mpm_update_type apic: off by default)", "", mpm->ke_fix, &mpm->ke_fix, NULL));
   PetscCall(MPMOptionsDimEnums(PetscOptionsObject, "-mpm_bc_lo", "Boundary at the lower face of each direction", MPMBoundaryTypes, g->dim, (PetscEnum *)mpm->bc_lo));
   PetscCall(MPMOptionsDimEnums(PetscOptionsObject, "-mpm_bc_hi", "Boundary at the upper face of each direction", MPMBoundaryTypes, g->dim, (PetscEnum *)mpm->bc_hi));
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-mpm_wall_friction_lo", "Coulomb friction coefficient mu of the wall at the lower face of each direction [-], >= 0 (0: frictionless); a wall with friction is a contact: the body may leave it",
@@ -265,6 +264,8 @@ PetscErrorCode MPMSetUp(MPM mpm)
     PetscCall(MPMPointsRegisterTypeFields(mpm, mpm->mat[i].strength));
   }
   if (mpm->update == MPM_UPDATE_APIC) PetscCall(MPMPointsRegisterField(mpm, "affine", -1, "1/s", "APIC affine velocity C_p = B_p D_p^-1 (v(x) = v_p + C_p (x - x_p) about the point)", PETSC_TRUE, &mpm->affine));
+  if (mpm->update == MPM_UPDATE_APIC)
+    PetscCall(MPMPointsRegisterField(mpm, "affine_ke", 1, "erg/g", "APIC: the kinetic energy of the affine velocity about the point, sum_I N_I |C_p (x_I - x_p)|^2 / 2, part of the kinetic energy", PETSC_FALSE, &mpm->affine_ke));
   PetscCall(MPMCreatePoints(mpm));
   if (mpm->exact) {
     MPMScene scene;

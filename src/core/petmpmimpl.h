@@ -113,6 +113,7 @@ struct _p_MPM {
   MPMUpdateType             update;          /* -mpm_update_type                                                  */
   PetscReal                 alpha;           /* FLIP fraction: v_p <- alpha (v_p + dv) + (1 - alpha) v_pic [-]     */
   PetscInt                  affine;          /* -mpm_update_type apic: the point field of C_p, else -1             */
+  PetscInt                  affine_ke;       /* APIC: the point field of its affine kinetic energy per unit mass, else -1 */
   MPMViscosity              viscosity;       /* NULL when the scene asks for none: not in the step */
   MPMExact                  exact;           /* NULL when the scene has no exact solution          */
   struct {

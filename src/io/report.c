@@ -689,7 +689,7 @@ PetscErrorCode MPMWriteReport(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Total mass sum m_p, total energy sum m_p (e_p + |v_p|^2 / 2), with gravity plus the potential energy -sum m_p g.x_p
+/* Total mass sum m_p, total energy sum m_p (e_p + |v_p|^2 / 2) (APIC: and the affine velocity's kinetic energy), with gravity plus the potential energy -sum m_p g.x_p
    (also kept in mpm->potential), and momentum sum m_p v_p over all ranks, each with what left through outflow faces
    (so that they stay the run's conserved sums). */
 PetscErrorCode MPMGlobalSums(MPM mpm, PetscReal *mass, PetscReal *energy, PetscReal momentum[], PetscReal *kinetic)
@@ -710,6 +710,7 @@ PetscErrorCode MPMGlobalSums(MPM mpm, PetscReal *mass, PetscReal *energy, PetscR
       v2 += v[k] * v[k];
       s[2 + k] += m * v[k];
     }
+    if (mpm->affine_ke >= 0) v2 += 2.0 * pts.f[mpm->affine_ke][p]; /* APIC: with the affine velocity's kinetic energy */
     s[0] += m;
     s[1] += m * (pts.f[MPM_FIELD_ENERGY][p] + 0.5 * v2);
     s[2 + MPM_MAX_DIM] += 0.5 * m * v2;

@@ -519,6 +519,7 @@ static PetscErrorCode MPMRemoveOutflow(MPM mpm, PetscInt n, const PetscBool gone
       t[MPM_OUTFLOW_MOMENTUM + k] += m * v[k];
       if (mpm->has_gravity) t[MPM_OUTFLOW_POTENTIAL] -= m * mpm->gravity[k] * pts.f[MPM_FIELD_POSITION][p * d + k];
     }
+    if (mpm->affine_ke >= 0) v2 += 2.0 * pts.f[mpm->affine_ke][p]; /* APIC: with the affine velocity's kinetic energy */
     t[MPM_OUTFLOW_MASS] += m;
     t[MPM_OUTFLOW_ENERGY] += m * (pts.f[MPM_FIELD_ENERGY][p] + 0.5 * v2);
     t[MPM_OUTFLOW_KINETIC] += 0.5 * m * v2;

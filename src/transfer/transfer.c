@@ -193,6 +193,19 @@ static inline void MPMStencilOffset(const MPMGrid *g, const PetscReal xp[], cons
   }
 }
 
+/* APIC: the stencil's mean offset sum_I N_I (x_I - x_p), which the affine velocity is taken about (x_I - x_p less it):
+   0 inside the grid, not where a domain's corners are clipped at a face of the grid, where about x_p the point's
+   affine velocity would carry momentum and the kinetic-energy fix could turn negative. */
+static inline void MPMStencilMeanOffset(const MPMGrid *g, const PetscReal xp[], const MPMStencil *st, PetscReal mean[])
+{
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) mean[k] = 0.0;
+  for (PetscInt a = 0; a < st->n; a++) {
+    PetscReal dx[MPM_MAX_DIM];
+    MPMStencilOffset(g, xp, st, a, dx);
+    for (PetscInt k = 0; k < g->dim; k++) mean[k] += st->w[a] * dx[k];
+  }
+}
+
 /* The generic loops' variants (MPMGenericVariant): the reference, which computes what the specialised kernels compute
    (they reproduce it bit for bit, tests/scenes/kernels.json), and the terms that only some runs have, each a
    compile-time flag of the same loop body, so that the reference carries no branch for them:
@@ -230,15 +243,18 @@ MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node,
     }
     if (HOOP && force) hoop = V[p] * (P + (stress ? S[p * d * d] + S[p * d * d + d + 1] : 0.0)) / x[p * d]; /* -sigma_tt V / r, sigma_tt = -P - (s_rr + s_zz) */
     if (BODY) mpm->exact->ops.bodyforce(mpm->exact->data, tn, &X[p * d], F ? &F[p * d * d] : NULL, b);
+    PetscReal mean[MPM_MAX_DIM];
     MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, F, ds, p, Fs), &st);
+    if (AFFINE) MPMStencilMeanOffset(g, &x[p * d], &st, mean);
     for (PetscInt a = 0; a < st.n; a++) {
       MPMNode        *nd = &node[st.node[a]];
       const PetscReal wm = st.w[a] * m[p];
       nd->m += wm;
       nd->w2 += st.w[a] * st.w[a];
-      if (AFFINE) { /* APIC: the point's affine velocity at the node, v_p + C_p (x_I - x_p) */
+      if (AFFINE) { /* APIC: the point's affine velocity at the node, v_p + C_p (x_I - x_p - mean) */
         PetscReal dx[MPM_MAX_DIM];
         MPMStencilOffset(g, &x[p * d], &st, a, dx);
+        for (PetscInt k = 0; k < d; k++) dx[k] -= mean[k];
         for (PetscInt k = 0; k < d; k++) {
           PetscReal vk = v[p * d + k];
           for (PetscInt j = 0; j < d; j++) vk += C[p * d * d + k * d + j] * dx[j];
@@ -446,16 +462,22 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
     PetscReal vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Lb[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, dv2 = 0.0, R = 0.0, Fs[MPM_MAX_DIM * MPM_MAX_DIM];
     PetscReal Lbtt                          = 0.0;                                      /* axisymmetric: the hoop rate of vbar, sum N (2 v_I - dv_I)_r / r_p */
     PetscReal Bm[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Dm[MPM_MAX_DIM * MPM_MAX_DIM] = {0}; /* APIC's moments */
+    PetscReal Cdv = 0.0;                                                                /* APIC: sum N (C_p (x_I - x_p)) . dv_I */
+    PetscReal mean[MPM_MAX_DIM];
     MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, A->F, A->ds, p, Fs), &st);
+    if (AFFINE && velocity) MPMStencilMeanOffset(g, &x[p * d], &st, mean);
     for (PetscInt a = 0; a < st.n; a++) {
-      const MPMNode *nd = &node[st.node[a]];
+      const MPMNode *nd              = &node[st.node[a]];
+      PetscReal      Cx[MPM_MAX_DIM] = {0, 0, 0}; /* APIC: the point's affine velocity at the node less v_p, C_p (x_I - x_p) */
       if (AFFINE && velocity) {
         PetscReal dx[MPM_MAX_DIM];
         MPMStencilOffset(g, &x[p * d], &st, a, dx);
+        for (PetscInt k = 0; k < d; k++) dx[k] -= mean[k];
         for (PetscInt i = 0; i < d; i++)
           for (PetscInt j = 0; j < d; j++) {
             Bm[i * d + j] += st.w[a] * st.s[a][i] * nd->p[i] * dx[j];
             Dm[i * d + j] += st.w[a] * dx[i] * dx[j];
+            Cx[i] += C[p * d * d + i * d + j] * dx[j];
           }
       }
       for (PetscInt i = 0; i < d; i++) {
@@ -463,7 +485,8 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
         vpic[i] += st.w[a] * vI;
         dv[i] += st.w[a] * dvI;
         dv2 += st.w[a] * dvI * dvI;
-        R += st.w[a] * (vI - dvI - v[p * d + i]) * vI; /* (v_I^n - v_p) . v_I */
+        R += st.w[a] * (vI - dvI - v[p * d + i] - Cx[i]) * vI; /* (v_I^n - v_p - C_p (x_I - x_p)) . v_I */
+        Cdv += st.w[a] * Cx[i] * dvI;
         for (PetscInt j = 0; j < d; j++) Lp[i * d + j] += vI * st.dw[a][j];
         if (work)
           for (PetscInt j = 0; j < d; j++) Lb[i * d + j] += (2.0 * vI - dvI) * st.dw[a][j];
@@ -471,7 +494,7 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
       }
     }
     if (velocity) {
-      PetscReal share = 0.5 * dv2, gain = 0.0; /* grid kinetic energy gain of the point's share, the point's own [erg/g] */
+      PetscReal share = 0.5 * dv2 + Cdv, gain = 0.0; /* grid kinetic energy gain of the point's share, the point's own [erg/g] */
       for (PetscInt i = 0; i < d; i++) {
         const PetscReal vn = alpha * (v[p * d + i] + dv[i]) + (1.0 - alpha) * vpic[i];
         share += v[p * d + i] * dv[i];
@@ -479,7 +502,22 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
         v[p * d + i] = vn;
       }
       if (kefix) e[p] += share - gain + (1.0 - alpha) * R;
-      if (AFFINE) MPMAffineFromMoments(g, Bm, Dm, &C[p * d * d]);
+      if (AFFINE) {
+        PetscReal *ake = &pts->f[mpm->affine_ke][p], knew = 0.0;
+        MPMAffineFromMoments(g, Bm, Dm, &C[p * d * d]);
+        for (PetscInt a = 0; a < st.n; a++) { /* the new affine velocity's kinetic energy, sum N |C_p (x_I - x_p)|^2 / 2 */
+          PetscReal dx[MPM_MAX_DIM];
+          MPMStencilOffset(g, &x[p * d], &st, a, dx);
+          for (PetscInt k = 0; k < d; k++) dx[k] -= mean[k];
+          for (PetscInt i = 0; i < d; i++) {
+            PetscReal Cx = 0.0;
+            for (PetscInt j = 0; j < d; j++) Cx += C[p * d * d + i * d + j] * dx[j];
+            knew += 0.5 * st.w[a] * Cx * Cx;
+          }
+        }
+        if (kefix) e[p] += *ake - knew; /* the affine kinetic energy is kinetic energy: its change is not the fix's */
+        *ake = knew;
+      }
       if (work) { /* the work the grid's forces did over the kick, sum_p V_p sigma_p : Lbar_p dt_kick = sum_I f_I . vbar_I dt_kick */
         PetscReal sL = 0.0, div = 0.0;
         if (A->pointwork)
@@ -549,6 +587,12 @@ static void MPMGatherVariant(MPM mpm, const MPMTransferArgs *A, const MPMPoints 
    R_p = sum_I N_I (v_I^n - v_p) . v_I (sum_p m_p R_p = 0 since m_I v_I^n = sum_p N_I m_p v_p), moves it to the
    points it came from: for PIC the point then gains (sum N |v_p - v_I^n|^2 + sum N |v_I|^2 - |sum N v_I|^2)/2 >= 0,
    where without it a cold point beside a strong shock could be handed a negative energy.
+   APIC (-mpm_update_type apic, alpha = 0): the grid's momentum is m_I v_I^n = sum_p N_I m_p u_Ip with the point's
+   affine velocity u_Ip = v_p + C_p (x_I - x_p), so the share and R take u_Ip for v_p, and the point's kinetic energy
+   counts its affine part k_p = sum N |C_p (x_I - x_p)|^2 / 2 (point field affine_ke, in the report's sums): the fix
+   is share + R - (|vpic|^2 - |v_p|^2) / 2 - (k_p' - k_p) = sum N |v_I - vpic - C_p' (x_I - x_p)|^2 / 2 (what the
+   new affine fit leaves, >= 0) + sum N |v_I^n - u_Ip|^2 / 2 (>= 0) + (k_p - sum N |C_p (x_I - x_p)|^2 / 2) (the
+   affine energy's change as the point moved over the step, small), the total energy kept to round-off.
    Conservative energy update: e_p += dt_kick (s_p : Lbar_p - (p_p + q_p) tr Lbar_p) / rho_p, Lbar_p from
    vbar_I = (v_I^{n-1/2} + v_I^{n+1/2})/2, the work of the force of MPMScatter. With the cell rule the pressure part
    of that force is per cell, so the point takes its share P_p V_p / sum_{p in c} V_p of its cell's work

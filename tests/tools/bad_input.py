@@ -98,7 +98,6 @@ def test_bad_input():
             ([*SCENE_CTH, "-mpm_bc_hi", "free", "-mpm_wall_friction_hi", "0.2", "-mpm_output", d], "-mpm_wall_friction_hi 0.2 in direction 0: that face is free"),
             (["-options_file", RZ, "-mpm_wall_friction_lo", "0.1,0.1", "-mpm_output", d], "-mpm_wall_friction_lo 0.1 in x: with -mpm_axisymmetric"),
             (["-options_file", RZ, "-mpm_exact_type", "slide", "-mpm_output", d], "-mpm_exact_type slide"),
-            ([*SCENE_CTH, "-mpm_update_type", "apic", "-mpm_ke_fix", "true", "-mpm_output", d], "-mpm_ke_fix with -mpm_update_type apic"),
             ([*SCENE_CTH, "-mpm_exact_type", "spin", "-mpm_output", d], "-mpm_exact_spin_omega"),
         ]
         for args, needle in cases:
