@@ -15,9 +15,10 @@ first-order Godunov and second-order MUSCL-Hancock, HLLC fluxes; the reference i
              its mean over the cells (asym_mean);
   emptied    unit-square cells with no point;
   min_ratio  petmpm's smallest point density over the reference's smallest cell density;
-  cost       petmpm's wall time and point-steps.
+  cost       petmpm's wall time and its final point count.
 
-usage: scripts/riemann2d.py [--configs 3,4,6,12] [--cells 100,200] [--ref-factor 4] [--json out.json] [-- petmpm options]
+usage: scripts/riemann2d.py [--configs 3,4,6,12] [--cells 100,200] [--ref-factor 4] [--json out.json] [--markdown rows.md]
+                            [-- petmpm options]
 """
 import argparse
 import json
@@ -67,14 +68,11 @@ def binned(h5, N):
     np.add.at(V, (j[ok], i[ok]), (m / rho)[ok])
     r = np.where(V > 0, M / np.where(V > 0, V, 1.0), np.nan)
     empty = np.isnan(r)
-    if empty.any():  # the mean of the occupied neighbours (repeated for clusters of emptied cells)
-        for _ in range(N):
-            p = np.pad(r, 1, constant_values=np.nan)
-            nb = np.stack([p[:-2, 1:-1], p[2:, 1:-1], p[1:-1, :-2], p[1:-1, 2:]])
-            fill = np.nanmean(np.where(np.isnan(nb), np.nan, nb), axis=0) if not np.all(np.isnan(nb)) else r
-            r = np.where(np.isnan(r), fill, r)
-            if not np.isnan(r).any():
-                break
+    while np.isnan(r).any():  # the mean of the occupied neighbours, repeated for clusters of emptied cells
+        p = np.pad(r, 1, constant_values=np.nan)
+        nb = np.stack([p[:-2, 1:-1], p[2:, 1:-1], p[1:-1, :-2], p[1:-1, 2:]])
+        cnt = np.sum(~np.isnan(nb), axis=0)
+        r = np.where(np.isnan(r) & (cnt > 0), np.nansum(nb, axis=0) / np.maximum(cnt, 1), r)
     return r, int(empty.sum()), float(rho[ok].min())
 
 
@@ -90,6 +88,7 @@ def main():
     ap.add_argument("--ref-factor", type=int, default=4, help="the reference's cells over N (second order)")
     ap.add_argument("--build", default=os.path.join(os.path.dirname(HERE), "build"))
     ap.add_argument("--json")
+    ap.add_argument("--markdown", help="write the rows of docs/verification_2d.md's table")
     ap.add_argument("extra", nargs="*", help="petmpm options after --")
     a = ap.parse_args()
     rows = []
@@ -110,7 +109,7 @@ def main():
             l1 = lambda q: float(np.abs(q - ref).sum() / ref.sum())  # noqa: E731
             rng = float(ref.max() - ref.min())
             row = {"config": c, "cells": N, "L1": l1(r), "L1_fv1": l1(fv[1]), "L1_fv2": l1(fv[2]), "emptied": empty,
-                   "min_ratio": rmin / float(ref.min()), "wall_s": wall, "point_steps": R.get("particle_steps")}
+                   "min_ratio": rmin / float(ref.min()), "wall_s": wall, "points": R["particles"]}
             if c in SYMMETRIC:
                 row["asym"] = float(np.abs(r - r.T).max() / rng)
                 row["asym_mean"] = float(np.abs(r - r.T).mean() / rng)
@@ -118,6 +117,12 @@ def main():
             print(f"config {c:2d} N {N:4d}: L1 petmpm {row['L1']:.4f}  first order {row['L1_fv1']:.4f}  second order {row['L1_fv2']:.4f}"
                   + (f"  asym max {row['asym']:.3f} mean {row['asym_mean']:.2e}" if "asym" in row else "")
                   + f"  emptied {empty}  min/ref {row['min_ratio']:.2f}  {wall:.1f} s", flush=True)
+    if a.markdown:
+        with open(a.markdown, "w") as f:
+            f.write("| config | N | petmpm L1 | first order | second order | asym | emptied cells | min density / reference's |\n|---|---|---|---|---|---|---|---|\n")
+            for w in rows:
+                asym = f"{w['asym']:.0e}" if "asym" in w else "-"
+                f.write(f"| {w['config']} | {w['cells']} | {100 * w['L1']:.2f}% | {100 * w['L1_fv1']:.2f}% | {100 * w['L1_fv2']:.2f}% | {asym} | {w['emptied']} | {w['min_ratio']:.2f} |\n")
     if a.json:
         with open(a.json, "w") as f:
             json.dump({"petmpm_options": a.extra, "ref_factor": a.ref_factor, "runs": rows}, f, indent=1)

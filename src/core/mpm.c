@@ -147,7 +147,7 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
   }
   PetscCall(PetscOptionsEnum("-mpm_transfer_kernel", "Point-grid transfer kernels: specialised for the dimension and shape family (where the family has them) or the generic reference", "", MPMTransferKernelTypes, (PetscEnum)mpm->transfer_kernel,
                              (PetscEnum *)&mpm->transfer_kernel, NULL));
-  if (mpm->update == MPM_UPDATE_APIC) mpm->ke_fix = PETSC_FALSE; /* off by default for APIC: measured in docs/verification_2d.md */
+  if (mpm->update == MPM_UPDATE_APIC) mpm->ke_fix = PETSC_FALSE; /* off by default for APIC: with it the planar Sedov peak overshoots 10% (docs/verification_2d.md) */
   PetscCall(PetscOptionsBool("-mpm_ke_fix", "Turn the kinetic energy the grid-to-point velocity map discards into internal energy of the point (with -mpm_update_type apic: off by default)", "", mpm->ke_fix, &mpm->ke_fix, NULL));
   PetscCall(MPMOptionsDimEnums(PetscOptionsObject, "-mpm_bc_lo", "Boundary at the lower face of each direction", MPMBoundaryTypes, g->dim, (PetscEnum *)mpm->bc_lo));
   PetscCall(MPMOptionsDimEnums(PetscOptionsObject, "-mpm_bc_hi", "Boundary at the upper face of each direction", MPMBoundaryTypes, g->dim, (PetscEnum *)mpm->bc_hi));

@@ -497,15 +497,16 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
           ct->friction += wt;
           ct->nodes++;
           if (rb >= 0) {
-            const PetscReal fn = nd->m * dn / ctx->kick, ij[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
-            PetscReal       x[3] = {0.0, 0.0, 0.0};
+            const PetscReal fn     = nd->m * dn / ctx->kick;
+            const PetscInt  ijk[3] = {i0, i1, i2}, ij[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
+            PetscReal       x[3] = {0.0, 0.0, 0.0}; /* the node's position */
             for (PetscInt k = 0; k < d; k++) {
               frc[rb][k] += nd->m * (vold[k] - nd->p[k]) / ctx->kick; /* the push the rigid body gave, reversed */
-              x[k] = g->lo[k] + (i0 * (k == 0) + i1 * (k == 1) + i2 * (k == 2) + g->xs[k]) * g->h[k];
+              x[k] = g->lo[k] + (ijk[k] + g->xs[k]) * g->h[k];
             }
             frc[rb][3] += fn;
             for (PetscInt k = 0; k < 3; k++) frc[rb][4 + k] += fn * x[k];
-            for (PetscInt k = 0; k < 6; k++) frc[rb][7 + k] += fn * x[(PetscInt)ij[k][0]] * x[(PetscInt)ij[k][1]];
+            for (PetscInt k = 0; k < 6; k++) frc[rb][7 + k] += fn * x[ij[k][0]] * x[ij[k][1]];
           }
         }
       }
@@ -557,29 +558,16 @@ static PetscErrorCode MPMContactView(MPMModule mod, MPM mpm, PetscViewer viewer)
 static PetscErrorCode MPMContactReport(MPMModule mod, MPM mpm, MPMReport rep)
 {
   MPMContact    *ct = (MPMContact *)mod->data;
-  const PetscInt d = mpm->grid.dim, nb = mpm->nbodies;
-  PetscReal      s[MPM_MAX_BODIES][8] = {{0}}, w[3] = {ct->work, ct->friction, (PetscReal)ct->nodes}, imp[MPM_MAX_BODIES][3];
-  MPMPoints      pts;
+  const PetscInt d = mpm->grid.dim, nb                  = mpm->nbodies;
+  PetscReal      s[MPM_MAX_BODIES][MPM_BODY_SUMS], w[3] = {ct->work, ct->friction, (PetscReal)ct->nodes}, imp[MPM_MAX_BODIES][3];
   char           buf[8000];
   size_t         len = 0;
   PetscReal      Ein = 0.0;
 
   PetscFunctionBegin;
   if (!mod->active) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(MPMPointsGetArrays(mpm, &pts));
-  for (PetscInt p = 0; p < pts.n; p++) { /* per body: m, m v, m |v|^2 / 2, m x */
-    const PetscInt  b = (PetscInt)pts.f[MPM_FIELD_BODY][p];
-    const PetscReal m = pts.f[MPM_FIELD_MASS][p], *v = &pts.f[MPM_FIELD_VELOCITY][p * d], *x = &pts.f[MPM_FIELD_POSITION][p * d];
-    s[b][0] += m;
-    for (PetscInt k = 0; k < d; k++) {
-      s[b][1 + k] += m * v[k];
-      s[b][4] += 0.5 * m * v[k] * v[k];
-      s[b][5 + k] += m * x[k];
-    }
-  }
-  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(MPMBodySums(mpm, s));
   PetscCall(PetscArraycpy(&imp[0][0], &ct->impulse[0][0], 3 * MPM_MAX_BODIES));
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &s[0][0], 8 * MPM_MAX_BODIES, MPIU_REAL, MPIU_SUM, mpm->comm));
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, w, 3, MPIU_REAL, MPIU_SUM, mpm->comm));
   PetscCall(MPMReportPrintf(rep, "  contact: work %.6g erg (friction %.6g; heat at the interfaces), %.4f of the initial kinetic energy, in %.0f node corrections\n", (double)w[0], (double)w[1],
                             (double)(mpm->kinetic0 > 0.0 ? w[0] / mpm->kinetic0 : 0.0), (double)w[2]));

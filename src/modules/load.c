@@ -29,23 +29,6 @@ static PetscReal MPMLoadLastWork(const MPMLoad *ld, MPM mpm, PetscInt b, const P
   return 0.5 * kick * (ld->last[b][0] + FP1);
 }
 
-/* Body b's momentum from its points, all ranks [g cm/s]. */
-static PetscErrorCode MPMLoadMomentum(MPM mpm, PetscInt b, PetscReal P[])
-{
-  const PetscInt d = mpm->grid.dim;
-  MPMPoints      pts;
-
-  PetscFunctionBegin;
-  for (PetscInt k = 0; k < 3; k++) P[k] = 0.0;
-  PetscCall(MPMPointsGetArrays(mpm, &pts));
-  for (PetscInt p = 0; p < pts.n; p++)
-    if (mpm->nbodies == 1 || (PetscInt)pts.f[MPM_FIELD_BODY][p] == b)
-      for (PetscInt k = 0; k < d; k++) P[k] += pts.f[MPM_FIELD_MASS][p] * pts.f[MPM_FIELD_VELOCITY][p * d + k];
-  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, P, 3, MPIU_REAL, MPIU_SUM, mpm->comm));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 static PetscErrorCode MPMLoadSetFromOptions(MPMModule mod, MPM mpm, PetscOptionItems *PetscOptionsObject)
 {
   MPMLoad  *ld  = (MPMLoad *)mod->data;
@@ -113,16 +96,15 @@ static PetscErrorCode MPMLoadReport(MPMModule mod, MPM mpm, MPMReport rep)
   MPMLoad  *ld = (MPMLoad *)mod->data;
   char      buf[4096];
   size_t    len;
-  PetscReal W = 0.0;
+  PetscReal W = 0.0, s[MPM_MAX_BODIES][MPM_BODY_SUMS];
 
   PetscFunctionBegin;
   if (!mod->active) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MPMBodySums(mpm, s)); /* the bodies' momenta after the last step */
   PetscCall(PetscSNPrintf(buf, sizeof(buf), "["));
   for (PetscInt b = 0, i = 0; b < mpm->nbodies; b++) {
     if (!ld->loaded[b]) continue;
-    PetscReal P[3], Wb;
-    PetscCall(MPMLoadMomentum(mpm, b, P));
-    Wb = ld->work[b] + MPMLoadLastWork(ld, mpm, b, P);
+    const PetscReal Wb = ld->work[b] + MPMLoadLastWork(ld, mpm, b, &s[b][1]);
     W += Wb;
     PetscCall(PetscStrlen(buf, &len));
     PetscCall(PetscSNPrintf(buf + len, sizeof(buf) - len, "%s{\"name\": \"%s\", \"force\": [%.6e, %.6e, %.6e], \"work\": %.6e}", i++ ? ", " : "", mpm->bodyname[b], (double)ld->now[b][0], (double)ld->now[b][1], (double)ld->now[b][2], (double)Wb));

@@ -803,6 +803,30 @@ PetscErrorCode MPMPointsSortByBody(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* s[b] = (m, m v, m |v|^2 / 2, m x) summed over body b's points on all ranks (one body: every point). */
+PetscErrorCode MPMBodySums(MPM mpm, PetscReal s[][MPM_BODY_SUMS])
+{
+  const PetscInt d = mpm->grid.dim;
+  MPMPoints      pts;
+
+  PetscFunctionBegin;
+  PetscCall(PetscArrayzero(&s[0][0], MPM_BODY_SUMS * MPM_MAX_BODIES));
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt p = 0; p < pts.n; p++) {
+    const PetscInt  b = pts.f[MPM_FIELD_BODY] ? (PetscInt)pts.f[MPM_FIELD_BODY][p] : 0;
+    const PetscReal m = pts.f[MPM_FIELD_MASS][p], *v = &pts.f[MPM_FIELD_VELOCITY][p * d], *x = &pts.f[MPM_FIELD_POSITION][p * d];
+    s[b][0] += m;
+    for (PetscInt k = 0; k < d; k++) {
+      s[b][1 + k] += m * v[k];
+      s[b][4] += 0.5 * m * v[k] * v[k];
+      s[b][5 + k] += m * x[k];
+    }
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &s[0][0], MPM_BODY_SUMS * MPM_MAX_BODIES, MPIU_REAL, MPIU_SUM, mpm->comm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Body b's nodes, and its points as all points (MPMPointsSetWindow). */
 PetscErrorCode MPMBodyWindow(MPM mpm, PetscInt b)
 {

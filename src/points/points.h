@@ -63,6 +63,10 @@ PETSC_INTERN PetscErrorCode MPMSortPoints(MPM);
 PETSC_INTERN PetscErrorCode MPMPointsSortByBody(MPM);
 PETSC_INTERN PetscReal      MPMPointHalfExtent(MPM, const MPMPoints *, PetscInt, const PetscReal[]);
 PETSC_INTERN PetscErrorCode MPMBodyWindow(MPM, PetscInt);
+/* Per body, over its points on all ranks: mass, momentum (3), kinetic energy |v|^2 / 2 (translational), first moment
+   m x (3) [g, g cm/s, erg, g cm]. */
+#define MPM_BODY_SUMS 8
+PETSC_INTERN PetscErrorCode MPMBodySums(MPM, PetscReal[][MPM_BODY_SUMS]);
 PETSC_INTERN PetscErrorCode MPMBodiesEnd(MPM);
 PETSC_INTERN PetscErrorCode MPMDiagnoseVacuum(MPM, PetscInt *, PetscInt *);
 PETSC_INTERN PetscErrorCode MPMExactInitialize(MPMExact, MPM);

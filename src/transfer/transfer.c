@@ -193,17 +193,20 @@ static inline void MPMStencilOffset(const MPMGrid *g, const PetscReal xp[], cons
   }
 }
 
-/* APIC: the stencil's mean offset sum_I N_I (x_I - x_p), which the affine velocity is taken about (x_I - x_p less it):
-   0 inside the grid, not where a domain's corners are clipped at a face of the grid, where about x_p the point's
-   affine velocity would carry momentum and the kinetic-energy fix could turn negative. */
-static inline void MPMStencilMeanOffset(const MPMGrid *g, const PetscReal xp[], const MPMStencil *st, PetscReal mean[])
+/* APIC: the offsets of every stencil entry about the stencil's mean, dx_a = x_I - x_p - sum_J N_J (x_J - x_p), the
+   offsets the affine velocity is taken about. The mean is 0 inside the grid, not where a domain's corners are clipped
+   at a face of the grid, where about x_p the point's affine velocity would carry momentum and the kinetic-energy fix
+   could turn negative. */
+static inline void MPMStencilOffsets(const MPMGrid *g, const PetscReal xp[], const MPMStencil *st, PetscReal dx[][MPM_MAX_DIM])
 {
-  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) mean[k] = 0.0;
+  PetscReal mean[MPM_MAX_DIM] = {0, 0, 0};
+
   for (PetscInt a = 0; a < st->n; a++) {
-    PetscReal dx[MPM_MAX_DIM];
-    MPMStencilOffset(g, xp, st, a, dx);
-    for (PetscInt k = 0; k < g->dim; k++) mean[k] += st->w[a] * dx[k];
+    MPMStencilOffset(g, xp, st, a, dx[a]);
+    for (PetscInt k = 0; k < g->dim; k++) mean[k] += st->w[a] * dx[a][k];
   }
+  for (PetscInt a = 0; a < st->n; a++)
+    for (PetscInt k = 0; k < g->dim; k++) dx[a][k] -= mean[k];
 }
 
 /* The generic loops' variants (MPMGenericVariant): the reference, which computes what the specialised kernels compute
@@ -243,24 +246,21 @@ MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node,
     }
     if (HOOP && force) hoop = V[p] * (P + (stress ? S[p * d * d] + S[p * d * d + d + 1] : 0.0)) / x[p * d]; /* -sigma_tt V / r, sigma_tt = -P - (s_rr + s_zz) */
     if (BODY) mpm->exact->ops.bodyforce(mpm->exact->data, tn, &X[p * d], F ? &F[p * d * d] : NULL, b);
-    PetscReal mean[MPM_MAX_DIM];
+    PetscReal dx[MPM_MAX_STENCIL][MPM_MAX_DIM];
     MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, F, ds, p, Fs), &st);
-    if (AFFINE) MPMStencilMeanOffset(g, &x[p * d], &st, mean);
+    if (AFFINE) MPMStencilOffsets(g, &x[p * d], &st, dx);
     for (PetscInt a = 0; a < st.n; a++) {
       MPMNode        *nd = &node[st.node[a]];
       const PetscReal wm = st.w[a] * m[p];
       nd->m += wm;
       nd->w2 += st.w[a] * st.w[a];
-      if (AFFINE) { /* APIC: the point's affine velocity at the node, v_p + C_p (x_I - x_p - mean) */
-        PetscReal dx[MPM_MAX_DIM];
-        MPMStencilOffset(g, &x[p * d], &st, a, dx);
-        for (PetscInt k = 0; k < d; k++) dx[k] -= mean[k];
+      if (AFFINE) /* APIC: the point's affine velocity at the node, v_p + C_p dx_a */
         for (PetscInt k = 0; k < d; k++) {
           PetscReal vk = v[p * d + k];
-          for (PetscInt j = 0; j < d; j++) vk += C[p * d * d + k * d + j] * dx[j];
+          for (PetscInt j = 0; j < d; j++) vk += C[p * d * d + k * d + j] * dx[a][j];
           nd->p[k] += st.s[a][k] * wm * vk;
         }
-      } else
+      else
         for (PetscInt k = 0; k < d; k++) nd->p[k] += st.s[a][k] * wm * v[p * d + k];
       if (stress)
         for (PetscInt k = 0; k < d; k++) {
@@ -463,23 +463,19 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
     PetscReal Lbtt                          = 0.0;                                      /* axisymmetric: the hoop rate of vbar, sum N (2 v_I - dv_I)_r / r_p */
     PetscReal Bm[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Dm[MPM_MAX_DIM * MPM_MAX_DIM] = {0}; /* APIC's moments */
     PetscReal Cdv = 0.0;                                                                /* APIC: sum N (C_p (x_I - x_p)) . dv_I */
-    PetscReal mean[MPM_MAX_DIM];
+    PetscReal dx[MPM_MAX_STENCIL][MPM_MAX_DIM];
     MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, A->F, A->ds, p, Fs), &st);
-    if (AFFINE && velocity) MPMStencilMeanOffset(g, &x[p * d], &st, mean);
+    if (AFFINE && velocity) MPMStencilOffsets(g, &x[p * d], &st, dx);
     for (PetscInt a = 0; a < st.n; a++) {
       const MPMNode *nd              = &node[st.node[a]];
       PetscReal      Cx[MPM_MAX_DIM] = {0, 0, 0}; /* APIC: the point's affine velocity at the node less v_p, C_p (x_I - x_p) */
-      if (AFFINE && velocity) {
-        PetscReal dx[MPM_MAX_DIM];
-        MPMStencilOffset(g, &x[p * d], &st, a, dx);
-        for (PetscInt k = 0; k < d; k++) dx[k] -= mean[k];
+      if (AFFINE && velocity)
         for (PetscInt i = 0; i < d; i++)
           for (PetscInt j = 0; j < d; j++) {
-            Bm[i * d + j] += st.w[a] * st.s[a][i] * nd->p[i] * dx[j];
-            Dm[i * d + j] += st.w[a] * dx[i] * dx[j];
-            Cx[i] += C[p * d * d + i * d + j] * dx[j];
+            Bm[i * d + j] += st.w[a] * st.s[a][i] * nd->p[i] * dx[a][j];
+            Dm[i * d + j] += st.w[a] * dx[a][i] * dx[a][j];
+            Cx[i] += C[p * d * d + i * d + j] * dx[a][j];
           }
-      }
       for (PetscInt i = 0; i < d; i++) {
         const PetscReal vI = st.s[a][i] * nd->p[i], dvI = st.s[a][i] * (nd->p[i] - nd->v0[i]); /* mirrored: reflected */
         vpic[i] += st.w[a] * vI;
@@ -505,16 +501,9 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
       if (AFFINE) {
         PetscReal *ake = &pts->f[mpm->affine_ke][p], knew = 0.0;
         MPMAffineFromMoments(g, Bm, Dm, &C[p * d * d]);
-        for (PetscInt a = 0; a < st.n; a++) { /* the new affine velocity's kinetic energy, sum N |C_p (x_I - x_p)|^2 / 2 */
-          PetscReal dx[MPM_MAX_DIM];
-          MPMStencilOffset(g, &x[p * d], &st, a, dx);
-          for (PetscInt k = 0; k < d; k++) dx[k] -= mean[k];
-          for (PetscInt i = 0; i < d; i++) {
-            PetscReal Cx = 0.0;
-            for (PetscInt j = 0; j < d; j++) Cx += C[p * d * d + i * d + j] * dx[j];
-            knew += 0.5 * st.w[a] * Cx * Cx;
-          }
-        }
+        for (PetscInt i = 0; i < d; i++) /* the new affine velocity's kinetic energy, sum N |C_p dx|^2 / 2 = tr(C_p D_p C_p^T) / 2 */
+          for (PetscInt j = 0; j < d; j++)
+            for (PetscInt k = 0; k < d; k++) knew += 0.5 * C[p * d * d + i * d + j] * Dm[j * d + k] * C[p * d * d + i * d + k];
         if (kefix) e[p] += *ake - knew; /* the affine kinetic energy is kinetic energy: its change is not the fix's */
         *ake = knew;
       }
