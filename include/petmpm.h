@@ -88,6 +88,8 @@ PETSC_EXTERN PetscErrorCode MPMCreate(MPI_Comm, MPM *);
 PETSC_EXTERN PetscErrorCode MPMSetFromOptions(MPM);
 PETSC_EXTERN PetscErrorCode MPMSetUp(MPM);
 PETSC_EXTERN PetscErrorCode MPMSolve(MPM);
+PETSC_EXTERN void           MPMSignalsInstall(void);
+PETSC_EXTERN PetscErrorCode MPMSignalsCheck(MPM);
 PETSC_EXTERN PetscErrorCode MPMView(MPM, PetscViewer);
 PETSC_EXTERN PetscErrorCode MPMWriteReport(MPM);
 PETSC_EXTERN PetscErrorCode MPMDestroy(MPM *);

@@ -5,6 +5,9 @@ static const char help[] = "petmpm: explicit Material Point Method for shocks an
                            "-help lists petmpm's options, TS's and PETSc's general ones; -help -mpm_help_all adds the solver options an explicit MPM never reads.\n\n";
 
 #include <petmpm.h>
+#include <ctype.h>
+#include <limits.h>
+#include <stdlib.h>
 
 /* An error prints only itself: "petmpm: error: MESSAGE" once (by the first rank of a collective error's
    communicator, by every rank for a local one), with no traceback and no option table. A message of PETSc's
@@ -96,6 +99,67 @@ static PetscErrorCode MPMHelpPrintf(MPI_Comm comm, const char format[], ...)
   return PetscPrintf(comm, "%s", line);
 }
 
+/* Before PETSc reads the options (it follows -options_file inside files without bound: a file that includes itself
+   overflowed the stack and died with SIGSEGV, printing nothing): the chain of options files, each parsed as PETSc
+   does (whitespace-separated words, '#' to the end of a line), refused where a file includes one it is inside. 0 or
+   1 (the message printed by the first rank). */
+static int MPMOptionsFileCycle(const char *given, const char *chain[], int depth)
+{
+  FILE       *fp;
+  char        word[PETSC_MAX_PATH_LEN], real[PATH_MAX];
+  const char *file = realpath(given, real) ? real : given; /* one name for one file */
+  int         c, n = 0, next = 0, bad = 0;
+
+  for (int i = 0; i < depth; i++)
+    if (!strcmp(chain[i], file)) {
+      const char *rank = getenv("OMPI_COMM_WORLD_RANK");
+      if (!rank || !strcmp(rank, "0")) {
+        fprintf(stderr, "petmpm: error: -options_file %s includes itself:", file);
+        for (int k = i; k < depth; k++) fprintf(stderr, " %s ->", chain[k]);
+        fprintf(stderr, " %s; remove the -options_file line that closes the loop\n", file);
+      }
+      return 1;
+    }
+  if (depth >= 64 || !(fp = fopen(file, "r"))) return 0; /* PETSc reports a file it cannot read */
+  chain[depth] = file;
+  while (!bad && (c = fgetc(fp)) != EOF) {
+    if (c == '#') {
+      while ((c = fgetc(fp)) != EOF && c != '\n') {
+      }
+    }
+    if (c == EOF || isspace(c) || c == '#') {
+      if (n) {
+        word[n] = 0;
+        if (next) bad = MPMOptionsFileCycle(word, chain, depth + 1);
+        next = !strcmp(word, "-options_file");
+        n    = 0;
+      }
+      continue;
+    }
+    if (n < (int)sizeof(word) - 1) word[n++] = (char)c;
+  }
+  if (!bad && n) {
+    word[n] = 0;
+    if (next) bad = MPMOptionsFileCycle(word, chain, depth + 1);
+  }
+  fclose(fp);
+  return bad;
+}
+
+/* A command-line word that begins with a dash look-alike (an en or em dash, a minus sign: what word processors and
+   web pages make of "-"), which PETSc would take for a value and the run would go on without the option. */
+static PetscErrorCode MPMCheckDashes(int argc, char **argv)
+{
+  static const char *const look[][2] = {
+    {"\xe2\x80\x93", "an en dash (U+2013)"}, {"\xe2\x80\x94", "an em dash (U+2014)"}, {"\xe2\x88\x92", "a minus sign (U+2212)"}, {"\xe2\x80\x90", "a hyphen (U+2010)"}, {"\xe2\x80\x91", "a non-breaking hyphen (U+2011)"}};
+
+  PetscFunctionBeginUser;
+  for (int i = 1; i < argc; i++)
+    for (size_t k = 0; k < sizeof(look) / sizeof(look[0]); k++)
+      PetscCheck(strncmp(argv[i], look[k][0], strlen(look[k][0])), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "command-line word '%s' begins with %s, not the ASCII '-' of an option; retype it as -%s", argv[i], look[k][1], argv[i] + strlen(look[k][0]));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode MPMRun(MPMErrorContext *ec)
 {
   MPM       mpm;
@@ -111,6 +175,7 @@ static PetscErrorCode MPMRun(MPMErrorContext *ec)
     PetscCall(MPMSetUp(mpm));
     PetscCall(MPMSolve(mpm));
     PetscCall(MPMWriteReport(mpm));
+    PetscCall(MPMSignalsCheck(mpm)); /* SIGTERM or SIGINT during the final output stops the run here, its result complete */
   }
   PetscCall(MPMDestroy(&mpm));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -122,11 +187,18 @@ int main(int argc, char **argv)
   PetscErrorCode  ierr;
   PetscMPIInt     size;
 
+  MPMSignalsInstall();                 /* SIGTERM and SIGINT from here on stop the run where its results are whole (src/core/ts.c) */
+  for (int i = 1; i + 1 < argc; i++) { /* before PetscInitialize, which would follow a file including itself forever */
+    const char *chain[64];
+    if (!strcmp(argv[i], "-options_file") && MPMOptionsFileCycle(argv[i + 1], chain, 0)) return 1;
+  }
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
+  MPMSignalsInstall(); /* again: PetscInitialize put its own handler in place */
   PetscCall(PetscOptionsGetBool(NULL, NULL, "-mpm_help_all", &MPMHelpAll, NULL));
   PetscHelpPrintf = MPMHelpPrintf;
   PetscCall(PetscPushErrorHandler(MPMErrorHandler, &ec));
-  ierr = MPMRun(&ec);
+  ierr = MPMCheckDashes(argc, argv);
+  if (!ierr) ierr = MPMRun(&ec);
   if (ierr) {
     PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
     if (ec.size < size) MPI_Abort(PETSC_COMM_WORLD, (int)ierr); /* a local error: the other ranks may be waiting in a collective call */

@@ -25,6 +25,7 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   PetscFunctionBegin;
   PetscCall(MPMInitializePackage());
   PetscCall(PetscNew(&m));
+  m->lockfd                  = -1;
   m->comm                    = comm;
   m->grid.dim                = 1;
   m->ppc                     = 1;
@@ -102,6 +103,8 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
       }
     }
   }
+  mpm->memory_check = PETSC_TRUE;
+  PetscCall(PetscOptionsBool("-mpm_memory_check", "Refuse a grid whose estimated memory (nodes and the points its regions seed) exceeds the memory available (/proc/meminfo) before allocating it", "", mpm->memory_check, &mpm->memory_check, NULL));
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-mpm_lo", "Lower corner of the domain [cm]", g->dim, g->lo));
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-mpm_hi", "Upper corner of the domain [cm]", g->dim, g->hi));
   for (PetscInt k = 0; k < g->dim; k++) {
@@ -208,6 +211,7 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
     PetscCall(PetscTestFile(mpm->restart, 'r', &exists));
     PetscCheck(exists, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_restart %s: no such checkpoint file", mpm->restart);
   }
+  PetscCall(PetscOptionsBool("-mpm_restart_force", "Continue from a checkpoint whose run had other scene or method options (-mpm_restart refuses it otherwise, naming them): a method change", "", mpm->restart_force, &mpm->restart_force, NULL));
   PetscCall(PetscOptionsReal("-mpm_progress", "Seconds of wall time between progress lines (time, step, dt, points, time to go) [s], >= 0 (0: none)", "", mpm->progress, &mpm->progress, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_progress", mpm->progress, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
   PetscCall(PetscOptionsReal("-mpm_stop_at_rest", "Stop the run once the kinetic energy has fallen below this fraction of its initial value (an impact that has come to rest) [-], in [0, 1) (0: run to -ts_max_time)", "", mpm->rest_fraction,
@@ -331,6 +335,7 @@ PetscErrorCode MPMDestroy(MPM *mpm)
   PetscFunctionBegin;
   if (!m) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(MPMOutputClose(m));
+  PetscCall(MPMSignalsRestore());
   PetscCall(TSDestroy(&m->ts));
   PetscCall(VecDestroy(&m->tsu));
   PetscCall(MPMDestroyGrid(m));

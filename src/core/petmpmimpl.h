@@ -71,6 +71,7 @@ struct _p_MPM {
   char                 report[PETSC_MAX_PATH_LEN]; /* JSON report file, empty for none                  */
   MPMGrid              grid;
   PetscInt             ppc;                        /* points per cell per direction                     */
+  PetscBool            memory_check;               /* -mpm_memory_check: refuse a grid that would not fit (MPMGridCheckSize) */
   PetscReal            cfl;                        /* Courant number                                    */
   PetscReal            dtmin;                      /* smallest time step before the run is stopped [s]  */
   PetscReal            dtmin_ratio;                /* smallest time step as a fraction of dt_peak before the run is stopped [-] */
@@ -152,7 +153,9 @@ struct _p_MPM {
   TS           ts;
   Vec          tsu; /* the TS state: empty; the MPM state lives in the grid and swarm */
   /* output */
-  PetscViewer h5; /* HDF5 file DIR/petmpm.h5, open for the run                 */
+  PetscViewer h5;     /* HDF5 file DIR/petmpm.h5, open for the run                 */
+  PetscBool   h5new;  /* it is still DIR/.petmpm-new.h5: its first output is not complete (MPMOutputWrite renames it) */
+  int         lockfd; /* rank 0: DIR/.petmpm.lock, locked for the run (-1: none) */
   PetscInt    last_output_step;
   /* run bookkeeping */
   PetscInt       npoints0; /* global number of points at start                    */
@@ -164,6 +167,7 @@ struct _p_MPM {
   PetscReal      wall_loop, wall_setup, wall_output;
   PetscReal      progress;                              /* -mpm_progress: seconds of wall time between progress lines, 0: none */
   PetscReal      progress_start, progress_last;         /* MPI_Wtime at the loop's start and at the last line                  */
+  PetscReal      progress_t0;                           /* the simulated time at the loop's start (a restart's: the checkpoint's) [s] */
   PetscBool      balance;                               /* -mpm_balance: ownership ranges from the points, at set-up and in the run */
   PetscReal      balance_threshold;                     /* -mpm_balance_threshold: rebalance when max/mean points per rank exceeds it */
   PetscInt       balance_interval;                      /* -mpm_balance_interval: steps between checks of the balance */
@@ -172,6 +176,7 @@ struct _p_MPM {
   PetscReal      ckpt_last;                             /* MPI_Wtime of the last checkpoint (or of the loop's start) */
   char           ckpt_file[2][PETSC_MAX_PATH_LEN + 64]; /* the last two checkpoints, oldest first (rank 0)     */
   char           restart[PETSC_MAX_PATH_LEN];           /* -mpm_restart: the checkpoint the run continues from  */
+  PetscBool      restart_force;                         /* -mpm_restart_force: continue though the scene's options differ */
   PetscInt       steps;
   PetscReal      point_steps; /* sum over the steps of the global number of points (the cost measure) */
   PetscReal      time;
@@ -256,6 +261,7 @@ PETSC_INTERN PetscErrorCode MPMConstitutiveFailure(MPM, PetscInt);
 PETSC_INTERN PetscErrorCode MPMConstitutiveInitialize(MPM);
 PETSC_INTERN PetscErrorCode MPMComputeTimeStep(MPM, PetscBool, PetscReal *);
 PETSC_INTERN PetscErrorCode MPMCreateTS(MPM);
+PETSC_INTERN PetscErrorCode MPMSignalsRestore(void);
 
 /* The transfers of the MPM object (src/transfer/transfer.c). */
 PETSC_INTERN PetscErrorCode MPMScatter(MPM, PetscBool, PetscReal);

@@ -7,14 +7,72 @@
 #include "core/petmpmimpl.h"
 #include <signal.h>
 
-/* SIGTERM and SIGINT during the time loop: the step under way finishes, then the run stops as a failed run does
-   (MPMSolve writes the last state as a complete output and closes the file) and exits non-zero with a message
-   that names the signal, the step and the output. The ranks agree on it after each step. */
+/* SIGTERM and SIGINT, from the program's start to the end of the report (MPMSignalsInstall: a plain C function, called
+   by the program before PetscInitialize and again after it, which installs its own handler), are noted and acted on
+   where the run
+   can stop with its results whole (the ranks agree on it there):
+     - at the end of the set-up, before the first output: the run stops, nothing written (a new output file is
+       written under a temporary name until its first output is complete: the earlier result stays);
+     - after each step of the time loop: the step under way finishes, then the run stops as a failed run does
+       (MPMSolve writes the last state as a complete output and closes the file) with a checkpoint;
+     - after the final output and the report (MPMSignalsCheck, called by the program after MPMWriteReport): the result
+       is complete.
+   Each exits non-zero with a message that names the signal. */
 static volatile sig_atomic_t MPMSignalCaught = 0;
+static struct sigaction      MPMSignalOld[2];
+static PetscBool             MPMSignalInstalled = PETSC_FALSE;
 
 static void MPMSignalHandler(int sig)
 {
   MPMSignalCaught = sig;
+}
+
+static const char *MPMSignalName(int sig)
+{
+  return sig == SIGTERM ? "SIGTERM" : (sig == SIGINT ? "SIGINT" : "a signal");
+}
+
+void MPMSignalsInstall(void)
+{
+  struct sigaction sa;
+
+  memset(&sa, 0, sizeof(sa));
+  sa.sa_handler = MPMSignalHandler;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGTERM, &sa, MPMSignalInstalled ? NULL : &MPMSignalOld[0]); /* the handlers before the first call are restored at the end */
+  sigaction(SIGINT, &sa, MPMSignalInstalled ? NULL : &MPMSignalOld[1]);
+  MPMSignalInstalled = PETSC_TRUE;
+}
+
+PetscErrorCode MPMSignalsRestore(void)
+{
+  PetscFunctionBegin;
+  if (!MPMSignalInstalled) PetscFunctionReturn(PETSC_SUCCESS);
+  sigaction(SIGTERM, &MPMSignalOld[0], NULL);
+  sigaction(SIGINT, &MPMSignalOld[1], NULL);
+  MPMSignalInstalled = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The signal any rank has caught (0: none); collective. */
+static PetscErrorCode MPMSignalsAgree(MPM mpm, PetscMPIInt *sig)
+{
+  PetscFunctionBegin;
+  *sig = (PetscMPIInt)MPMSignalCaught;
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, sig, 1, MPI_INT, MPI_MAX, mpm->comm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* After the final output and the report: a signal that arrived while they were written stops the run here, with
+   its result complete. */
+PetscErrorCode MPMSignalsCheck(MPM mpm)
+{
+  PetscMPIInt sig;
+
+  PetscFunctionBegin;
+  PetscCall(MPMSignalsAgree(mpm, &sig));
+  PetscCheck(!sig, mpm->comm, PETSC_ERR_SIG, "Interrupted by %s during the final output; the result in %s is complete (t = %g s, step %" PetscInt_FMT ")", MPMSignalName(sig), mpm->outdir, (double)mpm->time, mpm->steps);
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* The state at step and t to the output: the points, and the grid's nodal mass and velocity projected from them;
@@ -80,11 +138,11 @@ static PetscErrorCode MPMTSPostStep(TS ts)
     }
   } else if (mpm->output_interval > 0 && step % mpm->output_interval == 0)
     PetscCall(MPMWriteState(mpm, step, t));
-  if (mpm->progress > 0.0 && MPI_Wtime() - mpm->progress_last >= mpm->progress) { /* rank 0's clock: a line, no collective call */
-    const PetscReal el = MPI_Wtime() - mpm->progress_start, frac = t / tmax;
+  if (mpm->progress > 0.0 && MPI_Wtime() - mpm->progress_last >= mpm->progress) {                                      /* rank 0's clock: a line, no collective call */
+    const PetscReal el = MPI_Wtime() - mpm->progress_start, frac = (t - mpm->progress_t0) / (tmax - mpm->progress_t0); /* of this run's part: a restart starts later */
     mpm->progress_last = MPI_Wtime();
-    PetscCall(PetscPrintf(mpm->comm, "petmpm %s: t = %.4g s (%.1f%%), step %" PetscInt_FMT ", dt %.3g s, %" PetscInt_FMT " points, %.0f s elapsed, about %.0f s to go\n", mpm->scene, (double)t, (double)(100.0 * frac), step, (double)dt, mpm->npoints,
-                          (double)el, (double)(frac > 0.0 ? el * (1.0 - frac) / frac : 0.0)));
+    PetscCall(PetscPrintf(mpm->comm, "petmpm %s: t = %.4g s (%.1f%%), step %" PetscInt_FMT ", dt %.3g s, %" PetscInt_FMT " points, %.0f s elapsed, about %.0f s to go\n", mpm->scene, (double)t, (double)(100.0 * t / tmax), step, (double)dt,
+                          mpm->npoints, (double)el, (double)(frac > 0.0 ? el * (1.0 - frac) / frac : 0.0)));
   }
   if (mpm->balance && step % mpm->balance_interval == 0) { /* the points moved: rebalance past the threshold */
     PetscReal   imb;
@@ -101,8 +159,7 @@ static PetscErrorCode MPMTSPostStep(TS ts)
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, sig, 1, MPI_INT, MPI_MAX, mpm->comm));
     if (sig[0] || sig[1] || (mpm->ckpt_interval > 0 && step % mpm->ckpt_interval == 0)) PetscCall(MPMCheckpointWrite(mpm));
     if (sig[0]) {
-      PetscCall(MPMSetFailure(mpm, "Interrupted by %s after step %" PetscInt_FMT " (t = %g s); checkpoint %s/checkpoint-%" PetscInt_FMT ".h5 (continue with -mpm_restart)", sig[0] == SIGTERM ? "SIGTERM" : (sig[0] == SIGINT ? "SIGINT" : "a signal"),
-                              step, (double)t, mpm->outdir, step));
+      PetscCall(MPMSetFailure(mpm, "Interrupted by %s after step %" PetscInt_FMT " (t = %g s); checkpoint %s/checkpoint-%" PetscInt_FMT ".h5 (continue with -mpm_restart)", MPMSignalName(sig[0]), step, (double)t, mpm->outdir, step));
       PetscCall(TSSetConvergedReason(ts, TS_DIVERGED_STEP_REJECTED));
       PetscFunctionReturn(PETSC_SUCCESS);
     }
@@ -147,6 +204,11 @@ PetscErrorCode MPMCreateTS(MPM mpm)
     PetscCheck(!dt, mpm->comm, PETSC_ERR_USER_INPUT, "-ts_dt: petmpm sets every step from the CFL number and its limits (-mpm_cfl, -mpm_dt_volume, -mpm_dt_acceleration); remove -ts_dt");
     PetscCall(TSGetMaxTime(mpm->ts, &tmax));
     PetscCall(MPMOptionsCheckRange("-ts_max_time", tmax, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE)); /* 0: set-up and the initial state only */
+    {
+      PetscReal t0;
+      PetscCall(TSGetTime(mpm->ts, &t0));
+      PetscCheck(t0 == 0.0, mpm->comm, PETSC_ERR_USER_INPUT, "-ts_init_time %g: a scene starts at t = 0 (its regions, exact solution and output times are set there); valid is 0. To continue a run, use -mpm_restart", (double)t0);
+    }
     PetscCall(TSGetMaxSteps(mpm->ts, &nmax));
     PetscCheck(nmax >= 0, mpm->comm, PETSC_ERR_USER_INPUT, "-ts_max_steps %" PetscInt_FMT " is out of range: valid is >= 0 (0: set-up and the initial state only)", nmax);
     PetscCheck(!mpm->ntout || mpm->tout[mpm->ntout - 1] <= tmax * (1.0 + 1e-12), mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_output_times: %g s is after the end of the run, -ts_max_time %g s", (double)mpm->tout[mpm->ntout - 1], (double)tmax);
@@ -160,26 +222,29 @@ PetscErrorCode MPMSolve(MPM mpm)
 
   PetscFunctionBegin;
   PetscCall(PetscLogStagePush(mpm->log.io));
+  {
+    PetscMPIInt sig;
+    PetscCall(MPMSignalsAgree(mpm, &sig));
+    if (sig) {
+      PetscCall(MPMOutputClose(mpm)); /* a new output file, still under its temporary name, is removed */
+      SETERRQ(mpm->comm, PETSC_ERR_SIG, "Interrupted by %s during the set-up; nothing written: the earlier result in %s is as it was", MPMSignalName(sig), mpm->outdir);
+    }
+  }
   if (!mpm->restart[0]) { /* a restart continues after the checkpoint's outputs */
     PetscCall(MPMWriteState(mpm, 0, 0.0));
     if (mpm->exact && mpm->exact->check_start) PetscCall(MPMComputeChecks(mpm));
+  } else if (mpm->h5new) { /* a restart into a folder without the run's file: the new file starts at the checkpoint's state */
+    mpm->noutputs         = 0;
+    mpm->last_output_step = -1;
+    PetscCall(MPMWriteState(mpm, mpm->steps, mpm->time));
   }
   PetscCall(PetscLogStagePop());
   PetscCall(PetscLogStagePush(mpm->log.loop));
   t0                  = MPI_Wtime();
   out0                = mpm->wall_output;
   mpm->progress_start = mpm->progress_last = mpm->ckpt_last = t0;
-  {
-    struct sigaction sa, old[2];
-    memset(&sa, 0, sizeof(sa));
-    sa.sa_handler = MPMSignalHandler;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGTERM, &sa, &old[0]);
-    sigaction(SIGINT, &sa, &old[1]);
-    PetscCall(TSSolve(mpm->ts, mpm->tsu));
-    sigaction(SIGTERM, &old[0], NULL);
-    sigaction(SIGINT, &old[1], NULL);
-  }
+  mpm->progress_t0                                          = mpm->time;
+  PetscCall(TSSolve(mpm->ts, mpm->tsu));
   mpm->wall_loop = MPI_Wtime() - t0 - (mpm->wall_output - out0); /* the time loop without its outputs */
   PetscCall(PetscLogStagePop());
   if (mpm->failed) { /* the one place that writes the last state of a run that cannot go on */

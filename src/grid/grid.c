@@ -226,6 +226,83 @@ static PetscErrorCode MPMGridLayout(MPM mpm, const char why[], PetscInt P[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The bytes of memory this machine has available to the run: MemAvailable of /proc/meminfo on each host (read by
+   its first rank), summed over the hosts; 0 where unknown. */
+static PetscErrorCode MPMMemoryAvailable(MPM mpm, PetscReal *bytes)
+{
+  MPI_Comm    host;
+  PetscMPIInt hrank;
+  PetscReal   mine = 0.0;
+
+  PetscFunctionBegin;
+  PetscCallMPI(MPI_Comm_split_type(mpm->comm, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &host));
+  PetscCallMPI(MPI_Comm_rank(host, &hrank));
+  if (!hrank) {
+    FILE *fp = fopen("/proc/meminfo", "r");
+    char  line[256];
+    while (fp && fgets(line, sizeof(line), fp)) {
+      double kb;
+      if (sscanf(line, "MemAvailable: %lf kB", &kb) == 1) mine = kb * 1024.0;
+    }
+    if (fp) fclose(fp);
+  }
+  PetscCallMPI(MPI_Comm_free(&host));
+  PetscCall(MPIU_Allreduce(&mine, bytes, 1, MPIU_REAL, MPIU_SUM, mpm->comm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Before the grid is made: its nodes' values must be indexable by PetscInt (PETSc's 32-bit indices: -mpm_cells
+   200000000 failed with "Negative length"), and the grid with one point per cell must fit in the memory available
+   (-mpm_memory_check false skips this estimate). The estimate: MPM_NODE_DOF reals per node in the global, local and
+   work vectors (3 copies) and, for the points, ppc^dim per cell in each region's bounding box (within the domain;
+   the shapes inside fill less of it) of about 3 reals per point field (vectors and tensors among scalars) twice (the
+   swarm and its migration buffer). */
+static PetscErrorCode MPMGridCheckSize(MPM mpm)
+{
+  const MPMGrid *g     = &mpm->grid;
+  PetscReal      nodes = 1.0, cells = 1.0, need, avail, ppc = 1.0, pts;
+  char           list[64];
+
+  PetscFunctionBegin;
+  PetscCall(PetscSNPrintf(list, sizeof(list), "%" PetscInt_FMT, g->cells[0]));
+  for (PetscInt k = 0; k < g->dim; k++) {
+    nodes *= (PetscReal)(g->cells[k] + 1);
+    cells *= (PetscReal)g->cells[k];
+    ppc *= (PetscReal)mpm->ppc;
+    if (k) {
+      char c[24];
+      PetscCall(PetscSNPrintf(c, sizeof(c), ",%" PetscInt_FMT, g->cells[k]));
+      PetscCall(PetscStrlcat(list, c, sizeof(list)));
+    }
+  }
+  PetscCheck(nodes * MPM_NODE_DOF < (PetscReal)PETSC_MAX_INT, mpm->comm, PETSC_ERR_USER_INPUT,
+             "-mpm_cells %s: %.3g nodes of %" PetscInt_FMT " values each exceed the index range of this PETSc build (%" PetscInt_FMT "); use fewer cells, or a PETSc configured --with-64-bit-indices", list, (double)nodes, MPM_NODE_DOF,
+             (PetscInt)PETSC_MAX_INT);
+  if (!mpm->memory_check) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MPMMemoryAvailable(mpm, &avail));
+  pts = 0.0;
+  for (PetscInt r = 0; r < mpm->nreg; r++) { /* the cells of its bounding box within the domain */
+    const MPMRegion *reg = &mpm->reg[r];
+    PetscReal        n   = ppc;
+    for (PetscInt k = 0; k < g->dim; k++) {
+      PetscReal lo = PetscMax(reg->lo[k], g->lo[k]), hi = PetscMin(reg->hi[k], g->hi[k]);
+      if (reg->rmax < PETSC_MAX_REAL && k != reg->axis) {
+        lo = PetscMax(lo, reg->center[k] - reg->rmax);
+        hi = PetscMin(hi, reg->center[k] + reg->rmax);
+      }
+      n *= PetscMax(hi - lo, 0.0) * g->cells[k] / (g->hi[k] - g->lo[k]) + 1.0; /* cells across it, h not set yet */
+    }
+    pts += n;
+  }
+  pts  = PetscMin(pts, cells * ppc);
+  need = 3.0 * nodes * MPM_NODE_DOF * sizeof(PetscScalar) + 2.0 * pts * mpm->nfields * 3.0 * sizeof(PetscReal);
+  PetscCheck(!(avail > 0.0) || need <= avail, mpm->comm, PETSC_ERR_USER_INPUT,
+             "-mpm_cells %s: the grid (%.3g nodes) and its points (up to %.3g at -mpm_ppc %" PetscInt_FMT
+             ") need about %.3g GiB, more than the %.3g GiB of memory available; use fewer cells or more hosts (-mpm_memory_check false skips this estimate)",
+             list, (double)nodes, (double)pts, mpm->ppc, (double)(need / 1073741824.0), (double)(avail / 1073741824.0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* The first grid, of ghost width sw [cells] (a point touches the nodes within sw cells of its own); why names what
    sets it, for the message where no split of the grid on the ranks fits it. */
 PetscErrorCode MPMCreateGrid(MPM mpm, PetscInt sw, const char why[])
@@ -234,6 +311,11 @@ PetscErrorCode MPMCreateGrid(MPM mpm, PetscInt sw, const char why[])
 
   PetscFunctionBegin;
   mpm->grid.sw = sw;
+  /* a 1D DMDA needs sw nodes on a rank even when one rank holds them all (PETSc's "Local x-width ... smaller than
+     stencil width") */
+  PetscCheck(mpm->grid.dim > 1 || mpm->grid.cells[0] + 1 >= sw, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_cells %" PetscInt_FMT ": too few cells for the ghost width %" PetscInt_FMT " of %s; valid is >= %" PetscInt_FMT " cells%s", mpm->grid.cells[0], sw,
+             why, sw - 1, mpm->grid.cells[0] == 1 ? " (1 is the default: does the scene give -mpm_cells?)" : "");
+  PetscCall(MPMGridCheckSize(mpm));
   PetscCall(MPMGridLayout(mpm, why, P));
   PetscCall(MPMCreateGridOwned(mpm, NULL, P));
   PetscFunctionReturn(PETSC_SUCCESS);

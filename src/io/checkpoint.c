@@ -2,7 +2,8 @@
 /* Checkpoints and restart.
      -mpm_checkpoint_interval N   every N steps, and
      -mpm_checkpoint_wall S       every S seconds of wall time (rank 0's clock, agreed after each step),
-   write DIR/checkpoint-STEP.h5 (the last two are kept; SIGTERM and SIGINT write one too); -mpm_restart FILE continues
+   write DIR/checkpoint-STEP.h5 (written as DIR/.checkpoint-STEP.h5.tmp and renamed when complete: a checkpoint under
+   its final name is whole; the last two are kept; SIGTERM and SIGINT write one too); -mpm_restart FILE continues
    the run from one, with the scene's options (the scene must be the one that wrote it: the same grid and fields).
    A checkpoint holds the whole state the next step reads: every point field the scene carries, in each rank's
    order; the time, the step, the last step size (the leapfrog kick and the acceleration limit read it) and the largest
@@ -24,6 +25,7 @@
    overwritten), so output and report read as one run. */
 #include "io/h5impl.h"
 #include "exact/exactimpl.h"
+#include <errno.h>
 #include <unistd.h>
 
 #define MPM_CKPT_NSTATE 29
@@ -69,6 +71,121 @@ static hid_t MPMCkptOpen(MPI_Comm comm, const char file[], PetscBool create)
   f = create ? H5Fcreate(file, H5F_ACC_TRUNC, H5P_DEFAULT, fapl) : H5Fopen(file, H5F_ACC_RDONLY, fapl);
   H5Pclose(fapl);
   return f;
+}
+
+/* The options that define the scene and the method, as sorted "name value" lines: every option of the run but those
+   that only steer it (its end, outputs, checkpoints, progress lines, logging, the partition, the restart itself). A
+   restart compares them with the checkpoint's. */
+static PetscBool MPMCkptSteers(const char name[])
+{
+  static const char *const steer[] = {"ts_max_time",       "ts_max_steps", "ts_monitor",       "mpm_output", "mpm_report", "mpm_restart", "mpm_checkpoint_", "mpm_progress",      "mpm_view",  "mpm_balance",   "mpm_help_all", "mpm_scene_name",
+                                      "mpm_rest_fraction", "log_",         "options_",         "help",       "malloc",     "info",        "history",         "no_signal_handler", "on_error_", "check_pointer", "fp_trap",      "get_total_flops",
+                                      "objects_dump",      "memory_view",  "error_output_std", "viewer_"};
+
+  for (size_t i = 0; i < sizeof(steer) / sizeof(steer[0]); i++)
+    if (!strncmp(name, steer[i], strlen(steer[i]))) return PETSC_TRUE;
+  return PETSC_FALSE;
+}
+
+static int MPMCkptLineCompare(const void *a, const void *b)
+{
+  return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+/* The scene's options as one string of sorted lines "name value\n" (PetscFree it). */
+static PetscErrorCode MPMCkptSceneOptions(char **text)
+{
+  char    *all, *tok, *save = NULL, **line = NULL;
+  size_t   len = 1, n = 0, cap = 0;
+  PetscInt cur = -1;
+
+  PetscFunctionBegin;
+  PetscCall(PetscOptionsGetAll(NULL, &all));
+  for (tok = strtok_r(all, " ", &save); tok; tok = strtok_r(NULL, " ", &save)) {
+    const PetscBool opt = (PetscBool)(tok[0] == '-' && tok[1] && !(tok[1] >= '0' && tok[1] <= '9') && tok[1] != '.');
+    if (opt) {
+      cur = -1;
+      if (MPMCkptSteers(tok + 1)) continue;
+      if (n == cap) {
+        char **tmp;
+        cap = PetscMax(64, 2 * cap);
+        PetscCall(PetscMalloc1(cap, &tmp));
+        if (n) PetscCall(PetscArraycpy(tmp, line, n));
+        PetscCall(PetscFree(line));
+        line = tmp;
+      }
+      PetscCall(PetscStrallocpy(tok + 1, &line[n]));
+      cur = (PetscInt)n++;
+    } else if (cur >= 0) { /* a value: appended to its option's line */
+      char  *l;
+      size_t a = strlen(line[cur]), b = strlen(tok);
+      PetscCall(PetscMalloc1(a + b + 2, &l));
+      memcpy(l, line[cur], a);
+      l[a] = ' ';
+      memcpy(l + a + 1, tok, b + 1);
+      PetscCall(PetscFree(line[cur]));
+      line[cur] = l;
+    }
+  }
+  PetscCall(PetscFree(all));
+  if (n) qsort(line, n, sizeof(char *), MPMCkptLineCompare);
+  for (size_t i = 0; i < n; i++) len += strlen(line[i]) + 1;
+  PetscCall(PetscMalloc1(len, text));
+  (*text)[0] = 0;
+  for (size_t i = 0; i < n; i++) {
+    strcat(*text, line[i]);
+    strcat(*text, "\n");
+    PetscCall(PetscFree(line[i]));
+  }
+  PetscCall(PetscFree(line));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The value of option name (a line "name value") in text, "" for a flag, or NULL where text does not hold it. */
+static const char *MPMCkptOptionIn(const char text[], const char name[], char value[], size_t size)
+{
+  const size_t n = strlen(name);
+
+  for (const char *l = text; *l; l = strchr(l, '\n') + 1) {
+    const char *e = strchr(l, '\n');
+    if (!strncmp(l, name, n) && (l[n] == ' ' || l[n] == '\n')) {
+      size_t len = l[n] == ' ' ? (size_t)(e - (l + n + 1)) : 0;
+      len        = PetscMin(len, size - 1);
+      memcpy(value, l + n + 1, len);
+      value[len] = 0;
+      return value;
+    }
+    if (!e) break;
+  }
+  return NULL;
+}
+
+/* Appends to msg the options whose values differ between the lines of a and b (a's view; each pair once). */
+static void MPMCkptOptionDiffs(const char a[], const char b[], PetscBool a_is_ckpt, char msg[], size_t size, PetscInt *count)
+{
+  for (const char *l = a; *l;) {
+    const char *e = strchr(l, '\n'), *sp;
+    char        name[256], va[256], vb[256];
+    size_t      n;
+    if (!e) break;
+    sp = memchr(l, ' ', (size_t)(e - l));
+    n  = PetscMin((size_t)((sp ? sp : e) - l), sizeof(name) - 1);
+    memcpy(name, l, n);
+    name[n] = 0;
+    (void)MPMCkptOptionIn(a, name, va, sizeof(va));
+    if (!MPMCkptOptionIn(b, name, vb, sizeof(vb)) || (a_is_ckpt && strcmp(va, vb))) {
+      const PetscBool inb = (PetscBool)(MPMCkptOptionIn(b, name, vb, sizeof(vb)) != NULL);
+      if (*count < 6) {
+        size_t m = strlen(msg);
+        if (a_is_ckpt)
+          snprintf(msg + m, size - m, "%s-%s: %s in the checkpoint's run, %s now", *count ? "; " : "", name, va[0] ? va : "(set)", inb ? (vb[0] ? vb : "(set)") : "not given");
+        else
+          snprintf(msg + m, size - m, "%s-%s: not given in the checkpoint's run, %s now", *count ? "; " : "", name, va[0] ? va : "(set)");
+      }
+      (*count)++;
+    }
+    l = e + 1;
+  }
 }
 
 /* A checkpoint being written or read: values are stored by name, a row per rank, under the current group. */
@@ -173,9 +290,10 @@ static PetscErrorCode MPMCkptNamedState(MPM mpm, MPMCheckpoint ck)
 PetscErrorCode MPMCheckpointWrite(MPM mpm)
 {
   const PetscInt d = mpm->grid.dim;
-  char           file[PETSC_MAX_PATH_LEN + 64];
+  char           file[PETSC_MAX_PATH_LEN + 64], tmp[PETSC_MAX_PATH_LEN + 80];
   PetscMPIInt    rank, size;
   PetscInt       n, offset = 0, N;
+  int            err = 0;
   hid_t          f;
   MPMPoints      pts;
   PetscReal      t0 = MPI_Wtime();
@@ -184,8 +302,9 @@ PetscErrorCode MPMCheckpointWrite(MPM mpm)
   PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
   PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
   PetscCall(PetscSNPrintf(file, sizeof(file), "%s/checkpoint-%" PetscInt_FMT ".h5", mpm->outdir, mpm->steps));
-  f = MPMCkptOpen(mpm->comm, file, PETSC_TRUE);
-  PetscCheck(f >= 0, mpm->comm, PETSC_ERR_FILE_OPEN, "Cannot write the checkpoint %s", file);
+  PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s/.checkpoint-%" PetscInt_FMT ".h5.tmp", mpm->outdir, mpm->steps)); /* renamed when complete */
+  f = MPMCkptOpen(mpm->comm, tmp, PETSC_TRUE);
+  PetscCheck(f >= 0, mpm->comm, PETSC_ERR_FILE_OPEN, "Cannot write the checkpoint %s", tmp);
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   n = pts.n;
   PetscCallMPI(MPI_Exscan(&n, &offset, 1, MPIU_INT, MPI_SUM, mpm->comm));
@@ -258,6 +377,18 @@ PetscErrorCode MPMCheckpointWrite(MPM mpm)
     }
     PetscCall(PetscFree2(out, chk));
   }
+  { /* the scene's options, as characters in doubles (one dataset type for all) */
+    char      *text;
+    PetscReal *c;
+    size_t     len;
+    PetscCall(MPMCkptSceneOptions(&text));
+    len = strlen(text);
+    PetscCall(PetscMalloc1(len + 1, &c));
+    for (size_t i = 0; i < len; i++) c[i] = (PetscReal)(unsigned char)text[i];
+    PetscCall(MPMCkptWrite(f, "scene_options", (hsize_t)len, 0, rank ? 0 : (hsize_t)len, c));
+    PetscCall(PetscFree(c));
+    PetscCall(PetscFree(text));
+  }
   { /* the grid's ownership ranges (nodes per rank column along each direction), which a restart on this rank count rebuilds */
     const MPMGrid *g = &mpm->grid;
     PetscReal     *own;
@@ -268,7 +399,10 @@ PetscErrorCode MPMCheckpointWrite(MPM mpm)
     PetscCall(MPMCkptWrite(f, "ownership", (hsize_t)nown, 0, rank ? 0 : (hsize_t)nown, own));
     PetscCall(PetscFree(own));
   }
-  PetscCheck(H5Fclose(f) >= 0, mpm->comm, PETSC_ERR_FILE_WRITE, "Cannot close the checkpoint %s", file);
+  PetscCheck(H5Fclose(f) >= 0, mpm->comm, PETSC_ERR_FILE_WRITE, "Cannot close the checkpoint %s", tmp);
+  if (!rank && rename(tmp, file)) err = errno; /* complete under its final name, or absent */
+  PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, mpm->comm));
+  PetscCheck(!err, mpm->comm, PETSC_ERR_FILE_WRITE, "Cannot rename the checkpoint %s to %s: %s", tmp, file, strerror(err));
   if (!rank) { /* keep the last two */
     if (mpm->ckpt_file[0][0]) (void)unlink(mpm->ckpt_file[0]);
     PetscCall(PetscStrncpy(mpm->ckpt_file[0], mpm->ckpt_file[1], sizeof(mpm->ckpt_file[0])));
@@ -303,6 +437,40 @@ PetscErrorCode MPMRestartCheck(MPM mpm)
   f = MPMCkptOpen(mpm->comm, mpm->restart, PETSC_FALSE);
   PetscCheck(f >= 0, mpm->comm, PETSC_ERR_FILE_OPEN, "-mpm_restart %s: cannot open the checkpoint", mpm->restart);
   PetscCall(MPMCkptReadState(mpm, f, st));
+  { /* the same scene and method: its options as the checkpoint's run had them */
+    char      *now, *then, msg[2048] = "";
+    PetscReal *c;
+    hsize_t    len   = 0;
+    PetscInt   count = 0;
+    hid_t      dset  = H5Dopen2(f, "scene_options", H5P_DEFAULT);
+    PetscCheck(dset >= 0, mpm->comm, PETSC_ERR_FILE_READ, "-mpm_restart %s: the checkpoint does not record its scene's options (written by an earlier petmpm): it cannot be checked against this scene", mpm->restart);
+    {
+      hid_t space = H5Dget_space(dset);
+      H5Sget_simple_extent_dims(space, &len, NULL);
+      H5Sclose(space);
+      H5Dclose(dset);
+    }
+    PetscCall(PetscMalloc1(len + 1, &c));
+    PetscCall(PetscMalloc1(len + 1, &then));
+    PetscCall(MPMCkptRead(f, "scene_options", 0, len, c, NULL));
+    for (hsize_t i = 0; i < len; i++) then[i] = (char)(unsigned char)c[i];
+    then[len] = 0;
+    PetscCall(MPMCkptSceneOptions(&now));
+    MPMCkptOptionDiffs(then, now, PETSC_TRUE, msg, sizeof(msg), &count);
+    MPMCkptOptionDiffs(now, then, PETSC_FALSE, msg, sizeof(msg), &count);
+    PetscCall(PetscFree(c));
+    PetscCall(PetscFree(then));
+    PetscCall(PetscFree(now));
+    if (count && mpm->restart_force) PetscCall(PetscPrintf(mpm->comm, "petmpm: -mpm_restart_force: continuing %s with %" PetscInt_FMT " option(s) changed: %s%s\n", mpm->restart, count, msg, count > 6 ? "; ..." : ""));
+    PetscCheck(!count || mpm->restart_force, mpm->comm, PETSC_ERR_USER_INPUT,
+               "-mpm_restart %s: the checkpoint is of another scene or method, %" PetscInt_FMT " option(s) differ: %s%s. Restart with the options of the run that wrote it, or add -mpm_restart_force to continue with these", mpm->restart, count, msg,
+               count > 6 ? "; ..." : "");
+  }
+  {
+    PetscReal tmax;
+    PetscCall(TSGetMaxTime(mpm->ts, &tmax));
+    PetscCheck(tmax > st[0], mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_restart %s: the checkpoint is at t = %g s, not before the end of the run, -ts_max_time %g s: nothing to do; give a later -ts_max_time", mpm->restart, (double)st[0], (double)tmax);
+  }
   H5Fclose(f);
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -13,10 +13,17 @@
    and a row holds the points of its output followed by zeros. Rank r writes its points at the offset of ranks < r.
    DIR/petmpm.xmf (XDMF 2) describes the points and the grid fields over time (two temporal collections, "points" and
    "grid"), so ParaView and VisIt open them; it is rewritten
-   through a temporary file after each output so that it is never left half-written. */
+   through a temporary file after each output so that it is never left half-written.
+   A new run writes DIR/.petmpm-new.h5 until its first output is complete, then renames it DIR/petmpm.h5 and removes
+   the earlier run's report (DIR/report.json and the -mpm_report file): until then the folder holds the earlier result
+   as it was. One run at a
+   time per folder: rank 0 holds a lock on DIR/.petmpm.lock (MPMOutputLock). */
 #include "io/h5impl.h"
 #include <errno.h>
+#include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 /* mkdir -p on rank 0, then a probe file: an unwritable directory is an error that names it. */
@@ -54,12 +61,55 @@ static PetscErrorCode MPMEnsureWritableDir(MPI_Comm comm, const char dir[], cons
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* One run per output folder: rank 0 takes an exclusive flock on DIR/.petmpm.lock for the whole run and writes its
+   process id, host and start time there. The kernel drops the lock when the process ends, however it ends, so a
+   dead run's lock file is stale by construction and the next run takes it; a run that finds it held is refused,
+   quoting the holder. */
+static PetscErrorCode MPMOutputLock(MPM mpm)
+{
+  PetscMPIInt rank;
+  char        holder[256] = "", file[PETSC_MAX_PATH_LEN + 16];
+  int         err         = 0;
+
+  PetscFunctionBegin;
+  PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
+  PetscCall(PetscSNPrintf(file, sizeof(file), "%s/.petmpm.lock", mpm->outdir));
+  if (!rank && mpm->lockfd < 0) {
+    int fd = open(file, O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd < 0)
+      err = errno;
+    else if (flock(fd, LOCK_EX | LOCK_NB)) {
+      ssize_t n;
+      err                   = errno == EWOULDBLOCK ? -1 : errno;
+      n                     = read(fd, holder, sizeof(holder) - 1);
+      holder[n > 0 ? n : 0] = 0;
+      if (n > 0 && holder[n - 1] == '\n') holder[n - 1] = 0;
+      close(fd);
+    } else {
+      char      host[128] = "?", line[256];
+      time_t    now       = time(NULL);
+      struct tm tmv;
+      gethostname(host, sizeof(host) - 1);
+      localtime_r(&now, &tmv);
+      snprintf(line, sizeof(line), "process %d on %s, started %04d-%02d-%02d %02d:%02d:%02d\n", (int)getpid(), host, tmv.tm_year + 1900, tmv.tm_mon + 1, tmv.tm_mday, tmv.tm_hour, tmv.tm_min, tmv.tm_sec);
+      if (ftruncate(fd, 0) || write(fd, line, strlen(line)) < 0) err = errno;
+      mpm->lockfd = fd;
+    }
+  }
+  PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, mpm->comm));
+  PetscCallMPI(MPI_Bcast(holder, sizeof(holder), MPI_CHAR, 0, mpm->comm));
+  PetscCheck(err != -1, mpm->comm, PETSC_ERR_USER_INPUT, "Output folder %s (-mpm_output) is in use by another petmpm run (%s); give this run another -mpm_output, or wait for that run to end", mpm->outdir, holder[0] ? holder : "holder unknown");
+  PetscCheck(!err, mpm->comm, PETSC_ERR_FILE_OPEN, "Cannot lock %s (-mpm_output): %s", file, strerror(err));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode MPMOutputOpen(MPM mpm)
 {
   char file[PETSC_MAX_PATH_LEN + 16];
 
   PetscFunctionBegin;
   PetscCall(MPMEnsureWritableDir(mpm->comm, mpm->outdir, "-mpm_output"));
+  PetscCall(MPMOutputLock(mpm));
   if (mpm->report[0]) {
     char dir[PETSC_MAX_PATH_LEN], *slash;
     PetscCall(PetscStrncpy(dir, mpm->report, sizeof(dir)));
@@ -74,6 +124,8 @@ PetscErrorCode MPMOutputOpen(MPM mpm)
   {
     PetscBool append = PETSC_FALSE; /* a restart continues the run's file */
     if (mpm->restart[0]) PetscCall(PetscTestFile(file, 'r', &append));
+    if (!append) PetscCall(PetscSNPrintf(file, sizeof(file), "%s/.petmpm-new.h5", mpm->outdir)); /* renamed petmpm.h5 by the first output */
+    mpm->h5new = (PetscBool)!append;
     PetscCall(PetscViewerHDF5Open(mpm->comm, file, append ? FILE_MODE_APPEND : FILE_MODE_WRITE, &mpm->h5));
   }
   PetscCall(PetscViewerHDF5PushTimestepping(mpm->h5));
@@ -406,6 +458,32 @@ static PetscErrorCode MPMWriteGrid(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The new file's first output is complete: it replaces the earlier result (rank 0, atomic rename), whose report
+   goes with it. */
+static PetscErrorCode MPMOutputReplace(MPM mpm)
+{
+  char        tmp[PETSC_MAX_PATH_LEN + 16], file[PETSC_MAX_PATH_LEN + 16];
+  PetscMPIInt rank;
+  int         err = 0;
+
+  PetscFunctionBegin;
+  PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
+  PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s/.petmpm-new.h5", mpm->outdir));
+  PetscCall(PetscSNPrintf(file, sizeof(file), "%s/petmpm.h5", mpm->outdir));
+  if (!rank) {
+    char rep[PETSC_MAX_PATH_LEN + 16];
+    PetscCall(PetscSNPrintf(rep, sizeof(rep), "%s/report.json", mpm->outdir));
+    if (rename(tmp, file))
+      err = errno;
+    else if ((mpm->report[0] && unlink(mpm->report) && errno != ENOENT) || (unlink(rep) && errno != ENOENT))
+      err = errno;
+  }
+  PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, mpm->comm));
+  PetscCheck(!err, mpm->comm, PETSC_ERR_FILE_WRITE, "Cannot rename %s to %s, or remove the earlier run's report (DIR/report.json, -mpm_report): %s", tmp, file, strerror(err));
+  mpm->h5new = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode MPMOutputWrite(MPM mpm, PetscInt step, PetscReal t)
 {
   const PetscInt k  = mpm->noutputs;
@@ -436,6 +514,7 @@ PetscErrorCode MPMOutputWrite(MPM mpm, PetscInt step, PetscReal t)
   mpm->output_times[mpm->noutputs++] = t;
   mpm->last_output_step              = step;
   PetscCall(PetscViewerFlush(mpm->h5));
+  if (mpm->h5new) PetscCall(MPMOutputReplace(mpm));
   PetscCall(MPMWriteXDMF(mpm));
   PetscCall(PetscLogEventEnd(mpm->log.output, 0, 0, 0, 0));
   mpm->wall_output += MPI_Wtime() - t0;
@@ -493,5 +572,17 @@ PetscErrorCode MPMOutputClose(MPM mpm)
 {
   PetscFunctionBegin;
   PetscCall(PetscViewerDestroy(&mpm->h5));
+  if (mpm->h5new) { /* no output completed: the new file goes, the earlier result stays */
+    char        tmp[PETSC_MAX_PATH_LEN + 16];
+    PetscMPIInt rank;
+    PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
+    PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s/.petmpm-new.h5", mpm->outdir));
+    if (!rank) (void)unlink(tmp);
+    mpm->h5new = PETSC_FALSE;
+  }
+  if (mpm->lockfd >= 0) { /* the folder is free for the next run */
+    close(mpm->lockfd);
+    mpm->lockfd = -1;
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

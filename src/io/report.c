@@ -609,7 +609,9 @@ static PetscErrorCode MPMWriteReportWith(MPM mpm, MPMReport rep)
   if (mpm->exact) {
     for (PetscInt q = 0; q < MPMNumErrors(mpm); q++) PetscCall(PetscPrintf(mpm->comm, "  %-12s error: L1 %.4e  L2 %.4e  Linf %.4e\n", MPMErrorNames[q], (double)err[q][0], (double)err[q][1], (double)err[q][2]));
     for (PetscInt c = 0; c < mpm->nchecks; c++)
-      PetscCall(PetscPrintf(mpm->comm, "  check %-17s %.6g (exact %.6g, rel. error %.3e)\n", mpm->checks[c].name, (double)mpm->checks[c].value, (double)mpm->checks[c].reference, (double)MPMRelErr(mpm->checks[c].value, mpm->checks[c].reference)));
+      PetscCall(PetscPrintf(mpm->comm, "  check %-17s %.6g (exact %.6g, %s error %.3e)\n", mpm->checks[c].name, (double)mpm->checks[c].value, (double)mpm->checks[c].reference,
+                            mpm->checks[c].reference != 0.0 ? "rel." : "abs.", /* an exact 0 has no relative error */
+                            (double)MPMRelErr(mpm->checks[c].value, mpm->checks[c].reference)));
   }
   if (!mpm->report[0]) PetscFunctionReturn(PETSC_SUCCESS);
   { /* the points on each rank, for the report's balance */

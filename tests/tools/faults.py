@@ -1,0 +1,150 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-2-Clause
+"""ctest scene_faults: no signal, kill or second run loses a result; a restart cannot be silently wrong.
+
+usage: faults.py BUILD_DIR SOURCE_DIR
+"""
+import os
+import re
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tests/common.py
+from common import SRC, EXE, ENV, SCENE, SCENE_CTH, check, run, sod, xdmf_times, main  # noqa: E402
+
+TAYLOR3D = ["-options_file", os.path.join(SRC, "inputs", "taylor_anvil_3d.opts"), "-mpm_cells", "64,64,168", "-ts_max_steps", "40"]
+DAM = ["-options_file", os.path.join(SRC, "inputs", "dam_break_2d.opts"), "-mpm_cells", "240,100", "-mpm_progress", "0.2"]
+
+
+def h5_state(d):
+    """(complete, times) of d/petmpm.h5: every output dataset as long as /time and the XDMF naming those times;
+    (False, None) where the file does not open."""
+    import h5py
+    try:
+        with h5py.File(os.path.join(d, "petmpm.h5"), "r") as f:
+            t = [float(x) for x in f["time"][:]]
+            lens = {f["particle_fields/" + k].shape[0] for k in f["particle_fields"]}
+            counts = f["particle_count"].shape[0]
+    except (OSError, KeyError):
+        return False, None
+    return len(t) >= 1 and lens == {len(t)} and counts == len(t) and xdmf_times(d) == t, t
+
+
+def test_faults():
+    import h5py
+    with tempfile.TemporaryDirectory() as top:
+        # 1. One run per folder: a second run is refused naming the holder; a killed run's lock is stale.
+        d = os.path.join(top, "lock")
+        p = subprocess.Popen([EXE, *DAM, "-mpm_output", d], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=ENV)
+        for line in p.stdout:
+            if "to go" in line:
+                break
+        q = run([*SCENE_CTH, "-mpm_output", d], expect_ok=False)
+        text = q.stdout + q.stderr
+        check(q.returncode != 0 and f"Output folder {d} (-mpm_output) is in use by another petmpm run (process {p.pid} on" in text,
+              f"a second run into a folder in use: exit {q.returncode}, names the folder and the process {p.pid}: {text.strip()[:160]}")
+        p.send_signal(signal.SIGKILL)
+        p.wait()
+        q = run([*SCENE_CTH, "-mpm_output", d], expect_ok=False)
+        ok, t = h5_state(d)
+        check(q.returncode == 0 and ok, f"after the holder's SIGKILL its lock is stale: the next run goes on (exit {q.returncode}) and leaves a complete file ({t})")
+
+        # 2. SIGTERM at moments across set-up, the first output, the loop and the end: the folder holds the earlier
+        #    result as it was, or this run's complete outputs; never an unreadable file.
+        d = os.path.join(top, "sig")
+        sod(d, ["-mpm_cells", "64"])
+        before = open(os.path.join(d, "petmpm.h5"), "rb").read()
+        phases = set()
+        for delay, ranks in ((0.1, 1), (0.3, 1), (0.5, 1), (0.8, 1), (1.2, 1), (2.0, 1), (4.0, 1), (0.3, 2), (1.0, 2)):
+            if os.path.exists(os.path.join(d, "report.json")):
+                os.remove(os.path.join(d, "report.json"))
+            sod(d, ["-mpm_cells", "64"])
+            before = open(os.path.join(d, "petmpm.h5"), "rb").read()
+            launcher = [] if ranks == 1 else ["mpiexec", "-n", "2"]
+            p = subprocess.Popen([*launcher, EXE, *TAYLOR3D, "-mpm_output", d, "-mpm_report", os.path.join(d, "report.json")], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=ENV)
+            time.sleep(delay)
+            p.send_signal(signal.SIGTERM)
+            out, _ = p.communicate(timeout=300)
+            m = re.search(r"Interrupted by SIGTERM (during the set-up|after step|during the final output)", out)
+            phase = m.group(1) if m else ("finished" if p.returncode == 0 else "killed")
+            phases.add(phase)
+            same = open(os.path.join(d, "petmpm.h5"), "rb").read() == before
+            ok, t = h5_state(d)
+            left = os.path.exists(os.path.join(d, ".petmpm-new.h5"))
+            if phase == "during the set-up":
+                good = p.returncode != 0 and same and os.path.exists(os.path.join(d, "report.json")) and not left
+                what = "the earlier result and its report as they were, no temporary file"
+            elif phase in ("after step", "during the final output", "finished"):
+                good = ok and not same and len(t) >= 1 and (phase != "after step" or any(f.startswith("checkpoint-") for f in os.listdir(d)))
+                good = good and (phase == "after step" or os.path.exists(os.path.join(d, "report.json")))
+                what = "this run's complete outputs (and a checkpoint / its report)"
+            else:
+                good = False
+                what = "a message naming the signal"
+            check(good, f"SIGTERM at {delay} s on {ranks} rank(s) ({phase}, exit {p.returncode}): {what}; file complete {ok}, times {t}")
+        check("during the set-up" in phases and len(phases) >= 2, f"the signals landed in {len(phases)} phases: {sorted(phases)}")
+        for delay in (0.3, 0.8):  # SIGKILL: no chance to react; still the earlier result or complete outputs
+            sod(d, ["-mpm_cells", "64"])
+            before = open(os.path.join(d, "petmpm.h5"), "rb").read()
+            p = subprocess.Popen([EXE, *TAYLOR3D, "-mpm_output", d], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=ENV)
+            time.sleep(delay)
+            p.send_signal(signal.SIGKILL)
+            p.wait()
+            same = open(os.path.join(d, "petmpm.h5"), "rb").read() == before
+            ok, t = h5_state(d)
+            check(same or ok, f"SIGKILL at {delay} s: the earlier result intact ({same}) or this run's outputs complete and readable ({ok}, {t})")
+
+        # 3. Restarts that cannot be silently wrong.
+        d = os.path.join(top, "ck")
+        sod(d, ["-mpm_checkpoint_interval", "200"])
+        ck = sorted((f for f in os.listdir(d) if f.startswith("checkpoint-")), key=lambda f: int(f[11:-3]))[0]
+        ck = os.path.join(d, ck)
+        with h5py.File(ck, "r") as f:
+            tck, cells = float(f["state"][0]), int(f["state"][21])
+        strong = ["-options_file", os.path.join(SRC, "inputs", "sod_strong.opts"), "-options_file", os.path.join(SRC, "inputs", "methods", "cth.opts")]
+        q = run([*strong, "-mpm_cells", str(cells), "-mpm_output", os.path.join(top, "strong"), "-mpm_restart", ck], expect_ok=False)
+        text = q.stdout + q.stderr
+        check(q.returncode != 0 and "checkpoint is of another scene or method" in text and "-region_left_density" in text and not os.path.exists(os.path.join(top, "strong")),
+              f"strong Sod from a weak-Sod checkpoint: refused (exit {q.returncode}) naming the option that differs, nothing written: {text.strip()[:200]}")
+        q = run([*SCENE_CTH, "-mpm_cfl", "0.3", "-mpm_output", os.path.join(top, "force"), "-mpm_restart", ck, "-mpm_restart_force"], expect_ok=False)
+        check(q.returncode == 0 and "-mpm_restart_force: continuing" in q.stdout and "-mpm_cfl" in q.stdout, f"-mpm_restart_force continues with a method change and names it (exit {q.returncode})")
+        q = run([*SCENE_CTH, "-ts_max_time", str(tck / 2), "-mpm_output", os.path.join(top, "early"), "-mpm_restart", ck], expect_ok=False)
+        check(q.returncode != 0 and "-ts_max_time" in q.stdout + q.stderr and "nothing to do" in q.stdout + q.stderr, f"a restart whose -ts_max_time is before the checkpoint: refused (exit {q.returncode})")
+        new = os.path.join(top, "new")
+        run([*SCENE_CTH, "-mpm_output", new, "-mpm_restart", ck])
+        ok, t = h5_state(new)
+        with h5py.File(os.path.join(new, "petmpm.h5"), "r") as f:
+            rho0 = f["particle_fields/density"][0][: int(f["particle_count"][0])]
+        check(ok and abs(t[0] - tck) <= 1e-12 * tck and rho0.min() > 0, f"a restart into a new folder: its first output is the checkpoint's state (t {t[0]:.6g} = {tck:.6g} s, min density {rho0.min():.4g} > 0)")
+        q = run([*SCENE_CTH, "-ts_init_time", "1e-6", "-mpm_output", os.path.join(top, "init")], expect_ok=False)
+        check(q.returncode != 0 and "-ts_init_time" in q.stdout + q.stderr and not os.path.exists(os.path.join(top, "init")), f"-ts_init_time 1e-6: refused (exit {q.returncode})")
+
+        # 4. Messages a user can act on.
+        selfref = os.path.join(top, "self.opts")
+        with open(selfref, "w") as f:
+            f.write("# a scene that includes itself\n-mpm_cells 10 -options_file " + selfref + "\n")
+        q = subprocess.run([EXE, "-options_file", selfref], capture_output=True, text=True, env=ENV, timeout=60)
+        check(q.returncode == 1 and f"-options_file {os.path.realpath(selfref)} includes itself" in q.stderr, f"an options file that includes itself: exit {q.returncode} (not a crash), named")
+        q = run([*SCENE_CTH, "\u2013mpm_cells", "50", "-mpm_output", os.path.join(top, "dash")], expect_ok=False)
+        check(q.returncode != 0 and "en dash" in q.stderr and "-mpm_cells" in q.stderr, f"an en dash before an option: refused (exit {q.returncode}): {q.stderr.strip()[:120]}")
+        q = run(["-options_file", SCENE, "-mpm_cells", "2", "-mpm_output", os.path.join(top, "two")], expect_ok=False)
+        check(q.returncode != 0 and "-mpm_cells 2: too few cells" in q.stderr and "valid is >= 3" in q.stderr, f"-mpm_cells 2 in 1D: names the option and the minimum (exit {q.returncode})")
+        q = run([*SCENE_CTH, "-mpm_cells", "200000000", "-mpm_output", os.path.join(top, "huge")], expect_ok=False)
+        check(q.returncode != 0 and "-mpm_cells 200000000" in q.stderr and "index range" in q.stderr, f"-mpm_cells 200000000: names the index limit (exit {q.returncode})")
+        avail = 0.0
+        with open("/proc/meminfo") as f:
+            for line in f:
+                if line.startswith("MemAvailable:"):
+                    avail = float(line.split()[1]) * 1024
+        need = 3 * 570 ** 3 * 11 * 8  # the grid's three copies of 11 reals per node
+        if avail and need > avail:
+            q = run([*TAYLOR3D[:2], "-mpm_cells", "570,570,570", "-mpm_output", os.path.join(top, "mem")], expect_ok=False)
+            check(q.returncode != 0 and "GiB, more than the" in q.stderr and "-mpm_memory_check" in q.stderr and not os.path.exists(os.path.join(top, "mem")),
+                  f"a grid larger than the memory: refused before allocating, with the need, the memory and the override (exit {q.returncode})")
+
+
+if __name__ == "__main__":
+    main(test_faults)
