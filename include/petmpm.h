@@ -89,6 +89,7 @@ PETSC_EXTERN PetscErrorCode MPMSetFromOptions(MPM);
 PETSC_EXTERN PetscErrorCode MPMSetUp(MPM);
 PETSC_EXTERN PetscErrorCode MPMSolve(MPM);
 PETSC_EXTERN void           MPMSignalsInstall(void);
+PETSC_EXTERN void           MPMSetInputDir(const char[]);
 PETSC_EXTERN PetscErrorCode MPMSignalsCheck(MPM);
 PETSC_EXTERN PetscErrorCode MPMView(MPM, PetscViewer);
 PETSC_EXTERN PetscErrorCode MPMWriteReport(MPM);

@@ -3,7 +3,7 @@
 # Install the Debian 12 packages petmpm needs, only those that are missing (idempotent).
 set -euo pipefail
 pkgs=(petsc-dev libhdf5-openmpi-dev libopenmpi-dev openmpi-bin pkg-config cmake ninja-build
-      python3-h5py python3-numpy python3-matplotlib)
+      python3-h5py python3-numpy python3-matplotlib libassimp-dev)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")

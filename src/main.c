@@ -121,6 +121,7 @@ static int MPMOptionsFileCycle(const char *given, const char *chain[], int depth
       return 1;
     }
   if (depth >= 64 || !(fp = fopen(file, "r"))) return 0; /* PETSc reports a file it cannot read */
+  MPMSetInputDir(file);                                  /* where a scene's outline files are looked for (src/scene/outline.c) */
   chain[depth] = file;
   while (!bad && (c = fgetc(fp)) != EOF) {
     if (c == '#') {

@@ -346,6 +346,7 @@ PetscErrorCode MPMDestroy(MPM *mpm)
     PetscCall(MPMEOSDestroy(&m->mat[i].eos));
     PetscCall(MPMStrengthDestroy(&m->mat[i].strength));
   }
+  for (PetscInt r = 0; r < m->nreg; r++) PetscCall(MPMOutlineDestroy(&m->reg[r].outline));
   PetscCall(MPMShapeDestroy(&m->shape));
   PetscCall(MPMViscosityDestroy(&m->viscosity));
   PetscCall(MPMExactDestroy(&m->exact));

@@ -7,6 +7,8 @@
      -region_<r>_center, _rmin, _rmax  and a spherical shell (annulus in 2D) [cm] (default: everything)
      -region_<r>_axis x|y|z        the shell's distance leaves out this direction: a cylinder (tube) about the axis
                                    through the centre, its ends the box's faces (2D: a slab |x_k - c_k| <= rmax)
+     -region_<r>_polygon, _polygon_file, _surface   and inside a polygon (2D; r-z: a profile turned about the
+                                   axis) or a closed triangulated surface (3D) (src/scene/outline.c)
      -region_<r>_density           initial density [g/cm^3] (> 0)
      -region_<r>_temperature       initial temperature [eV] (>= 0)
      -region_<r>_velocity          initial velocity [cm/s]
@@ -68,6 +70,7 @@ static PetscErrorCode MPMRegionSetFromOptions(MPM mpm, MPMRegion *r)
   }
   PetscCall(PetscOptionsReal("-rmin", "Inner radius of the region's shell [cm], >= 0", "", r->rmin, &r->rmin, NULL));
   PetscCall(PetscOptionsReal("-rmax", "Outer radius of the region's shell [cm], > rmin", "", r->rmax, &r->rmax, NULL));
+  PetscCall(MPMOutlineSetFromOptions(PetscOptionsObject, mpm, prefix, r->lo, r->hi, &r->outline));
   PetscCall(PetscOptionsReal("-density", "Initial density rho [g/cm^3], > 0", "", r->rho, &r->rho, NULL));
   PetscCall(PetscOptionsReal("-temperature", "Initial temperature T [eV], >= 0", "", r->T, &r->T, NULL));
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-velocity", "Initial velocity v [cm/s]", d, r->v));
@@ -218,6 +221,11 @@ PetscErrorCode MPMSceneView(MPM mpm, PetscViewer viewer)
     const MPMRegion *r = &mpm->reg[i];
     PetscCall(
       PetscViewerASCIIPrintf(viewer, "Region %s: %s, body %s, x in [%g, %g], rho %g g/cm^3, T %g eV, v %g cm/s\n", r->name, mpm->mat[r->material].name, r->bodyname, (double)r->lo[0], (double)r->hi[0], (double)r->rho, (double)r->T, (double)r->v[0]));
+    if (r->outline) {
+      PetscCall(PetscViewerASCIIPushTab(viewer));
+      PetscCall(MPMOutlineView(r->outline, viewer));
+      PetscCall(PetscViewerASCIIPopTab(viewer));
+    }
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

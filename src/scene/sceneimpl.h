@@ -23,20 +23,23 @@ typedef struct {
   MPMStrength strength; /* stress besides the pressure; NULL for a fluid   */
 } MPMMaterial;
 
+typedef struct _n_MPMOutline *MPMOutline; /* a region's polygon or closed surface (src/scene/outline.c) */
+
 typedef struct {
-  char      name[MPM_MAX_NAME];              /* region name used in option prefixes -region_<name>_ */
-  PetscInt  material;                        /* index into MPM::mat                                 */
-  PetscReal lo[MPM_MAX_DIM];                 /* box lower corner [cm]                               */
-  PetscReal hi[MPM_MAX_DIM];                 /* box upper corner [cm]                               */
-  PetscReal center[MPM_MAX_DIM], rmin, rmax; /* and rmin <= |x - center| <= rmax [cm]      */
-  PetscInt  axis;                            /* |x - center| leaves out this direction (a cylinder about it), -1: none */
-  PetscReal rho;                             /* initial density [g/cm^3]                            */
-  PetscReal T;                               /* initial temperature [eV]                            */
-  PetscReal v[MPM_MAX_DIM];                  /* initial velocity [cm/s]                             */
-  char      bodyname[MPM_MAX_NAME];          /* -region_<name>_body: the body it belongs to ("" until set-up: the default rule) */
-  PetscInt  body;                            /* index of its body, each with its own velocity field (MPM::nbodies) */
-  PetscBool hydrostatic;                     /* -region_<name>_hydrostatic: rho is the density at the top; below it the
-                                                points start in hydrostatic equilibrium under -mpm_gravity */
+  char       name[MPM_MAX_NAME];              /* region name used in option prefixes -region_<name>_ */
+  PetscInt   material;                        /* index into MPM::mat                                 */
+  PetscReal  lo[MPM_MAX_DIM];                 /* box lower corner [cm]                               */
+  PetscReal  hi[MPM_MAX_DIM];                 /* box upper corner [cm]                               */
+  PetscReal  center[MPM_MAX_DIM], rmin, rmax; /* and rmin <= |x - center| <= rmax [cm]      */
+  PetscInt   axis;                            /* |x - center| leaves out this direction (a cylinder about it), -1: none */
+  MPMOutline outline;                         /* and inside this polygon or surface (NULL: none)    */
+  PetscReal  rho;                             /* initial density [g/cm^3]                            */
+  PetscReal  T;                               /* initial temperature [eV]                            */
+  PetscReal  v[MPM_MAX_DIM];                  /* initial velocity [cm/s]                             */
+  char       bodyname[MPM_MAX_NAME];          /* -region_<name>_body: the body it belongs to ("" until set-up: the default rule) */
+  PetscInt   body;                            /* index of its body, each with its own velocity field (MPM::nbodies) */
+  PetscBool  hydrostatic;                     /* -region_<name>_hydrostatic: rho is the density at the top; below it the
+                                                 points start in hydrostatic equilibrium under -mpm_gravity */
 } MPMRegion;
 
 typedef struct {
@@ -64,6 +67,12 @@ PETSC_INTERN PetscErrorCode MPMHydrostaticSetUp(const MPMScene *, PetscInt, MPMH
 PETSC_INTERN PetscErrorCode MPMHydrostaticAt(const MPMHydrostatic *, const PetscReal[], PetscReal *, PetscReal *);
 
 /* Region index of the first region holding x, or -1. */
+PETSC_INTERN PetscBool      MPMOutlineContains(const MPMOutline, const PetscReal[]);
+PETSC_INTERN PetscErrorCode MPMOutlineSetFromOptions(PetscOptionItems *, MPM, const char[], PetscReal[], PetscReal[], MPMOutline *);
+PETSC_INTERN PetscErrorCode MPMOutlineView(MPMOutline, PetscViewer);
+PETSC_INTERN PetscReal      MPMOutlineVolume(MPMOutline);
+PETSC_INTERN PetscErrorCode MPMOutlineDestroy(MPMOutline *);
+
 static inline PetscInt MPMSceneRegionAt(const MPMScene *sc, const PetscReal x[])
 {
   for (PetscInt r = 0; r < sc->nreg; r++) {
@@ -74,7 +83,7 @@ static inline PetscInt MPMSceneRegionAt(const MPMScene *sc, const PetscReal x[])
       in = (PetscBool)(in && x[k] >= reg->lo[k] && x[k] <= reg->hi[k]);
       if (k != reg->axis) r2 += PetscSqr(x[k] - reg->center[k]);
     }
-    if (in && r2 >= reg->rmin * reg->rmin && (reg->rmax >= PETSC_MAX_REAL || r2 <= reg->rmax * reg->rmax)) return r;
+    if (in && r2 >= reg->rmin * reg->rmin && (reg->rmax >= PETSC_MAX_REAL || r2 <= reg->rmax * reg->rmax) && (!reg->outline || MPMOutlineContains(reg->outline, x))) return r;
   }
   return -1;
 }
