@@ -8,6 +8,7 @@ static const char help[] = "petmpm: explicit Material Point Method for shocks an
 #include <ctype.h>
 #include <limits.h>
 #include <stdlib.h>
+#include <unistd.h>
 
 /* An error prints only itself: "petmpm: error: MESSAGE" once (by the first rank of a collective error's
    communicator, by every rank for a local one), with no traceback and no option table. A message of PETSc's
@@ -201,6 +202,12 @@ int main(int argc, char **argv)
   ierr = MPMCheckDashes(argc, argv);
   if (!ierr) ierr = MPMRun(&ec);
   if (ierr) {
+    if (ierr == PETSC_ERR_FILE_WRITE) { /* a failed write (a full disk): closing the file would write again, and MPI-IO
+                                           crashed doing so; the outputs flushed before it are complete (/time says which) */
+      fflush(stdout);
+      fflush(stderr);
+      _exit((int)ierr);
+    }
     PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
     if (ec.size < size) MPI_Abort(PETSC_COMM_WORLD, (int)ierr); /* a local error: the other ranks may be waiting in a collective call */
     PetscCall(PetscOptionsClear(NULL));                         /* no list of options left unused by the run that stopped */

@@ -34,11 +34,13 @@
 static PetscErrorCode MPMCkptWrite(hid_t file, const char name[], hsize_t N, hsize_t offset, hsize_t n, const PetscReal *a)
 {
   hid_t space = H5Screate_simple(1, &N, NULL), dset;
+  char  why[2 * PETSC_MAX_PATH_LEN];
 
   PetscFunctionBegin;
-  dset = H5Dcreate2(file, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  errno = 0;
+  dset  = H5Dcreate2(file, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   H5Sclose(space);
-  PetscCheck(dset >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot create %s in the checkpoint", name);
+  PetscCheck(dset >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create %s in the checkpoint%s", name, MPMH5Why(file, errno, why, sizeof(why)));
   if (N) PetscCall(MPMH5Block(dset, PETSC_TRUE, &offset, &n, (void *)a, name)); /* an empty dataset has no storage to write to */
   H5Dclose(dset);
   PetscFunctionReturn(PETSC_SUCCESS);

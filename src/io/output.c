@@ -23,6 +23,8 @@
 #include <fcntl.h>
 #include <sys/file.h>
 #include <sys/stat.h>
+#include <sys/resource.h>
+#include <sys/statvfs.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -108,6 +110,7 @@ PetscErrorCode MPMOutputOpen(MPM mpm)
   char file[PETSC_MAX_PATH_LEN + 16];
 
   PetscFunctionBegin;
+  H5Eset_auto2(H5E_DEFAULT, NULL, NULL); /* no HDF5 error stack on stderr: petmpm's message names the file and why */
   PetscCall(MPMEnsureWritableDir(mpm->comm, mpm->outdir, "-mpm_output"));
   PetscCall(MPMOutputLock(mpm));
   if (mpm->report[0]) {
@@ -271,12 +274,46 @@ static PetscErrorCode MPMWriteXDMF(MPM mpm)
 
 /* This rank's block of the dataset, moved collectively (every rank calls; a rank whose count holds no value selects
    none): start and count over the dataset's dimensions; write: from buf to the file, else from the file into buf. */
+/* Why an HDF5 call on the object obj failed, for its message: the file, and that the device is full (ENOSPC, or
+   under 16 MB left), that the file has reached the process's size limit (EFBIG, or its size at RLIMIT_FSIZE: ulimit
+   -f), or errno's text; err is errno just after the call (HDF5 and MPI-IO may have changed it since, hence the
+   checks of the device and the limit). HDF5's own words ("cannot resize pressure") named neither. */
+const char *MPMH5Why(hid_t obj, int err, char why[], size_t size)
+{
+  char           file[PETSC_MAX_PATH_LEN + 16] = "", dir[PETSC_MAX_PATH_LEN], *slash;
+  struct statvfs fs;
+  struct stat    st;
+  struct rlimit  rl;
+  double         avail = -1.0;
+  PetscBool      big   = (PetscBool)(err == EFBIG);
+
+  if (H5Fget_name(obj, file, PETSC_MAX_PATH_LEN) < 0) snprintf(file, sizeof(file), "(the file)");
+  snprintf(dir, sizeof(dir), "%.*s", (int)sizeof(dir) - 1, file);
+  slash = strrchr(dir, '/');
+  if (slash)
+    *slash = 0;
+  else
+    snprintf(dir, sizeof(dir), ".");
+  if (strstr(file, "/.petmpm-new.h5") && access(file, F_OK)) snprintf(file, sizeof(file), "%s/petmpm.h5", dir); /* renamed since it was opened */
+  if (!statvfs(dir, &fs)) avail = (double)fs.f_bavail * (double)fs.f_frsize;
+  if (!big && !stat(file, &st) && !getrlimit(RLIMIT_FSIZE, &rl) && rl.rlim_cur != RLIM_INFINITY) big = (PetscBool)((double)st.st_size + 1048576.0 >= (double)rl.rlim_cur);
+  if (big)
+    snprintf(why, size, " in %s: the file has reached this process's file size limit (ulimit -f)", file);
+  else if (err == ENOSPC || (avail >= 0.0 && avail < 16.0 * 1048576.0))
+    snprintf(why, size, " in %s: no space left on the device (%.3g MB free)", file, avail / 1048576.0);
+  else
+    snprintf(why, size, " in %s%s%s", file, err ? ": " : "", err ? strerror(err) : "");
+  return why;
+}
+
 PetscErrorCode MPMH5Block(hid_t dset, PetscBool write, const hsize_t start[], const hsize_t count[], void *buf, const char what[])
 {
   hid_t   fspace = H5Dget_space(dset), mspace, dxpl = H5Pcreate(H5P_DATASET_XFER);
   int     rank = H5Sget_simple_extent_ndims(fspace);
   hsize_t n    = 1;
   herr_t  err;
+  int     eno;
+  char    why[2 * PETSC_MAX_PATH_LEN];
 
   PetscFunctionBegin;
   for (int k = 0; k < rank; k++) n *= count[k];
@@ -288,11 +325,13 @@ PetscErrorCode MPMH5Block(hid_t dset, PetscBool write, const hsize_t start[], co
     H5Sselect_none(mspace);
   }
   H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE);
-  err = write ? H5Dwrite(dset, H5T_NATIVE_DOUBLE, mspace, fspace, dxpl, buf) : H5Dread(dset, H5T_NATIVE_DOUBLE, mspace, fspace, dxpl, buf);
+  errno = 0;
+  err   = write ? H5Dwrite(dset, H5T_NATIVE_DOUBLE, mspace, fspace, dxpl, buf) : H5Dread(dset, H5T_NATIVE_DOUBLE, mspace, fspace, dxpl, buf);
+  eno   = errno;
   H5Pclose(dxpl);
   H5Sclose(mspace);
   H5Sclose(fspace);
-  PetscCheck(err >= 0, PETSC_COMM_SELF, write ? PETSC_ERR_FILE_WRITE : PETSC_ERR_FILE_READ, "HDF5: cannot %s %s", write ? "write" : "read", what);
+  PetscCheck(err >= 0, PETSC_COMM_SELF, write ? PETSC_ERR_FILE_WRITE : PETSC_ERR_FILE_READ, "HDF5: cannot %s %s%s", write ? "write" : "read", what, MPMH5Why(dset, eno, why, sizeof(why)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -301,25 +340,29 @@ PetscErrorCode MPMH5Block(hid_t dset, PetscBool write, const hsize_t start[], co
    points than an earlier one ends in zeros). */
 PetscErrorCode MPMH5Extendable(hid_t loc, const char name[], int rank, hsize_t dims[], const hsize_t maxdims[], const hsize_t chunk[], hid_t ftype, PetscBool longer, hid_t *dset)
 {
+  char why[2 * PETSC_MAX_PATH_LEN];
+
   PetscFunctionBegin;
   if (H5Lexists(loc, name, H5P_DEFAULT) > 0) {
     hid_t   fspace;
     hsize_t cur[5];
     *dset  = H5Dopen2(loc, name, H5P_DEFAULT);
     fspace = *dset >= 0 ? H5Dget_space(*dset) : -1;
-    PetscCheck(fspace >= 0 && H5Sget_simple_extent_dims(fspace, cur, NULL) == rank, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot open %s", name);
+    PetscCheck(fspace >= 0 && H5Sget_simple_extent_dims(fspace, cur, NULL) == rank, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot open %s%s", name, MPMH5Why(loc, errno, why, sizeof(why)));
     H5Sclose(fspace);
     if (longer) dims[1] = PetscMax(dims[1], cur[1]);
-    PetscCheck(H5Dset_extent(*dset, dims) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot resize %s", name);
+    errno = 0;
+    PetscCheck(H5Dset_extent(*dset, dims) >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot resize %s%s", name, MPMH5Why(loc, errno, why, sizeof(why)));
   } else {
     const double zero = 0.0;
     hid_t        dcpl = H5Pcreate(H5P_DATASET_CREATE), fspace;
     PetscCheck(H5Pset_chunk(dcpl, rank, chunk) >= 0 && H5Pset_fill_value(dcpl, H5T_NATIVE_DOUBLE, &zero) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: dataset properties of %s", name);
     fspace = H5Screate_simple(rank, dims, maxdims);
+    errno  = 0;
     *dset  = H5Dcreate2(loc, name, ftype, fspace, H5P_DEFAULT, dcpl, H5P_DEFAULT);
     H5Sclose(fspace);
     H5Pclose(dcpl);
-    PetscCheck(*dset >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot create %s", name);
+    PetscCheck(*dset >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create %s%s", name, MPMH5Why(loc, errno, why, sizeof(why)));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -13,7 +13,7 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tests/common.py
-from common import SRC, EXE, ENV, SCENE, SCENE_CTH, check, run, sod, xdmf_times, main  # noqa: E402
+from common import BUILD, SRC, EXE, ENV, SCENE, SCENE_CTH, check, run, sod, xdmf_times, main  # noqa: E402
 
 TAYLOR3D = ["-options_file", os.path.join(SRC, "inputs", "taylor_anvil_3d.opts"), "-mpm_cells", "64,64,168", "-ts_max_steps", "40"]
 DAM = ["-options_file", os.path.join(SRC, "inputs", "dam_break_2d.opts"), "-mpm_cells", "240,100", "-mpm_progress", "0.2"]
@@ -97,6 +97,41 @@ def test_faults():
             ok, t = h5_state(d)
             check(same or ok, f"SIGKILL at {delay} s: the earlier result intact ({same}) or this run's outputs complete and readable ({ok}, {t})")
 
+        # 2b. kill -9 of mpiexec: the ranks stop (the one whose launcher is gone at its next step, the other in MPI);
+        #     the folder holds complete outputs.
+        d = os.path.join(top, "launcher")
+        p = subprocess.Popen(["mpiexec", "-n", "2", EXE, *DAM, "-mpm_output", d], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=ENV, start_new_session=True)
+        for line in p.stdout:
+            if "to go" in line:
+                break
+        p.send_signal(signal.SIGKILL)
+        p.wait()
+        t0 = time.time()
+        while time.time() - t0 < 20 and subprocess.run(["pgrep", "-f", f"petmpm.*{d}"], capture_output=True).returncode == 0:
+            time.sleep(0.05)
+        gone = time.time() - t0
+        ok, t = h5_state(d)
+        check(gone < 20 and ok, f"kill -9 of mpiexec: the ranks stopped within {gone:.2f} s; the file opens with {len(t or [])} complete outputs")
+
+        # 2c. A file that cannot grow (the file size limit; a full disk takes the same path): the message names the
+        #     file and why; the earlier result stays when the first output cannot be written, the outputs before the
+        #     failure stay readable when a later one cannot.
+        import resource
+
+        def limited():
+            signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+            resource.setrlimit(resource.RLIMIT_FSIZE, (8_000_000, 8_000_000))
+        d = os.path.join(top, "full")
+        sod(d, ["-mpm_cells", "64"])
+        before = open(os.path.join(d, "petmpm.h5"), "rb").read()
+        q = subprocess.run([EXE, *TAYLOR3D, "-mpm_output", d], capture_output=True, text=True, env=ENV, preexec_fn=limited, timeout=300)
+        check(q.returncode != 0 and f"in {d}/" in q.stderr and "file size limit" in q.stderr and open(os.path.join(d, "petmpm.h5"), "rb").read() == before,
+              f"a first output that cannot be written: exit {q.returncode}, the message names the file and the limit, the earlier result intact: {q.stderr.strip()[:160]}")
+        q = subprocess.run([EXE, "-options_file", SCENE, "-mpm_cells", "40000", "-ts_max_time", "1e-6", "-mpm_output_interval", "500", "-mpm_output", d], capture_output=True, text=True, env=ENV, preexec_fn=limited, timeout=300)
+        ok, t = h5_state(d)
+        check(q.returncode != 0 and f"{d}/petmpm.h5" in q.stderr and "file size limit" in q.stderr and t and len(t) >= 1 and open(os.path.join(d, "petmpm.h5"), "rb").read() != before,
+              f"a later output that cannot be written: exit {q.returncode}, named; the file opens with {len(t or [])} complete output(s) by /time: {q.stderr.strip()[:160]}")
+
         # 3. Restarts that cannot be silently wrong.
         d = os.path.join(top, "ck")
         sod(d, ["-mpm_checkpoint_interval", "200"])
@@ -121,6 +156,11 @@ def test_faults():
         check(ok and abs(t[0] - tck) <= 1e-12 * tck and rho0.min() > 0, f"a restart into a new folder: its first output is the checkpoint's state (t {t[0]:.6g} = {tck:.6g} s, min density {rho0.min():.4g} > 0)")
         q = run([*SCENE_CTH, "-ts_init_time", "1e-6", "-mpm_output", os.path.join(top, "init")], expect_ok=False)
         check(q.returncode != 0 and "-ts_init_time" in q.stdout + q.stderr and not os.path.exists(os.path.join(top, "init")), f"-ts_init_time 1e-6: refused (exit {q.returncode})")
+
+        # 3b. The soak test of scripts/soak.py, a small count (the script runs 40 by default).
+        import soak
+        n, lost, kept = soak.soak(3, seed=7, build=BUILD, log=lambda line: print("  " + line))
+        check(lost == 0, f"scripts/soak.py: {n} random kills, {lost} lost a result ({kept} left the earlier result)")
 
         # 4. Messages a user can act on.
         selfref = os.path.join(top, "self.opts")
