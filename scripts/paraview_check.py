@@ -116,7 +116,7 @@ def main():
 def draw(reader, t, h5, count, png, field, check):
     """Renders the points at time t coloured by `field` into png and checks the picture (see the usage). Returns 0
     (the checks report through check)."""
-    from paraview.simple import ColorBy, CreateView, ExtractBlock, Render, ResetCamera, SaveScreenshot, Show
+    from paraview.simple import ColorBy, CreateView, ExtractBlock, GetColorTransferFunction, GetScalarBar, Render, ResetCamera, SaveScreenshot, Show
     import matplotlib.image as mpimg
     view = CreateView("RenderView")
     view.ViewSize = [800, 500]
@@ -137,16 +137,41 @@ def draw(reader, t, h5, count, png, field, check):
     shown.PointSize = 3
     ColorBy(shown, ("POINTS", field))
     shown.RescaleTransferFunctionToDataRange(True, False)
+    shown.SetScalarBarVisibility(view, True)  # the colour bar: which colour is which value
+    bar = GetScalarBar(GetColorTransferFunction(field), view)
+    bar.Title = field
+    bar.ComponentTitle = ""
+    bar.TitleColor = bar.LabelColor = [0.0, 0.0, 0.0]
+    bar.WindowLocation = "Any Location"
+    bar.Position = [0.84, 0.1]
+    bar.ScalarBarLength = 0.8
+    xyz = np.asarray(h5["particle_fields"]["xyz"][-1])[:count]
+    solid = float(np.ptp(xyz[:, 2])) > 0.0
+    if solid:  # a 3D body: shaded spheres seen from above a corner, not a flat cloud along an axis
+        shown.RenderPointsAsSpheres = 1
+        shown.PointSize = 4
+        view.CameraPosition = [1.0, -1.6, 1.2]
+        view.CameraFocalPoint = [0.0, 0.0, 0.0]
+        view.CameraViewUp = [0.0, 0.0, 1.0]
     ResetCamera(view)
     Render(view)
     SaveScreenshot(png, view, ImageResolution=[800, 500])
     img = mpimg.imread(png)[:, :, :3]
+    barcol = img[:, int(0.84 * img.shape[1]) + 2: int(0.84 * img.shape[1]) + 14]  # the bar's strip
+    barcolours = len({tuple(c) for c in np.round(barcol.reshape(-1, 3) * 31).astype(int)})
+    img[:, int(0.82 * img.shape[1]):] = 1.0  # the points alone, without the bar and its labels
     data = np.any(np.abs(img - 1.0) > 0.02, axis=2)  # pixels that are not the white background
     colours = len({tuple(c) for c in np.round(img[data] * 31).astype(int)})
     vals = np.asarray(h5["particle_fields"][field][-1]).reshape(-1)[:count]
     varies = float(np.ptp(vals)) > 1e-12 * max(1.0, float(np.max(np.abs(vals))))
     check(min(count, 2000) <= data.sum() < 0.95 * data.size, f"{png}: the {count} points at t = {t:g} are drawn: {data.sum()} pixels ({100 * data.mean():.1f}% of the picture; at least one per point up to 2000)")
     check(colours >= 8 or not varies, f"{png}: coloured by {field}, {colours} distinct colours (the field ranges over {np.min(vals):g} to {np.max(vals):g})")
+    check(barcolours >= 16, f"{png}: a colour bar at the right, {barcolours} distinct colours in its strip")
+    if solid:
+        rows, cols = np.nonzero(data)
+        h, w = (rows.ptp() + 1) / data.shape[0], (cols.ptp() + 1) / data.shape[1]
+        shades = len({tuple(c) for c in np.round(img[data] * 63).astype(int)})
+        check(h > 0.3 and w > 0.1 and shades >= 64, f"{png}: a 3D body seen obliquely: it spans {100 * h:.0f}% x {100 * w:.0f}% of the picture, {shades} shades (lit spheres)")
     return 0
 
 

@@ -126,8 +126,9 @@ PetscErrorCode MPMRadialFrameSetFromOptions(PetscOptionItems *PetscOptionsObject
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Checks the frame against the grid and fills its defaults, cell size and farthest radius. */
-PetscErrorCode MPMRadialFrameSetUp(MPMRadialFrame *fr, const MPMScene *sc, const char type[])
+/* Checks the frame against the grid and fills its defaults, cell size and farthest radius; the exact solution's
+   radial_nr and radial_c. */
+PetscErrorCode MPMRadialFrameSetUp(MPMRadialFrame *fr, MPMExact exact, const MPMScene *sc, const char type[])
 {
   const MPMGrid *g = sc->grid;
 
@@ -145,7 +146,9 @@ PetscErrorCode MPMRadialFrameSetUp(MPMRadialFrame *fr, const MPMScene *sc, const
     PetscCheck(fr->c[k] >= g->lo[k] && fr->c[k] <= g->hi[k], sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_%s_center: component %" PetscInt_FMT " = %g lies outside the domain [%g, %g]", type, k, (double)fr->c[k], (double)g->lo[k], (double)g->hi[k]);
     fr->rmax += PetscSqr(PetscMax(g->hi[k] - fr->c[k], fr->c[k] - g->lo[k]));
   }
-  fr->rmax = PetscSqrtReal(fr->rmax);
+  fr->rmax         = PetscSqrtReal(fr->rmax);
+  exact->radial_nr = fr->nr; /* what the output's /exact says the profile is a function of */
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) exact->radial_c[k] = fr->c[k];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -49,6 +49,9 @@ struct _p_MPMExact {
   PetscReal window[2];   /* error norms only for lo < x < hi [cm]: where no wave from the domain ends has arrived */
   PetscBool check_start; /* the checks are also measured on the initial state (a check against it)              */
   PetscReal state[4];    /* what a type measured during the run and reads later (a checkpoint keeps it)          */
+  PetscInt  radial_nr;   /* a radial solution: a function of |x - radial_c| over the first radial_nr directions (0: none); the
+                            output's /exact carries them for plots (scripts/plot_profiles.py) */
+  PetscReal radial_c[MPM_MAX_DIM];
 };
 
 PETSC_INTERN PetscErrorCode MPMExactSetUp(MPMExact, const MPMScene *);
@@ -70,7 +73,7 @@ typedef struct {
   PetscReal rmax;           /* farthest point of the domain from the centre [cm]                          */
 } MPMRadialFrame;
 PETSC_INTERN PetscErrorCode MPMRadialFrameSetFromOptions(PetscOptionItems *, const char[], MPMRadialFrame *);
-PETSC_INTERN PetscErrorCode MPMRadialFrameSetUp(MPMRadialFrame *, const MPMScene *, const char[]);
+PETSC_INTERN PetscErrorCode MPMRadialFrameSetUp(MPMRadialFrame *, MPMExact, const MPMScene *, const char[]);
 PETSC_INTERN PetscErrorCode MPMSceneAmbientIdealGas(const MPMScene *, const char[], PetscReal *, PetscReal *, PetscReal *, PetscReal *);
 
 /* |x - c| over the frame's nu directions [cm]. */

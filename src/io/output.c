@@ -7,7 +7,9 @@
      /time                     (outputs)                        the time of each output, written last: an output is complete
                                                                 when /time holds its row (a kill during an output leaves the
                                                                 other datasets a row longer; readers go by /time),
-     /exact/<field>            (points)                         exact solution at the final points, if the scene has one.
+     /exact/<field>            (points)                         exact solution at the final points, if the scene has one;
+                                                                a radial one (sedov, noh) has the attribute radial_center:
+                                                                r = |x - c| over its first len(c) directions.
    The point datasets are written here with HDF5 (chunked, unlimited in outputs and points) rather than by VecView,
    whose datasets have a fixed number of points: point splitting (src/modules/split.c) adds points during the run,
    and a row holds the points of its output followed by zeros. Rank r writes its points at the offset of ranks < r.
@@ -607,6 +609,20 @@ PetscErrorCode MPMOutputWriteExact(MPM mpm)
     PetscCall(VecDestroy(&v));
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  if (mpm->exact->radial_nr) { /* a radial solution: /exact's attribute radial_center, the centre over the directions r is measured in */
+    hid_t   file, grp, space, attr;
+    hsize_t n = (hsize_t)mpm->exact->radial_nr;
+    PetscCall(PetscViewerHDF5GetFileId(mpm->h5, &file));
+    grp = H5Gopen2(file, "/exact", H5P_DEFAULT);
+    PetscCheck(grp >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot open /exact in %s/petmpm.h5", mpm->outdir);
+    if (H5Aexists(grp, "radial_center") > 0) H5Adelete(grp, "radial_center");
+    space = H5Screate_simple(1, &n, NULL);
+    attr  = H5Acreate2(grp, "radial_center", H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT);
+    PetscCheck(attr >= 0 && H5Awrite(attr, H5T_NATIVE_DOUBLE, mpm->exact->radial_c) >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot write /exact radial_center in %s/petmpm.h5", mpm->outdir);
+    H5Aclose(attr);
+    H5Sclose(space);
+    H5Gclose(grp);
+  }
   PetscCall(PetscViewerHDF5PushTimestepping(mpm->h5));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

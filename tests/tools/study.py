@@ -27,6 +27,10 @@ def test_study():
           f"fit_rate on synthetic data: {st.fit_rate(h, 3.0 * h ** 2):.12f} (2) and {st.fit_rate(h, 0.7 * h ** 0.5):.12f} (0.5)")
     cases = st.cases_of([{"cells": [1, 2], "shape": ["a", "b"]}, {"cells": [1, 2], "shape": ["a"]}])
     check(len(cases) == 4, f"two sweeps with a shared case give the 4 distinct cases ({len(cases)})")
+    sty = st.line_styles({"ranks 1": 0, "ranks 2": 0, "shape linear, ranks 1": 0, "shape linear, ranks 2": 0})
+    look = {m: (s["color"], s["linestyle"], s["markerfacecolor"], s["markersize"]) for m, s in sty.items()}
+    check(len(set(look.values())) == 4 and sty["ranks 1"]["color"] == sty["ranks 2"]["color"] and sty["ranks 2"]["zorder"] > sty["ranks 1"]["zorder"],
+          "the plots tell every line apart: a method on 1 and 2 ranks in one colour, the 2-rank line dashed with larger open markers drawn over the other")
 
     def tool_run(args):
         return subprocess.run(["/usr/bin/python3", tool, *args, "--exe", EXE], capture_output=True, text=True, env=ENV, timeout=600)

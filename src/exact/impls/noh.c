@@ -71,7 +71,7 @@ static PetscErrorCode MPMExactSetUp_Noh(MPMExact exact, const MPMScene *sc)
   Exact_Noh *en = (Exact_Noh *)exact->data;
 
   PetscFunctionBegin;
-  PetscCall(MPMRadialFrameSetUp(&en->fr, sc, "noh"));
+  PetscCall(MPMRadialFrameSetUp(&en->fr, exact, sc, "noh"));
   PetscCheck(en->u0 > 0.0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_noh_speed must be > 0 (the inflow speed, cm/s), got %g", (double)en->u0);
   PetscCall(MPMSceneAmbientIdealGas(sc, "noh", &en->gamma, &en->cv, &en->rho0, &en->T0));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -137,7 +137,7 @@ static PetscErrorCode MPMExactSetUp_Sedov(MPMExact exact, const MPMScene *sc)
   Exact_Sedov *es = (Exact_Sedov *)exact->data;
 
   PetscFunctionBegin;
-  PetscCall(MPMRadialFrameSetUp(&es->fr, sc, "sedov"));
+  PetscCall(MPMRadialFrameSetUp(&es->fr, exact, sc, "sedov"));
   PetscCheck(es->E > 0.0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_sedov_energy must be > 0 (the whole blast's energy, erg/cm^%" PetscInt_FMT "), got %g", 3 - es->fr.nu, (double)es->E);
   PetscCall(MPMSceneAmbientIdealGas(sc, "sedov", &es->gamma, &es->cv, &es->rho0, &es->T0));
   PetscCall(SedovSolve(exact));
