@@ -95,6 +95,7 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
     PetscInt cells[MPM_MAX_DIM] = {g->cells[0], g->cells[1], g->cells[2]};
     n                           = MPM_MAX_DIM;
     PetscCall(PetscOptionsIntArray("-mpm_cells", "Cells per direction N[,M[,K]] [-]", "", cells, &n, &set));
+    mpm->cells_set = set;
     if (set) {
       PetscCheck(n == g->dim, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_cells needs %" PetscInt_FMT " comma-separated values for a %" PetscInt_FMT "D scene, got %" PetscInt_FMT, g->dim, g->dim, n);
       for (PetscInt k = 0; k < g->dim; k++) {

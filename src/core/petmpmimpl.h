@@ -72,6 +72,7 @@ struct _p_MPM {
   MPMGrid              grid;
   PetscInt             ppc;                        /* points per cell per direction                     */
   PetscBool            memory_check;               /* -mpm_memory_check: refuse a grid that would not fit (MPMGridCheckSize) */
+  PetscBool            cells_set;                  /* -mpm_cells given (a scene must give it)           */
   PetscReal            cfl;                        /* Courant number                                    */
   PetscReal            dtmin;                      /* smallest time step before the run is stopped [s]  */
   PetscReal            dtmin_ratio;                /* smallest time step as a fraction of dt_peak before the run is stopped [-] */

@@ -43,12 +43,13 @@ static PetscFunctionList MPMExactList = NULL;
 static PetscErrorCode MPMExactSetFromOptionsClass(void *obj, PetscOptionItems *PetscOptionsObject)
 {
   MPMExact  exact = (MPMExact)obj;
-  PetscInt  n     = 2;
+  PetscInt  n     = 2 * MPM_MAX_DIM;
   PetscBool set;
 
   PetscFunctionBegin;
-  PetscCall(PetscOptionsRealArray("-exact_window", "Error norms only for points with lo < x < hi [cm] (waves from the domain ends never reach there)", "", exact->window, &n, &set));
-  PetscCheck(!set || (n == 2 && exact->window[0] < exact->window[1]), exact->comm, PETSC_ERR_USER_INPUT, "-%sexact_window needs two values lo,hi with lo < hi", exact->prefix ? exact->prefix : "");
+  PetscCall(PetscOptionsRealArray("-exact_window", "Error norms only for points with lo < x < hi [cm], and with lo_y,hi_y[,lo_z,hi_z] in a box (waves from the domain's faces never reach there)", "", exact->window, &n, &set));
+  PetscCheck(!set || (n % 2 == 0 && n >= 2), exact->comm, PETSC_ERR_USER_INPUT, "-%sexact_window needs pairs lo,hi: along x, or along x, y[, z]", exact->prefix ? exact->prefix : "");
+  for (PetscInt k = 0; set && k < n / 2; k++) PetscCheck(exact->window[2 * k] < exact->window[2 * k + 1], exact->comm, PETSC_ERR_USER_INPUT, "-%sexact_window: pair %" PetscInt_FMT " needs lo < hi", exact->prefix ? exact->prefix : "", k + 1);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -63,8 +64,10 @@ PetscErrorCode MPMExactCreate(MPI_Comm comm, MPMExact *exact)
   PetscCall(MPMExactRegisterAll());
   PetscCall(MPMObjectCreate(comm, &MPMExactClass, sizeof(struct _p_MPMExact), exact));
   PetscCall(MPMObjectSetOptionsPrefix(*exact, "mpm_"));
-  (*exact)->window[0] = PETSC_MIN_REAL;
-  (*exact)->window[1] = PETSC_MAX_REAL;
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
+    (*exact)->window[2 * k]     = PETSC_MIN_REAL;
+    (*exact)->window[2 * k + 1] = PETSC_MAX_REAL;
+  }
   PetscCall(MPMExactSetType(*exact, MPMEXACTNONE));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -85,7 +88,9 @@ PetscErrorCode MPMExactEvaluate(MPMExact exact, PetscReal t, const PetscReal x[]
 
 PetscBool MPMExactInWindow(MPMExact exact, const PetscReal x[])
 {
-  return (PetscBool)(x[0] > exact->window[0] && x[0] < exact->window[1]);
+  PetscBool in = PETSC_TRUE;
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) in = (PetscBool)(in && (exact->window[2 * k] == PETSC_MIN_REAL || x[k] > exact->window[2 * k]) && (exact->window[2 * k + 1] == PETSC_MAX_REAL || x[k] < exact->window[2 * k + 1]));
+  return in;
 }
 
 /* The crossing of level by the binned profile f (bin centres xc) nearest to xref, by linear interpolation. */

@@ -311,10 +311,12 @@ PetscErrorCode MPMCreateGrid(MPM mpm, PetscInt sw, const char why[])
 
   PetscFunctionBegin;
   mpm->grid.sw = sw;
+  PetscCheck(mpm->cells_set, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_cells: the scene gives no cell count (it would run on 1 cell per direction); give -mpm_cells N%s%s, the cells per direction", mpm->grid.dim > 1 ? ",M" : "",
+             mpm->grid.dim > 2 ? ",K" : "");
   /* a 1D DMDA needs sw nodes on a rank even when one rank holds them all (PETSc's "Local x-width ... smaller than
      stencil width") */
-  PetscCheck(mpm->grid.dim > 1 || mpm->grid.cells[0] + 1 >= sw, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_cells %" PetscInt_FMT ": too few cells for the ghost width %" PetscInt_FMT " of %s; valid is >= %" PetscInt_FMT " cells%s", mpm->grid.cells[0], sw,
-             why, sw - 1, mpm->grid.cells[0] == 1 ? " (1 is the default: does the scene give -mpm_cells?)" : "");
+  PetscCheck(mpm->grid.dim > 1 || mpm->grid.cells[0] + 1 >= sw, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_cells %" PetscInt_FMT ": too few cells for the ghost width %" PetscInt_FMT " of %s; valid is >= %" PetscInt_FMT " cells", mpm->grid.cells[0], sw,
+             why, sw - 1);
   PetscCall(MPMGridCheckSize(mpm));
   PetscCall(MPMGridLayout(mpm, why, P));
   PetscCall(MPMCreateGridOwned(mpm, NULL, P));

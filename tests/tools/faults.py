@@ -58,7 +58,7 @@ def test_faults():
         sod(d, ["-mpm_cells", "64"])
         before = open(os.path.join(d, "petmpm.h5"), "rb").read()
         phases = set()
-        for delay, ranks in ((0.1, 1), (0.3, 1), (0.5, 1), (0.8, 1), (1.2, 1), (2.0, 1), (4.0, 1), (0.3, 2), (1.0, 2)):
+        for delay, ranks in ((0.1, 1), (0.3, 1), (0.8, 1), (4.0, 1), (0.3, 2), (1.0, 2)):
             if os.path.exists(os.path.join(d, "report.json")):
                 os.remove(os.path.join(d, "report.json"))
             sod(d, ["-mpm_cells", "64"])
@@ -159,7 +159,7 @@ def test_faults():
 
         # 3b. The soak test of scripts/soak.py, a small count (the script runs 40 by default).
         import soak
-        n, lost, kept = soak.soak(3, seed=7, build=BUILD, log=lambda line: print("  " + line))
+        n, lost, kept = soak.soak(2, seed=7, build=BUILD, log=lambda line: print("  " + line))
         check(lost == 0, f"scripts/soak.py: {n} random kills, {lost} lost a result ({kept} left the earlier result)")
 
         # 4. Messages a user can act on.
@@ -172,6 +172,11 @@ def test_faults():
         check(q.returncode != 0 and "en dash" in q.stderr and "-mpm_cells" in q.stderr, f"an en dash before an option: refused (exit {q.returncode}): {q.stderr.strip()[:120]}")
         q = run(["-options_file", SCENE, "-mpm_cells", "2", "-mpm_output", os.path.join(top, "two")], expect_ok=False)
         check(q.returncode != 0 and "-mpm_cells 2: too few cells" in q.stderr and "valid is >= 3" in q.stderr, f"-mpm_cells 2 in 1D: names the option and the minimum (exit {q.returncode})")
+        nocells = os.path.join(top, "nocells.opts")
+        with open(os.path.join(SRC, "inputs", "lax_liu3_2d.opts")) as f, open(nocells, "w") as g:
+            g.write("".join(line for line in f if not line.startswith("-mpm_cells")))
+        q = run(["-options_file", nocells, "-mpm_output", os.path.join(top, "nocells")], expect_ok=False)
+        check(q.returncode != 0 and "-mpm_cells: the scene gives no cell count" in q.stderr and not os.path.exists(os.path.join(top, "nocells")), f"a 2D scene without -mpm_cells: refused, naming the option (exit {q.returncode}; it ran on one cell before)")
         q = run([*SCENE_CTH, "-mpm_cells", "200000000", "-mpm_output", os.path.join(top, "huge")], expect_ok=False)
         check(q.returncode != 0 and "-mpm_cells 200000000" in q.stderr and "index range" in q.stderr, f"-mpm_cells 200000000: names the index limit (exit {q.returncode})")
         avail = 0.0

@@ -1,0 +1,33 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-2-Clause
+"""ctest scene_oblique_rate, a known failure (WILL_FAIL): the weak Sod tube at 30 degrees to the grid converges as
+fast as along it.
+
+usage: oblique_rate.py BUILD_DIR SOURCE_DIR
+
+The density L1 error of inputs/sod_oblique_2d.opts at 0 and 30 degrees, 80^2 and 160^2 cells: along the grid it
+falls at order 0.88 (4.78% to 2.60%), at 30 degrees at 0.63 (4.77% to 3.07%); at 100^2 / 200^2 / 400^2 the orders
+are 0.84 and 0.92 against 0.59 and 0.43, and at 400^2 the 30-degree error is 1.77 times the aligned one (1.96% and
+1.11%). Measured where it comes from (400^2): the star state left of the contact and the contact itself hold 1.06% of
+the 1.96% against 0.24% of 1.11% aligned; the initial interface cuts lattice sites at 30 degrees, whose two-material
+points ride in the contact (the likely source, not yet isolated; docs/verification_2d.md). The assertion: order >=
+0.75 at 30 degrees.
+"""
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tests/common.py
+from common import check, main  # noqa: E402
+from oblique import errors  # noqa: E402
+
+
+def test_oblique_rate():
+    err = errors((0, 30), (80, 160))
+    order = {deg: math.log2(err[deg, 80][0] / err[deg, 160][0]) for deg in (0, 30)}
+    check(order[30] >= 0.75, f"30 degrees: density L1 {err[30, 80][0]:.4f} / {err[30, 160][0]:.4f}, order {order[30]:.2f} (along the grid {err[0, 80][0]:.4f} / {err[0, 160][0]:.4f}, order {order[0]:.2f}); wanted >= 0.75")
+
+
+if __name__ == "__main__":
+    main(test_oblique_rate)
