@@ -29,7 +29,7 @@ run: build
 	@echo "HDF5: $(OUT)/petmpm.h5   ParaView/VisIt: $(OUT)/petmpm.xmf   report: $(OUT)/report.json"
 
 test: build
-	cd $(BUILD) && ctest --output-on-failure
+	cd $(BUILD) && ctest -j2 --output-on-failure
 
 bench: build
 	$(PY) scripts/bench.py
