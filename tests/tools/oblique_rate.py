@@ -9,9 +9,9 @@ The density L1 error of inputs/sod_oblique_2d.opts at 0 and 30 degrees, 80^2 and
 falls at order 0.88 (4.78% to 2.60%), at 30 degrees at 0.63 (4.77% to 3.07%); at 100^2 / 200^2 / 400^2 the orders
 are 0.84 and 0.92 against 0.59 and 0.43, and at 400^2 the 30-degree error is 1.77 times the aligned one (1.96% and
 1.11%). Measured where it comes from (400^2): the star state left of the contact and the contact itself hold 1.06% of
-the 1.96% against 0.24% of 1.11% aligned; the initial interface cuts lattice sites at 30 degrees, whose two-material
-points ride in the contact (the likely source, not yet isolated; docs/verification_2d.md). The assertion: order >=
-0.75 at 30 degrees.
+the 1.96% against 0.24% of 1.11% aligned. Not the interface's cut sites, the conduction or the relaxation; without
+splitting it is worse, with quadratic B-splines instead of CPDI it no longer depends on the angle: CPDI's domains
+stretched off the grid's axes (docs/verification_2d.md). The assertion: order >= 0.75 at 30 degrees.
 """
 import math
 import os
