@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: BSD-2-Clause
-"""ctest scene_plots: scripts/plot_profiles.py plots a radial scene against the radius, its exact solution a line.
+"""ctest scene_plots: scripts/plot_profiles.py plots a radial scene against the radius, its exact solution a line;
+scripts/summary.py (make run's summary) prints checks of exact value 0 with their absolute error and checks without a
+reference without failing.
 
 usage: plots.py BUILD_DIR SOURCE_DIR
 """
@@ -28,6 +30,17 @@ def test_plots():
     import h5py
     import numpy as np
     with tempfile.TemporaryDirectory() as d:
+        for scene, args in (("sod_weak", ["-mpm_cells", "128"]), ("taylor_anvil_rz", ["-mpm_cells", "8,21", "-ts_max_time", "1e-5"])):
+            out = os.path.join(d, "summary_" + scene)
+            rep = os.path.join(out, "report.json")
+            run(["-options_file", os.path.join(SRC, "inputs", scene + ".opts"), *args, "-mpm_output", out, "-mpm_report", rep])
+            p = subprocess.run([sys.executable, os.path.join(SRC, "scripts", "summary.py"), rep], capture_output=True, text=True)
+            zero = [ln for ln in p.stdout.splitlines() if "(exact 0," in ln]
+            none = [ln for ln in p.stdout.splitlines() if "(no reference)" in ln]
+            if scene == "sod_weak":
+                check(p.returncode == 0 and zero and all("abs. error" in ln for ln in zero), f"summary.py on {scene}: {len(zero)} checks of exact value 0 print 'abs. error' ({zero[0].strip() if zero else ''})")
+            else:
+                check(p.returncode == 0 and none, f"summary.py on {scene}: a check without a reference prints 'no reference' (exit {p.returncode}; it failed with a TypeError before)")
         for scene, cells, radial in (("sedov_cylindrical", "32,32", [0.0, 0.0]), ("noh_cylindrical", "32,32", None), ("sod_weak", "128", None)):
             out = os.path.join(d, scene)
             run(["-options_file", os.path.join(SRC, "inputs", scene + ".opts"), "-mpm_cells", cells, "-mpm_output", out])
