@@ -202,13 +202,14 @@ int main(int argc, char **argv)
   ierr = MPMCheckDashes(argc, argv);
   if (!ierr) ierr = MPMRun(&ec);
   if (ierr) {
+    PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
     if (ierr == PETSC_ERR_FILE_WRITE) { /* a failed write (a full disk): closing the file would write again, and MPI-IO
                                            crashed doing so; the outputs flushed before it are complete (/time says which) */
       fflush(stdout);
       fflush(stderr);
+      if (size > 1) MPI_Abort(PETSC_COMM_WORLD, (int)ierr); /* every rank: some may wait in a collective write */
       _exit((int)ierr);
     }
-    PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
     if (ec.size < size) MPI_Abort(PETSC_COMM_WORLD, (int)ierr); /* a local error: the other ranks may be waiting in a collective call */
     PetscCall(PetscOptionsClear(NULL));                         /* no list of options left unused by the run that stopped */
     PetscCall(PetscFinalize());

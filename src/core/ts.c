@@ -5,6 +5,7 @@
    clock: its pre-step runs the whole MPM step (MPMStep, which sets dt), its post-step the outputs, the balance,
    the checkpoints and the signals. */
 #include "core/petmpmimpl.h"
+#include <pthread.h>
 #include <signal.h>
 #include <unistd.h>
 
@@ -35,13 +36,40 @@ static void MPMSignalHandler(int sig)
    whose shell exits goes on. */
 static pid_t MPMLauncherPid = 0;
 
+static void MPMLauncherGone(void)
+{
+  static const char msg[] = "petmpm: error: the MPI launcher has died: this rank stops at once, writing nothing more\n";
+  if (write(STDERR_FILENO, msg, sizeof(msg) - 1) < 0) { /* nothing more to do */
+  }
+  _exit(1);
+}
+
+/* A watch thread per rank: a rank blocked in a collective call with a rank that has gone cannot reach the check
+   between steps; this one sees its parent change within 0.2 s wherever the rank is. */
+static void *MPMLauncherWatch(void *unused)
+{
+  for (;;) {
+    usleep(200000);
+    if (getppid() != MPMLauncherPid) MPMLauncherGone();
+  }
+  return NULL;
+}
+
 static void MPMCheckLauncher(void)
 {
-  if (!MPMLauncherPid) MPMLauncherPid = (getenv("OMPI_COMM_WORLD_SIZE") || getenv("PMI_SIZE") || getenv("PMIX_RANK")) ? getppid() : -1;
-  if (MPMLauncherPid > 0 && getppid() != MPMLauncherPid) {
-    fprintf(stderr, "petmpm: error: the MPI launcher (process %d) has died: this rank stops at once, writing nothing more\n", (int)MPMLauncherPid);
-    _exit(1);
+  if (!MPMLauncherPid) {
+    MPMLauncherPid = (getenv("OMPI_COMM_WORLD_SIZE") || getenv("PMI_SIZE") || getenv("PMIX_RANK")) ? getppid() : -1;
+    if (MPMLauncherPid > 0) {
+      pthread_t      th;
+      pthread_attr_t at;
+      pthread_attr_init(&at);
+      pthread_attr_setdetachstate(&at, PTHREAD_CREATE_DETACHED);
+      if (pthread_create(&th, &at, MPMLauncherWatch, NULL)) { /* no thread: the check between steps remains */
+      }
+      pthread_attr_destroy(&at);
+    }
   }
+  if (MPMLauncherPid > 0 && getppid() != MPMLauncherPid) MPMLauncherGone();
 }
 
 static const char *MPMSignalName(int sig)
@@ -56,6 +84,7 @@ void MPMSignalsInstall(void)
   MPMCheckLauncher(); /* the parent at the start: the launcher, under one */
   memset(&sa, 0, sizeof(sa));
   sa.sa_handler = MPMSignalHandler;
+  sa.sa_flags   = SA_RESTART | SA_RESETHAND; /* reads and writes go on; a second signal acts at once (a hung set-up ends) */
   sigemptyset(&sa.sa_mask);
   sigaction(SIGTERM, &sa, MPMSignalInstalled ? NULL : &MPMSignalOld[0]); /* the handlers before the first call are restored at the end */
   sigaction(SIGINT, &sa, MPMSignalInstalled ? NULL : &MPMSignalOld[1]);

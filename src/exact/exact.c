@@ -43,12 +43,16 @@ static PetscFunctionList MPMExactList = NULL;
 static PetscErrorCode MPMExactSetFromOptionsClass(void *obj, PetscOptionItems *PetscOptionsObject)
 {
   MPMExact  exact = (MPMExact)obj;
-  PetscInt  n     = 2 * MPM_MAX_DIM;
+  PetscInt  n     = 2 * MPM_MAX_DIM + 1; /* one more than allowed: PETSc stops at the array's size without a word */
+  PetscReal w[2 * MPM_MAX_DIM + 1];
   PetscBool set;
 
   PetscFunctionBegin;
-  PetscCall(PetscOptionsRealArray("-exact_window", "Error norms only for points with lo < x < hi [cm], and with lo_y,hi_y[,lo_z,hi_z] in a box (waves from the domain's faces never reach there)", "", exact->window, &n, &set));
-  PetscCheck(!set || (n % 2 == 0 && n >= 2), exact->comm, PETSC_ERR_USER_INPUT, "-%sexact_window needs pairs lo,hi: along x, or along x, y[, z]", exact->prefix ? exact->prefix : "");
+  for (PetscInt k = 0; k < 2 * MPM_MAX_DIM; k++) w[k] = exact->window[k];
+  PetscCall(PetscOptionsRealArray("-exact_window", "Error norms only for points with lo < x < hi [cm], and with lo_y,hi_y[,lo_z,hi_z] in a box (waves from the domain's faces never reach there)", "", w, &n, &set));
+  PetscCheck(!set || (n % 2 == 0 && n >= 2 && n <= 2 * MPM_MAX_DIM), exact->comm, PETSC_ERR_USER_INPUT, "-%sexact_window needs pairs lo,hi: along x, or along x, y[, z]", exact->prefix ? exact->prefix : "");
+  for (PetscInt k = 0; set && k < n; k++) exact->window[k] = w[k];
+  exact->nwindow = set ? n / 2 : 0;
   for (PetscInt k = 0; set && k < n / 2; k++) PetscCheck(exact->window[2 * k] < exact->window[2 * k + 1], exact->comm, PETSC_ERR_USER_INPUT, "-%sexact_window: pair %" PetscInt_FMT " needs lo < hi", exact->prefix ? exact->prefix : "", k + 1);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -75,6 +79,8 @@ PetscErrorCode MPMExactCreate(MPI_Comm comm, MPMExact *exact)
 PetscErrorCode MPMExactSetUp(MPMExact exact, const MPMScene *scene)
 {
   PetscFunctionBegin;
+  PetscCheck(exact->nwindow <= scene->grid->dim, exact->comm, PETSC_ERR_USER_INPUT, "-%sexact_window: %" PetscInt_FMT " pairs lo,hi for a %" PetscInt_FMT "D grid; valid is at most one per direction", exact->prefix ? exact->prefix : "",
+             exact->nwindow, scene->grid->dim);
   if (exact->ops.setup) PetscCall(exact->ops.setup(exact, scene));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -47,6 +47,7 @@ typedef struct {
 struct _p_MPMExact {
   MPM_CLASS_HEADER(MPMExactOps);
   PetscReal window[2 * MPM_MAX_DIM]; /* error norms only in the box lo_k < x_k < hi_k [cm]: where no wave from the domain's faces has arrived */
+  PetscInt  nwindow;                 /* directions the window bounds (-exact_window pairs given)           */
   PetscBool check_start;             /* the checks are also measured on the initial state (a check against it)              */
   PetscReal state[4];                /* what a type measured during the run and reads later (a checkpoint keeps it)          */
   PetscInt  radial_nr;               /* a radial solution: a function of |x - radial_c| over the first radial_nr directions (0: none); the

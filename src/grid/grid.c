@@ -278,8 +278,6 @@ static PetscErrorCode MPMGridCheckSize(MPM mpm)
   PetscCheck(nodes * MPM_NODE_DOF < (PetscReal)PETSC_MAX_INT, mpm->comm, PETSC_ERR_USER_INPUT,
              "-mpm_cells %s: %.3g nodes of %" PetscInt_FMT " values each exceed the index range of this PETSc build (%" PetscInt_FMT "); use fewer cells, or a PETSc configured --with-64-bit-indices", list, (double)nodes, MPM_NODE_DOF,
              (PetscInt)PETSC_MAX_INT);
-  if (!mpm->memory_check) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(MPMMemoryAvailable(mpm, &avail));
   pts = 0.0;
   for (PetscInt r = 0; r < mpm->nreg; r++) { /* the cells of its bounding box within the domain */
     const MPMRegion *reg = &mpm->reg[r];
@@ -294,7 +292,13 @@ static PetscErrorCode MPMGridCheckSize(MPM mpm)
     }
     pts += n;
   }
-  pts  = PetscMin(pts, cells * ppc);
+  pts = PetscMin(pts, cells * ppc);
+  PetscCheck(pts * MPM_MAX_DIM * MPM_MAX_DIM < (PetscReal)PETSC_MAX_INT, mpm->comm, PETSC_ERR_USER_INPUT,
+             "-mpm_cells %s at -mpm_ppc %" PetscInt_FMT ": up to %.3g points, whose tensor fields (9 values each) exceed the index range of this PETSc build (%" PetscInt_FMT
+             "); use fewer cells or points per cell, or a PETSc configured --with-64-bit-indices",
+             list, mpm->ppc, (double)pts, (PetscInt)PETSC_MAX_INT);
+  if (!mpm->memory_check) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MPMMemoryAvailable(mpm, &avail));
   need = 3.0 * nodes * MPM_NODE_DOF * sizeof(PetscScalar) + 2.0 * pts * mpm->nfields * 3.0 * sizeof(PetscReal);
   PetscCheck(!(avail > 0.0) || need <= avail, mpm->comm, PETSC_ERR_USER_INPUT,
              "-mpm_cells %s: the grid (%.3g nodes) and its points (up to %.3g at -mpm_ppc %" PetscInt_FMT

@@ -80,9 +80,9 @@ static hid_t MPMCkptOpen(MPI_Comm comm, const char file[], PetscBool create)
    restart compares them with the checkpoint's. */
 static PetscBool MPMCkptSteers(const char name[])
 {
-  static const char *const steer[] = {"ts_max_time",       "ts_max_steps", "ts_monitor",       "mpm_output", "mpm_report", "mpm_restart", "mpm_checkpoint_", "mpm_progress",      "mpm_view",  "mpm_balance",   "mpm_help_all", "mpm_scene_name",
-                                      "mpm_rest_fraction", "log_",         "options_",         "help",       "malloc",     "info",        "history",         "no_signal_handler", "on_error_", "check_pointer", "fp_trap",      "get_total_flops",
-                                      "objects_dump",      "memory_view",  "error_output_std", "viewer_"};
+  static const char *const steer[] = {
+    "ts_max_time", "ts_max_steps", "ts_monitor", "mpm_output", "mpm_report", "mpm_restart",       "mpm_checkpoint_", "mpm_progress",  "mpm_view", "mpm_balance",     "mpm_help_all", "mpm_scene_name", "mpm_stop_at_rest", "mpm_memory_check", "log_",
+    "options_",    "help",         "malloc",     "info",       "history",    "no_signal_handler", "on_error_",       "check_pointer", "fp_trap",  "get_total_flops", "objects_dump", "memory_view",    "error_output_std", "viewer_"};
 
   for (size_t i = 0; i < sizeof(steer) / sizeof(steer[0]); i++)
     if (!strncmp(name, steer[i], strlen(steer[i]))) return PETSC_TRUE;
@@ -143,46 +143,46 @@ static PetscErrorCode MPMCkptSceneOptions(char **text)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The value of option name (a line "name value") in text, "" for a flag, or NULL where text does not hold it. */
-static const char *MPMCkptOptionIn(const char text[], const char name[], char value[], size_t size)
+/* The line of option name in text ("name value...\n"): its value (after the space, or the end of the name for a flag)
+   and the value's length; NULL where text does not hold the option. */
+static const char *MPMCkptOptionIn(const char text[], const char name[], size_t nlen, size_t *vlen)
 {
-  const size_t n = strlen(name);
-
-  for (const char *l = text; *l; l = strchr(l, '\n') + 1) {
+  for (const char *l = text; l && *l;) {
     const char *e = strchr(l, '\n');
-    if (!strncmp(l, name, n) && (l[n] == ' ' || l[n] == '\n')) {
-      size_t len = l[n] == ' ' ? (size_t)(e - (l + n + 1)) : 0;
-      len        = PetscMin(len, size - 1);
-      memcpy(value, l + n + 1, len);
-      value[len] = 0;
-      return value;
-    }
     if (!e) break;
+    if ((size_t)(e - l) >= nlen && !strncmp(l, name, nlen) && (l[nlen] == ' ' || l[nlen] == '\n')) {
+      const char *v = l[nlen] == ' ' ? l + nlen + 1 : l + nlen;
+      *vlen         = (size_t)(e - v);
+      return v;
+    }
+    l = e + 1;
   }
   return NULL;
 }
 
-/* Appends to msg the options whose values differ between the lines of a and b (a's view; each pair once). */
+/* Appends to msg the options of a whose values differ in b (a_is_ckpt) or that b lacks; counts them. Whole lines are
+   compared, however long (a long polygon). */
 static void MPMCkptOptionDiffs(const char a[], const char b[], PetscBool a_is_ckpt, char msg[], size_t size, PetscInt *count)
 {
   for (const char *l = a; *l;) {
-    const char *e = strchr(l, '\n'), *sp;
-    char        name[256], va[256], vb[256];
-    size_t      n;
+    const char *e = strchr(l, '\n'), *sp, *va, *vb;
+    size_t      nlen, la = 0, lb = 0;
     if (!e) break;
-    sp = memchr(l, ' ', (size_t)(e - l));
-    n  = PetscMin((size_t)((sp ? sp : e) - l), sizeof(name) - 1);
-    memcpy(name, l, n);
-    name[n] = 0;
-    (void)MPMCkptOptionIn(a, name, va, sizeof(va));
-    if (!MPMCkptOptionIn(b, name, vb, sizeof(vb)) || (a_is_ckpt && strcmp(va, vb))) {
-      const PetscBool inb = (PetscBool)(MPMCkptOptionIn(b, name, vb, sizeof(vb)) != NULL);
-      if (*count < 6) {
-        size_t m = strlen(msg);
-        if (a_is_ckpt)
-          snprintf(msg + m, size - m, "%s-%s: %s in the checkpoint's run, %s now", *count ? "; " : "", name, va[0] ? va : "(set)", inb ? (vb[0] ? vb : "(set)") : "not given");
+    sp   = memchr(l, ' ', (size_t)(e - l));
+    nlen = (size_t)((sp ? sp : e) - l);
+    va   = MPMCkptOptionIn(a, l, nlen, &la);
+    vb   = MPMCkptOptionIn(b, l, nlen, &lb);
+    if (!vb || (a_is_ckpt && (la != lb || strncmp(va, vb, la)))) {
+      if (*count < 6) { /* a value shown up to 60 characters; a flag as "(set)" */
+        const size_t m  = strlen(msg);
+        const int    pa = la ? (int)PetscMin(la, 60) : 5, pb = lb ? (int)PetscMin(lb, 60) : 5;
+        const char  *sa = la ? va : "(set)", *sb = lb ? vb : "(set)", *ea = la > 60 ? "..." : "", *eb = lb > 60 ? "..." : "";
+        if (a_is_ckpt && vb)
+          snprintf(msg + m, size - m, "%s-%.*s: %.*s%s in the checkpoint's run, %.*s%s now", *count ? "; " : "", (int)nlen, l, pa, sa, ea, pb, sb, eb);
+        else if (a_is_ckpt)
+          snprintf(msg + m, size - m, "%s-%.*s: %.*s%s in the checkpoint's run, not given now", *count ? "; " : "", (int)nlen, l, pa, sa, ea);
         else
-          snprintf(msg + m, size - m, "%s-%s: not given in the checkpoint's run, %s now", *count ? "; " : "", name, va[0] ? va : "(set)");
+          snprintf(msg + m, size - m, "%s-%.*s: not given in the checkpoint's run, %.*s%s now", *count ? "; " : "", (int)nlen, l, pa, sa, ea);
       }
       (*count)++;
     }

@@ -83,11 +83,16 @@ static PetscErrorCode MPMOutputLock(MPM mpm)
     if (fd < 0)
       err = errno;
     else if (flock(fd, LOCK_EX | LOCK_NB)) {
-      ssize_t n;
-      err                   = errno == EWOULDBLOCK ? -1 : errno;
-      n                     = read(fd, holder, sizeof(holder) - 1);
-      holder[n > 0 ? n : 0] = 0;
-      if (n > 0 && holder[n - 1] == '\n') holder[n - 1] = 0;
+      const int e = errno;
+      if (e == ENOSYS || e == EOPNOTSUPP || e == ENOLCK)
+        err = -2; /* a file system without locks (Lustre mounted without flock): go on unguarded, and say so */
+      else {
+        ssize_t n;
+        err                   = e == EWOULDBLOCK ? -1 : e;
+        n                     = read(fd, holder, sizeof(holder) - 1);
+        holder[n > 0 ? n : 0] = 0;
+        if (n > 0 && holder[n - 1] == '\n') holder[n - 1] = 0;
+      }
       close(fd);
     } else {
       char      host[128] = "?", line[256];
@@ -103,7 +108,8 @@ static PetscErrorCode MPMOutputLock(MPM mpm)
   PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, mpm->comm));
   PetscCallMPI(MPI_Bcast(holder, sizeof(holder), MPI_CHAR, 0, mpm->comm));
   PetscCheck(err != -1, mpm->comm, PETSC_ERR_USER_INPUT, "Output folder %s (-mpm_output) is in use by another petmpm run (%s); give this run another -mpm_output, or wait for that run to end", mpm->outdir, holder[0] ? holder : "holder unknown");
-  PetscCheck(!err, mpm->comm, PETSC_ERR_FILE_OPEN, "Cannot lock %s (-mpm_output): %s", file, strerror(err));
+  if (err == -2) PetscCall(PetscPrintf(mpm->comm, "petmpm: warning: the file system of %s cannot lock %s: nothing stops a second run into this folder\n", mpm->outdir, file));
+  PetscCheck(!err || err == -2, mpm->comm, PETSC_ERR_FILE_OPEN, "Cannot lock %s (-mpm_output): %s", file, strerror(err));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

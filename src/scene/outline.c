@@ -140,8 +140,8 @@ static PetscErrorCode MPMPolygonRead(MPI_Comm comm, const char opt[], const char
   if (!rank) {
     FILE *fp = fopen(file, "r");
     char  line[1024];
-    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "%s %s: cannot read the file", opt, file);
-    while (fgets(line, sizeof(line), fp) && !bad) {
+    if (!fp) bad = -1; /* told to every rank below: an error on rank 0 alone would leave the others waiting */
+    while (fp && fgets(line, sizeof(line), fp) && !bad) {
       char  *c = strchr(line, '#');
       double x, y;
       int    got;
@@ -163,9 +163,10 @@ static PetscErrorCode MPMPolygonRead(MPI_Comm comm, const char opt[], const char
       a[len++] = x;
       a[len++] = y;
     }
-    fclose(fp);
+    if (fp) fclose(fp);
   }
   PetscCallMPI(MPI_Bcast(&bad, 1, MPIU_INT, 0, comm));
+  PetscCheck(bad != -1, comm, PETSC_ERR_FILE_OPEN, "%s %s: cannot read the file", opt, file);
   PetscCheck(!bad, comm, PETSC_ERR_USER_INPUT, "%s %s: vertex %" PetscInt_FMT " is not two numbers \"x y\"", opt, file, bad);
   PetscCallMPI(MPI_Bcast(&len, 1, MPIU_INT, 0, comm));
   if (rank) PetscCall(PetscMalloc1(len + 1, &a));
@@ -275,6 +276,7 @@ static PetscErrorCode MPMSurfaceSetUp(MPI_Comm comm, const char opt[], MPMOutlin
     }
     PetscCall(PetscFree(e));
   }
+  PetscCheck(o->volume > 0.0 && o->hi[0] > o->lo[0] && o->hi[1] > o->lo[1] && o->hi[2] > o->lo[2], comm, PETSC_ERR_USER_INPUT, "%s %s: the surface encloses no volume (flat along an axis or of zero volume)", opt, o->source);
   PetscCheck(!open, comm, PETSC_ERR_USER_INPUT, "%s %s: the surface is not closed: %" PetscInt_FMT " edges belong to one triangle (or an odd number); a region needs a closed surface", opt, o->source, open);
   o->nb[0] = o->nb[1] = PetscMax(1, PetscMin(1024, (PetscInt)PetscSqrtReal((PetscReal)o->n)));
   nbins               = o->nb[0] * o->nb[1];
@@ -307,8 +309,8 @@ static PetscErrorCode MPMSurfaceSetUp(MPI_Comm comm, const char opt[], MPMOutlin
 PetscErrorCode MPMOutlineSetFromOptions(PetscOptionItems *PetscOptionsObject, MPM mpm, const char prefix[], PetscReal lo[], PetscReal hi[], MPMOutline *o)
 {
   const PetscInt d = mpm->grid.dim;
-  PetscReal      xy[2 * MPM_OUTLINE_MAX_INLINE], scale = 1.0, shift[3] = {0.0, 0.0, 0.0};
-  PetscInt       nxy = 2 * MPM_OUTLINE_MAX_INLINE, ns = 3;
+  PetscReal      xy[2 * MPM_OUTLINE_MAX_INLINE + 1], scale = 1.0, shift[4] = {0.0, 0.0, 0.0, 0.0};
+  PetscInt       nxy = 2 * MPM_OUTLINE_MAX_INLINE + 1, ns = 4; /* one more than allowed: PETSc stops at the array's size without a word */
   char           pfile[PETSC_MAX_PATH_LEN] = "", sfile[PETSC_MAX_PATH_LEN] = "", opt[MPM_MAX_NAME + 48];
   PetscBool      poly, pf, surf;
 
@@ -322,6 +324,8 @@ PetscErrorCode MPMOutlineSetFromOptions(PetscOptionItems *PetscOptionsObject, MP
     PetscCall(PetscOptionsRealArray("-surface_shift", "Shift of the surface's coordinates, x' = s x + shift [cm]", "", shift, &ns, NULL));
   }
   if (!poly && !pf && !surf) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCheck(!poly || nxy <= 2 * MPM_OUTLINE_MAX_INLINE, mpm->comm, PETSC_ERR_USER_INPUT, "-%spolygon: more than %d vertices; give a longer polygon as -%spolygon_file", prefix, MPM_OUTLINE_MAX_INLINE, prefix);
+  PetscCheck(!surf || ns <= 3, mpm->comm, PETSC_ERR_USER_INPUT, "-%ssurface_shift: more than 3 values", prefix);
   if (pf) {
     char path[PETSC_MAX_PATH_LEN];
     MPMOutlineResolve(pfile, path, sizeof(path));

@@ -99,6 +99,8 @@ def test_bad_input():
             (["-options_file", RZ, "-mpm_wall_friction_lo", "0.1,0.1", "-mpm_output", d], "-mpm_wall_friction_lo 0.1 in x: with -mpm_axisymmetric"),
             (["-options_file", RZ, "-mpm_exact_type", "slide", "-mpm_output", d], "-mpm_exact_type slide"),
             ([*SCENE_CTH, "-mpm_exact_type", "spin", "-mpm_output", d], "-mpm_exact_spin_omega"),
+            ([*SCENE_CTH, "-mpm_exact_window", "1,2,3,4", "-mpm_output", d], "-mpm_exact_window: 2 pairs lo,hi for a 1D grid"),
+            ([*SCENE_CTH, "-mpm_exact_riemann_normal", "0,1", "-mpm_output", d], "-mpm_exact_riemann_normal: component 1"),
         ]
         for args, needle in cases:
             p = run(args, expect_ok=False)

@@ -146,6 +146,8 @@ def test_faults():
               f"strong Sod from a weak-Sod checkpoint: refused (exit {q.returncode}) naming the option that differs, nothing written: {text.strip()[:200]}")
         q = run([*SCENE_CTH, "-mpm_cfl", "0.3", "-mpm_output", os.path.join(top, "force"), "-mpm_restart", ck, "-mpm_restart_force"], expect_ok=False)
         check(q.returncode == 0 and "-mpm_restart_force: continuing" in q.stdout and "-mpm_cfl" in q.stdout, f"-mpm_restart_force continues with a method change and names it (exit {q.returncode})")
+        q = run([*SCENE_CTH, "-mpm_stop_at_rest", "0.5", "-mpm_output", os.path.join(top, "steer"), "-mpm_restart", ck], expect_ok=False)
+        check(q.returncode == 0, f"a restart that changes only how the run is steered (-mpm_stop_at_rest): accepted (exit {q.returncode})")
         q = run([*SCENE_CTH, "-ts_max_time", str(tck / 2), "-mpm_output", os.path.join(top, "early"), "-mpm_restart", ck], expect_ok=False)
         check(q.returncode != 0 and "-ts_max_time" in q.stdout + q.stderr and "nothing to do" in q.stdout + q.stderr, f"a restart whose -ts_max_time is before the checkpoint: refused (exit {q.returncode})")
         new = os.path.join(top, "new")

@@ -89,6 +89,11 @@ def test_outlines():
         # Bad outlines: refused, naming the option and what is wrong.
         openstl = os.path.join(d, "open.stl")
         outline.write_stl(openstl, tris[:-2])
+        flatstl = os.path.join(d, "flat.stl")  # a square seen from both sides: closed, but it encloses nothing
+        import numpy as np
+        sq = np.array([[0.5, 0.5, 1.0], [1.5, 0.5, 1.0], [1.5, 1.5, 1.0], [0.5, 1.5, 1.0]])
+        outline.write_stl(flatstl, np.array([[sq[0], sq[1], sq[2]], [sq[0], sq[2], sq[3]], [sq[0], sq[2], sq[1]], [sq[0], sq[3], sq[2]]]))
+        many = ",".join(f"{0.5 + 0.4 * np.cos(2 * np.pi * i / 600):.6f},{0.5 + 0.4 * np.sin(2 * np.pi * i / 600):.6f}" for i in range(600))
         b3 = ["-mpm_dim", "3", "-mpm_lo", "0,0,0", "-mpm_hi", "2,2,2", "-mpm_cells", "10,10,10", *SOLID]
         b2 = ["-mpm_dim", "2", "-mpm_lo", "0,0", "-mpm_hi", "1,1", "-mpm_cells", "10,10", *SOLID, *bc2]
         for args, needle in [([*b3, "-region_s_surface", openstl], "the surface is not closed"),
@@ -98,10 +103,14 @@ def test_outlines():
                              ([*b2, "-region_s_polygon", "0,0,1,0"], "at least 3 vertices"),
                              ([*b2, "-region_s_polygon", "0,0,1,0,2,0"], "encloses no area"),
                              ([*b2, "-region_s_polygon", "0,0,1,0,0,1", "-region_s_polygon_file", pfile], "give one outline"),
-                             ([*b2, "-region_s_polygon_file", stl], "is not two numbers")]:
+                             ([*b2, "-region_s_polygon_file", stl], "is not two numbers"),
+                             ([*b2, "-region_s_polygon", many], "more than 512 vertices"),
+                             ([*b3, "-region_s_surface", flatstl], "encloses no volume")]:
             q = run([*args, "-mpm_output", os.path.join(d, "bad")], expect_ok=False)
             text = q.stdout + q.stderr
             check(q.returncode != 0 and needle in text and not os.path.exists(os.path.join(d, "bad")), f"{' '.join(args[-2:])[-60:]}: refused (exit {q.returncode}) naming '{needle}'")
+        q = run([*b2, "-region_s_polygon_file", os.path.join(d, "missing.txt"), "-mpm_output", os.path.join(d, "bad")], ranks=2, expect_ok=False)
+        check(q.returncode != 0 and "cannot read the file" in q.stdout + q.stderr, f"a missing polygon file on 2 ranks: refused (exit {q.returncode}), no rank left waiting")
 
 
 if __name__ == "__main__":

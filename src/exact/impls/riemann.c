@@ -18,6 +18,7 @@ typedef struct {
   PetscReal          x0;      /* initial discontinuity [cm]           */
   PetscReal          n[3];    /* the tube's direction (unit)          */
   PetscBool          along_x; /* n = e_x: the profile checks apply  */
+  PetscInt           dim;     /* the grid's: x holds that many coordinates */
   PetscReal          cv[2];   /* specific heats left, right [erg/(g eV)] */
   PetscReal          h;       /* cell size along x [cm]: the unit of the profile checks */
   MPMRiemannSolution sol;
@@ -25,13 +26,14 @@ typedef struct {
 
 static void MPMExactEvaluate_Riemann(void *ctx, PetscReal t, const PetscReal x[], const PetscReal X[], PetscReal *rho, PetscReal v[], PetscReal *p, PetscReal *T)
 {
-  const Exact_Riemann *er   = (const Exact_Riemann *)ctx;
-  const PetscReal      s    = er->along_x ? x[0] : er->n[0] * x[0] + er->n[1] * x[1] + er->n[2] * x[2]; /* n . x (n_k = 0 beyond the dimension) */
-  const PetscReal      S    = t > 0 ? (s - er->x0) / t : (s <= er->x0 ? -PETSC_MAX_REAL : PETSC_MAX_REAL);
-  const PetscBool      left = S <= er->sol.ustar ? PETSC_TRUE : PETSC_FALSE;
-  const PetscReal      g    = left ? er->sol.L.gamma : er->sol.R.gamma;
-  PetscReal            u;
+  const Exact_Riemann *er = (const Exact_Riemann *)ctx;
+  PetscReal            s  = 0.0, S, g, u; /* s = n . x over the grid's dimensions (x holds no more) */
+  PetscBool            left;
 
+  for (PetscInt k = 0; k < er->dim; k++) s += er->n[k] * x[k];
+  S    = t > 0 ? (s - er->x0) / t : (s <= er->x0 ? -PETSC_MAX_REAL : PETSC_MAX_REAL);
+  left = S <= er->sol.ustar ? PETSC_TRUE : PETSC_FALSE;
+  g    = left ? er->sol.L.gamma : er->sol.R.gamma;
   MPMRiemannSample(&er->sol, S, rho, &u, p);
   for (PetscInt k = 0; k < 3; k++) v[k] = u * er->n[k];
   *T = *p / ((g - 1.0) * (*rho) * er->cv[left ? 0 : 1]);
@@ -81,6 +83,7 @@ static PetscErrorCode MPMExactSetUp_Riemann(MPMExact exact, const MPMScene *sc)
     PetscCheck(nn > 0.0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_riemann_normal: the zero vector has no direction");
     for (PetscInt k = 0; k < 3; k++) er->n[k] /= PetscSqrtReal(nn);
     er->along_x = (PetscBool)(er->n[0] == 1.0);
+    er->dim     = sc->grid->dim;
   }
   if (er->along_x) PetscCall(MPMOptionsCheckRange("-mpm_exact_riemann_x0", er->x0, sc->grid->lo[0], sc->grid->hi[0], PETSC_TRUE, PETSC_TRUE));
   er->h = sc->grid->h[0];
@@ -164,8 +167,12 @@ static PetscErrorCode MPMExactSetFromOptions_Riemann(MPMExact exact, PetscOption
   PetscOptionsHeadBegin(PetscOptionsObject, "Exact Riemann solution");
   PetscCall(PetscOptionsReal("-exact_riemann_x0", "Initial discontinuity x0 [cm]: the plane n . x = x0", "", er->x0, &er->x0, NULL));
   {
-    PetscInt n = 3;
-    PetscCall(PetscOptionsRealArray("-exact_riemann_normal", "Direction n of the shock tube (normalised) [-]: x by default; another makes an oblique tube", "", er->n, &n, NULL));
+    PetscReal nn[4] = {er->n[0], er->n[1], er->n[2], 0.0};
+    PetscInt  n     = 4; /* one more than allowed: PETSc stops at the array's size without a word */
+    PetscBool set;
+    PetscCall(PetscOptionsRealArray("-exact_riemann_normal", "Direction n of the shock tube (normalised) [-]: x by default; another makes an oblique tube", "", nn, &n, &set));
+    PetscCheck(!set || n <= 3, exact->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_riemann_normal: more than 3 components");
+    for (PetscInt k = 0; set && k < 3; k++) er->n[k] = k < n ? nn[k] : 0.0;
   }
   PetscOptionsHeadEnd();
   PetscFunctionReturn(PETSC_SUCCESS);
