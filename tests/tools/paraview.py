@@ -41,7 +41,7 @@ def test_paraview():
             lines = [ln for ln in p.stdout.splitlines() if ln.startswith(("PASSED", "FAILED"))]
             want = 4 + (0 if cmd[0] != xvfb else 3 if name == "dam" else 4)
             check(p.returncode == 0 and len(lines) >= want and all(ln.startswith("PASSED") for ln in lines),
-                  f"{name} ({ranks} rank(s)): ParaView reads the output as written: " + "; ".join(ln[7:] for ln in lines) + (p.stderr[-300:] if p.returncode else ""))
+                  f"{name} ({ranks} rank(s)): ParaView reads the output as written: " + "; ".join(ln[7:] for ln in lines) + (p.stderr[-1500:] if p.returncode else ""))
 
 
 if __name__ == "__main__":
