@@ -8,6 +8,7 @@ import json
 import math
 import os
 import subprocess
+import xml.etree.ElementTree as ET
 
 SRC = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # Open MPI as root and with more ranks than cores (a CI machine has 2)
@@ -65,6 +66,26 @@ def run(exe, args, ranks=1, out=None, timeout=900):
         with open(rep) as f:
             report = json.load(f)
     return report, p
+
+
+def xdmf_times(d):
+    """The output times d/petmpm.xmf names: its points collection's, which the grid collection must repeat (else [])."""
+    colls = {c.get("Name"): [float(t.get("Value")) for t in c.iter("Time")] for c in ET.parse(os.path.join(d, "petmpm.xmf")).getroot().iter("Grid") if c.get("GridType") == "Collection"}
+    return colls.get("points", []) if colls.get("points") == colls.get("grid") else []
+
+
+def complete_outputs(d):
+    """(complete, times) of d/petmpm.h5: every output dataset as long as /time and the XDMF naming exactly those times;
+    (False, None) where the file or the XDMF does not open."""
+    import h5py
+    try:
+        with h5py.File(os.path.join(d, "petmpm.h5"), "r") as f:
+            t = [float(x) for x in f["time"][:]]
+            lens = {f["particle_fields/" + k].shape[0] for k in f["particle_fields"]}
+            counts = f["particle_count"].shape[0]
+        return (len(t) >= 1 and lens == {len(t)} and counts == len(t) and xdmf_times(d) == t), t
+    except (OSError, KeyError, ET.ParseError):
+        return False, None
 
 
 def final_fields(h5file):

@@ -24,30 +24,11 @@ import subprocess
 import sys
 import tempfile
 import time
-import xml.etree.ElementTree as ET
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SRC = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 import petmpmlib as lib  # noqa: E402
-
-
-def xdmf_times(d):
-    colls = {c.get("Name"): [float(t.get("Value")) for t in c.iter("Time")] for c in ET.parse(os.path.join(d, "petmpm.xmf")).getroot().iter("Grid") if c.get("GridType") == "Collection"}
-    return colls.get("points", []) if colls.get("points") == colls.get("grid") else []
-
-
-def complete(d):
-    """(True, times) where d/petmpm.h5 opens and every output is whole and named by the XDMF; else (False, None)."""
-    import h5py
-    try:
-        with h5py.File(os.path.join(d, "petmpm.h5"), "r") as f:
-            t = [float(x) for x in f["time"][:]]
-            lens = {f["particle_fields/" + k].shape[0] for k in f["particle_fields"]}
-            counts = f["particle_count"].shape[0]
-        return (len(t) >= 1 and lens == {len(t)} and counts == len(t) and xdmf_times(d) == t), t
-    except (OSError, KeyError, ET.ParseError, FileNotFoundError):
-        return False, None
 
 
 def trial(exe, d, rng, env, log):
@@ -71,7 +52,7 @@ def trial(exe, d, rng, env, log):
     while time.time() - t0 < 20 and subprocess.run(["pgrep", "-f", f"petmpm.*{d}"], capture_output=True).returncode == 0:
         time.sleep(0.05)  # a rank whose launcher was killed
     same = open(os.path.join(d, "petmpm.h5"), "rb").read() == before
-    ok, t = complete(d)
+    ok, t = lib.complete_outputs(d)
     finished = re.search(r"steps to t = .* point-steps/s", out) is not None  # the summary: the signal came at the exit
     named = sig == signal.SIGKILL or p.returncode == 0 or finished or re.search(r"Interrupted by SIG(TERM|INT)", out) is not None
     cks = sorted((f for f in os.listdir(d) if re.fullmatch(r"checkpoint-\d+\.h5", f)), key=lambda f: int(f[11:-3]))

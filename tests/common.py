@@ -11,7 +11,6 @@ import json
 import os
 import subprocess
 import sys
-import xml.etree.ElementTree as ET
 
 BUILD, SRC = sys.argv[1], sys.argv[2]
 EXE = os.path.join(BUILD, "petmpm")
@@ -23,6 +22,7 @@ import petmpmlib as lib  # noqa: E402
 
 ENV = lib.ENV
 final_fields = lib.final_fields
+xdmf_times = lib.xdmf_times
 failures = []
 
 
@@ -54,12 +54,6 @@ def scene(name, out, extra=(), ranks=1):
     run(["-options_file", os.path.join(SRC, "inputs", name + ".opts"), "-mpm_output", out, "-mpm_report", rep, *extra], ranks)
     with open(rep) as f:
         return json.load(f)
-
-
-def xdmf_times(d):
-    """The output times petmpm.xmf names: its points collection's, which the grid collection must repeat (else [])."""
-    colls = {c.get("Name"): [float(t.get("Value")) for t in c.iter("Time")] for c in ET.parse(os.path.join(d, "petmpm.xmf")).getroot().iter("Grid") if c.get("GridType") == "Collection"}
-    return colls.get("points", []) if colls.get("points") == colls.get("grid") else []
 
 
 def signal_in_loop(cmd, sig):

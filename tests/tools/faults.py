@@ -13,24 +13,10 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tests/common.py
-from common import BUILD, SRC, EXE, ENV, SCENE, SCENE_CTH, check, run, sod, xdmf_times, main  # noqa: E402
+from common import BUILD, SRC, EXE, ENV, SCENE, SCENE_CTH, check, run, sod, lib, main  # noqa: E402
 
 TAYLOR3D = ["-options_file", os.path.join(SRC, "inputs", "taylor_anvil_3d.opts"), "-mpm_cells", "64,64,168", "-ts_max_steps", "40"]
 DAM = ["-options_file", os.path.join(SRC, "inputs", "dam_break_2d.opts"), "-mpm_cells", "240,100", "-mpm_progress", "0.2"]
-
-
-def h5_state(d):
-    """(complete, times) of d/petmpm.h5: every output dataset as long as /time and the XDMF naming those times;
-    (False, None) where the file does not open."""
-    import h5py
-    try:
-        with h5py.File(os.path.join(d, "petmpm.h5"), "r") as f:
-            t = [float(x) for x in f["time"][:]]
-            lens = {f["particle_fields/" + k].shape[0] for k in f["particle_fields"]}
-            counts = f["particle_count"].shape[0]
-    except (OSError, KeyError):
-        return False, None
-    return len(t) >= 1 and lens == {len(t)} and counts == len(t) and xdmf_times(d) == t, t
 
 
 def test_faults():
@@ -49,7 +35,7 @@ def test_faults():
         p.send_signal(signal.SIGKILL)
         p.wait()
         q = run([*SCENE_CTH, "-mpm_output", d], expect_ok=False)
-        ok, t = h5_state(d)
+        ok, t = lib.complete_outputs(d)
         check(q.returncode == 0 and ok, f"after the holder's SIGKILL its lock is stale: the next run goes on (exit {q.returncode}) and leaves a complete file ({t})")
 
         # 2. SIGTERM at moments across set-up, the first output, the loop and the end: the folder holds the earlier
@@ -72,7 +58,7 @@ def test_faults():
             phase = m.group(1) if m else ("finished" if p.returncode == 0 else "killed")
             phases.add(phase)
             same = open(os.path.join(d, "petmpm.h5"), "rb").read() == before
-            ok, t = h5_state(d)
+            ok, t = lib.complete_outputs(d)
             left = os.path.exists(os.path.join(d, ".petmpm-new.h5"))
             if phase == "during the set-up":
                 good = p.returncode != 0 and same and os.path.exists(os.path.join(d, "report.json")) and not left
@@ -94,7 +80,7 @@ def test_faults():
             p.send_signal(signal.SIGKILL)
             p.wait()
             same = open(os.path.join(d, "petmpm.h5"), "rb").read() == before
-            ok, t = h5_state(d)
+            ok, t = lib.complete_outputs(d)
             check(same or ok, f"SIGKILL at {delay} s: the earlier result intact ({same}) or this run's outputs complete and readable ({ok}, {t})")
 
         # 2b. kill -9 of mpiexec: the ranks stop (the one whose launcher is gone at its next step, the other in MPI);
@@ -110,7 +96,7 @@ def test_faults():
         while time.time() - t0 < 20 and subprocess.run(["pgrep", "-f", f"petmpm.*{d}"], capture_output=True).returncode == 0:
             time.sleep(0.05)
         gone = time.time() - t0
-        ok, t = h5_state(d)
+        ok, t = lib.complete_outputs(d)
         check(gone < 20 and ok, f"kill -9 of mpiexec: the ranks stopped within {gone:.2f} s; the file opens with {len(t or [])} complete outputs")
 
         # 2c. A file that cannot grow (the file size limit; a full disk takes the same path): the message names the
@@ -128,7 +114,7 @@ def test_faults():
         check(q.returncode != 0 and f"in {d}/" in q.stderr and "file size limit" in q.stderr and open(os.path.join(d, "petmpm.h5"), "rb").read() == before,
               f"a first output that cannot be written: exit {q.returncode}, the message names the file and the limit, the earlier result intact: {q.stderr.strip()[:160]}")
         q = subprocess.run([EXE, "-options_file", SCENE, "-mpm_cells", "40000", "-ts_max_time", "1e-6", "-mpm_output_interval", "500", "-mpm_output", d], capture_output=True, text=True, env=ENV, preexec_fn=limited, timeout=300)
-        ok, t = h5_state(d)
+        ok, t = lib.complete_outputs(d)
         check(q.returncode != 0 and f"{d}/petmpm.h5" in q.stderr and "file size limit" in q.stderr and t and len(t) >= 1 and open(os.path.join(d, "petmpm.h5"), "rb").read() != before,
               f"a later output that cannot be written: exit {q.returncode}, named; the file opens with {len(t or [])} complete output(s) by /time: {q.stderr.strip()[:160]}")
 
@@ -152,7 +138,7 @@ def test_faults():
         check(q.returncode != 0 and "-ts_max_time" in q.stdout + q.stderr and "nothing to do" in q.stdout + q.stderr, f"a restart whose -ts_max_time is before the checkpoint: refused (exit {q.returncode})")
         new = os.path.join(top, "new")
         run([*SCENE_CTH, "-mpm_output", new, "-mpm_restart", ck])
-        ok, t = h5_state(new)
+        ok, t = lib.complete_outputs(new)
         with h5py.File(os.path.join(new, "petmpm.h5"), "r") as f:
             rho0 = f["particle_fields/density"][0][: int(f["particle_count"][0])]
         check(ok and abs(t[0] - tck) <= 1e-12 * tck and rho0.min() > 0, f"a restart into a new folder: its first output is the checkpoint's state (t {t[0]:.6g} = {tck:.6g} s, min density {rho0.min():.4g} > 0)")
