@@ -61,31 +61,37 @@ MPM_CPDI_INLINE void CPDIDomain(const Shape_CPDI *cp, PetscInt d, const PetscRea
   }
 }
 
-/* The corners c of the domain x + R s_c: the gradient factors gs[c] = R^-T s_c (Ri NULL: not formed) and, per direction,
-   the first of the two nodes of the linear basis at each corner (a global index, not yet folded onto the grid) and their
-   weights. Direction by direction over the corners, so that the corners' divisions by h go in vector lanes (the same
-   operations per corner, the same bits). */
-MPM_CPDI_INLINE void CPDICorners(const MPMGrid *g, const PetscReal x[], const PetscReal R[], const PetscReal Ri[], PetscReal gs[][MPM_MAX_DIM], PetscInt first[][MPM_MAX_DIM], PetscReal w[][MPM_MAX_DIM][2], const PetscInt d)
+/* The corners c of the domain x + R s_c in the lanes of one vector (the 2^d <= 8 corners; the lanes beyond them hold
+   copies of the point): the gradient factors gs_j = (R^-T s_c)_j (Ri NULL: not formed) and, per direction i, the first of
+   the two nodes of the linear basis at each corner, first_i = floor(xi), xi = (x_c,i - lo_i) / h_i (a global index, not
+   yet folded onto the grid), and its weights w0_i = 1 - (xi - first_i), w1_i = xi - first_i (MPMShapeLinear1d). The
+   same operations per corner as one corner at a time, so the same bits. */
+typedef PetscReal    CPDIVec __attribute__((vector_size(8 * sizeof(PetscReal))));
+typedef PetscInt     CPDIIVec __attribute__((vector_size(8 * sizeof(PetscInt))));
+MPM_CPDI_INLINE void CPDICorners(const MPMGrid *g, const PetscReal x[], const PetscReal R[], const PetscReal Ri[], CPDIVec gs[], CPDIIVec first[], CPDIVec w0[], CPDIVec w1[], const PetscInt d)
 {
-  const PetscInt nc = 1 << d;
+  const CPDIVec S[MPM_MAX_DIM] = {/* s_ck, corner c's sign in direction k: bit k of c */
+                                  {-1.0, 1.0, -1.0, 1.0, -1.0, 1.0, -1.0, 1.0},
+                                  {-1.0, -1.0, 1.0, 1.0, -1.0, -1.0, 1.0, 1.0},
+                                  {-1.0, -1.0, -1.0, -1.0, 1.0, 1.0, 1.0, 1.0}};
 
-  for (PetscInt c = 0; Ri && c < nc; c++)
-    for (PetscInt j = 0; j < d; j++) {
-      gs[c][j] = 0.0;
-      for (PetscInt k = 0; k < d; k++) gs[c][j] += Ri[k * d + j] * ((c >> k) & 1 ? 1.0 : -1.0); /* (R^-T s)_j */
-    }
+  for (PetscInt j = 0; Ri && j < d; j++) {
+    CPDIVec t = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    for (PetscInt k = 0; k < d; k++) t += Ri[k * d + j] * S[k]; /* (R^-T s)_j */
+    gs[j] = t;
+  }
   for (PetscInt i = 0; i < d; i++) {
-    PetscReal xi[8];
-    for (PetscInt c = 0; c < nc; c++) {
-      PetscReal xc = x[i];
-      for (PetscInt k = 0; k < d; k++) xc += R[i * d + k] * ((c >> k) & 1 ? 1.0 : -1.0);
-      xi[c] = (xc - g->lo[i]) / g->h[i];
-    }
-    for (PetscInt c = 0; c < nc; c++) {
-      PetscInt  n;
-      PetscReal dw[2];
-      MPMShapeLinear1d(xi[c], &first[c][i], &n, w[c][i], dw);
-    }
+    CPDIVec  xc = (CPDIVec){0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0} + x[i], xi, fi;
+    CPDIIVec fl;
+    for (PetscInt k = 0; k < d; k++) xc += R[i * d + k] * S[k];
+    xi       = (xc - g->lo[i]) / g->h[i];
+    fl       = __builtin_convertvector(xi, CPDIIVec); /* truncation, then floor: one less where it rounded up */
+    fi       = __builtin_convertvector(fl, CPDIVec);
+    fl       = fl + (CPDIIVec)(__builtin_convertvector(xi < fi, CPDIIVec));
+    fi       = __builtin_convertvector(fl, CPDIVec);
+    first[i] = fl;
+    w0[i]    = 1.0 - (xi - fi);
+    w1[i]    = xi - fi;
   }
 }
 
@@ -103,18 +109,20 @@ MPM_CPDI_INLINE PetscInt CPDIStencil(const Shape_CPDI *cp, const MPMGrid *g, con
 {
   const PetscInt  nc    = 1 << d;
   const PetscReal scale = 1.0 / nc;
-  PetscReal       R[MPM_MAX_DIM * MPM_MAX_DIM], Ri[MPM_MAX_DIM * MPM_MAX_DIM], gs[8][MPM_MAX_DIM], w[8][MPM_MAX_DIM][2];
-  PetscInt        first[8][MPM_MAX_DIM], lo[MPM_MAX_DIM], n[MPM_MAX_DIM], stride[MPM_MAX_DIM], nb = 1;
+  PetscReal       R[MPM_MAX_DIM * MPM_MAX_DIM], Ri[MPM_MAX_DIM * MPM_MAX_DIM];
+  CPDIVec         gs[MPM_MAX_DIM], w0[MPM_MAX_DIM], w1[MPM_MAX_DIM];
+  CPDIIVec        first[MPM_MAX_DIM];
+  PetscInt        lo[MPM_MAX_DIM], n[MPM_MAX_DIM], stride[MPM_MAX_DIM], nb = 1;
   PetscBool       merge = PETSC_TRUE;
 
   CPDIDomain(cp, d, F, R, grad ? Ri : NULL);
-  CPDICorners(g, x, R, grad ? Ri : NULL, gs, first, w, d);
+  CPDICorners(g, x, R, grad ? Ri : NULL, gs, first, w0, w1, d);
   for (PetscInt i = 0; i < d; i++) {
-    PetscInt hi = first[0][i];
-    lo[i]       = first[0][i];
+    PetscInt hi = first[i][0];
+    lo[i]       = first[i][0];
     for (PetscInt c = 1; c < nc; c++) {
-      lo[i] = PetscMin(lo[i], first[c][i]);
-      hi    = PetscMax(hi, first[c][i]);
+      lo[i] = PetscMin(lo[i], first[i][c]);
+      hi    = PetscMax(hi, first[i][c]);
     }
     n[i]      = hi - lo[i] + 2;
     stride[i] = nb;
@@ -123,22 +131,23 @@ MPM_CPDI_INLINE PetscInt CPDIStencil(const Shape_CPDI *cp, const MPMGrid *g, con
   }
   *mirror = PETSC_FALSE;
   if (merge) {
-    PetscInt  idx[MPM_MAX_DIM][4] = {{0}}; /* the directions beyond d read as 0 (GCC cannot tell that they are not read) */
-    PetscReal sg[MPM_MAX_DIM][4]  = {{0}};
+    PetscInt          idx[MPM_MAX_DIM][4] = {{0}}; /* the directions beyond d read as 0 (GCC cannot tell that they are not read) */
+    PetscReal         sg[MPM_MAX_DIM][4]  = {{0}};
+    typedef PetscReal v4 __attribute__((vector_size(4 * sizeof(PetscReal))));
+    v4                E[64]; /* entry e's (W, DW_0, DW_1, DW_2) side by side: one vector per update */
 
-    for (PetscInt e = 0; e < nb; e++) {
-      W[e] = 0.0;
-      for (PetscInt j = 0; grad && j < d; j++) DW[e * ds + j] = 0.0;
-    }
+    for (PetscInt e = 0; e < nb; e++) E[e] = (v4){0.0, 0.0, 0.0, 0.0};
     for (PetscInt c = 0; c < nc; c++) { /* N = 2^-d N_2 N_1 N_0 (the directions beyond d: weight 1, offset 0) */
       const PetscInt n2 = d > 2 ? 2 : 1, n1 = d > 1 ? 2 : 1;
       PetscReal      wt[MPM_MAX_DIM][2]  = {{1.0, 1.0}, {1.0, 1.0}, {1.0, 1.0}};
       PetscInt       off[MPM_MAX_DIM][2] = {{0, 0}, {0, 0}, {0, 0}};
-      for (PetscInt i = 0; i < d; i++)
-        for (PetscInt b = 0; b < 2; b++) {
-          wt[i][b]  = w[c][i][b];
-          off[i][b] = (first[c][i] - lo[i] + b) * stride[i];
-        }
+      v4             gv                  = {1.0, 0.0, 0.0, 0.0}; /* (1, R^-T s_c): N gv = (N, N gs) */
+      for (PetscInt j = 0; grad && j < d; j++) gv[1 + j] = gs[j][c];
+      for (PetscInt i = 0; i < d; i++) {
+        wt[i][0] = w0[i][c];
+        wt[i][1] = w1[i][c];
+        for (PetscInt b = 0; b < 2; b++) off[i][b] = (first[i][c] - lo[i] + b) * stride[i];
+      }
       for (PetscInt b2 = 0; b2 < n2; b2++) {
         const PetscReal N2 = scale * wt[2][b2];
         for (PetscInt b1 = 0; b1 < n1; b1++) {
@@ -146,11 +155,14 @@ MPM_CPDI_INLINE PetscInt CPDIStencil(const Shape_CPDI *cp, const MPMGrid *g, con
           for (PetscInt b0 = 0; b0 < 2; b0++) {
             const PetscReal N = N1 * wt[0][b0];
             const PetscInt  e = off[2][b2] + off[1][b1] + off[0][b0];
-            W[e] += N;
-            for (PetscInt j = 0; grad && j < d; j++) DW[e * ds + j] += N * gs[c][j];
+            E[e] += N * gv;
           }
         }
       }
+    }
+    for (PetscInt e = 0; e < nb; e++) {
+      W[e] = E[e][0];
+      for (PetscInt j = 0; grad && j < d; j++) DW[e * ds + j] = E[e][1 + j];
     }
     for (PetscInt i = 0; i < d; i++) {
       for (PetscInt a = 0; a < n[i]; a++) idx[i][a] = lo[i] + a;
@@ -179,8 +191,8 @@ MPM_CPDI_INLINE PetscInt CPDIStencil(const Shape_CPDI *cp, const MPMGrid *g, con
     PetscInt  idx[MPM_MAX_DIM][2];
     PetscReal sg[MPM_MAX_DIM][2];
     for (PetscInt i = 0; i < d; i++) {
-      idx[i][0] = first[c][i];
-      idx[i][1] = first[c][i] + 1;
+      idx[i][0] = first[i][c];
+      idx[i][1] = first[i][c] + 1;
       MPMShapeFold1d(g, i, 2, idx[i], sg[i]);
     }
     for (PetscInt a = 0; a < (1 << d); a++, e++) {
@@ -188,14 +200,14 @@ MPM_CPDI_INLINE PetscInt CPDIStencil(const Shape_CPDI *cp, const MPMGrid *g, con
       PetscInt  nd = 0;
       for (PetscInt i = d - 1; i >= 0; i--) {
         const PetscInt b = (a >> i) & 1;
-        N *= w[c][i][b];
+        N *= b ? w1[i][c] : w0[i][c];
         nd = nd * g->gm[i] + idx[i][b];
         if (grad) SG[e * ds + i] = sg[i][b];
         *mirror = (PetscBool)(*mirror || sg[i][b] < 0.0);
       }
       node[e] = nd;
       W[e]    = N;
-      for (PetscInt j = 0; grad && j < d; j++) DW[e * ds + j] = N * gs[c][j];
+      for (PetscInt j = 0; grad && j < d; j++) DW[e * ds + j] = N * gs[j][c];
     }
   }
   return nc * nc;
