@@ -2,7 +2,7 @@
 /* Grid to points for dimension MPM_KD (kernel_entries.h includes this once per dimension). Point p's sums over its
    stencil of the grid velocity v_I [cm/s] (MPMNode::p after the advance) and its change over the step dv_I = v_I - v_I^n
    (s_Ik the mirror sign of component k, kernel_stencil.h, applied to both):
-     vpic = sum N_I v_I,   dv = sum N_I dv_I,   dv2 = sum N_I |dv_I|^2,   R = sum N_I (v_I^n - v_p) . v_I
+     vpic = sum N_I v_I,   dv = sum N_I dv_I,   dv2_k = sum N_I dv_Ik^2,   R_k = sum N_I (v_Ik^n - v_pk) v_Ik
      Lp   = sum v_I (x) grad N_I [1/s],   Lb = sum (2 v_I - dv_I) (x) grad N_I = sum (v_I + v_I^n) (x) grad N_I
    then by mode (MPM_G2P_*; MPMKG2PFinish, the formulas at MPMGather in src/transfer/transfer.c)
      velocity    v_p <- alpha (v_p + dv) + (1 - alpha) vpic, and the kinetic-energy fix into e_p [erg/g]
@@ -13,9 +13,10 @@
    order are those of the generic reference (MPMGatherGeneric). */
 
 /* The grid velocity back to one point, by mode (see MPMGather for the formulas): the finish, from the point's stencil sums
-   (vpic = sum N v_I, dv = sum N dv_I, dv2 = sum N |dv_I|^2, R, Lp = sum v_I (x) grad N, Lb = sum (2 v_I - dv_I) (x) grad N). */
-MPM_KINLINE void MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, PetscInt p, const PetscReal vpic[MPM_KD], const PetscReal dv[MPM_KD], PetscReal dv2, PetscReal R, const PetscReal Lp[MPM_KD * MPM_KD],
-                                                               const PetscReal Lb[MPM_KD * MPM_KD], const int mode)
+   (vpic = sum N v_I, dv = sum N dv_I, dv2_k = sum N dv_Ik^2, R_k, Lp = sum v_I (x) grad N, Lb = sum (2 v_I - dv_I) (x) grad N;
+   |dv|^2 and R summed over the components here, MPMKSumComponents). */
+MPM_KINLINE void MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, PetscInt p, const PetscReal vpic[MPM_KD], const PetscReal dv[MPM_KD], const PetscReal dv2c[MPM_KD], const PetscReal Rc[MPM_KD],
+                                                               const PetscReal Lp[MPM_KD * MPM_KD], const PetscReal Lb[MPM_KD * MPM_KD], const int mode)
 {
   const PetscInt   D        = MPM_KD;
   const PetscBool  velocity = (PetscBool)(mode & MPM_G2P_VELOCITY), kinematics = (PetscBool)(mode & MPM_G2P_KINEMATICS), work = (PetscBool)(mode & MPM_G2P_WORK);
@@ -23,7 +24,8 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(const MPMTransfer
   const PetscReal *S = A->S, alpha = A->alpha;
 
   if (velocity) {
-    PetscReal share = 0.5 * dv2, gain = 0.0;
+    const PetscReal dv2 = MPMKSumComponents(MPM_KD, dv2c), R = (mode & MPM_G2P_FLIP) ? 0.0 : MPMKSumComponents(MPM_KD, Rc);
+    PetscReal       share = 0.5 * dv2, gain = 0.0;
     for (PetscInt i = 0; i < D; i++) {
       const PetscReal vn = alpha * (v[p * D + i] + dv[i]) + (1.0 - alpha) * vpic[i];
       share += v[p * D + i] * dv[i];
@@ -55,7 +57,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
   const PetscInt   D        = MPM_KD;
   const PetscBool  velocity = (PetscBool)(mode & MPM_G2P_VELOCITY), kinematics = (PetscBool)(mode & MPM_G2P_KINEMATICS), work = (PetscBool)(mode & MPM_G2P_WORK);
   const PetscReal *v            = A->v;
-  PetscReal        vpic[MPM_KD] = {0}, dv[MPM_KD] = {0}, Lp[MPM_KD * MPM_KD] = {0}, Lb[MPM_KD * MPM_KD] = {0}, dv2 = 0.0, R = 0.0;
+  PetscReal        vpic[MPM_KD] = {0}, dv[MPM_KD] = {0}, Lp[MPM_KD * MPM_KD] = {0}, Lb[MPM_KD * MPM_KD] = {0}, dv2[MPM_KD] = {0}, R[MPM_KD] = {0};
 
   for (PetscInt a = 0; a < ns; a++) {
     const MPMNode *nd = &nodes[node[a]];
@@ -66,8 +68,8 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
         const PetscReal dvI = (mirror ? SG[a][i] : 1.0) * (nd->p[i] - nd->v0[i]);
         if (velocity) {
           dv[i] += W[a] * dvI;
-          dv2 += W[a] * dvI * dvI;
-          if (!(mode & MPM_G2P_FLIP)) R += W[a] * (vI - dvI - v[p * D + i]) * vI;
+          dv2[i] += W[a] * dvI * dvI;
+          if (!(mode & MPM_G2P_FLIP)) R[i] += W[a] * (vI - dvI - v[p * D + i]) * vI;
         }
         if (work)
           for (PetscInt j = 0; j < D; j++) Lb[i * D + j] += (2.0 * vI - dvI) * DW[a][j];
@@ -80,6 +82,67 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
   if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p, ns, node, W, NULL, SG, MPM_P2G_REMAP, mirror, 1);
 }
 
+#if defined(__GNUC__) && defined(PETSC_USE_REAL_DOUBLE) && MPM_KD > 1
+/* MPMKG2PPoint without mirror signs, its components in the lanes of one vector (lane k: component k, the lanes beyond d
+   zero): each sum takes the same products in the same entry order, so the same bits, with a vector operation where the
+   point-by-point sums took d or d^2 scalar ones (the stencils that are not in lanes of points: CPDI's). */
+typedef PetscReal MPM_KCAT(MPMKV4, MPM_KNAME, MPM_KD, d) __attribute__((vector_size(4 * sizeof(PetscReal))));
+MPM_KINLINE void  MPM_KCAT(MPMKG2PPointVec, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, const MPMNode *nodes, PetscInt p, const PetscInt ns, const PetscInt node[MPM_KS], const PetscReal W[MPM_KS], const PetscReal DW[MPM_KS][MPM_KD],
+                                                                 const int mode)
+{
+  typedef MPM_KCAT(MPMKV4, MPM_KNAME, MPM_KD, d) v4;
+  const PetscInt  D        = MPM_KD;
+  const PetscBool velocity = (PetscBool)(mode & MPM_G2P_VELOCITY), kinematics = (PetscBool)(mode & MPM_G2P_KINEMATICS), work = (PetscBool)(mode & MPM_G2P_WORK);
+  const v4        zero = {0.0, 0.0, 0.0, 0.0};
+  v4              vpic = zero, dv = zero, dv2 = zero, R = zero, Lp[MPM_KD], Lb[MPM_KD], vp = zero;
+  PetscReal       vpicl[MPM_KD], dvl[MPM_KD], dv2l[MPM_KD], Rl[MPM_KD], Lpl[MPM_KD * MPM_KD], Lbl[MPM_KD * MPM_KD];
+
+  for (PetscInt i = 0; i < D; i++) {
+    vp[i] = A->v[p * D + i];
+    Lp[i] = Lb[i] = zero;
+  }
+  for (PetscInt a = 0; a < ns; a++) {
+    const MPMNode *nd = &nodes[node[a]];
+    v4             vI = zero, v0I = zero, dwv = zero, dvI;
+    const v4       w = zero + W[a];
+    for (PetscInt i = 0; i < D; i++) {
+      vI[i]  = nd->p[i];
+      v0I[i] = nd->v0[i];
+      dwv[i] = DW[a][i];
+    }
+    dvI = vI - v0I;
+    vpic += w * vI;
+    if (velocity) {
+      const v4 wd = w * dvI;
+      dv += wd;
+      dv2 += wd * dvI;
+      if (!(mode & MPM_G2P_FLIP)) R += w * (vI - dvI - vp) * vI;
+    }
+    if (work) {
+      const v4 b = 2.0 * vI - dvI;
+      for (PetscInt i = 0; i < D; i++) Lb[i] += b[i] * dwv;
+    }
+    if (kinematics)
+      for (PetscInt i = 0; i < D; i++) Lp[i] += vI[i] * dwv;
+  }
+  for (PetscInt i = 0; i < D; i++) {
+    vpicl[i] = vpic[i];
+    dvl[i]   = dv[i];
+    dv2l[i]  = dv2[i];
+    Rl[i]    = R[i];
+    for (PetscInt j = 0; j < D; j++) {
+      Lpl[i * D + j] = Lp[i][j];
+      Lbl[i * D + j] = Lb[i][j];
+    }
+  }
+  MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p, vpicl, dvl, dv2l, Rl, Lpl, Lbl, mode);
+  if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p, ns, node, W, NULL, NULL, MPM_P2G_REMAP, 0, 1);
+}
+#  define MPM_KG2PPOINT0 MPM_KCAT(MPMKG2PPointVec, MPM_KNAME, MPM_KD, d)
+#else
+#  define MPM_KG2PPOINT0(A, nodes, p, ns, node, W, DW, mode) MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, NULL, mode, 0)
+#endif
+
 #if defined(MPM_KLANES)
 /* MPM_KLANES points at once, none with a mirrored entry: the stencil sums of MPMKG2PPoint with one vector lane per point
    (the same operations in the same order in every lane, so the same bits as point by point), then each point's finish. */
@@ -88,7 +151,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
 {
   const PetscInt  D        = MPM_KD;
   const PetscBool velocity = (PetscBool)(mode & MPM_G2P_VELOCITY), kinematics = (PetscBool)(mode & MPM_G2P_KINEMATICS), work = (PetscBool)(mode & MPM_G2P_WORK);
-  MPM_KVEC        vpic[MPM_KD] = {0}, dv[MPM_KD] = {0}, Lp[MPM_KD * MPM_KD] = {0}, Lb[MPM_KD * MPM_KD] = {0}, dv2 = {0}, R = {0}, vp[MPM_KD];
+  MPM_KVEC        vpic[MPM_KD] = {0}, dv[MPM_KD] = {0}, Lp[MPM_KD * MPM_KD] = {0}, Lb[MPM_KD * MPM_KD] = {0}, dv2[MPM_KD] = {0}, R[MPM_KD] = {0}, vp[MPM_KD];
 
   for (PetscInt i = 0; i < D; i++) vp[i] = MPM_KLANE(&A->v[p0 * D + i], D);
   for (PetscInt a = 0; a < MPM_KS; a++) {
@@ -107,8 +170,8 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
         const MPM_KVEC dvI = vI - v0I;
         if (velocity) {
           dv[i] += w * dvI;
-          dv2 += w * dvI * dvI;
-          if (!(mode & MPM_G2P_FLIP)) R += w * (vI - dvI - vp[i]) * vI;
+          dv2[i] += w * dvI * dvI;
+          if (!(mode & MPM_G2P_FLIP)) R[i] += w * (vI - dvI - vp[i]) * vI;
         }
         if (work)
           for (PetscInt j = 0; j < D; j++) Lb[i * D + j] += (2.0 * vI - dvI) * dw[j];
@@ -118,16 +181,18 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
     }
   }
   for (PetscInt l = 0; l < MPM_KLANES; l++) {
-    PetscReal vpicl[MPM_KD], dvl[MPM_KD], Lpl[MPM_KD * MPM_KD], Lbl[MPM_KD * MPM_KD];
+    PetscReal vpicl[MPM_KD], dvl[MPM_KD], dv2l[MPM_KD], Rl[MPM_KD], Lpl[MPM_KD * MPM_KD], Lbl[MPM_KD * MPM_KD];
     for (PetscInt i = 0; i < D; i++) {
       vpicl[i] = vpic[i][l];
       dvl[i]   = dv[i][l];
+      dv2l[i]  = dv2[i][l];
+      Rl[i]    = R[i][l];
     }
     for (PetscInt i = 0; i < D * D; i++) {
       Lpl[i] = Lp[i][l];
       Lbl[i] = Lb[i][l];
     }
-    MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p0 + l, vpicl, dvl, dv2[l], R[l], Lpl, Lbl, mode);
+    MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p0 + l, vpicl, dvl, dv2l, Rl, Lpl, Lbl, mode);
     if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p0 + l, MPM_KS, &node[0][l], &W[0][l], NULL, NULL, MPM_P2G_REMAP, 0, MPM_KLANES);
   }
 }
@@ -143,7 +208,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2POne, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, co
   if (mirror)
     MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 1);
   else
-    MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 0);
+    MPM_KG2PPOINT0(A, nodes, p, ns, node, W, DW, mode);
 }
 
 /* The grid-to-points loop over the points, with no mode branch left inside: MPM_KLANES points at a time where none

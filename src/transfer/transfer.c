@@ -459,7 +459,7 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
   MPMStencil       st;
 
   for (PetscInt p = 0; p < pts->n; p++) {
-    PetscReal vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Lb[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, dv2 = 0.0, R = 0.0, Fs[MPM_MAX_DIM * MPM_MAX_DIM];
+    PetscReal vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Lb[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, dv2c[MPM_MAX_DIM] = {0}, Rc[MPM_MAX_DIM] = {0}, Fs[MPM_MAX_DIM * MPM_MAX_DIM];
     PetscReal Lbtt                          = 0.0;                                      /* axisymmetric: the hoop rate of vbar, sum N (2 v_I - dv_I)_r / r_p */
     PetscReal Bm[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Dm[MPM_MAX_DIM * MPM_MAX_DIM] = {0}; /* APIC's moments */
     PetscReal Cdv = 0.0;                                                                /* APIC: sum N (C_p (x_I - x_p)) . dv_I */
@@ -480,8 +480,8 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
         const PetscReal vI = st.s[a][i] * nd->p[i], dvI = st.s[a][i] * (nd->p[i] - nd->v0[i]); /* mirrored: reflected */
         vpic[i] += st.w[a] * vI;
         dv[i] += st.w[a] * dvI;
-        dv2 += st.w[a] * dvI * dvI;
-        R += st.w[a] * (vI - dvI - v[p * d + i] - Cx[i]) * vI; /* (v_I^n - v_p - C_p (x_I - x_p)) . v_I */
+        dv2c[i] += st.w[a] * dvI * dvI;                            /* |dv_I|^2 and R per component (MPMKSumComponents) */
+        Rc[i] += st.w[a] * (vI - dvI - v[p * d + i] - Cx[i]) * vI; /* (v_I^n - v_p - C_p (x_I - x_p)) . v_I */
         Cdv += st.w[a] * Cx[i] * dvI;
         for (PetscInt j = 0; j < d; j++) Lp[i * d + j] += vI * st.dw[a][j];
         if (work)
@@ -490,7 +490,8 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
       }
     }
     if (velocity) {
-      PetscReal share = 0.5 * dv2 + Cdv, gain = 0.0; /* grid kinetic energy gain of the point's share, the point's own [erg/g] */
+      const PetscReal dv2 = MPMKSumComponents(d, dv2c), R = MPMKSumComponents(d, Rc);
+      PetscReal       share = 0.5 * dv2 + Cdv, gain = 0.0; /* grid kinetic energy gain of the point's share, the point's own [erg/g] */
       for (PetscInt i = 0; i < d; i++) {
         const PetscReal vn = alpha * (v[p * d + i] + dv[i]) + (1.0 - alpha) * vpic[i];
         share += v[p * d + i] * dv[i];

@@ -74,6 +74,15 @@ static inline void MPMStressForceMatrix(PetscInt d, PetscReal V, PetscReal P, Pe
     for (PetscInt j = 0; j < d; j++) Sig[k * d + j] = V * ((k == j ? P : 0.0) - Sig[k * d + j]);
 }
 
+/* sum_k c_k over the d components, in order: the grid-to-points sums |dv|^2 and R are summed per component over the stencil
+   (d independent sums, which vectorize), then over the components here; the generic and the specialised gathers share it. */
+static inline PetscReal MPMKSumComponents(PetscInt d, const PetscReal c[])
+{
+  PetscReal s = c[0];
+  for (PetscInt k = 1; k < d; k++) s += c[k];
+  return s;
+}
+
 /* The conservative update's energy increment of point p, dt_kick (s : Lbar - (p + q) tr Lbar) / rho, shared by the generic
    and the specialised gathers. In an expansion eps = dt_kick tr Lbar beyond the threshold (-mpm_isentrope_threshold,
    as the compatible update's) the share of p and q is replaced by the change along the EOS isentrope (A->expand counts
