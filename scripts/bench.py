@@ -12,12 +12,18 @@ Cases (point-steps per second, median of --repeat runs, each case's runs interle
   block8q    the same with quadratic B-splines                              vs  mpm3d_quad
   bar1       the 3D bar, linear, 1 point per cell, MUSL, 8.3e4 points         vs  mpm3d cell
   bar2d      the 2D bar (bar_impact_2d.opts), linear, 1 point per cell, MUSL, 9.6e5 points
+  bardef     the 3D bar of bar1 in the program's default method (inputs/methods/cpdi1.opts: CPDI, the FLIP/PIC blend,
+             splitting, heat conduction, pressure relaxation, USL), 8.3e4 points  vs  mpm3d_quad (27 nodes per point,
+             the size of CPDI's merged stencil); its rate over bar1's: what the default method costs on the same points
+  bar2ddef   the 2D bar of bar2d in the default method, 9.6e5 points; over bar2d's rate likewise
   anvil3d    the 3D Taylor anvil (taylor_anvil_3d.opts) in the program's default method (CPDI, the FLIP/PIC blend,
              splitting, heat conduction), 4.1e3 points, 100 steps: what a user running the defaults in 3D gets
   cpdi8      the 3D manufactured neo-Hookean solid (mms_axis_aligned_3d.opts) with CPDI at 8 points per cell, 12^3 cells
 Each case on every rank count of --ranks; with --before, the same runs with another petmpm (the code before a
 change) interleaved too, and the speed-up. The -log_view phase shares of each case on one rank, and the memory
-per point in 3D: the marginal process memory per point between two sizes (PETSc's -memory_view maximum).
+per point in 3D: the marginal process memory per point between two sizes (PETSc's -memory_view maximum), with block8
+in its method and with bardef in the default method; with bar1 and bardef (bar2d and bar2ddef) the default method's
+rate over the linear one on the same points.
 """
 import argparse
 import os
@@ -30,6 +36,7 @@ SRC = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 REF = os.path.join(os.path.dirname(SRC), "shared", "bench")
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from petmpmlib import ENV, Transcript  # noqa: E402
+DEFAULT = os.path.join(SRC, "inputs", "methods", "cpdi1.opts")  # the program's default method, spelled out
 REFFLAGS = {"mpm1d": ["-DBLOCK"], "mpm3d": ["-DBLOCK"], "mpm3d_quad": ["-DQUAD"]}
 
 
@@ -105,6 +112,8 @@ def main():
          ["-mpm_cells", blk, "-mpm_ppc", "2", "-mpm_scheme", "usl", "-mpm_shape_type", "bspline2", "-ts_max_steps", "3" if a.quick else "6"], "mpm3d_quad", ["cell", "6"]),
         ("bar1", "3D bar, linear, 1 ppc, MUSL, MG + JC", "bar_impact_3d.opts", ["-mpm_cells", "36,36,156", "-ts_max_steps", "20"], "mpm3d", ["cell", "10"]),
         ("bar2d", "2D bar, linear, 1 ppc, MUSL, MG + JC", "bar_impact_2d.opts", ["-mpm_cells", "600,2600", "-ts_max_steps", "20"], None, None),
+        ("bardef", "3D bar, the default method (cpdi1.opts)", "bar_impact_3d.opts", ["-options_file", DEFAULT, "-mpm_cells", "36,36,156", "-ts_max_steps", "20"], "mpm3d_quad", ["cell", "6"]),
+        ("bar2ddef", "2D bar, the default method (cpdi1.opts)", "bar_impact_2d.opts", ["-options_file", DEFAULT, "-mpm_cells", "600,2600", "-ts_max_steps", "20"], None, None),
         ("anvil3d", "3D Taylor anvil, the default method (CPDI, blend, splitting), R0/9", "taylor_anvil_3d.opts", ["-mpm_cells", "24,24,63", "-ts_max_steps", "100"], None, None),
         ("cpdi8", "3D manufactured solid, CPDI, 8 ppc, 12^3 cells", "mms_axis_aligned_3d.opts", ["-mpm_cells", "12,12,12", "-mpm_shape_type", "cpdi"], None, None),
     ]
@@ -116,7 +125,7 @@ def main():
     say()
     say("| case | what | ranks | points | petmpm | reference | ratio | " + ("before | speed-up |" if a.before else ""))
     say("|---|---|---|---|---|---|---|" + ("---|---|" if a.before else ""))
-    logs = {}
+    logs, medians = {}, {}
     for key, what, scene, extra, refname, refargs in cases:
         for r in ranks:
             rates, refs, befores, pts = [], [], [], 0
@@ -129,6 +138,7 @@ def main():
                 if refname in ref and r == 1:
                     refs.append(run_reference(ref[refname], refargs))
             pm = statistics.median(rates)
+            medians[(key, r)] = pm
             rm = statistics.median(refs) if refs else None
             row = f"| {key} | {what} | {r} | {pts} | {pm:.3g} | " + (f"{rm:.3g} | {pm / rm:.3f} |" if rm else "- | - |")
             if a.before:
@@ -136,19 +146,23 @@ def main():
                 row += f" {bm:.3g} | {pm / bm:.2f} |"
             say(row)
         logs[key] = run_petmpm(exe, scene, extra, 1, os.path.join(a.out, key), log=True)["log"]
+    for fast, slow in (("bar1", "bardef"), ("bar2d", "bar2ddef")):
+        for r in ranks:
+            if (fast, r) in medians and (slow, r) in medians:
+                say(f"\nThe default method against linear MUSL on the same points ({slow} / {fast}, {r} rank(s)): {medians[(slow, r)] / medians[(fast, r)]:.3f} of its rate.")
     say()
     say("-log_view, one rank, share of the time-loop stage [%]:")
     say()
     for key, *_ in cases:
         say(f"- {key}: " + ", ".join(f"{e} {s:.0f}" for e, s in phases(logs[key]) if s >= 1))
-    if not any(c[0] == "block8" for c in cases):
-        say.write(a.markdown)
-        return 0
-    m1 = run_petmpm(exe, "bar_impact_3d.opts", ["-mpm_cells", "24,24,104", "-mpm_ppc", "2", "-ts_max_steps", "2"], 1, os.path.join(a.out, "mem"), memory=True)
-    m2 = run_petmpm(exe, "bar_impact_3d.opts", ["-mpm_cells", "48,48,208", "-mpm_ppc", "2", "-ts_max_steps", "2"], 1, os.path.join(a.out, "mem"), memory=True)
-    say()
-    say(f"Memory in 3D (8 ppc, -memory_view maximum): {m1['memory'] / 1e6:.0f} MB with {m1['points']} points, {m2['memory'] / 1e6:.0f} MB with "
-        f"{m2['points']} points: {(m2['memory'] - m1['memory']) / (m2['points'] - m1['points']):.0f} bytes per additional point (grid included).")
+    for key, name, method in (("block8", "the block's method (linear, USL)", []), ("bardef", "the default method", ["-options_file", DEFAULT])):
+        if not any(c[0] == key for c in cases):
+            continue
+        m1 = run_petmpm(exe, "bar_impact_3d.opts", method + ["-mpm_cells", "24,24,104", "-mpm_ppc", "2", "-ts_max_steps", "2"], 1, os.path.join(a.out, "mem"), memory=True)
+        m2 = run_petmpm(exe, "bar_impact_3d.opts", method + ["-mpm_cells", "48,48,208", "-mpm_ppc", "2", "-ts_max_steps", "2"], 1, os.path.join(a.out, "mem"), memory=True)
+        say()
+        say(f"Memory in 3D, {name} (8 ppc, -memory_view maximum): {m1['memory'] / 1e6:.0f} MB with {m1['points']} points, {m2['memory'] / 1e6:.0f} MB with "
+            f"{m2['points']} points: {(m2['memory'] - m1['memory']) / (m2['points'] - m1['points']):.0f} bytes per additional point (grid included).")
     say.write(a.markdown)
     return 0
 
