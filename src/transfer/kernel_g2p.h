@@ -83,12 +83,13 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
 }
 
 #if defined(__GNUC__) && defined(PETSC_USE_REAL_DOUBLE) && MPM_KD > 1
-/* MPMKG2PPoint without mirror signs, its components in the lanes of one vector (lane k: component k, the lanes beyond d
-   zero): each sum takes the same products in the same entry order, so the same bits, with a vector operation where the
-   point-by-point sums took d or d^2 scalar ones (the stencils that are not in lanes of points: CPDI's). */
+/* MPMKG2PPoint with its components in the lanes of one vector (lane k: component k, the lanes beyond d zero), the
+   mirror signs SG (read when mirror is set) a vector too: each sum takes the same products in the same entry order, so
+   the same bits, with a vector operation where the point-by-point sums took d or d^2 scalar ones (the stencils that are
+   not in lanes of points: CPDI's). */
 typedef PetscReal MPM_KCAT(MPMKV4, MPM_KNAME, MPM_KD, d) __attribute__((vector_size(4 * sizeof(PetscReal))));
 MPM_KINLINE void  MPM_KCAT(MPMKG2PPointVec, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, const MPMNode *nodes, PetscInt p, const PetscInt ns, const PetscInt node[MPM_KS], const PetscReal W[MPM_KS], const PetscReal DW[MPM_KS][MPM_KD],
-                                                                 const int mode)
+                                                                 const PetscReal SG[MPM_KS][MPM_KD], const int mode, const int mirror)
 {
   typedef MPM_KCAT(MPMKV4, MPM_KNAME, MPM_KD, d) v4;
   const PetscInt  D        = MPM_KD;
@@ -103,14 +104,19 @@ MPM_KINLINE void  MPM_KCAT(MPMKG2PPointVec, MPM_KNAME, MPM_KD, d)(const MPMTrans
   }
   for (PetscInt a = 0; a < ns; a++) {
     const MPMNode *nd = &nodes[node[a]];
-    v4             vI = zero, v0I = zero, dwv = zero, dvI;
+    v4             vI = zero, v0I = zero, dwv = zero, sg = zero, dvI;
     const v4       w = zero + W[a];
     for (PetscInt i = 0; i < D; i++) {
       vI[i]  = nd->p[i];
       v0I[i] = nd->v0[i];
       dwv[i] = DW[a][i];
+      if (mirror) sg[i] = SG[a][i];
     }
     dvI = vI - v0I;
+    if (mirror) { /* reflected across a wall, as MPMKG2PPoint: s (v_I - v_I^n) and s v_I */
+      dvI = sg * dvI;
+      vI  = sg * vI;
+    }
     vpic += w * vI;
     if (velocity) {
       const v4 wd = w * dvI;
@@ -136,11 +142,11 @@ MPM_KINLINE void  MPM_KCAT(MPMKG2PPointVec, MPM_KNAME, MPM_KD, d)(const MPMTrans
     }
   }
   MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p, vpicl, dvl, dv2l, Rl, Lpl, Lbl, mode);
-  if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p, ns, node, W, NULL, NULL, MPM_P2G_REMAP, 0, 1);
+  if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p, ns, node, W, NULL, SG, MPM_P2G_REMAP, mirror, 1);
 }
-#  define MPM_KG2PPOINT0 MPM_KCAT(MPMKG2PPointVec, MPM_KNAME, MPM_KD, d)
+#  define MPM_KG2PPOINT1 MPM_KCAT(MPMKG2PPointVec, MPM_KNAME, MPM_KD, d)
 #else
-#  define MPM_KG2PPOINT0(A, nodes, p, ns, node, W, DW, mode) MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, NULL, mode, 0)
+#  define MPM_KG2PPOINT1 MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)
 #endif
 
 #if defined(MPM_KLANES)
@@ -206,9 +212,9 @@ MPM_KINLINE void MPM_KCAT(MPMKG2POne, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, co
   const int mirror = MPM_KEVAL(g, ctx, A, p, node, W, DW, SG, ns);
 
   if (mirror)
-    MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 1);
+    MPM_KG2PPOINT1(A, nodes, p, ns, node, W, DW, SG, mode, 1);
   else
-    MPM_KG2PPOINT0(A, nodes, p, ns, node, W, DW, mode);
+    MPM_KG2PPOINT1(A, nodes, p, ns, node, W, DW, SG, mode, 0);
 }
 
 /* The grid-to-points loop over the points, with no mode branch left inside: MPM_KLANES points at a time where none
@@ -241,9 +247,9 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
         PetscReal Wl[MPM_KS], DWl[MPM_KS][MPM_KD];
         MPM_KCAT(MPMKLaneOut, MPM_KNAME, MPM_KD, d)(l, node, W, DW, nodel, Wl, DWl);
         if (mirror[l])
-          MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS, nodel, Wl, DWl, SG[l], mode, 1);
+          MPM_KG2PPOINT1(A, nodes, p + l, MPM_KS, nodel, Wl, DWl, SG[l], mode, 1);
         else
-          MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS, nodel, Wl, DWl, SG[l], mode, 0);
+          MPM_KG2PPOINT1(A, nodes, p + l, MPM_KS, nodel, Wl, DWl, SG[l], mode, 0);
       }
   }
 #endif
