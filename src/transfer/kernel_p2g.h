@@ -50,6 +50,60 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
   }
 }
 
+#if defined(__GNUC__) && defined(PETSC_USE_REAL_DOUBLE) && MPM_KD > 1
+/* MPMKP2GPoint of one point's arrays (ls = 1) with the components in the lanes of one vector (lane k: component k,
+   the lanes beyond d zero): the momentum s_I N_I m_p v_p, the stress force s_I sum_j (-V sigma)_kj grad_j N_I (the
+   columns of -V sigma, summed in j order) or the pressure force s_I V_p P grad N_I, formed as vectors with the products
+   of MPMKP2GPoint, then added to the node component by component: the same bits. */
+typedef PetscReal MPM_KCAT(MPMKP4, MPM_KNAME, MPM_KD, d) __attribute__((vector_size(4 * sizeof(PetscReal))));
+MPM_KINLINE void  MPM_KCAT(MPMKP2GPointVec, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, MPMNode *nodes, PetscInt p, const PetscInt ns, const PetscInt *node, const PetscReal *W, const PetscReal DW[][MPM_KD], const PetscReal SG[][MPM_KD],
+                                                                 const int mode, const int mirror)
+{
+  typedef MPM_KCAT(MPMKP4, MPM_KNAME, MPM_KD, d) v4;
+  const PetscInt  D    = MPM_KD;
+  const v4        zero = {0.0, 0.0, 0.0, 0.0};
+  const PetscReal mp = A->m[p], Vp = (mode & (MPM_P2G_PRESSURE | MPM_P2G_STRESS)) ? A->V[p] : 0.0, P = (mode & MPM_P2G_PRESSURE) ? A->pr[p] + A->q[p] : 0.0;
+  const PetscReal VP = Vp * P;
+  v4              vp = zero, Sc[MPM_KD];
+  PetscReal       Sp[MPM_KD * MPM_KD];
+
+  for (PetscInt k = 0; k < D; k++) vp[k] = A->v[p * D + k];
+  if (mode & MPM_P2G_STRESS) {
+    for (PetscInt k = 0; k < D * D; k++) Sp[k] = A->S[p * D * D + k];
+    MPMStressForceMatrix(D, Vp, P, Sp);
+    for (PetscInt j = 0; j < D; j++) { /* column j of -V sigma */
+      Sc[j] = zero;
+      for (PetscInt k = 0; k < D; k++) Sc[j][k] = Sp[k * D + j];
+    }
+  }
+  for (PetscInt a = 0; a < ns; a++) {
+    MPMNode        *nd = &nodes[node[a]];
+    const PetscReal wm = W[a] * mp;
+    v4              sg = zero + 1.0, mv, f = zero;
+    if (mirror)
+      for (PetscInt k = 0; k < D; k++) sg[k] = SG[a][k];
+    mv = sg * wm * vp;
+    if (mode & MPM_P2G_STRESS) {
+      v4 sgr = zero;
+      for (PetscInt j = 0; j < D; j++) sgr += Sc[j] * DW[a][j];
+      f = sg * sgr;
+    } else if (mode & MPM_P2G_PRESSURE) {
+      v4 dw = zero;
+      for (PetscInt k = 0; k < D; k++) dw[k] = DW[a][k];
+      f = sg * VP * dw;
+    }
+    nd->m += wm;
+    nd->w2 += W[a] * W[a];
+    for (PetscInt k = 0; k < D; k++) nd->p[k] += mv[k];
+    if (mode & (MPM_P2G_STRESS | MPM_P2G_PRESSURE))
+      for (PetscInt k = 0; k < D; k++) nd->f[k] += f[k];
+  }
+}
+#  define MPM_KP2GPOINT1(A, nodes, p, ns, node, W, DW, SG, mode, mirror) MPM_KCAT(MPMKP2GPointVec, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, mirror)
+#else
+#  define MPM_KP2GPOINT1(A, nodes, p, ns, node, W, DW, SG, mode, mirror) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, mirror, 1)
+#endif
+
 /* One point of points to grid: its stencil, then MPMKP2GPoint, with the mirror signs only where the stencil has one. */
 MPM_KINLINE void MPM_KCAT(MPMKP2GOne, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const void *ctx, const MPMTransferArgs *A, MPMNode *nodes, PetscInt p, const int mode)
 {
@@ -58,9 +112,9 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GOne, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, co
   const int mirror = MPM_KEVAL(g, ctx, A, p, node, W, DW, SG, ns);
 
   if (mirror)
-    MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 1, 1);
+    MPM_KP2GPOINT1(A, nodes, p, ns, node, W, DW, SG, mode, 1);
   else
-    MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 0, 1);
+    MPM_KP2GPOINT1(A, nodes, p, ns, node, W, DW, SG, mode, 0);
 }
 
 #if !defined(MPM_KSTENCIL) && defined(__GNUC__) && defined(PETSC_USE_REAL_DOUBLE) && (MPM_KS & (MPM_KS - 1)) == 0
