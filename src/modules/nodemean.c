@@ -33,37 +33,60 @@ PetscErrorCode MPMPointsNodalMean(MPM mpm, const MPMPoints *pts, const PetscReal
 {
   const PetscBool one = (PetscBool)(mpm->lnodes == mpm->nodes); /* one rank, no ghosts: the local array is the global one */
   PetscInt        lo = PETSC_MAX_INT, hi = -1;                  /* the flat range of nodes the scatter touched */
-  PetscReal      *W;
+  PetscReal      *W, *sw                 = NULL;                /* the weighted points' stencils, kept from the scatter for the gather: */
+  PetscInt       *sn = NULL, nw = 0, cap = 0, used = 0, k = 0;  /* entries, nodes sn and weights sw, packed in point order */
   MPMStencil      st;
 
   PetscFunctionBegin;
   PetscCall(MPMNodalMeanSetUp(mpm));
   if (!one) PetscCall(VecZeroEntries(mpm->mean_l));
   PetscCall(VecGetArray(mpm->mean_l, &W));
+  for (PetscInt p = 0; p < pts->n; p++) nw += (w[p] != 0.0);
   for (PetscInt p = 0; p < pts->n; p++) { /* sum N w and sum N w q to the nodes */
     if (w[p] == 0.0) continue;
     MPMNodalMeanStencilOf(mpm, pts, p, &st);
+    if (used + 1 + st.n > cap) { /* room for this stencil and, at the mean size so far, the rest */
+      const PetscInt need = used + 1 + st.n + (nw - k) * (used / PetscMax(k, 1) + 1 + st.n);
+      PetscInt      *sn1;
+      PetscReal     *sw1;
+      PetscCall(PetscMalloc2(need, &sn1, need, &sw1));
+      PetscCall(PetscArraycpy(sn1, sn, used));
+      PetscCall(PetscArraycpy(sw1, sw, used));
+      PetscCall(PetscFree2(sn, sw));
+      sn  = sn1;
+      sw  = sw1;
+      cap = need;
+    }
+    sn[used++] = st.n;
+    k++;
     for (PetscInt a = 0; a < st.n; a++) {
       W[2 * st.node[a]] += st.w[a] * w[p];
       W[2 * st.node[a] + 1] += st.w[a] * w[p] * q[p];
-      lo = PetscMin(lo, st.node[a]);
-      hi = PetscMax(hi, st.node[a]);
+      lo           = PetscMin(lo, st.node[a]);
+      hi           = PetscMax(hi, st.node[a]);
+      sn[used + a] = st.node[a];
+      sw[used + a] = st.w[a];
     }
+    used += st.n;
   }
   PetscCall(MPMNodalMeanSum(mpm, &W));
-  for (PetscInt p = 0; p < pts->n; p++) { /* the interpolants of q_I and q_I^2 at the point */
+  used = 0;
+  for (PetscInt p = 0; p < pts->n; p++) { /* the interpolants of q_I and q_I^2 at the point, on the stencils kept */
     PetscReal s1 = 0.0, s2 = 0.0;
+    PetscInt  n;
     if (w[p] == 0.0) continue;
-    MPMNodalMeanStencilOf(mpm, pts, p, &st);
-    for (PetscInt a = 0; a < st.n; a++)
-      if (W[2 * st.node[a]] > 0.0) {
-        const PetscReal qI = W[2 * st.node[a] + 1] / W[2 * st.node[a]];
-        s1 += st.w[a] * qI;
-        s2 += st.w[a] * qI * qI;
+    n = sn[used++];
+    for (PetscInt a = 0; a < n; a++)
+      if (W[2 * sn[used + a]] > 0.0) {
+        const PetscReal qI = W[2 * sn[used + a] + 1] / W[2 * sn[used + a]];
+        s1 += sw[used + a] * qI;
+        s2 += sw[used + a] * qI * qI;
       }
+    used += n;
     qbar[p] = s1;
     if (q2bar) q2bar[p] = s2;
   }
+  PetscCall(PetscFree2(sn, sw));
   if (one && hi >= lo) PetscCall(PetscArrayzero(&W[2 * lo], 2 * (hi - lo + 1))); /* zero for the next call (one rank: no VecZeroEntries) */
   PetscCall(VecRestoreArray(mpm->mean_l, &W));
   PetscFunctionReturn(PETSC_SUCCESS);
