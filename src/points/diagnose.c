@@ -21,7 +21,7 @@ PetscErrorCode MPMDiagnoseVacuum(MPM mpm, PetscInt *nvacuum, PetscInt *nempty)
   const MPMGrid *g = &mpm->grid;
   const PetscInt d = g->dim;
   PetscReal      rhomin[MPM_MAX_MATERIALS], *vsum, fill[2] = {0.0, 0.0};
-  PetscInt      *count, n[2] = {0, 0}, xmin = -1;
+  PetscInt      *count, n[2] = {0, 0}, xmin = -1, *occ[MPM_MAX_DIM] = {NULL, NULL, NULL}, stride[MPM_MAX_DIM];
   MPMPoints      pts;
 
   PetscFunctionBegin;
@@ -60,8 +60,23 @@ PetscErrorCode MPMDiagnoseVacuum(MPM mpm, PetscInt *nvacuum, PetscInt *nempty)
       n[0]++;
     }
   }
+  for (PetscInt k = 0; k < d; k++) { /* per grid line along k: its first and last occupied cell (occ[k][2 L], [2 L + 1]) */
+    const PetscInt nl = g->ncells / g->cm[k];
+    stride[k]         = k ? stride[k - 1] * g->cm[k - 1] : 1;
+    PetscCall(PetscMalloc1(2 * nl, &occ[k]));
+    for (PetscInt l = 0; l < nl; l++) {
+      occ[k][2 * l]     = PETSC_MAX_INT;
+      occ[k][2 * l + 1] = -1;
+    }
+    for (PetscInt c = 0; c < g->ncells; c++)
+      if (count[c]) {
+        const PetscInt i = (c / stride[k]) % g->cm[k], l = (c / (stride[k] * g->cm[k])) * stride[k] + c % stride[k];
+        occ[k][2 * l]     = PetscMin(occ[k][2 * l], i);
+        occ[k][2 * l + 1] = PetscMax(occ[k][2 * l + 1], i);
+      }
+  }
   for (PetscInt c = 0; c < g->ncells; c++) {
-    PetscInt ijk[3] = {c % g->cm[0], (c / g->cm[0]) % g->cm[1], c / (g->cm[0] * g->cm[1])}, stride = 1;
+    PetscInt ijk[3] = {c % g->cm[0], (c / g->cm[0]) % g->cm[1], c / (g->cm[0] * g->cm[1])};
     if (count[c]) { /* an interior cell (it and the 3^d - 1 around it hold points' centres, all owned here): its points' volume */
       PetscBool interior = PETSC_TRUE;
       for (PetscInt k = 0; k < d; k++) interior = (PetscBool)(interior && ijk[k] > 0 && ijk[k] < g->cm[k] - 1);
@@ -75,17 +90,15 @@ PetscErrorCode MPMDiagnoseVacuum(MPM mpm, PetscInt *nvacuum, PetscInt *nempty)
       }
       continue;
     }
-    for (PetscInt k = 0; k < d; k++) { /* occupied cells on both sides along direction k */
-      PetscBool lo = PETSC_FALSE, hi = PETSC_FALSE;
-      for (PetscInt i = ijk[k] - 1; i >= 0 && !lo; i--) lo = (PetscBool)(count[c - (ijk[k] - i) * stride] > 0);
-      for (PetscInt i = ijk[k] + 1; i < g->cm[k] && !hi; i++) hi = (PetscBool)(count[c + (i - ijk[k]) * stride] > 0);
-      stride *= g->cm[k];
-      if (lo && hi) {
+    for (PetscInt k = 0; k < d; k++) { /* occupied cells on both sides along direction k: the line's first before it, its last after it */
+      const PetscInt l = (c / (stride[k] * g->cm[k])) * stride[k] + c % stride[k];
+      if (occ[k][2 * l] < ijk[k] && ijk[k] < occ[k][2 * l + 1]) {
         n[1]++;
         break;
       }
     }
   }
+  for (PetscInt k = 0; k < d; k++) PetscCall(PetscFree(occ[k]));
   if (xmin >= 0 && mpm->diag.first_vacuum_step < 0) {
     PetscMPIInt rank;
     PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));

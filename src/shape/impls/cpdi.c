@@ -267,21 +267,27 @@ static void MPMShapeWeights_CPDI(void *ctx, const MPMGrid *g, const PetscReal x[
     st->n = CPDIStencil(cp, g, x, F, st->node, st->w, NULL, NULL, MPM_MAX_DIM, &mirror, 1, PETSC_FALSE);
 }
 
-/* The domain's corners stay within reach cells of its centre, and it is not inverted. */
-static PetscBool MPMShapeAdmissible_CPDI(void *ctx, const MPMGrid *g, const PetscReal F[])
+/* The domain's corners stay within reach cells of its centre, and it is not inverted (d a constant where
+   MPMShapeAdmissible_CPDI calls it, so that the loops unroll). */
+MPM_CPDI_INLINE PetscBool CPDIAdmissible(const Shape_CPDI *cp, const MPMGrid *g, const PetscReal F[], const PetscInt d)
 {
-  const Shape_CPDI *cp = (const Shape_CPDI *)ctx;
-  const PetscInt    d  = g->dim;
-  PetscReal         R[MPM_MAX_DIM * MPM_MAX_DIM], Ri[MPM_MAX_DIM * MPM_MAX_DIM];
+  PetscReal R[MPM_MAX_DIM * MPM_MAX_DIM];
 
   if (!(MPMDeterminant(d, F) > 0.0)) return PETSC_FALSE;
-  CPDIDomain(cp, d, F, R, Ri);
+  CPDIDomain(cp, d, F, R, NULL); /* the extents need no inverse */
   for (PetscInt i = 0; i < d; i++) {
     PetscReal ext = 0.0;
     for (PetscInt k = 0; k < d; k++) ext += PetscAbsReal(R[i * d + k]);
     if (!(ext <= cp->reach * g->h[i])) return PETSC_FALSE;
   }
   return PETSC_TRUE;
+}
+
+static PetscBool MPMShapeAdmissible_CPDI(void *ctx, const MPMGrid *g, const PetscReal F[])
+{
+  const Shape_CPDI *cp = (const Shape_CPDI *)ctx;
+
+  return g->dim == 3 ? CPDIAdmissible(cp, g, F, 3) : (g->dim == 2 ? CPDIAdmissible(cp, g, F, 2) : CPDIAdmissible(cp, g, F, 1));
 }
 
 static PetscErrorCode MPMShapeSetUp_CPDI(MPMShape shape, const MPMGrid *g, PetscInt ppc)
