@@ -86,8 +86,17 @@ PetscErrorCode MPMPointsNodalMean(MPM mpm, const MPMPoints *pts, const PetscReal
     qbar[p] = s1;
     if (q2bar) q2bar[p] = s2;
   }
+  if (one && hi >= lo) { /* zero for the next call (one rank: no VecZeroEntries): the nodes the stencils name, or their whole range where smaller */
+    if (used - k < hi - lo + 1)
+      for (PetscInt i = 0, j = 0; i < k; i++) {
+        const PetscInt n = sn[j++];
+        for (PetscInt a = 0; a < n; a++) W[2 * sn[j + a]] = W[2 * sn[j + a] + 1] = 0.0;
+        j += n;
+      }
+    else
+      PetscCall(PetscArrayzero(&W[2 * lo], 2 * (hi - lo + 1)));
+  }
   PetscCall(PetscFree2(sn, sw));
-  if (one && hi >= lo) PetscCall(PetscArrayzero(&W[2 * lo], 2 * (hi - lo + 1))); /* zero for the next call (one rank: no VecZeroEntries) */
   PetscCall(VecRestoreArray(mpm->mean_l, &W));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
