@@ -45,17 +45,18 @@ PetscErrorCode MPMPointsNodalMean(MPM mpm, const MPMPoints *pts, const PetscReal
   for (PetscInt p = 0; p < pts->n; p++) { /* sum N w and sum N w q to the nodes */
     if (w[p] == 0.0) continue;
     MPMNodalMeanStencilOf(mpm, pts, p, &st);
-    if (used + 1 + st.n > cap) { /* room for this stencil and, at the mean size so far, the rest */
-      const PetscInt need = used + 1 + st.n + (nw - k) * (used / PetscMax(k, 1) + 1 + st.n);
-      PetscInt      *sn1;
-      PetscReal     *sw1;
-      PetscCall(PetscMalloc2(need, &sn1, need, &sw1));
+    if (used + 1 + st.n > cap) { /* room: every weighted point at this size first, then twice as much */
+      const PetscInt64 want = cap ? 2 * (PetscInt64)cap : (PetscInt64)nw * (1 + st.n), need = PetscMax(want, (PetscInt64)used + 1 + st.n);
+      PetscInt        *sn1;
+      PetscReal       *sw1;
+      PetscCheck(need <= PETSC_MAX_INT, PETSC_COMM_SELF, PETSC_ERR_SUP, "The nodal means' stencils of %" PetscInt_FMT " points need %" PetscInt64_FMT " entries, beyond the index range; run on more ranks", nw, need);
+      PetscCall(PetscMalloc2((size_t)need, &sn1, (size_t)need, &sw1));
       PetscCall(PetscArraycpy(sn1, sn, used));
       PetscCall(PetscArraycpy(sw1, sw, used));
       PetscCall(PetscFree2(sn, sw));
       sn  = sn1;
       sw  = sw1;
-      cap = need;
+      cap = (PetscInt)need;
     }
     sn[used++] = st.n;
     k++;

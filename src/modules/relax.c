@@ -25,9 +25,11 @@ static PetscErrorCode MPMRelaxSetFromOptions(MPMModule mod, MPM mpm, PetscOption
   PetscFunctionBegin;
   PetscCall(PetscOptionsReal("-mpm_pressure_relax", "Sub-cell pressure relaxation K_r: fluid points of a cell exchange volume towards a common pressure at the acoustic rate K_r c / h [-], >= 0 (0: off)", "", rx->K, &rx->K, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_pressure_relax", rx->K, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
-  mod->active = PETSC_FALSE; /* only where a material is a fluid: solids keep their pressure pattern (MPMRelaxApply) */
-  for (PetscInt i = 0; i < mpm->nmat && rx->K > 0.0; i++) mod->active = (PetscBool)(mod->active || !MPMStrengthIsSolid(mpm->mat[i].strength));
-  if (mod->active) {
+  mod->active = PETSC_FALSE;
+  if (rx->K > 0.0) {
+    PetscBool fluid = PETSC_FALSE; /* only where a material is a fluid: solids keep their pressure pattern (MPMRelaxApply) */
+    for (PetscInt i = 0; i < mpm->nmat; i++) fluid = (PetscBool)(fluid || !MPMStrengthIsSolid(mpm->mat[i].strength));
+    mod->active = fluid;
     PetscCall(PetscOptionsReal("-mpm_pressure_relax_mach", "A point whose velocity jump across a cell |div v| h exceeds this fraction of its sound speed (a shock, a fast expansion) does not relax [-], > 0", "", rx->mach, &rx->mach, NULL));
     PetscCall(MPMOptionsCheckRange("-mpm_pressure_relax_mach", rx->mach, 0.0, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
   }

@@ -54,7 +54,8 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
 /* MPMKP2GPoint of one point's arrays (ls = 1) with the components in the lanes of one vector (lane k: component k,
    the lanes beyond d zero): the momentum s_I N_I m_p v_p, the stress force s_I sum_j (-V sigma)_kj grad_j N_I (the
    columns of -V sigma, summed in j order) or the pressure force s_I V_p P grad N_I, formed as vectors with the products
-   of MPMKP2GPoint, then added to the node component by component: the same bits. */
+   of MPMKP2GPoint (the pressure's as s (V_p P) grad N for its (s V_p) P grad N: equal, s being +-1, MPMShapeFold1d), then
+   added to the node component by component: the same bits. */
 typedef PetscReal MPM_KCAT(MPMKP4, MPM_KNAME, MPM_KD, d) __attribute__((vector_size(4 * sizeof(PetscReal))));
 MPM_KINLINE void  MPM_KCAT(MPMKP2GPointVec, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, MPMNode *nodes, PetscInt p, const PetscInt ns, const PetscInt *node, const PetscReal *W, const PetscReal DW[][MPM_KD], const PetscReal SG[][MPM_KD],
                                                                  const int mode, const int mirror)

@@ -26,11 +26,10 @@ static void MPMShapeBasis1d_CPDI(void *ctx, PetscReal xi, PetscInt *first, Petsc
   MPMShapeLinear1d(xi, first, n, w, dw);
 }
 
-#if defined(__GNUC__)
-#  define MPM_CPDI_INLINE static inline __attribute__((always_inline))
-#else
-#  define MPM_CPDI_INLINE static inline
+#if !defined(__GNUC__)
+#  error "src/shape/impls/cpdi.c needs the GNU C vector extensions (GCC or clang)"
 #endif
+#define MPM_CPDI_INLINE static inline __attribute__((always_inline))
 
 /* R = F diag(l0) (F NULL: the identity) and R^-1 (Ri NULL: R alone). */
 MPM_CPDI_INLINE void CPDIDomain(const Shape_CPDI *cp, PetscInt d, const PetscReal F[], PetscReal R[], PetscReal Ri[])
@@ -61,8 +60,8 @@ MPM_CPDI_INLINE void CPDIDomain(const Shape_CPDI *cp, PetscInt d, const PetscRea
   }
 }
 
-/* The corners c of the domain x + R s_c in the lanes of one vector (the 2^d <= 8 corners; the lanes beyond them hold
-   copies of the point): the gradient factors gs_j = (R^-T s_c)_j (Ri NULL: not formed) and, per direction i, the first of
+/* The corners c of the domain x + R s_c in the lanes of one vector (the 2^d <= 8 corners; lane c beyond them repeats
+   corner c mod 2^d): the gradient factors gs_j = (R^-T s_c)_j (Ri NULL: not formed) and, per direction i, the first of
    the two nodes of the linear basis at each corner, first_i = floor(xi), xi = (x_c,i - lo_i) / h_i (a global index, not
    yet folded onto the grid), and its weights w0_i = 1 - (xi - first_i), w1_i = xi - first_i (MPMShapeLinear1d). The
    same operations per corner as one corner at a time, so the same bits. */
@@ -81,13 +80,13 @@ MPM_CPDI_INLINE void CPDICorners(const MPMGrid *g, const PetscReal x[], const Pe
     gs[j] = t;
   }
   for (PetscInt i = 0; i < d; i++) {
-    CPDIVec  xc = (CPDIVec){0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0} + x[i], xi, fi;
+    CPDIVec  xc = (CPDIVec){-0.0, -0.0, -0.0, -0.0, -0.0, -0.0, -0.0, -0.0} + x[i], xi, fi; /* -0 + x = x, x = -0 included */
     CPDIIVec fl;
     for (PetscInt k = 0; k < d; k++) xc += R[i * d + k] * S[k];
     xi       = (xc - g->lo[i]) / g->h[i];
     fl       = __builtin_convertvector(xi, CPDIIVec); /* truncation, then floor: one less where it rounded up */
     fi       = __builtin_convertvector(fl, CPDIVec);
-    fl       = fl + (CPDIIVec)(__builtin_convertvector(xi < fi, CPDIIVec));
+    fl       = fl + __builtin_convertvector(xi < fi, CPDIIVec); /* true: -1 */
     fi       = __builtin_convertvector(fl, CPDIVec);
     first[i] = fl;
     w0[i]    = 1.0 - (xi - fi);
