@@ -11,7 +11,8 @@
    CPDI's corners are merged per node (CheckCPDIMerge): inside the grid, with domains no wider than a cell, every
    stencil node is distinct and there are at most 3^d. CPDI is checked a second time with F near 6 I at 2 points per
    cell (domains about 3 cells wide, so that the corners reach boxes of 4 and of 5 nodes per direction: merged,
-   and kept as the 4^d corner entries). */
+   and kept as the 4^d corner entries). CPDI's weights and gradients are compared with its definition evaluated corner
+   by corner over every node (CheckCPDIDefinition). */
 #include "core/petmpmimpl.h"
 
 /* A random deformation gradient near stretch times the identity. */
@@ -162,6 +163,95 @@ static PetscErrorCode CheckCPDIMerge(PetscInt dim, PetscInt *fails)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* CPDI against its definition, evaluated here corner by corner over every grid node (an implementation of its own, not
+   the merged box of src/shape/impls/cpdi.c): with R = F diag(h / (2 ppc)) and the corners x_c = x + R s_c,
+     S_J = 2^-d sum_c N_J(x_c),   grad S_J = 2^-d R^-T sum_c N_J(x_c) s_c,
+   N_J the tent of node J. Inside the grid, at 1 and 2 points per cell, domains sheared by up to 0.3 and (at 2) stretched
+   to about 3 cells; every node of the stencil and every node the corners reach compared, to 1e-13. */
+static PetscErrorCode CheckCPDIDefinition(PetscInt dim, PetscInt *fails)
+{
+  MPMShape    shape;
+  MPMGrid     g;
+  MPMStencil  st;
+  PetscRandom rnd;
+  PetscReal   worst = 0.0;
+  PetscInt    nodes = 1, missing = 0;
+  PetscBool   ok;
+
+  PetscFunctionBegin;
+  PetscCall(MPMShapeCreate(PETSC_COMM_SELF, &shape));
+  PetscCall(MPMShapeSetType(shape, MPMSHAPECPDI));
+  PetscCall(PetscMemzero(&g, sizeof(g)));
+  g.dim = dim;
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
+    g.cells[k] = 14;
+    g.lo[k]    = -0.7 + 0.2 * k;
+    g.h[k]     = 0.25 + 0.05 * k;
+    g.hinv[k]  = 1.0 / g.h[k];
+    g.gm[k]    = k < dim ? g.cells[k] + 1 : 1;
+    nodes *= g.gm[k];
+  }
+  PetscCall(PetscRandomCreate(PETSC_COMM_SELF, &rnd));
+  for (PetscInt ppc = 1; ppc <= 2; ppc++) {
+    PetscCall(MPMShapeSetUp(shape, &g, ppc));
+    for (PetscInt s = 0; s < 1000; s++) {
+      PetscReal x[MPM_MAX_DIM] = {0, 0, 0}, F[9], R[9], Ri[9], det, S[4096], G[4096][3];
+      for (PetscInt k = 0; k < dim; k++) {
+        PetscReal r;
+        PetscCall(PetscRandomGetValueReal(rnd, &r));
+        x[k] = g.lo[k] + (5.0 + 4.0 * r) * g.h[k];
+      }
+      RandomF(rnd, dim, s % 2 && ppc == 2 ? 6.0 : 1.0, F);
+      for (PetscInt i = 0; i < dim; i++)
+        for (PetscInt k = 0; k < dim; k++) R[i * dim + k] = F[i * dim + k] * 0.5 * g.h[k] / ppc;
+      det = MPMDeterminant(dim, R);
+      if (dim == 1)
+        Ri[0] = 1.0 / R[0];
+      else if (dim == 2) {
+        Ri[0] = R[3] / det;
+        Ri[1] = -R[1] / det;
+        Ri[2] = -R[2] / det;
+        Ri[3] = R[0] / det;
+      } else
+        for (PetscInt i = 0; i < 3; i++)
+          for (PetscInt j = 0; j < 3; j++) /* the cofactor of R_ji over det */
+            Ri[i * 3 + j] = (R[((j + 1) % 3) * 3 + (i + 1) % 3] * R[((j + 2) % 3) * 3 + (i + 2) % 3] - R[((j + 1) % 3) * 3 + (i + 2) % 3] * R[((j + 2) % 3) * 3 + (i + 1) % 3]) / det;
+      for (PetscInt J = 0; J < nodes; J++) S[J] = G[J][0] = G[J][1] = G[J][2] = 0.0;
+      for (PetscInt c = 0; c < (1 << dim); c++) { /* corner c: its tents over all nodes */
+        PetscReal xc[3] = {0, 0, 0}, sc[3];
+        for (PetscInt k = 0; k < dim; k++) sc[k] = (c >> k) & 1 ? 1.0 : -1.0;
+        for (PetscInt i = 0; i < dim; i++) {
+          xc[i] = x[i];
+          for (PetscInt k = 0; k < dim; k++) xc[i] += R[i * dim + k] * sc[k];
+        }
+        for (PetscInt J = 0; J < nodes; J++) {
+          const PetscInt ijk[3] = {J % g.gm[0], (J / g.gm[0]) % g.gm[1], J / (g.gm[0] * g.gm[1])};
+          PetscReal      N      = 1.0 / (1 << dim);
+          for (PetscInt k = 0; k < dim; k++) N *= PetscMax(0.0, 1.0 - PetscAbsReal((xc[k] - g.lo[k]) / g.h[k] - ijk[k]));
+          S[J] += N;
+          for (PetscInt j = 0; j < dim; j++)
+            for (PetscInt k = 0; k < dim; k++) G[J][j] += N * Ri[k * dim + j] * sc[k]; /* (R^-T s_c)_j */
+        }
+      }
+      MPMShapeEvaluate(shape, &g, x, F, &st);
+      for (PetscInt a = 0; a < st.n; a++) { /* the stencil's entries against the definition; then none left out */
+        const PetscInt J = st.node[a];
+        worst            = PetscMax(worst, PetscAbsReal(st.w[a] - S[J]));
+        for (PetscInt j = 0; j < dim; j++) worst = PetscMax(worst, PetscAbsReal(st.dw[a][j] - G[J][j]) * g.h[j]);
+        S[J] = 0.0;
+      }
+      for (PetscInt J = 0; J < nodes; J++) missing += S[J] > 1e-14;
+    }
+  }
+  PetscCall(PetscRandomDestroy(&rnd));
+  PetscCall(MPMShapeDestroy(&shape));
+  ok = (PetscBool)(worst < 1e-13 && missing == 0);
+  if (!ok) (*fails)++;
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s cpdi     %" PetscInt_FMT "D against its definition corner by corner: largest difference %.1e (weights, gradients times h; tol 1e-13), %" PetscInt_FMT " nodes left out\n", ok ? "PASSED" : "FAILED", dim,
+                        (double)worst, missing));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* The class base (src/core/class.c), through the shape class: the default type, GetType after SetType, SetType of the
    current type keeps the type's data (nothing re-created), an options prefix of one's own (-<prefix>shape_type),
    and an unknown type refused with an error. */
@@ -214,6 +304,7 @@ int main(int argc, char **argv)
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   PetscCall(CheckClassBase(&fails));
   for (PetscInt dim = 1; dim <= 3; dim++) PetscCall(CheckCPDIMerge(dim, &fails));
+  for (PetscInt dim = 1; dim <= 3; dim++) PetscCall(CheckCPDIDefinition(dim, &fails));
   for (size_t t = 0; t < sizeof(types) / sizeof(types[0]) + 1; t++) {
     const PetscBool stretched = (PetscBool)(t == sizeof(types) / sizeof(types[0])); /* CPDI again with F near 6 I */
     const char     *type      = stretched ? MPMSHAPECPDI : types[t];
