@@ -113,6 +113,20 @@ static PetscErrorCode CheckType(const char type[], PetscInt dim, PetscBool bound
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The CPDI checks' grid: cells per direction, lower corner lo0 + dlo k, cell size 0.25 + 0.05 k in direction k, one rank. */
+static void CPDITestGrid(PetscInt dim, PetscInt cells, PetscReal lo0, PetscReal dlo, MPMGrid *g)
+{
+  PetscMemzero(g, sizeof(*g));
+  g->dim = dim;
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
+    g->cells[k] = cells;
+    g->lo[k]    = lo0 + dlo * k;
+    g->h[k]     = 0.25 + 0.05 * k;
+    g->hinv[k]  = 1.0 / g->h[k];
+    g->gm[k]    = k < dim ? g->cells[k] + 1 : 1;
+  }
+}
+
 /* CPDI's merged stencil inside the grid, for domains no wider than a cell (F = I at 1 point per cell, F within 0.3 of
    I at 2): every node appears once, and a point has at most 3^d of them. */
 static PetscErrorCode CheckCPDIMerge(PetscInt dim, PetscInt *fails)
@@ -128,14 +142,7 @@ static PetscErrorCode CheckCPDIMerge(PetscInt dim, PetscInt *fails)
   for (PetscInt k = 0; k < dim; k++) max3 *= 3;
   PetscCall(MPMShapeCreate(PETSC_COMM_SELF, &shape));
   PetscCall(MPMShapeSetType(shape, MPMSHAPECPDI));
-  PetscCall(PetscMemzero(&g, sizeof(g)));
-  g.dim = dim;
-  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
-    g.cells[k] = 12;
-    g.h[k]     = 0.25 + 0.05 * k;
-    g.hinv[k]  = 1.0 / g.h[k];
-    g.gm[k]    = k < dim ? g.cells[k] + 1 : 1;
-  }
+  CPDITestGrid(dim, 12, 0.0, 0.0, &g);
   PetscCall(PetscRandomCreate(PETSC_COMM_SELF, &rnd));
   for (PetscInt ppc = 1; ppc <= 2; ppc++) {
     PetscCall(MPMShapeSetUp(shape, &g, ppc));
@@ -181,16 +188,8 @@ static PetscErrorCode CheckCPDIDefinition(PetscInt dim, PetscInt *fails)
   PetscFunctionBegin;
   PetscCall(MPMShapeCreate(PETSC_COMM_SELF, &shape));
   PetscCall(MPMShapeSetType(shape, MPMSHAPECPDI));
-  PetscCall(PetscMemzero(&g, sizeof(g)));
-  g.dim = dim;
-  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
-    g.cells[k] = 14;
-    g.lo[k]    = -0.7 + 0.2 * k;
-    g.h[k]     = 0.25 + 0.05 * k;
-    g.hinv[k]  = 1.0 / g.h[k];
-    g.gm[k]    = k < dim ? g.cells[k] + 1 : 1;
-    nodes *= g.gm[k];
-  }
+  CPDITestGrid(dim, 14, -0.7, 0.2, &g);
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) nodes *= g.gm[k];
   PetscCall(PetscRandomCreate(PETSC_COMM_SELF, &rnd));
   for (PetscInt ppc = 1; ppc <= 2; ppc++) {
     PetscCall(MPMShapeSetUp(shape, &g, ppc));

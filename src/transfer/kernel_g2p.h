@@ -50,48 +50,13 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(const MPMTransfer
   }
 }
 
-/* One point's stencil sums over its ns entries, then the finish; SG read only when mirror is set. */
+/* One point's stencil sums over its ns entries, then the finish; SG read only when mirror is set. Its components go in
+   the lanes of one vector (MPM_KCV), the mirror signs too: each sum takes the same products in the same entry order as
+   component by component, so the same bits, with a vector operation where those took d or d^2 scalar ones. */
 MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, const MPMNode *nodes, PetscInt p, const PetscInt ns, const PetscInt node[MPM_KS], const PetscReal W[MPM_KS], const PetscReal DW[MPM_KS][MPM_KD],
                                                               const PetscReal SG[MPM_KS][MPM_KD], const int mode, const int mirror)
 {
-  const PetscInt   D        = MPM_KD;
-  const PetscBool  velocity = (PetscBool)(mode & MPM_G2P_VELOCITY), kinematics = (PetscBool)(mode & MPM_G2P_KINEMATICS), work = (PetscBool)(mode & MPM_G2P_WORK);
-  const PetscReal *v            = A->v;
-  PetscReal        vpic[MPM_KD] = {0}, dv[MPM_KD] = {0}, Lp[MPM_KD * MPM_KD] = {0}, Lb[MPM_KD * MPM_KD] = {0}, dv2[MPM_KD] = {0}, R[MPM_KD] = {0};
-
-  for (PetscInt a = 0; a < ns; a++) {
-    const MPMNode *nd = &nodes[node[a]];
-    for (PetscInt i = 0; i < D; i++) {
-      const PetscReal vI = (mirror ? SG[a][i] : 1.0) * nd->p[i];
-      vpic[i] += W[a] * vI;
-      if (velocity || work) {
-        const PetscReal dvI = (mirror ? SG[a][i] : 1.0) * (nd->p[i] - nd->v0[i]);
-        if (velocity) {
-          dv[i] += W[a] * dvI;
-          dv2[i] += W[a] * dvI * dvI;
-          if (!(mode & MPM_G2P_FLIP)) R[i] += W[a] * (vI - dvI - v[p * D + i]) * vI;
-        }
-        if (work)
-          for (PetscInt j = 0; j < D; j++) Lb[i * D + j] += (2.0 * vI - dvI) * DW[a][j];
-      }
-      if (kinematics)
-        for (PetscInt j = 0; j < D; j++) Lp[i * D + j] += vI * DW[a][j];
-    }
-  }
-  MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p, vpic, dv, dv2, R, Lp, Lb, mode);
-  if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p, ns, node, W, NULL, SG, MPM_P2G_REMAP, mirror, 1);
-}
-
-#if defined(__GNUC__) && defined(PETSC_USE_REAL_DOUBLE) && MPM_KD > 1
-/* MPMKG2PPoint with its components in the lanes of one vector (lane k: component k, the lanes beyond d zero), the
-   mirror signs SG (read when mirror is set) a vector too: each sum takes the same products in the same entry order, so
-   the same bits, with a vector operation where the point-by-point sums took d or d^2 scalar ones (the stencils that are
-   not in lanes of points: CPDI's). */
-typedef PetscReal MPM_KCAT(MPMKV4, MPM_KNAME, MPM_KD, d) __attribute__((vector_size(4 * sizeof(PetscReal))));
-MPM_KINLINE void  MPM_KCAT(MPMKG2PPointVec, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, const MPMNode *nodes, PetscInt p, const PetscInt ns, const PetscInt node[MPM_KS], const PetscReal W[MPM_KS], const PetscReal DW[MPM_KS][MPM_KD],
-                                                                 const PetscReal SG[MPM_KS][MPM_KD], const int mode, const int mirror)
-{
-  typedef MPM_KCAT(MPMKV4, MPM_KNAME, MPM_KD, d) v4;
+  typedef MPM_KCV v4;
   const PetscInt  D        = MPM_KD;
   const PetscBool velocity = (PetscBool)(mode & MPM_G2P_VELOCITY), kinematics = (PetscBool)(mode & MPM_G2P_KINEMATICS), work = (PetscBool)(mode & MPM_G2P_WORK);
   const v4        zero = {0.0, 0.0, 0.0, 0.0};
@@ -144,10 +109,6 @@ MPM_KINLINE void  MPM_KCAT(MPMKG2PPointVec, MPM_KNAME, MPM_KD, d)(const MPMTrans
   MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p, vpicl, dvl, dv2l, Rl, Lpl, Lbl, mode);
   if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p, ns, node, W, NULL, SG, MPM_P2G_REMAP, mirror, 1);
 }
-#  define MPM_KG2PPOINT1 MPM_KCAT(MPMKG2PPointVec, MPM_KNAME, MPM_KD, d)
-#else
-#  define MPM_KG2PPOINT1 MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)
-#endif
 
 #if defined(MPM_KLANES)
 /* MPM_KLANES points at once, none with a mirrored entry: the stencil sums of MPMKG2PPoint with one vector lane per point
@@ -212,9 +173,9 @@ MPM_KINLINE void MPM_KCAT(MPMKG2POne, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, co
   const int mirror = MPM_KEVAL(g, ctx, A, p, node, W, DW, SG, ns);
 
   if (mirror)
-    MPM_KG2PPOINT1(A, nodes, p, ns, node, W, DW, SG, mode, 1);
+    MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 1);
   else
-    MPM_KG2PPOINT1(A, nodes, p, ns, node, W, DW, SG, mode, 0);
+    MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 0);
 }
 
 /* The grid-to-points loop over the points, with no mode branch left inside: MPM_KLANES points at a time where none
@@ -247,9 +208,9 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
         PetscReal Wl[MPM_KS], DWl[MPM_KS][MPM_KD];
         MPM_KCAT(MPMKLaneOut, MPM_KNAME, MPM_KD, d)(l, node, W, DW, nodel, Wl, DWl);
         if (mirror[l])
-          MPM_KG2PPOINT1(A, nodes, p + l, MPM_KS, nodel, Wl, DWl, SG[l], mode, 1);
+          MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS, nodel, Wl, DWl, SG[l], mode, 1);
         else
-          MPM_KG2PPOINT1(A, nodes, p + l, MPM_KS, nodel, Wl, DWl, SG[l], mode, 0);
+          MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS, nodel, Wl, DWl, SG[l], mode, 0);
       }
   }
 #endif

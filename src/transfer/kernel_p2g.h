@@ -11,99 +11,60 @@
    MPMKP2GPoint with MPM_P2G_REMAP is the momentum product alone into f_I, the MUSL remap's, for grid to points. The
    operations and their order are those of the generic reference (src/transfer/transfer.c, MPMScatterGeneric). */
 
-/* One point's m_I += N_I m_p, w2_I += N_I^2, (mv)_I += s_I N_I m_p v_p and, by mode, its point pressure force and
-   stress force, over its ns stencil entries; SG (the mirror signs) is read only when mirror is set. With MPM_P2G_REMAP
+/* One point's m_I += N_I m_p, w2_I += N_I^2, (mv)_I += s_I N_I m_p v_p and, by mode, its point pressure force
+   s_I V_p P grad N_I or stress force s_I sum_j (-V sigma)_kj grad_j N_I (the columns of -V sigma, summed in j order),
+   over its ns stencil entries; SG (the mirror signs) is read only when mirror is set. Each entry's momentum and force
+   are formed over the components in the lanes of one vector (MPM_KCV; the pressure's as s (V_p P) grad N, equal to
+   (s V_p) P grad N since s is +-1, MPMShapeFold1d) and added to the node component by component. With MPM_P2G_REMAP
    (the MUSL remap's momentum fused into grid to points, after the point's finish with its new velocity) only the
    momentum product, into f_I: the remap's own scatter's products in point order, the same bits. Entry a's node and
    weight are node[a ls] and W[a ls] (one point's arrays, ls = 1, or one lane of a group's, ls = MPM_KLANES). */
-MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, MPMNode *nodes, PetscInt p, const PetscInt ns, const PetscInt *node, const PetscReal *W, const PetscReal DW[MPM_KS][MPM_KD], const PetscReal SG[MPM_KS][MPM_KD],
+MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, MPMNode *nodes, PetscInt p, const PetscInt ns, const PetscInt *node, const PetscReal *W, const PetscReal DW[][MPM_KD], const PetscReal SG[][MPM_KD],
                                                               const int mode, const int mirror, const PetscInt ls)
 {
-  const PetscInt D = MPM_KD;
+  const PetscInt D    = MPM_KD;
+  const MPM_KCV  zero = {0.0, 0.0, 0.0, 0.0};
   /* the point's values in locals, read once: a store to a node may alias any double array, so the compiler would
      otherwise load them again after every node update */
-  const PetscReal mp = A->m[p], Vp = (mode & (MPM_P2G_PRESSURE | MPM_P2G_STRESS)) ? A->V[p] : 0.0, P = (mode & MPM_P2G_PRESSURE) ? A->pr[p] + A->q[p] : 0.0;
-  PetscReal       vp[MPM_KD], Sp[MPM_KD * MPM_KD];
-
-  for (PetscInt k = 0; k < D; k++) vp[k] = A->v[p * D + k];
-  if (mode & MPM_P2G_STRESS)
-    for (PetscInt k = 0; k < D * D; k++) Sp[k] = A->S[p * D * D + k];
-  if (mode & MPM_P2G_STRESS) /* -V sigma = V ((p + q) I - s), formed once (MPMStressForceMatrix; p + q = 0 where the cell rule takes it) */
-    MPMStressForceMatrix(D, Vp, P, Sp);
-  for (PetscInt a = 0; a < ns; a++) {
-    MPMNode        *nd = &nodes[node[a * ls]];
-    PetscScalar    *mv = (mode & MPM_P2G_REMAP) ? nd->f : nd->p;
-    const PetscReal wm = W[a * ls] * mp;
-    if (!(mode & MPM_P2G_REMAP)) {
-      nd->m += wm;
-      nd->w2 += W[a * ls] * W[a * ls];
-    }
-    for (PetscInt k = 0; k < D; k++) mv[k] += (mirror ? SG[a][k] : 1.0) * wm * vp[k];
-    if (mode & MPM_P2G_STRESS)
-      for (PetscInt k = 0; k < D; k++) {
-        PetscReal sgr = 0.0;
-        for (PetscInt j = 0; j < D; j++) sgr += Sp[k * D + j] * DW[a][j];
-        nd->f[k] += (mirror ? SG[a][k] : 1.0) * sgr;
-      }
-    else if (mode & MPM_P2G_PRESSURE)
-      for (PetscInt k = 0; k < D; k++) nd->f[k] += (mirror ? SG[a][k] : 1.0) * Vp * P * DW[a][k];
-  }
-}
-
-#if defined(__GNUC__) && defined(PETSC_USE_REAL_DOUBLE) && MPM_KD > 1
-/* MPMKP2GPoint of one point's arrays (ls = 1) with the components in the lanes of one vector (lane k: component k,
-   the lanes beyond d zero): the momentum s_I N_I m_p v_p, the stress force s_I sum_j (-V sigma)_kj grad_j N_I (the
-   columns of -V sigma, summed in j order) or the pressure force s_I V_p P grad N_I, formed as vectors with the products
-   of MPMKP2GPoint (the pressure's as s (V_p P) grad N for its (s V_p) P grad N: equal, s being +-1, MPMShapeFold1d), then
-   added to the node component by component: the same bits. */
-typedef PetscReal MPM_KCAT(MPMKP4, MPM_KNAME, MPM_KD, d) __attribute__((vector_size(4 * sizeof(PetscReal))));
-MPM_KINLINE void  MPM_KCAT(MPMKP2GPointVec, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, MPMNode *nodes, PetscInt p, const PetscInt ns, const PetscInt *node, const PetscReal *W, const PetscReal DW[][MPM_KD], const PetscReal SG[][MPM_KD],
-                                                                 const int mode, const int mirror)
-{
-  typedef MPM_KCAT(MPMKP4, MPM_KNAME, MPM_KD, d) v4;
-  const PetscInt  D    = MPM_KD;
-  const v4        zero = {0.0, 0.0, 0.0, 0.0};
-  const PetscReal mp = A->m[p], Vp = (mode & (MPM_P2G_PRESSURE | MPM_P2G_STRESS)) ? A->V[p] : 0.0, P = (mode & MPM_P2G_PRESSURE) ? A->pr[p] + A->q[p] : 0.0;
-  const PetscReal VP = Vp * P;
-  v4              vp = zero, Sc[MPM_KD];
+  const PetscReal mp = A->m[p], Vp = (mode & (MPM_P2G_PRESSURE | MPM_P2G_STRESS)) ? A->V[p] : 0.0, P = (mode & MPM_P2G_PRESSURE) ? A->pr[p] + A->q[p] : 0.0, VP = Vp * P;
+  MPM_KCV         vp = zero, Sc[MPM_KD];
   PetscReal       Sp[MPM_KD * MPM_KD];
 
   for (PetscInt k = 0; k < D; k++) vp[k] = A->v[p * D + k];
-  if (mode & MPM_P2G_STRESS) {
+  if (mode & MPM_P2G_STRESS) { /* -V sigma = V ((p + q) I - s), formed once (MPMStressForceMatrix; p + q = 0 where the cell rule takes it), by columns */
     for (PetscInt k = 0; k < D * D; k++) Sp[k] = A->S[p * D * D + k];
     MPMStressForceMatrix(D, Vp, P, Sp);
-    for (PetscInt j = 0; j < D; j++) { /* column j of -V sigma */
+    for (PetscInt j = 0; j < D; j++) {
       Sc[j] = zero;
       for (PetscInt k = 0; k < D; k++) Sc[j][k] = Sp[k * D + j];
     }
   }
   for (PetscInt a = 0; a < ns; a++) {
-    MPMNode        *nd = &nodes[node[a]];
-    const PetscReal wm = W[a] * mp;
-    v4              sg = zero + 1.0, mv, f = zero;
+    MPMNode        *nd = &nodes[node[a * ls]];
+    PetscScalar    *mv = (mode & MPM_P2G_REMAP) ? nd->f : nd->p;
+    const PetscReal wm = W[a * ls] * mp;
+    MPM_KCV         sg = zero + 1.0, m, f = zero;
     if (mirror)
       for (PetscInt k = 0; k < D; k++) sg[k] = SG[a][k];
-    mv = sg * wm * vp;
+    if (!(mode & MPM_P2G_REMAP)) {
+      nd->m += wm;
+      nd->w2 += W[a * ls] * W[a * ls];
+    }
+    m = sg * wm * vp;
+    for (PetscInt k = 0; k < D; k++) mv[k] += m[k];
     if (mode & MPM_P2G_STRESS) {
-      v4 sgr = zero;
+      MPM_KCV sgr = zero;
       for (PetscInt j = 0; j < D; j++) sgr += Sc[j] * DW[a][j];
       f = sg * sgr;
     } else if (mode & MPM_P2G_PRESSURE) {
-      v4 dw = zero;
+      MPM_KCV dw = zero;
       for (PetscInt k = 0; k < D; k++) dw[k] = DW[a][k];
       f = sg * VP * dw;
     }
-    nd->m += wm;
-    nd->w2 += W[a] * W[a];
-    for (PetscInt k = 0; k < D; k++) nd->p[k] += mv[k];
     if (mode & (MPM_P2G_STRESS | MPM_P2G_PRESSURE))
       for (PetscInt k = 0; k < D; k++) nd->f[k] += f[k];
   }
 }
-#  define MPM_KP2GPOINT1(A, nodes, p, ns, node, W, DW, SG, mode, mirror) MPM_KCAT(MPMKP2GPointVec, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, mirror)
-#else
-#  define MPM_KP2GPOINT1(A, nodes, p, ns, node, W, DW, SG, mode, mirror) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, mirror, 1)
-#endif
 
 /* One point of points to grid: its stencil, then MPMKP2GPoint, with the mirror signs only where the stencil has one. */
 MPM_KINLINE void MPM_KCAT(MPMKP2GOne, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const void *ctx, const MPMTransferArgs *A, MPMNode *nodes, PetscInt p, const int mode)
@@ -113,9 +74,9 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GOne, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, co
   const int mirror = MPM_KEVAL(g, ctx, A, p, node, W, DW, SG, ns);
 
   if (mirror)
-    MPM_KP2GPOINT1(A, nodes, p, ns, node, W, DW, SG, mode, 1);
+    MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 1, 1);
   else
-    MPM_KP2GPOINT1(A, nodes, p, ns, node, W, DW, SG, mode, 0);
+    MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 0, 1);
 }
 
 #if !defined(MPM_KSTENCIL) && defined(__GNUC__) && defined(PETSC_USE_REAL_DOUBLE) && (MPM_KS & (MPM_KS - 1)) == 0

@@ -16,6 +16,12 @@
 #  define MPM_KS (MPM_KNB * MPM_KNB * MPM_KNB)
 #endif
 
+/* A point's components in the lanes of one vector (lane k: component k; the lanes beyond d zero): the point-by-point
+   transfers (MPMKP2GPoint, MPMKG2PPoint) form an entry's products as one vector operation where they took d or d^2
+   scalar ones, the same products per component. */
+typedef PetscReal MPM_KCAT(MPMKCVec, MPM_KNAME, MPM_KD, d) __attribute__((vector_size(4 * sizeof(PetscReal))));
+#define MPM_KCV MPM_KCAT(MPMKCVec, MPM_KNAME, MPM_KD, d)
+
 #if defined(MPM_KVECTOR) /* this dimension's lanes and their vector type (kernels.h) */
 #  if MPM_KD == 1
 #    define MPM_KLANES MPM_KLANES_1

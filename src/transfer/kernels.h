@@ -12,6 +12,10 @@
                         per entry) and returns whether a mirror sign is -1 (then SG is filled, else left alone). */
 #include "transfer.h"
 
+#if !defined(__GNUC__)
+#  error "the transfer kernels need the GNU C vector extensions (GCC or clang)"
+#endif
+
 #if defined(__GNUC__)
 #  define MPM_KINLINE static inline __attribute__((always_inline))
 #else
