@@ -15,6 +15,7 @@ typedef struct _p_MPMEOS       *MPMEOS;
 typedef struct _p_MPMViscosity *MPMViscosity;
 typedef struct _p_MPMExact     *MPMExact;
 typedef struct _p_MPMStrength  *MPMStrength;
+typedef struct _p_MPMDamage    *MPMDamage;
 
 /* Closed algorithm switches: enums, so that -help lists the choices. */
 typedef enum { MPM_SCHEME_USL, MPM_SCHEME_MUSL } MPMScheme;
@@ -65,6 +66,10 @@ typedef const char *MPMStrengthType;
 #define MPMSTRENGTHVONMISES "vonmises"
 #define MPMSTRENGTHJOHNSONCOOK "johnsoncook"
 #define MPMSTRENGTHNEWTONIAN "newtonian"
+typedef const char *MPMDamageType;
+#define MPMDAMAGENONE "none"
+#define MPMDAMAGEJOHNSONCOOK "johnsoncook"
+#define MPMDAMAGESPALL "spall"
 typedef const char *MPMViscosityType;
 #define MPMVISCOSITYNONE "none"
 #define MPMVISCOSITYVNR "vnr"
@@ -135,6 +140,19 @@ PETSC_EXTERN PetscErrorCode MPMStrengthNeoHookeanGetParameters(MPMStrength, Pets
 PETSC_EXTERN PetscErrorCode MPMStrengthStress(MPMStrength, PetscInt, PetscReal, const PetscReal[], const PetscReal[], PetscReal, PetscReal, PetscReal[], PetscReal *, PetscReal *);
 PETSC_EXTERN PetscErrorCode MPMStrengthGetShearModulus(MPMStrength, PetscReal *);
 PETSC_EXTERN PetscErrorCode MPMStrengthFlowStress(MPMStrength, PetscReal, PetscReal, PetscReal, PetscReal *);
+
+/* Damage and failure: a material's points fail (no tension, no shear) when their damage D reaches 1 */
+PETSC_EXTERN PetscErrorCode MPMDamageRegister(const char[], PetscErrorCode (*)(MPMDamage));
+PETSC_EXTERN PetscErrorCode MPMDamageCreate(MPI_Comm, MPMDamage *);
+PETSC_EXTERN PetscErrorCode MPMDamageSetOptionsPrefix(MPMDamage, const char[]);
+PETSC_EXTERN PetscErrorCode MPMDamageSetType(MPMDamage, MPMDamageType);
+PETSC_EXTERN PetscErrorCode MPMDamageGetType(MPMDamage, MPMDamageType *);
+PETSC_EXTERN PetscErrorCode MPMDamageSetFromOptions(MPMDamage);
+PETSC_EXTERN PetscErrorCode MPMDamageIsActive(MPMDamage, PetscBool *);
+PETSC_EXTERN PetscErrorCode MPMDamageView(MPMDamage, PetscViewer);
+PETSC_EXTERN PetscErrorCode MPMDamageDestroy(MPMDamage *);
+PETSC_EXTERN PetscErrorCode MPMDamageIncrement(MPMDamage, PetscInt, PetscReal, const PetscReal[], PetscReal, PetscReal, PetscReal, PetscReal *);
+PETSC_EXTERN PetscErrorCode MPMDamageFailureStrain(MPMDamage, PetscReal, PetscReal, PetscReal, PetscReal *);
 
 /* Artificial viscosity */
 PETSC_EXTERN PetscErrorCode MPMViscosityRegister(const char[], PetscErrorCode (*)(MPMViscosity));

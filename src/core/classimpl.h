@@ -74,7 +74,7 @@ typedef struct {
 typedef struct {
   PetscInt          d, n;
   const PetscInt   *idx;
-  PetscReal         dt;
+  PetscReal         t, dt;    /* t^{n+1} and the step [s] */
   PetscBool         midpoint; /* -mpm_energy_update midpoint: the EOS stage takes pbar = (p^n + p^{n+1}) / 2 */
   PetscReal *const *f;
   const PetscReal  *L, *F, *m, *rho, *e, *p, *q, *T;
@@ -82,11 +82,13 @@ typedef struct {
   const PetscReal  *rho1, *dvol, *ws;
   PetscReal        *e1, *pn, *c2, *cs2, *Tn;
   MPMEOS            eos;          /* the material's EOS, for a stage that reads it (a solid past its spinodal has no shear) */
+  PetscReal         G;            /* the material's shear modulus [dyn/cm^2] (a hypoelastic strength model), else 0 */
+  PetscReal        *depsp;        /* per entry: the step's plastic strain increment, which a plastic strength stage writes for a later stage (damage); NULL where no stage reads it */
   PetscReal        *plastic_work; /* sum m sigma_eq d eps_p / rho [erg] (the report's energy budget) */
   PetscInt         *spalled;      /* point-steps whose EOS state spalled */
 } MPMStageChunk;
 
-/* A stage of a material's constitutive update: an object of a physics class (EOS, strength, later damage) and
+/* A stage of a material's constitutive update: an object of a physics class (strength, EOS, damage) and
    its batched update of a chunk. A material is the list of its stages, run in order. */
 typedef struct {
   void *obj;

@@ -55,6 +55,7 @@ static inline __attribute__((always_inline)) PetscErrorCode MPMConstitutiveChunk
   PetscInt          bad   = *badp;
   const MPMEOS      E     = mpm->mat[im].eos;
   const MPMStrength Str   = stress ? mpm->mat[im].strength : NULL;
+  PetscReal         depsp[MPM_CHUNK]; /* the plastic strain increments the strength stage gives the damage stage */
   PetscReal        *rho1 = mpm->work, *dvol = rho1 + n, *e1 = dvol + n, *c2 = e1 + n, *cs2 = c2 + n, *pn = cs2 + n, *Tn = pn + n, *ws = Tn + n;
   const PetscReal  *L = pts->f[MPM_FIELD_GRADV], *m = pts->f[MPM_FIELD_MASS], *q = pts->f[MPM_FIELD_VISCOSITY];
   PetscReal        *rho = pts->f[MPM_FIELD_DENSITY], *V = pts->f[MPM_FIELD_VOLUME], *e = pts->f[MPM_FIELD_ENERGY], *pr = pts->f[MPM_FIELD_PRESSURE];
@@ -112,6 +113,7 @@ static inline __attribute__((always_inline)) PetscErrorCode MPMConstitutiveChunk
     MPMStageChunk      ck  = {.d            = d,
                               .n            = n,
                               .idx          = idx,
+                              .t            = mpm->time,
                               .dt           = dt,
                               .midpoint     = midpoint,
                               .f            = pts->f,
@@ -133,6 +135,8 @@ static inline __attribute__((always_inline)) PetscErrorCode MPMConstitutiveChunk
                               .cs2          = cs2,
                               .Tn           = Tn,
                               .eos          = E,
+                              .G            = Str ? Str->G : 0.0,
+                              .depsp        = mat->damage ? depsp : NULL,
                               .plastic_work = &mpm->diag.plastic_work,
                               .spalled      = &mpm->diag.spalled};
     for (PetscInt s = 0; s < mat->nstages; s++) PetscCall(mat->stage[s].update(mat->stage[s].obj, &ck));

@@ -267,6 +267,7 @@ PetscErrorCode MPMSetUp(MPM mpm)
   for (PetscInt i = 0; i < mpm->nmat; i++) { /* the point state the materials' types keep */
     PetscCall(MPMPointsRegisterTypeFields(mpm, mpm->mat[i].eos));
     PetscCall(MPMPointsRegisterTypeFields(mpm, mpm->mat[i].strength));
+    PetscCall(MPMPointsRegisterTypeFields(mpm, mpm->mat[i].damage));
   }
   if (mpm->update == MPM_UPDATE_APIC) PetscCall(MPMPointsRegisterField(mpm, "affine", -1, "1/s", "APIC affine velocity C_p = B_p D_p^-1 (v(x) = v_p + C_p (x - x_p) about the point)", PETSC_TRUE, &mpm->affine));
   if (mpm->update == MPM_UPDATE_APIC)
@@ -346,6 +347,7 @@ PetscErrorCode MPMDestroy(MPM *mpm)
   for (PetscInt i = 0; i < m->nmat; i++) {
     PetscCall(MPMEOSDestroy(&m->mat[i].eos));
     PetscCall(MPMStrengthDestroy(&m->mat[i].strength));
+    PetscCall(MPMDamageDestroy(&m->mat[i].damage));
   }
   for (PetscInt r = 0; r < m->nreg; r++) PetscCall(MPMOutlineDestroy(&m->reg[r].outline));
   PetscCall(MPMShapeDestroy(&m->shape));

@@ -167,7 +167,7 @@ static PetscErrorCode MPMFillApply(MPMModule mod, MPM mpm, const MPMStepContext 
   for (PetscInt p = 0; p < pts.n; p++) { /* V_I and C_I */
     const MPMMaterial *mat = &mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]];
     PetscReal          pr, c2;
-    if (!MPMStrengthIsSolid(mat->strength)) {
+    if (!MPMStrengthIsSolid(mat->strength) && !MPMPointFailed(mat, pts.f, p)) { /* failed material: its pressure is not the EOS's */
       MPMEOSPressureKernel(mat->eos, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_ENERGY][p], &pr, &c2);
       if (c2 > 0.0 && !MPMPointInShock(mpm, &pts, p, c2, fl->mach)) c[p] = pts.f[MPM_FIELD_VOLUME][p] / (pts.f[MPM_FIELD_DENSITY][p] * c2);
     }

@@ -119,16 +119,20 @@ void MPMPointChangeVolume(MPM mpm, MPMPoints *pts, PetscInt p, PetscReal dV, Pet
   MPMPointEOSUpdate(mpm, pts, p, pts->f[MPM_FIELD_MASS][p] / *V, e1);
 }
 
-/* After a module changed the points' e (and rho): p, T and c from the EOS; c keeps a strength model's share. */
+/* After a module changed the points' e (and rho): p, T and c from the EOS (a failed point's without tension); c keeps a
+   strength model's share. */
 void MPMPointEOSUpdate(MPM mpm, MPMPoints *pts, PetscInt p, PetscReal rho1, PetscReal e1)
 {
-  const MPMEOS E = mpm->mat[(PetscInt)pts->f[MPM_FIELD_MATERIAL][p]].eos;
-  PetscReal    p0, c20, c21, *c = &pts->f[MPM_FIELD_SOUNDSPEED][p];
+  const MPMMaterial *mat = &mpm->mat[(PetscInt)pts->f[MPM_FIELD_MATERIAL][p]];
+  const MPMEOS       E   = mat->eos;
+  PetscReal          p0, c20, c21, *c = &pts->f[MPM_FIELD_SOUNDSPEED][p];
 
   MPMEOSPressureKernel(E, pts->f[MPM_FIELD_DENSITY][p], pts->f[MPM_FIELD_ENERGY][p], &p0, &c20);
+  MPMPointFailedState(mat, pts->f, p, &p0, &c20);
   pts->f[MPM_FIELD_DENSITY][p] = rho1;
   pts->f[MPM_FIELD_ENERGY][p]  = e1;
   MPMEOSPressureKernel(E, rho1, e1, &pts->f[MPM_FIELD_PRESSURE][p], &c21);
+  MPMPointFailedState(mat, pts->f, p, &pts->f[MPM_FIELD_PRESSURE][p], &c21);
   MPMEOSTemperatureKernel(E, rho1, e1, &pts->f[MPM_FIELD_TEMPERATURE][p]);
   *c = PetscSqrtReal(PetscMax(*c * *c - PetscMax(c20, 0.0) + PetscMax(c21, 0.0), 0.0));
 }

@@ -86,7 +86,7 @@ static PetscErrorCode MPMRelaxApply(MPMModule mod, MPM mpm, const MPMStepContext
     PetscReal          pr, c2;
     w[p] = q[p] = 0.0;
     cell[p]     = MPMLocalCell(&mpm->grid, &pts.f[MPM_FIELD_POSITION][p * d]);
-    if (MPMStrengthIsSolid(mat->strength) || cell[p] < 0) continue; /* solids keep their pressure pattern: a viscous liquid relaxes */
+    if (MPMStrengthIsSolid(mat->strength) || cell[p] < 0 || MPMPointFailed(mat, pts.f, p)) continue; /* solids keep their pressure pattern: a viscous liquid relaxes; failed material has no EOS tension */
     MPMEOSPressureKernel(mat->eos, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_ENERGY][p], &pr, &c2);
     if (!(c2 > 0.0)) continue;
     if (MPMPointInShock(mpm, &pts, p, c2, rx->mach)) continue;

@@ -189,8 +189,23 @@ PetscErrorCode MPMSceneSetFromOptions(MPM mpm, PetscOptionItems *PetscOptionsObj
       } else
         PetscCall(MPMRetireObject(mpm, &mpm->mat[i].strength)); /* a fluid: not in the stress path */
     }
+    PetscCall(MPMDamageCreate(mpm->comm, &mpm->mat[i].damage));
+    PetscCall(MPMDamageSetOptionsPrefix(mpm->mat[i].damage, prefix));
+    PetscCall(MPMDamageSetFromOptions(mpm->mat[i].damage));
+    {
+      PetscBool active;
+      PetscCall(MPMDamageIsActive(mpm->mat[i].damage, &active));
+      if (active && mpm->mat[i].damage->reads_plastic && !help && !(mpm->mat[i].strength && mpm->mat[i].strength->ops.flow)) {
+        MPMDamageType dt;
+        PetscCall(MPMDamageGetType(mpm->mat[i].damage, &dt));
+        SETERRQ(mpm->comm, PETSC_ERR_USER_INPUT, "-%sdamage_type %s accumulates damage with the plastic strain: material %s needs a plastic strength model (-%sstrength_type %s or %s)", prefix, dt, names[i], prefix, MPMSTRENGTHVONMISES,
+                MPMSTRENGTHJOHNSONCOOK);
+      }
+      if (!active) PetscCall(MPMRetireObject(mpm, &mpm->mat[i].damage)); /* none: the material is not in the damage stage */
+    }
     if (mpm->mat[i].strength) PetscCall(MPMMaterialAddStage(&mpm->mat[i], mpm->mat[i].strength, MPMStrengthStageUpdate));
     PetscCall(MPMMaterialAddStage(&mpm->mat[i], mpm->mat[i].eos, MPMEOSStageUpdate));
+    if (mpm->mat[i].damage) PetscCall(MPMMaterialAddStage(&mpm->mat[i], mpm->mat[i].damage, MPMDamageStageUpdate));
   }
   PetscCall(MPMSceneNames(PetscOptionsObject, "-mpm_regions", "Names of the regions that place the materials, in seeding priority", MPM_MAX_REGIONS, names, &mpm->nreg));
   if (!help) PetscCheck(mpm->nreg > 0, mpm->comm, PETSC_ERR_USER_INPUT, "The scene places no material: give -mpm_regions name[,name...] and -region_<name>_material");
@@ -214,6 +229,11 @@ PetscErrorCode MPMSceneView(MPM mpm, PetscViewer viewer)
     if (mpm->mat[i].strength) {
       PetscCall(PetscViewerASCIIPushTab(viewer));
       PetscCall(MPMStrengthView(mpm->mat[i].strength, viewer));
+      PetscCall(PetscViewerASCIIPopTab(viewer));
+    }
+    if (mpm->mat[i].damage) {
+      PetscCall(PetscViewerASCIIPushTab(viewer));
+      PetscCall(MPMDamageView(mpm->mat[i].damage, viewer));
       PetscCall(PetscViewerASCIIPopTab(viewer));
     }
   }

@@ -5,6 +5,7 @@
 #include "grid/gridimpl.h"
 #include "eos/eosimpl.h"
 #include "strength/strengthimpl.h"
+#include "damage/damageimpl.h"
 
 #define MPM_MAX_MATERIALS 16
 #define MPM_MAX_REGIONS 32
@@ -12,8 +13,8 @@
 
 #define MPM_MAX_STAGES 4
 
-/* A material: its stages, the constitutive update in the order it runs them (a solid's strength, then the EOS; a
-   new class, such as damage, is one more stage), and the stages by class for the code that reads one of them (the
+/* A material: its stages, the constitutive update in the order it runs them (a solid's strength, the EOS, then its
+   damage), and the stages by class for the code that reads one of them (the
    EOS's temperature, the strength's shear modulus). */
 typedef struct {
   char        name[MPM_MAX_NAME]; /* material name used in option prefixes -mat_<name>_ */
@@ -21,7 +22,23 @@ typedef struct {
   MPMStage    stage[MPM_MAX_STAGES];
   MPMEOS      eos;      /* equation of state                               */
   MPMStrength strength; /* stress besides the pressure; NULL for a fluid   */
+  MPMDamage   damage;   /* how its points fail; NULL where they never do  */
 } MPMMaterial;
+
+/* Whether point p (fields f) of material mat has failed (its damage D reached 1): it carries no tension and no shear. */
+static inline PetscBool MPMPointFailed(const MPMMaterial *mat, PetscReal *const f[], PetscInt p)
+{
+  return (PetscBool)(mat->damage && f[mat->damage->fid[0]][p] >= 1.0);
+}
+
+/* A failed point's EOS state: no tension, p = max(p, 0), c^2 >= 0 (as the damage stage leaves it, MPMDamageStageUpdate). */
+static inline void MPMPointFailedState(const MPMMaterial *mat, PetscReal *const f[], PetscInt p, PetscReal *pr, PetscReal *c2)
+{
+  if (MPMPointFailed(mat, f, p)) {
+    *pr = PetscMax(*pr, 0.0);
+    *c2 = PetscMax(*c2, 0.0);
+  }
+}
 
 typedef struct _n_MPMOutline *MPMOutline; /* a region's polygon or closed surface (src/scene/outline.c) */
 

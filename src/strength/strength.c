@@ -92,7 +92,7 @@ PetscErrorCode MPMStrengthFlowStress(MPMStrength str, PetscReal epsp, PetscReal 
 /* The strength stage of a material's constitutive update (MPMStage): s^{n+1} and c_s^2 of the chunk's points, their
    plastic strain (a plastic type's first point field); past its EOS's spinodal (-mat_<m>_eos_spall_spinodal) a solid
    has fractured and keeps no shear stress and no shear wave; the plastic work sum m sigma_eq d eps_p / rho for the
-   report's energy budget. */
+   report's energy budget; where a later stage asks (ck->depsp), the step's plastic strain increment. */
 PetscErrorCode MPMStrengthStageUpdate(void *obj, MPMStageChunk *ck)
 {
   MPMStrength      str = (MPMStrength)obj;
@@ -111,6 +111,8 @@ PetscErrorCode MPMStrengthStageUpdate(void *obj, MPMStageChunk *ck)
         for (PetscInt a = 0; a < d * d; a++) S[idx[i] * d * d + a] = 0.0;
         ck->cs2[i] = 0.0;
       }
+  if (ck->depsp)
+    for (PetscInt i = 0; i < n; i++) ck->depsp[i] = epsp ? epsp[idx[i]] - eps0[i] : 0.0;
   for (PetscInt i = 0; epsp && i < n; i++)
     if (epsp[idx[i]] > eps0[i]) *ck->plastic_work += m[idx[i]] * MPMVonMisesStress(d, &S[idx[i] * d * d]) * (epsp[idx[i]] - eps0[i]) / ck->rho1[i];
   PetscFunctionReturn(PETSC_SUCCESS);

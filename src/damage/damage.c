@@ -1,0 +1,119 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* Damage class: -mat_<name>_damage_type selects how a material's points fail. Each point carries its damage D in
+   [0, 1] (the point field "damage"); the type gives its increment per step, and where D reaches 1 the point has failed
+   for good: from that step on it carries no shear stress and no tension (s = 0, p = max(p_EOS, 0)), only pressure in
+   compression, as failed material does in CTH's fracture model. Type none (the default) takes the material out of the
+   damage stage: no field, no cost; the EOS's own tension cut-offs (-mat_<name>_eos_pmin, the spinodal) act without
+   memory as before. The stage runs after the strength model and the EOS, on s^{n+1} and p^{n+1}. */
+#include "damageimpl.h"
+#include "strength/hypoelastic.h"
+
+PETSC_EXTERN PetscErrorCode MPMDamageCreate_None(MPMDamage);
+PETSC_EXTERN PetscErrorCode MPMDamageCreate_JohnsonCook(MPMDamage);
+PETSC_EXTERN PetscErrorCode MPMDamageCreate_Spall(MPMDamage);
+
+static PetscBool MPMDamageRegisterAllCalled = PETSC_FALSE;
+
+/* Registers every damage type: a new type is its file in impls/ plus its prototype and one line here. */
+PetscErrorCode MPMDamageRegisterAll(void)
+{
+  PetscFunctionBegin;
+  if (MPMDamageRegisterAllCalled) PetscFunctionReturn(PETSC_SUCCESS);
+  MPMDamageRegisterAllCalled = PETSC_TRUE;
+  PetscCall(MPMDamageRegister(MPMDAMAGENONE, MPMDamageCreate_None));
+  PetscCall(MPMDamageRegister(MPMDAMAGEJOHNSONCOOK, MPMDamageCreate_JohnsonCook));
+  PetscCall(MPMDamageRegister(MPMDAMAGESPALL, MPMDamageCreate_Spall));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscFunctionList MPMDamageList = NULL;
+
+static PetscErrorCode MPMDamageReset(void *obj)
+{
+  PetscFunctionBegin;
+  ((MPMDamage)obj)->reads_plastic = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static const MPMClass MPMDamageClass = {
+  "damage model", "damage", "Damage and failure", "MPMDamage", "How the material's points fail (none: never, but for the EOS's tension cut-offs)", MPMDAMAGENONE, &MPMDamageList, sizeof(MPMDamageOps), MPMDamageReset, NULL, NULL, NULL, NULL, NULL};
+
+MPM_CLASS_INTERFACE(MPMDamage)
+
+PetscErrorCode MPMDamageCreate(MPI_Comm comm, MPMDamage *dmg)
+{
+  PetscFunctionBegin;
+  PetscCall(MPMDamageRegisterAll());
+  PetscCall(MPMObjectCreate(comm, &MPMDamageClass, sizeof(struct _p_MPMDamage), dmg));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Whether the type can fail points (none cannot: the material leaves the damage stage). */
+PetscErrorCode MPMDamageIsActive(MPMDamage dmg, PetscBool *active)
+{
+  PetscFunctionBegin;
+  *active = (PetscBool)(dmg->ops.increment != NULL);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Pointwise evaluation for tests: the damage increment of one step (see MPMDamageOps::increment). */
+PetscErrorCode MPMDamageIncrement(MPMDamage dmg, PetscInt d, PetscReal dt, const PetscReal s[], PetscReal p, PetscReal depsp, PetscReal T, PetscReal *dD)
+{
+  PetscFunctionBegin;
+  PetscCheck(dmg->ops.increment, dmg->comm, PETSC_ERR_ARG_WRONGSTATE, "Damage type %s never fails a point", dmg->type_name);
+  *dD = dmg->ops.increment(dmg->data, d, dt, s, p, depsp, T);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The failure strain eps_f [-] at stress triaxiality eta = -p / sigma_eq, plastic strain rate [1/s] and temperature T [eV]. */
+PetscErrorCode MPMDamageFailureStrain(MPMDamage dmg, PetscReal eta, PetscReal rate, PetscReal T, PetscReal *epsf)
+{
+  PetscFunctionBegin;
+  PetscCheck(dmg->ops.failure_strain, dmg->comm, PETSC_ERR_ARG_WRONGSTATE, "Damage type %s has no failure strain", dmg->type_name);
+  *epsf = dmg->ops.failure_strain(dmg->data, eta, rate, T);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The point fields of every type that fails points: the damage D and the time the point failed. */
+PetscErrorCode MPMDamageDeclareFields(MPMDamage dmg)
+{
+  PetscFunctionBegin;
+  PetscCall(MPMObjectDeclareField(dmg, "damage", 1, "-", "damage D in [0, 1]: the point has failed (no tension, no shear) at D = 1"));
+  PetscCall(MPMObjectDeclareField(dmg, "failure_time", 1, "s", "the time the point failed (D reached 1); 0 while it has not"));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The damage stage of a material's constitutive update (MPMStage), after its strength and EOS stages: D += dD of the
+   type from s^{n+1}, p^{n+1}, the step's plastic strain increment (ck->depsp) and T^n; a point at D = 1 keeps no
+   shear stress and no tension (s = 0, c_s^2 = 0, p = max(p, 0), c^2 >= 0). The elastic shear energy a point holds
+   when it fails, m sigma_eq^2 / (6 G rho), stays in its internal energy as heat (the total energy is unchanged) and is
+   tallied (released) for the report's energy budget. */
+PetscErrorCode MPMDamageStageUpdate(void *obj, MPMStageChunk *ck)
+{
+  MPMDamage        dmg = (MPMDamage)obj;
+  const PetscInt   d = ck->d, n = ck->n, *idx = ck->idx;
+  PetscReal       *D = ck->f[dmg->fid[0]], *tf = ck->f[dmg->fid[1]], *S = ck->S;
+  const PetscReal *depsp = ck->depsp;
+
+  PetscFunctionBegin;
+  for (PetscInt i = 0; i < n; i++) {
+    const PetscInt p = idx[i];
+    if (D[p] < 1.0) {
+      D[p] += dmg->ops.increment(dmg->data, d, ck->dt, S ? &S[p * d * d] : NULL, ck->pn[i], depsp ? depsp[i] : 0.0, ck->T[p]);
+      if (!(D[p] < 1.0)) { /* fails in this step (a NaN increment fails it too: the point's state is diagnosed after the stages) */
+        D[p]  = 1.0;
+        tf[p] = ck->t;
+        dmg->nfailed++;
+        if (S && ck->G > 0.0) dmg->released += ck->m[p] * PetscSqr(MPMVonMisesStress(d, &S[p * d * d])) / (6.0 * ck->G * ck->rho1[i]);
+      }
+    }
+    if (D[p] >= 1.0) {
+      if (S)
+        for (PetscInt a = 0; a < d * d; a++) S[p * d * d + a] = 0.0;
+      ck->cs2[i] = 0.0;
+      if (ck->pn[i] < 0.0) ck->pn[i] = 0.0;
+      ck->c2[i] = PetscMax(ck->c2[i], 0.0);
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -1,0 +1,45 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/* Private data of the damage class (src/damage/). */
+#pragma once
+#include "core/classimpl.h"
+
+typedef struct {
+  MPM_CLASS_OPS(MPMDamage);
+  /* (d, dt [s], s^{n+1} (row-major d x d deviator) [dyn/cm^2], p^{n+1} [dyn/cm^2], d eps_p of the step [-], T [eV]) -> the
+     step's damage increment dD [-]; an increment that takes D to 1 or beyond fails the point */
+  PetscReal (*increment)(void *, PetscInt, PetscReal, const PetscReal[], PetscReal, PetscReal, PetscReal);
+  PetscReal (*failure_strain)(void *, PetscReal, PetscReal, PetscReal); /* (triaxiality, plastic strain rate [1/s], T [eV]) -> eps_f [-]; NULL: the type has none */
+} MPMDamageOps;
+
+struct _p_MPMDamage {
+  MPM_CLASS_HEADER(MPMDamageOps);
+  PetscBool reads_plastic; /* the increment reads the plastic strain increment: the material needs a plastic strength model */
+  PetscInt  nfailed;       /* points of this material that failed on this rank since the start (a restart reads them back) */
+  PetscReal released;      /* the elastic shear energy the points held when they failed, left as heat, on this rank [erg] */
+};
+
+/* The largest principal value of the Cauchy stress sigma = s - p I [dyn/cm^2] (tension positive), s the d x d block of the
+   traceless 3D deviator (1D: s_yy = s_zz = -s_xx / 2; 2D and r-z: s_zz = -(s_xx + s_yy), the out-of-plane or hoop
+   component; both principal). The 3D eigenvalue in closed form (trigonometric, Smith, CACM 4 (1961) 168). */
+static inline PetscReal MPMMaxPrincipalStress(PetscInt d, const PetscReal s[], PetscReal p)
+{
+  if (d == 1) return PetscMax(s[0], -0.5 * s[0]) - p;
+  if (d == 2) {
+    const PetscReal a = s[0], b = 0.5 * (s[1] + s[2]), c = s[3], r = PetscSqrtReal(0.25 * PetscSqr(a - c) + b * b);
+    return PetscMax(0.5 * (a + c) + r, -(a + c)) - p;
+  }
+  {
+    const PetscReal a = s[0], b = s[4], c = s[8], xy = 0.5 * (s[1] + s[3]), xz = 0.5 * (s[2] + s[6]), yz = 0.5 * (s[5] + s[7]);
+    const PetscReal m = (a + b + c) / 3.0, q1 = xy * xy + xz * xz + yz * yz;
+    const PetscReal A = a - m, B = b - m, C = c - m, q2 = (A * A + B * B + C * C + 2.0 * q1) / 6.0, r = PetscSqrtReal(q2);
+    PetscReal       det, phi;
+    if (r == 0.0) return m - p;
+    det = (A * (B * C - yz * yz) - xy * (xy * C - yz * xz) + xz * (xy * yz - B * xz)) / (r * r * r);
+    phi = PetscAcosReal(PetscMax(-1.0, PetscMin(1.0, 0.5 * det))) / 3.0;
+    return m + 2.0 * r * PetscCosReal(phi) - p;
+  }
+}
+
+PETSC_INTERN PetscErrorCode MPMDamageStageUpdate(void *, MPMStageChunk *);
+PETSC_INTERN PetscErrorCode MPMDamageDeclareFields(MPMDamage);
+PETSC_INTERN PetscErrorCode MPMDamageRegisterAll(void);
