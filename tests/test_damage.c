@@ -64,9 +64,9 @@ static PetscErrorCode TestJohnsonCook(PetscInt *fails)
   PetscFunctionBegin;
   PetscCall(StrengthCreate("cu", "johnsoncook", &st));
   PetscCall(DamageCreate("cu", "johnsoncook", &dmg));
-  for (PetscInt c = 0; c < 2; c++) {     /* uniaxial tension, simple shear */
+  for (PetscInt c = 0; c < 2; c++) {   /* uniaxial tension, simple shear */
     for (PetscInt r = 0; r < 2; r++) { /* two step sizes */
-      const PetscInt  d = c == 0 ? 3 : 2;
+      const PetscInt  d    = c == 0 ? 3 : 2;
       const PetscReal rate = 1e3, dt = (r == 0 ? 1e-4 : 5e-5) / rate; /* a strain of 1e-4 and 5e-5 per step */
       PetscReal       s[9] = {0}, epsp = 0.0, J = 1.0, p = 0.0, D = 0.0, etasum = 0.0, ratesum = 0.0, epsf, epsfail = -1.0, b = -0.5 * rate;
       PetscInt        n = 0;
@@ -118,9 +118,9 @@ static PetscErrorCode TestJohnsonCook(PetscInt *fails)
         err = PetscMax(PetscAbsReal(epsfail / epsf - 1.0), PetscAbsReal(epsf / epsf_jc - 1.0));
         ok  = (PetscBool)(err < 1e-4 && PetscAbsReal(eta - (c == 0 ? 1.0 / 3.0 : 0.0)) < 1e-4);
         if (!ok) (*fails)++;
-        PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s johnsoncook failure, %s at %g 1/s, %" PetscInt_FMT " steps: D = 1 at eps_p %.5f against eps_f %.5f (triaxiality %.5f, plastic rate %.4g 1/s), rel. error %.1e (tol 1e-4; eps_f against the closed form too)\n",
-                              ok ? "PASSED" : "FAILED", c == 0 ? "3D uniaxial tension" : "2D simple shear", (double)rate, n, (double)epsfail, (double)epsf, (double)eta,
-                              (double)prate, (double)err));
+        PetscCall(PetscPrintf(PETSC_COMM_WORLD,
+                              "%s johnsoncook failure, %s at %g 1/s, %" PetscInt_FMT " steps: D = 1 at eps_p %.5f against eps_f %.5f (triaxiality %.5f, plastic rate %.4g 1/s), rel. error %.1e (tol 1e-4; eps_f against the closed form too)\n",
+                              ok ? "PASSED" : "FAILED", c == 0 ? "3D uniaxial tension" : "2D simple shear", (double)rate, n, (double)epsfail, (double)epsf, (double)eta, (double)prate, (double)err));
       }
     }
   }
@@ -163,7 +163,7 @@ static PetscErrorCode TestSpall(PetscInt *fails)
   }
   { /* 1D: s_xx, and the lateral -s_xx / 2 */
     const PetscReal sx = -1.8e9;
-    err = PetscMax(err, PetscAbsReal(MPMMaxPrincipalStress(1, &sx, p) - (0.9e9 - p)) / 1.8e9);
+    err                = PetscMax(err, PetscAbsReal(MPMMaxPrincipalStress(1, &sx, p) - (0.9e9 - p)) / 1.8e9);
   }
   { /* the threshold: sigma_1 = 5.1e9 exactly fails, just below does not */
     const PetscReal z[1] = {0.0};

@@ -17,6 +17,7 @@ PETSC_INTERN PetscErrorCode MPMModuleCreate_Domain(MPMModule);
 PETSC_INTERN PetscErrorCode MPMModuleCreate_Split(MPMModule);
 PETSC_INTERN PetscErrorCode MPMModuleCreate_Damping(MPMModule);
 PETSC_INTERN PetscErrorCode MPMModuleCreate_Contact(MPMModule);
+PETSC_INTERN PetscErrorCode MPMModuleCreate_Fracture(MPMModule);
 
 #define MPM_MAX_MODULES 32
 static struct {
@@ -54,6 +55,7 @@ PetscErrorCode MPMModulesRegisterAll(void)
   PetscCall(MPMModuleRegister("split", MPMModuleCreate_Split));
   PetscCall(MPMModuleRegister("damping", MPMModuleCreate_Damping));
   PetscCall(MPMModuleRegister("contact", MPMModuleCreate_Contact));
+  PetscCall(MPMModuleRegister("fracture", MPMModuleCreate_Fracture));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -98,7 +100,7 @@ PetscErrorCode MPMModulesSetUp(MPM mpm)
   }
   for (PetscInt i = 0; i < mpm->nmods; i++) {
     MPMModule mod = mpm->mods[i], *last = &mpm->modules[mod->phase];
-    if (!mod->active) continue;
+    if (!mod->active || mod->phase == MPM_PHASE_NONE) continue; /* in no phase: it reports, outputs and checkpoints */
     PetscCall(PetscLogEventRegister(mod->event, MPM_CLASSID, &mod->ev));
     while (*last) last = &(*last)->next;
     *last = mod;

@@ -15,7 +15,8 @@ typedef enum {
   MPM_PHASE_POINT_STATE,      /* before the constitutive update: artificial viscosity                                             */
   MPM_PHASE_POINT_ADAPT,      /* after the constitutive update: domain reset, point splitting                                     */
   MPM_PHASE_POINT_END,        /* after migration, on the rank owning the point's cell: conduction, relaxation, volume fill, popping */
-  MPM_NUM_PHASES
+  MPM_NUM_PHASES,
+  MPM_PHASE_NONE = MPM_NUM_PHASES /* in no phase of the step: a module that only reports, outputs and checkpoints (fracture) */
 } MPMPhase;
 
 /* Time, carried explicitly through a step: t^n, the step dt_n and the leapfrog kick (dt_{n-1} + dt_n)/2 [s]. */
