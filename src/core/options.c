@@ -24,21 +24,22 @@ PetscErrorCode MPMRetireObject(MPM mpm, void *o)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The class and type of one of the run's objects (shape, viscosity, exact solution, each material's EOS and strength,
-   those set-up retired included) whose option this is, when that type is not the one in use
+/* The class and type of one of the run's objects (shape, viscosity, exact solution, each material's EOS, strength and
+   damage, those set-up retired included) whose option this is, when that type is not the one in use
    (MPMClassOtherTypeOption); NULL otherwise. */
 static PetscErrorCode MPMOtherTypeOption(MPM mpm, const char name[], const char **type, const char **cls)
 {
-  void *objs[3 + 2 * MPM_MAX_MATERIALS] = {mpm->shape, mpm->viscosity, mpm->exact};
+  void *objs[3 + 3 * MPM_MAX_MATERIALS] = {mpm->shape, mpm->viscosity, mpm->exact};
 
   PetscFunctionBegin;
   *type = NULL;
   *cls  = NULL;
   for (PetscInt i = 0; i < mpm->nmat; i++) {
-    objs[3 + 2 * i]     = mpm->mat[i].eos;
-    objs[3 + 2 * i + 1] = mpm->mat[i].strength;
+    objs[3 + 3 * i]     = mpm->mat[i].eos;
+    objs[3 + 3 * i + 1] = mpm->mat[i].strength;
+    objs[3 + 3 * i + 2] = mpm->mat[i].damage;
   }
-  for (PetscInt k = 0; k < 3 + 2 * mpm->nmat && !*type; k++) {
+  for (PetscInt k = 0; k < 3 + 3 * mpm->nmat && !*type; k++) {
     PetscCall(MPMObjectOtherTypeOption(objs[k], name, type));
     if (*type) *cls = ((MPMObject)objs[k])->cls->name;
   }
