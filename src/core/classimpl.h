@@ -70,16 +70,18 @@ typedef struct {
    (src/core/constitutive.c). idx[i]: the point of entry i; per point (index idx[i]): the fields f[] (a type reaches
    its declared fields as f[fid[k]]), and the state at t^n (rho, e, p, q, T), L (axisymmetric: L - L_tt I), F^{n+1}
    and the stress s; per entry i: d(1/rho) and the stress work ws the core computed, and the state at t^{n+1} the
-   stages compute in order (rho1 from the core; e1, p, c^2 of the EOS, c_s^2 of the strength, T). */
+   stages compute in order (rho1 from the core; e1, p, c^2 of the EOS, c_s^2 of the strength, T; the damage stage may
+   change them for a failed point). */
 typedef struct {
   PetscInt          d, n;
   const PetscInt   *idx;
   PetscReal         t, dt;    /* t^{n+1} and the step [s] */
   PetscBool         midpoint; /* -mpm_energy_update midpoint: the EOS stage takes pbar = (p^n + p^{n+1}) / 2 */
   PetscReal *const *f;
-  const PetscReal  *L, *F, *m, *rho, *e, *p, *q, *T;
-  PetscReal        *S;
-  const PetscReal  *rho1, *dvol, *ws;
+  const PetscReal  *L, *m, *rho, *e, *p, *q, *T;
+  PetscReal        *F, *S; /* F^{n+1} (NULL where the points carry none) and s */
+  PetscReal        *rho1;  /* the core's; the damage stage holds a failed point's density where the step would stretch it into tension */
+  const PetscReal  *dvol, *ws;
   PetscReal        *e1, *pn, *c2, *cs2, *Tn;
   MPMEOS            eos;          /* the material's EOS, for a stage that reads it (a solid past its spinodal has no shear) */
   PetscReal         G;            /* the material's shear modulus [dyn/cm^2] (a hypoelastic strength model), else 0 */
