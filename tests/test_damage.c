@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* The damage types against closed forms: Johnson-Cook failure reaches D = 1 at the failure strain of the state it is
    driven in (uniaxial tension, triaxiality 1/3, in 3D; simple shear, triaxiality 0, in 2D), at two step sizes; the
-   spall type's largest principal stress against rotated diagonal stresses in 1D, 2D and 3D. */
+   spall type's largest principal stress against rotated diagonal stresses in 1D, 2D and 3D; the flaw factors' mean and
+   spread. */
 #include "core/petmpmimpl.h"
 #include "strength/hypoelastic.h"
 
@@ -177,6 +178,32 @@ static PetscErrorCode TestSpall(PetscInt *fails)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The flaw factors (-damage_scatter s): over 1e5 consecutive ids their mean is 1 and their standard deviation s, within
+   the sampling error, and they stay within 1 -+ sqrt(3) s (uniform); s = 0 gives 1 exactly. */
+static PetscErrorCode TestFlaws(PetscInt *fails)
+{
+  const PetscReal s  = 0.1;
+  const PetscInt  n  = 100000;
+  PetscReal       m1 = 0.0, m2 = 0.0, lo = PETSC_MAX_REAL, hi = -PETSC_MAX_REAL;
+  PetscBool       ok;
+
+  PetscFunctionBegin;
+  for (PetscInt i = 0; i < n; i++) {
+    const PetscReal w = MPMDamageFlaw(s, (PetscReal)i);
+    m1 += w;
+    m2 += w * w;
+    lo = PetscMin(lo, w);
+    hi = PetscMax(hi, w);
+  }
+  m1 /= n;
+  m2 = PetscSqrtReal(m2 / n - m1 * m1);
+  ok = (PetscBool)(PetscAbsReal(m1 - 1.0) < 5.0 * s / PetscSqrtReal((PetscReal)n) && PetscAbsReal(m2 / s - 1.0) < 0.01 && lo >= 1.0 - PetscSqrtReal(3.0) * s && hi <= 1.0 + PetscSqrtReal(3.0) * s && MPMDamageFlaw(0.0, 7.0) == 1.0);
+  if (!ok) (*fails)++;
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s flaw factors, scatter %g over %" PetscInt_FMT " ids: mean %.5f, standard deviation %.5f, range [%.4f, %.4f] (uniform: 1 -+ %.4f)\n", ok ? "PASSED" : "FAILED", (double)s, n, (double)m1, (double)m2,
+                        (double)lo, (double)hi, (double)(PetscSqrtReal(3.0) * s)));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 int main(int argc, char **argv)
 {
   PetscInt fails = 0;
@@ -185,6 +212,7 @@ int main(int argc, char **argv)
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   PetscCall(TestJohnsonCook(&fails));
   PetscCall(TestSpall(&fails));
+  PetscCall(TestFlaws(&fails));
   PetscCall(PetscFinalize());
   return fails ? 1 : 0;
 }

@@ -78,6 +78,7 @@ typedef struct {
   PetscReal         t, dt;    /* t^{n+1} and the step [s] */
   PetscBool         midpoint; /* -mpm_energy_update midpoint: the EOS stage takes pbar = (p^n + p^{n+1}) / 2 */
   PetscReal *const *f;
+  const PetscReal  *id; /* per point: its persistent id (the same on every rank count) */
   const PetscReal  *L, *m, *rho, *e, *p, *q, *T;
   PetscReal        *F, *S; /* F^{n+1} (NULL where the points carry none) and s */
   PetscReal        *rho1;  /* the core's; the damage stage holds a failed point's density where the step would stretch it into tension */

@@ -117,6 +117,7 @@ static inline __attribute__((always_inline)) PetscErrorCode MPMConstitutiveChunk
                               .dt           = dt,
                               .midpoint     = midpoint,
                               .f            = pts->f,
+                              .id           = pts->f[MPM_FIELD_ID],
                               .L            = Lsh ? Lsh : L,
                               .F            = F,
                               .m            = m,

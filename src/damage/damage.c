@@ -33,11 +33,13 @@ static PetscErrorCode MPMDamageReset(void *obj)
 {
   PetscFunctionBegin;
   ((MPMDamage)obj)->reads_plastic = PETSC_FALSE;
+  ((MPMDamage)obj)->scatter       = 0.0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 static const MPMClass MPMDamageClass = {
-  "damage model", "damage", "Damage and failure", "MPMDamage", "How the material's points fail (none: never, but for the EOS's tension cut-offs)", MPMDAMAGENONE, &MPMDamageList, sizeof(MPMDamageOps), MPMDamageReset, NULL, NULL, NULL, NULL, NULL};
+  "damage model", "damage",  "Damage and failure",  "MPMDamage", "How the material's points fail (none: never, but for the EOS's tension cut-offs)", MPMDAMAGENONE, &MPMDamageList, sizeof(MPMDamageOps), MPMDamageReset, NULL, NULL,
+  NULL,           "scatter", "johnsoncook or spall"};
 
 MPM_CLASS_INTERFACE(MPMDamage)
 
@@ -62,7 +64,7 @@ PetscErrorCode MPMDamageIncrement(MPMDamage dmg, PetscInt d, PetscReal dt, const
 {
   PetscFunctionBegin;
   PetscCheck(dmg->ops.increment, dmg->comm, PETSC_ERR_ARG_WRONGSTATE, "Damage type %s never fails a point", dmg->type_name);
-  *dD = dmg->ops.increment(dmg->data, d, dt, s, p, depsp, T);
+  *dD = dmg->ops.increment(dmg->data, d, dt, s, p, depsp, T, 1.0);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -81,6 +83,21 @@ PetscErrorCode MPMDamageDeclareFields(MPMDamage dmg)
   PetscFunctionBegin;
   PetscCall(MPMObjectDeclareField(dmg, "damage", 1, "-", "damage D in [0, 1]: the point has failed (no tension, no shear) at D = 1"));
   PetscCall(MPMObjectDeclareField(dmg, "failure_time", 1, "s", "the time the point failed (D reached 1); 0 while it has not"));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* -<prefix>damage_scatter, read by every type that fails points. */
+PetscErrorCode MPMDamageScatterOption(MPMDamage dmg, PetscOptionItems *PetscOptionsObject)
+{
+  char opt[256];
+
+  PetscFunctionBegin;
+  PetscCall(
+    PetscOptionsReal("-damage_scatter",
+                     "Spread of the points' failure thresholds (eps_f, the spall strength): each point's is multiplied by a flaw factor of mean 1 and this standard deviation, uniform and fixed by its id [-], in [0, 0.5] (0: a homogeneous material)",
+                     "", dmg->scatter, &dmg->scatter, NULL));
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sdamage_scatter", dmg->prefix ? dmg->prefix : ""));
+  PetscCall(MPMOptionsCheckRange(opt, dmg->scatter, 0.0, 0.5, PETSC_FALSE, PETSC_FALSE));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -105,7 +122,7 @@ PetscErrorCode MPMDamageStageUpdate(void *obj, MPMStageChunk *ck)
   for (PetscInt i = 0; i < n; i++) {
     const PetscInt p = idx[i];
     if (D[p] < 1.0) {
-      D[p] += dmg->ops.increment(dmg->data, d, ck->dt, S ? &S[p * d * d] : NULL, ck->pn[i], depsp ? depsp[i] : 0.0, ck->T[p]);
+      D[p] += dmg->ops.increment(dmg->data, d, ck->dt, S ? &S[p * d * d] : NULL, ck->pn[i], depsp ? depsp[i] : 0.0, ck->T[p], MPMDamageFlaw(dmg->scatter, ck->id[p]));
       if (!(D[p] < 1.0)) { /* fails in this step (a NaN increment fails it too: the point's state is diagnosed after the stages) */
         D[p]  = 1.0;
         tf[p] = ck->t;

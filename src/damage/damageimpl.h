@@ -5,15 +5,17 @@
 
 typedef struct {
   MPM_CLASS_OPS(MPMDamage);
-  /* (d, dt [s], s^{n+1} (row-major d x d deviator) [dyn/cm^2], p^{n+1} [dyn/cm^2], d eps_p of the step [-], T [eV]) -> the
-     step's damage increment dD [-]; an increment that takes D to 1 or beyond fails the point */
-  PetscReal (*increment)(void *, PetscInt, PetscReal, const PetscReal[], PetscReal, PetscReal, PetscReal);
+  /* (d, dt [s], s^{n+1} (row-major d x d deviator) [dyn/cm^2], p^{n+1} [dyn/cm^2], d eps_p of the step [-], T [eV], w [-])
+     -> the step's damage increment dD [-], with the type's failure threshold (eps_f, the spall strength) times the
+     point's flaw factor w; an increment that takes D to 1 or beyond fails the point */
+  PetscReal (*increment)(void *, PetscInt, PetscReal, const PetscReal[], PetscReal, PetscReal, PetscReal, PetscReal);
   PetscReal (*failure_strain)(void *, PetscReal, PetscReal, PetscReal); /* (triaxiality, plastic strain rate [1/s], T [eV]) -> eps_f [-]; NULL: the type has none */
 } MPMDamageOps;
 
 struct _p_MPMDamage {
   MPM_CLASS_HEADER(MPMDamageOps);
   PetscBool reads_plastic; /* the increment reads the plastic strain increment: the material needs a plastic strength model */
+  PetscReal scatter;       /* -mat_<name>_damage_scatter: the spread of the points' flaw factors (MPMDamageFlaw) [-] */
   PetscInt  nfailed;       /* points of this material that failed on this rank since the start (a restart reads them back) */
   PetscReal released;      /* the elastic shear energy the points held when they failed, left as heat, on this rank [erg] */
 };
@@ -42,4 +44,19 @@ static inline PetscReal MPMMaxPrincipalStress(PetscInt d, const PetscReal s[], P
 
 PETSC_INTERN PetscErrorCode MPMDamageStageUpdate(void *, MPMStageChunk *);
 PETSC_INTERN PetscErrorCode MPMDamageDeclareFields(MPMDamage);
+PETSC_INTERN PetscErrorCode MPMDamageScatterOption(MPMDamage, PetscOptionItems *);
+
+/* The flaw factor of the point with persistent id `id` (the same on every rank count and after a restart; a split
+   child takes an id of its own): w = 1 + s sqrt(3) (2 u - 1), u uniform in [0, 1) from the SplitMix64 hash of the id
+   (Steele, Lea & Flood, OOPSLA 2014), so that the factors have mean 1 and standard deviation s (-damage_scatter). */
+static inline PetscReal MPMDamageFlaw(PetscReal s, PetscReal id)
+{
+  uint64_t z = (uint64_t)id + 0x9E3779B97F4A7C15ULL;
+
+  if (s == 0.0) return 1.0;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+  z ^= z >> 31;
+  return 1.0 + s * 1.7320508075688772 * (2.0 * (PetscReal)(z >> 11) * 0x1.0p-53 - 1.0);
+}
 PETSC_INTERN PetscErrorCode MPMDamageRegisterAll(void);

@@ -95,11 +95,14 @@ static PetscErrorCode MPMContactSetFromOptions(MPMModule mod, MPM mpm, PetscOpti
                               "A rigid body: its prescribed velocity, one value per dimension [cm/s], or one row per time of -body_<b>_rigid_velocity_times (linear in between); it takes part in contact and the report gives the contact force on it",
                               mpm->grid.dim, &ct->vtab[b], &ct->rigid[b]));
     if (ct->rigid[b]) MPMTableEval(&ct->vtab[b], 0.0, ct->vrigid[b]);
-    for (PetscInt r = 0; ct->rigid[b] && r < mpm->nreg; r++) /* its points start at its velocity: nothing would change theirs */
+    for (PetscInt r = 0; ct->rigid[b] && r < mpm->nreg; r++) { /* its points start at its velocity: nothing would change theirs */
+      PetscCheck(mpm->reg[r].body != b || mpm->reg[r].vradial == 0.0, mpm->comm, PETSC_ERR_USER_INPUT, "%s: region %s of the rigid body has a radial velocity (-region_%s_velocity_radial %g); valid is 0", opt, mpm->reg[r].name, mpm->reg[r].name,
+                 (double)mpm->reg[r].vradial);
       for (PetscInt k = 0; mpm->reg[r].body == b && k < mpm->grid.dim; k++)
         PetscCheck(mpm->reg[r].v[k] == ct->vrigid[b][k], mpm->comm, PETSC_ERR_USER_INPUT,
                    "%s: region %s of the rigid body starts at another velocity (-region_%s_velocity, component %" PetscInt_FMT ": %g, not %g cm/s); give it the rigid velocity at t = 0", opt, mpm->reg[r].name, mpm->reg[r].name, k,
                    (double)mpm->reg[r].v[k], (double)ct->vrigid[b][k]);
+    }
   }
   mod->active = (PetscBool)(mpm->nbodies > 1);
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -202,6 +202,7 @@ static void MPMPieceAdd(MPM mpm, PetscInt r, const PetscReal x[], PetscReal dV, 
 {
   const MPMRegion *reg = &mpm->reg[r];
   PetscInt         i;
+  PetscReal        v[MPM_MAX_DIM];
 
   for (i = 0; i < *np && (pc[i].material != reg->material || pc[i].body != reg->body); i++) {
   }
@@ -213,9 +214,10 @@ static void MPMPieceAdd(MPM mpm, PetscInt r, const PetscReal x[], PetscReal dV, 
     (*np)++;
   } else if (pc[i].region != r)
     pc[i].region = -1;
+  MPMRegionVelocity(reg, mpm->grid.dim, x, v);
   for (PetscInt k = 0; k < mpm->grid.dim; k++) {
     pc[i].x[k] += x[k] * dV;
-    pc[i].mv[k] += reg->rho * dV * reg->v[k];
+    pc[i].mv[k] += reg->rho * dV * v[k];
   }
   pc[i].V += dV;
   pc[i].m += reg->rho * dV;
@@ -302,11 +304,12 @@ static PetscInt MPMSiteSeed(MPM mpm, const PetscReal xs[], MPMPiece pc[], PetscR
     e[n] = 0.0;                                                    /* a part of one region takes that region's state */
     for (PetscInt r = 0; r < mpm->nreg && pc[i].region < 0; r++) { /* merged: along each isentrope to rho */
       const MPMRegion *reg = &mpm->reg[r];
-      PetscReal        er, w2 = 0.0;
+      PetscReal        er, w2 = 0.0, vr[MPM_MAX_DIM];
       if (!vol[r] || reg->material != pc[i].material || reg->body != pc[i].body) continue;
+      MPMRegionVelocity(reg, d, xs, vr); /* at the site's centre */
       MPMEOSEnergyKernel(eos, reg->rho, reg->T, &er);
       for (PetscInt s = 0; s < 8; s++) er = MPMIsentropeStep(MPMEOSPressureOf, eos, reg->rho + s * (rho[n] - reg->rho) / 8, er, (rho[n] - reg->rho) / 8);
-      for (PetscInt k = 0; k < d; k++) w2 += PetscSqr(reg->v[k]);
+      for (PetscInt k = 0; k < d; k++) w2 += PetscSqr(vr[k]);
       E += reg->rho * vol[r] * (er + 0.5 * w2);
       e[n] = E / pc[i].m - 0.5 * v2;
     }
@@ -361,11 +364,12 @@ PetscErrorCode MPMCreatePoints(MPM mpm)
     np = MPMSiteSeed(mpm, x, pc, rho, e);
     for (PetscInt i = 0; i < np; i++, n++) {
       const MPMRegion *reg = pc[i].region >= 0 ? &mpm->reg[pc[i].region] : NULL; /* one region: its state exactly */
-      PetscReal        T   = reg ? reg->T : 0.0;
+      PetscReal        T   = reg ? reg->T : 0.0, v[MPM_MAX_DIM];
+      if (reg) MPMRegionVelocity(reg, d, pc[i].x, v);
       for (PetscInt k = 0; k < d; k++) {
         pts.f[MPM_FIELD_POSITION][n * d + k] = pc[i].x[k];
         if (pts.f[MPM_FIELD_REFPOSITION]) pts.f[MPM_FIELD_REFPOSITION][n * d + k] = pc[i].x[k];
-        pts.f[MPM_FIELD_VELOCITY][n * d + k] = reg ? reg->v[k] : pc[i].mv[k];
+        pts.f[MPM_FIELD_VELOCITY][n * d + k] = reg ? v[k] : pc[i].mv[k];
         if (pts.f[MPM_FIELD_DOMAINSCALE]) pts.f[MPM_FIELD_DOMAINSCALE][n * d + k] = 1.0;
       }
       if (!reg) MPMEOSTemperatureKernel(mpm->mat[pc[i].material].eos, rho[i], e[i], &T);

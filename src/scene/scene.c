@@ -74,6 +74,7 @@ static PetscErrorCode MPMRegionSetFromOptions(MPM mpm, MPMRegion *r)
   PetscCall(PetscOptionsReal("-density", "Initial density rho [g/cm^3], > 0", "", r->rho, &r->rho, NULL));
   PetscCall(PetscOptionsReal("-temperature", "Initial temperature T [eV], >= 0", "", r->T, &r->T, NULL));
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-velocity", "Initial velocity v [cm/s]", d, r->v));
+  PetscCall(PetscOptionsReal("-velocity_radial", "Initial radial velocity out from -center (across -axis for a cylinder), added to -velocity: an expanding ring or shell [cm/s]", "", r->vradial, &r->vradial, NULL));
   PetscCall(PetscOptionsBool("-hydrostatic", "Start in hydrostatic equilibrium under -mpm_gravity: -density is the density at the top of the region's box (along g); below it dp/dz = rho g at the region's temperature", "", r->hydrostatic,
                              &r->hydrostatic, NULL));
   PetscOptionsEnd();
@@ -93,6 +94,8 @@ static PetscErrorCode MPMRegionSetFromOptions(MPM mpm, MPMRegion *r)
   for (PetscInt k = 0; k < d; k++) {
     PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%svelocity", prefix));
     PetscCall(MPMOptionsCheckRange(opt, r->v[k], -PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%svelocity_radial", prefix));
+    PetscCall(MPMOptionsCheckRange(opt, r->vradial, -PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
     PetscCheck(r->lo[k] < mpm->grid.hi[k] && r->hi[k] > mpm->grid.lo[k], mpm->comm, PETSC_ERR_USER_INPUT, "Region %s (-%slo, -%shi) lies outside the domain in direction %" PetscInt_FMT ": [%g, %g] against -mpm_lo %g, -mpm_hi %g", r->name, prefix,
                prefix, k, (double)r->lo[k], (double)r->hi[k], (double)mpm->grid.lo[k], (double)mpm->grid.hi[k]);
   }

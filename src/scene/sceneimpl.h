@@ -53,11 +53,27 @@ typedef struct {
   PetscReal  rho;                             /* initial density [g/cm^3]                            */
   PetscReal  T;                               /* initial temperature [eV]                            */
   PetscReal  v[MPM_MAX_DIM];                  /* initial velocity [cm/s]                             */
+  PetscReal  vradial;                         /* and radially out from center (across axis) [cm/s]    */
   char       bodyname[MPM_MAX_NAME];          /* -region_<name>_body: the body it belongs to ("" until set-up: the default rule) */
   PetscInt   body;                            /* index of its body, each with its own velocity field (MPM::nbodies) */
   PetscBool  hydrostatic;                     /* -region_<name>_hydrostatic: rho is the density at the top; below it the
                                                  points start in hydrostatic equilibrium under -mpm_gravity */
 } MPMRegion;
+
+/* The initial velocity of region r at x [cm/s]: v + vradial (x - center) / |x - center|, the distance taken across
+   the axis of a cylindrical region (no radial part at the centre). */
+static inline void MPMRegionVelocity(const MPMRegion *r, PetscInt d, const PetscReal x[], PetscReal v[])
+{
+  PetscReal dx[MPM_MAX_DIM] = {0, 0, 0}, rr = 0.0;
+
+  for (PetscInt k = 0; k < d; k++) {
+    v[k] = r->v[k];
+    if (k != r->axis) dx[k] = x[k] - r->center[k];
+    rr += dx[k] * dx[k];
+  }
+  if (r->vradial != 0.0 && rr > 0.0)
+    for (PetscInt k = 0; k < d; k++) v[k] += r->vradial * dx[k] / PetscSqrtReal(rr);
+}
 
 typedef struct {
   MPI_Comm               comm;

@@ -27,13 +27,13 @@ static PetscReal MPMDamageFailureStrain_JC(void *ctx, PetscReal eta, PetscReal r
   return (jc->D1 + jc->D2 * PetscExpReal(jc->D3 * eta)) * (1.0 + (r > 1.0 ? jc->D4 * PetscLogReal(r) : 0.0)) * (1.0 + jc->D5 * Tstar);
 }
 
-static PetscReal MPMDamageIncrement_JC(void *ctx, PetscInt d, PetscReal dt, const PetscReal s[], PetscReal p, PetscReal depsp, PetscReal T)
+static PetscReal MPMDamageIncrement_JC(void *ctx, PetscInt d, PetscReal dt, const PetscReal s[], PetscReal p, PetscReal depsp, PetscReal T, PetscReal w)
 {
   PetscReal seq, epsf;
 
   if (!(depsp > 0.0)) return 0.0;
   seq  = MPMVonMisesStress(d, s);
-  epsf = MPMDamageFailureStrain_JC(ctx, seq > 0.0 ? -p / seq : 0.0, dt > 0.0 ? depsp / dt : 0.0, T);
+  epsf = w * MPMDamageFailureStrain_JC(ctx, seq > 0.0 ? -p / seq : 0.0, dt > 0.0 ? depsp / dt : 0.0, T);
   return epsf > 0.0 ? depsp / epsf : 1.0;
 }
 
@@ -58,6 +58,7 @@ static PetscErrorCode MPMDamageSetFromOptions_JC(MPMDamage dmg, PetscOptionItems
     PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%s%s", pre, par[i].name));
     PetscCall(PetscOptionsReal(opt, par[i].text, "", *par[i].v, par[i].v, NULL));
   }
+  PetscCall(MPMDamageScatterOption(dmg, PetscOptionsObject));
   PetscOptionsHeadEnd();
   for (size_t i = 0; i < sizeof(par) / sizeof(par[0]); i++) {
     PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%s%s%s", dmg->prefix ? dmg->prefix : "", pre, par[i].name));
@@ -73,8 +74,9 @@ static PetscErrorCode MPMDamageView_JC(MPMDamage dmg, PetscViewer viewer)
   Damage_JC *jc = (Damage_JC *)dmg->data;
 
   PetscFunctionBegin;
-  PetscCall(PetscViewerASCIIPrintf(viewer, "Johnson-Cook failure: D1 %g, D2 %g, D3 %g, D4 %g (epsdot0 %g 1/s), D5 %g, Tm %g eV, Tr %g eV; eps_f %g in uniaxial tension, %g in shear (at epsdot0, Tr)\n", (double)jc->D1, (double)jc->D2, (double)jc->D3,
-                                   (double)jc->D4, (double)jc->epsdot0, (double)jc->D5, (double)jc->Tm, (double)jc->Tr, (double)MPMDamageFailureStrain_JC(jc, 1.0 / 3.0, 0.0, jc->Tr), (double)MPMDamageFailureStrain_JC(jc, 0.0, 0.0, jc->Tr)));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "Johnson-Cook failure: D1 %g, D2 %g, D3 %g, D4 %g (epsdot0 %g 1/s), D5 %g, Tm %g eV, Tr %g eV; eps_f %g in uniaxial tension, %g in shear (at epsdot0, Tr); flaw scatter %g\n", (double)jc->D1, (double)jc->D2,
+                                   (double)jc->D3, (double)jc->D4, (double)jc->epsdot0, (double)jc->D5, (double)jc->Tm, (double)jc->Tr, (double)MPMDamageFailureStrain_JC(jc, 1.0 / 3.0, 0.0, jc->Tr),
+                                   (double)MPMDamageFailureStrain_JC(jc, 0.0, 0.0, jc->Tr), (double)dmg->scatter));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

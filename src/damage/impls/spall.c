@@ -12,11 +12,11 @@ typedef struct {
   PetscReal strength;
 } Damage_Spall;
 
-static PetscReal MPMDamageIncrement_Spall(void *ctx, PetscInt d, PetscReal dt, const PetscReal s[], PetscReal p, PetscReal depsp, PetscReal T)
+static PetscReal MPMDamageIncrement_Spall(void *ctx, PetscInt d, PetscReal dt, const PetscReal s[], PetscReal p, PetscReal depsp, PetscReal T, PetscReal w)
 {
   const PetscReal zero[MPM_MAX_DIM * MPM_MAX_DIM] = {0};
 
-  return MPMMaxPrincipalStress(d, s ? s : zero, p) >= ((const Damage_Spall *)ctx)->strength ? 1.0 : 0.0;
+  return MPMMaxPrincipalStress(d, s ? s : zero, p) >= w * ((const Damage_Spall *)ctx)->strength ? 1.0 : 0.0;
 }
 
 static PetscErrorCode MPMDamageSetFromOptions_Spall(MPMDamage dmg, PetscOptionItems *PetscOptionsObject)
@@ -27,6 +27,7 @@ static PetscErrorCode MPMDamageSetFromOptions_Spall(MPMDamage dmg, PetscOptionIt
   PetscFunctionBegin;
   PetscOptionsHeadBegin(PetscOptionsObject, "Spall");
   PetscCall(PetscOptionsReal("-damage_spall_strength", "Spall strength sigma_s [dyn/cm^2], > 0: a point whose largest principal stress (tension positive) reaches it fails", "", sp->strength, &sp->strength, NULL));
+  PetscCall(MPMDamageScatterOption(dmg, PetscOptionsObject));
   PetscOptionsHeadEnd();
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sdamage_spall_strength", dmg->prefix ? dmg->prefix : ""));
   PetscCall(MPMOptionsCheckRange(opt, sp->strength, 0.0, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
@@ -36,7 +37,7 @@ static PetscErrorCode MPMDamageSetFromOptions_Spall(MPMDamage dmg, PetscOptionIt
 static PetscErrorCode MPMDamageView_Spall(MPMDamage dmg, PetscViewer viewer)
 {
   PetscFunctionBegin;
-  PetscCall(PetscViewerASCIIPrintf(viewer, "spall: a point fails where its largest principal stress reaches %g dyn/cm^2\n", (double)((Damage_Spall *)dmg->data)->strength));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "spall: a point fails where its largest principal stress reaches %g dyn/cm^2; flaw scatter %g\n", (double)((Damage_Spall *)dmg->data)->strength, (double)dmg->scatter));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
