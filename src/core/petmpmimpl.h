@@ -103,7 +103,8 @@ struct _p_MPM {
   PetscBool            has_bodyforce; /* the exact solution drives the points with a body force (manufactured) */
   PetscBool            view;
   PetscInt             nmat, nreg;
-  PetscInt             nbodies; /* bodies of the scene (MPMSceneBodies), each with its own nodal velocity field */
+  PetscInt             nbodies;     /* bodies of the scene (MPMSceneBodies), each with its own nodal velocity field */
+  PetscBool            bodies_open; /* bodies may be added during the run (MPMBodyAdd: the pieces a body breaks into) */
   char                 bodyname[MPM_MAX_BODIES][MPM_MAX_NAME];
   MPMMaterial          mat[MPM_MAX_MATERIALS];
   MPMRegion            reg[MPM_MAX_REGIONS];

@@ -20,6 +20,25 @@ PetscErrorCode MPMBodiesCreateNodes(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Adds a body during the run (a piece a body broke into; MPM::bodies_open): its nodes on the current grid, zero; *b its
+   index. The same on every rank. */
+PetscErrorCode MPMBodyAdd(MPM mpm, const char name[], PetscInt *b)
+{
+  MPMBodyNodes *bn;
+
+  PetscFunctionBegin;
+  PetscCheck(mpm->bodies_open, mpm->comm, PETSC_ERR_PLIB, "Body %s added to a run whose bodies are fixed", name);
+  PetscCheck(mpm->nbodies < MPM_MAX_BODIES, mpm->comm, PETSC_ERR_SUP, "Body %s: more than %d bodies", name, MPM_MAX_BODIES);
+  *b = mpm->nbodies;
+  bn = &mpm->bnodes[*b];
+  PetscCall(PetscStrncpy(mpm->bodyname[*b], name, MPM_MAX_NAME));
+  PetscCall(DMCreateLocalVector(mpm->da, &bn->lnodes));
+  PetscCall(PetscCalloc1(2 * mpm->grid.nxcells, &bn->xcell));
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) bn->box_lo[k] = bn->box_hi[k] = bn->lbox_lo[k] = bn->lbox_hi[k] = 0;
+  mpm->nbodies++;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode MPMBodiesDestroyNodes(MPM mpm)
 {
   PetscFunctionBegin;

@@ -227,6 +227,7 @@ PETSC_INTERN PetscErrorCode MPMGridOwnedToGlobal(MPM);
 PETSC_INTERN PetscErrorCode MPMGhostExchange(MPM, MPI_Datatype, PetscScalar *, PetscBool, PetscBool);
 PETSC_INTERN PetscErrorCode MPMDestroyGrid(MPM);
 PETSC_INTERN PetscErrorCode MPMBodiesCreateNodes(MPM);
+PETSC_INTERN PetscErrorCode MPMBodyAdd(MPM, const char[], PetscInt *);
 PETSC_INTERN PetscErrorCode MPMBodiesDestroyNodes(MPM);
 PETSC_INTERN PetscErrorCode MPMBodySelect(MPM, PetscInt);
 PETSC_INTERN Vec            MPMBodyNodesVec(MPM, PetscInt);

@@ -65,8 +65,8 @@ static PetscErrorCode MPMContactSetFromOptions(MPMModule mod, MPM mpm, PetscOpti
   PetscFunctionBegin;
   PetscCall(PetscOptionsReal("-mpm_contact_friction", "Coulomb friction coefficient between every two bodies (-mpm_contact_friction_<a>_<b> for one pair) [-], >= 0 (0: frictionless)", "", mu, &mu, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_contact_friction", mu, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
-  for (PetscInt a = 0; a < mpm->nbodies; a++)
-    for (PetscInt b = 0; b < mpm->nbodies; b++) ct->mu[a][b] = mu;
+  for (PetscInt a = 0; a < MPM_MAX_BODIES; a++) /* bodies added during the run (fracture.c) take it too */
+    for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) ct->mu[a][b] = mu;
   for (PetscInt a = 0; a < mpm->nbodies; a++)
     for (PetscInt b = a + 1; b < mpm->nbodies; b++) {
       char      opt[2 * MPM_MAX_NAME + 32];
@@ -104,7 +104,7 @@ static PetscErrorCode MPMContactSetFromOptions(MPMModule mod, MPM mpm, PetscOpti
                    (double)mpm->reg[r].v[k], (double)ct->vrigid[b][k]);
     }
   }
-  mod->active = (PetscBool)(mpm->nbodies > 1);
+  mod->active = (PetscBool)(mpm->nbodies > 1 || mpm->bodies_open);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -165,6 +165,10 @@ static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const
       if (ct->gap == MPM_CONTACT_GAP_SURFACE) PetscCall(PetscMalloc1(nloc, &ct->ext[b]));
     }
     ct->gid = mpm->grid.id;
+  }
+  for (PetscInt b = 0; b < nb; b++) { /* a body added during the run (a piece a body broke into, fracture.c) */
+    if (!ct->geo[b]) PetscCall(DMCreateLocalVector(mpm->da, &ct->geo[b]));
+    if (!ct->ext[b] && ct->gap == MPM_CONTACT_GAP_SURFACE) PetscCall(PetscMalloc1(nloc, &ct->ext[b]));
   }
   for (PetscInt c = 0; c < nloc; c++) { /* the shared nodes, ghosts included */
     PetscInt nin = 0;

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
-/* Fracture module (no phase of the step: report, output and checkpoint only; in the run wherever a material has a
-   damage type, -mat_<name>_damage_type). It reports what failed: per material the points that failed (D reached 1),
+/* Fracture module (in the run wherever a material has a damage type, -mat_<name>_damage_type; in no phase of the step
+   unless -mpm_fracture_bodies puts it after migration, MPM_PHASE_POINT_END, to make pieces bodies: MPMFractureApply). It reports what failed: per material the points that failed (D reached 1),
    their mass now, and the elastic shear energy they held when they failed (the damage stage leaves it in their
    internal energy as heat: the fracture's share of the energy budget's "rest"); and the fragments.
    Fragments are the connected sets of occupied cells: a cell is occupied where a point lies in it, and two occupied
@@ -15,11 +15,16 @@
 #include "core/petmpmimpl.h"
 
 typedef struct {
-  PetscInt   list;    /* -mpm_fragments_list: fragments listed in the report   */
-  PetscInt   nfrag;   /* fragments at the last count (rank 0)                  */
-  PetscReal  largest; /* the largest fragment's mass over the total (rank 0)   */
-  PetscReal *frag;    /* rank 0: per fragment, mass and momentum (1 + d values), largest first */
-  PetscInt   nalloc;  /* fragments frag has room for */
+  PetscBool  bodies;                         /* -mpm_fracture_bodies: the pieces a body breaks into become bodies */
+  PetscReal  min_mass;                       /* -mpm_fracture_min_mass: the lightest piece that becomes a body, of its body's intact mass */
+  PetscInt   interval;                       /* -mpm_fracture_interval: steps between looks for pieces */
+  PetscReal  looked;                         /* the failed points (all ranks) at the last look */
+  PetscInt   nadded, parent[MPM_MAX_BODIES]; /* bodies added in the run, and the body each came from */
+  PetscInt   list;                           /* -mpm_fragments_list: fragments listed in the report   */
+  PetscInt   nfrag;                          /* fragments at the last count (rank 0)                  */
+  PetscReal  largest;                        /* the largest fragment's mass over the total (rank 0)   */
+  PetscReal *frag;                           /* rank 0: per fragment, mass and momentum (1 + d values), largest first */
+  PetscInt   nalloc;                         /* fragments frag has room for */
 } MPMFracture;
 
 static PetscErrorCode MPMFractureSetFromOptions(MPMModule mod, MPM mpm, PetscOptionItems *PetscOptionsObject)
@@ -29,6 +34,16 @@ static PetscErrorCode MPMFractureSetFromOptions(MPMModule mod, MPM mpm, PetscOpt
   PetscFunctionBegin;
   mod->active = PETSC_FALSE;
   for (PetscInt i = 0; i < mpm->nmat; i++) mod->active = (PetscBool)(mod->active || mpm->mat[i].damage);
+  PetscCall(PetscOptionsBool("-mpm_fracture_bodies", "Where a material has a damage type: a body whose intact material falls apart becomes several bodies, one per piece, which meet through contact (the faces of a crack part and can close again)", "",
+                             fr->bodies, &fr->bodies, NULL));
+  PetscCall(PetscOptionsReal("-mpm_fracture_min_mass", "The lightest piece that becomes a body of its own, a fraction of its body's intact mass [-], in (0, 1]", "", fr->min_mass, &fr->min_mass, NULL));
+  PetscCall(MPMOptionsCheckRange("-mpm_fracture_min_mass", fr->min_mass, 0.0, 1.0, PETSC_TRUE, PETSC_FALSE));
+  PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-mpm_fracture_interval", "Steps between looks for pieces that become bodies (only steps in which points failed) [-], >= 1", &fr->interval, 1, PETSC_MAX_INT));
+  fr->bodies = (PetscBool)(fr->bodies && mod->active);
+  if (fr->bodies) {
+    mod->phase       = MPM_PHASE_POINT_END;
+    mpm->bodies_open = PETSC_TRUE;
+  }
   PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-mpm_fragments_list", "Fragments the report lists, largest first, with their mass and velocity (where a material has a damage type) [-], >= 0", &fr->list, 0, 1000));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -46,25 +61,56 @@ static inline PetscInt64 MPMFractureCell(const MPMGrid *g, const PetscReal x[])
   return c;
 }
 
+/* The grid's cell count. */
+static inline PetscInt64 MPMFractureNumCells(const MPMGrid *g)
+{
+  PetscInt64 n = 1;
+
+  for (PetscInt k = 0; k < g->dim; k++) n *= g->cells[k];
+  return n;
+}
+
+/* The key of the o-th of the 3^d cells around (and including) cell c of the same body (key = body * ncells + cell);
+   -1 outside the grid. */
+static inline PetscInt64 MPMFractureNeighbour(const MPMGrid *g, PetscInt64 key, PetscInt o)
+{
+  const PetscInt64 nc = MPMFractureNumCells(g);
+  PetscInt64       c = key % nc, ijk[MPM_MAX_DIM], nb = 0;
+
+  for (PetscInt k = 0; k < g->dim; k++) {
+    ijk[k] = c % g->cells[k];
+    c /= g->cells[k];
+  }
+  for (PetscInt k = g->dim - 1; k >= 0; k--) {
+    PetscInt   oo = o;
+    PetscInt64 j;
+    for (PetscInt kk = 0; kk < k; kk++) oo /= 3;
+    j = ijk[k] + (oo % 3) - 1;
+    if (j < 0 || j >= g->cells[k]) return -1;
+    nb = nb * g->cells[k] + j;
+  }
+  return (key / nc) * nc + nb;
+}
+
 typedef struct {
-  PetscInt64 cell;
+  PetscInt64 key; /* body * ncells + cell */
   PetscReal  m, mv[MPM_MAX_DIM];
 } MPMFractureCellSum;
 
 static int MPMFractureCompare(const void *a, const void *b)
 {
-  const PetscInt64 x = ((const MPMFractureCellSum *)a)->cell, y = ((const MPMFractureCellSum *)b)->cell;
+  const PetscInt64 x = ((const MPMFractureCellSum *)a)->key, y = ((const MPMFractureCellSum *)b)->key;
   return x < y ? -1 : (x > y ? 1 : 0);
 }
 
-/* Sorts n cell sums by cell and merges equal cells; returns the count of distinct cells. */
+/* Sorts n cell sums by key and merges equal keys; returns the count of distinct keys. */
 static PetscInt MPMFractureMerge(MPMFractureCellSum *s, PetscInt n)
 {
   PetscInt u = 0;
 
   qsort(s, (size_t)n, sizeof(*s), MPMFractureCompare);
   for (PetscInt i = 0; i < n; i++) {
-    if (u > 0 && s[u - 1].cell == s[i].cell) {
+    if (u > 0 && s[u - 1].key == s[i].key) {
       s[u - 1].m += s[i].m;
       for (PetscInt k = 0; k < MPM_MAX_DIM; k++) s[u - 1].mv[k] += s[i].mv[k];
     } else
@@ -73,22 +119,41 @@ static PetscInt MPMFractureMerge(MPMFractureCellSum *s, PetscInt n)
   return u;
 }
 
+/* The index of key among the n sorted records, -1 if absent. */
+static PetscInt MPMFractureSearch(const MPMFractureCellSum *s, PetscInt n, PetscInt64 key)
+{
+  PetscInt lo = 0, hi = n - 1;
+
+  while (lo <= hi) {
+    const PetscInt mid = (lo + hi) / 2;
+    if (s[mid].key < key)
+      lo = mid + 1;
+    else if (s[mid].key > key)
+      hi = mid - 1;
+    else
+      return mid;
+  }
+  return -1;
+}
+
 static PetscInt MPMFractureFind(PetscInt *parent, PetscInt i)
 {
   while (parent[i] != i) i = parent[i] = parent[parent[i]];
   return i;
 }
 
-/* The fragments now: fr->nfrag, fr->largest and fr->frag on rank 0 (collective). */
-static PetscErrorCode MPMFractureCount(MPMModule mod, MPM mpm)
+/* The occupied cells (collective): each rank sums its points per key (by_body: body * ncells + cell, else the cell;
+   intact: only points that have not failed) and rank 0 gets the merged records of all ranks, sorted (*all, *n; NULL
+   and 0 on the other ranks). */
+static PetscErrorCode MPMFractureGather(MPM mpm, PetscBool by_body, PetscBool intact, MPMFractureCellSum **all, PetscInt *n)
 {
-  MPMFracture        *fr = (MPMFracture *)mod->data;
   const MPMGrid      *g  = &mpm->grid;
   const PetscInt      d  = g->dim;
   const PetscInt      nr = (PetscInt)(sizeof(MPMFractureCellSum) / sizeof(PetscReal));
+  const PetscInt64    nc = MPMFractureNumCells(g);
   MPMPoints           pts;
-  MPMFractureCellSum *s, *all = NULL;
-  PetscInt            n, ntot = 0;
+  MPMFractureCellSum *s;
+  PetscInt            ns = 0;
   PetscMPIInt         size, rank, cnt, *counts = NULL, *displs = NULL;
 
   PetscFunctionBegin;
@@ -99,13 +164,17 @@ static PetscErrorCode MPMFractureCount(MPMModule mod, MPM mpm)
   PetscCall(PetscCalloc1(pts.n + 1, &s));
   for (PetscInt p = 0; p < pts.n; p++) {
     const PetscReal m = pts.f[MPM_FIELD_MASS][p];
-    s[p].cell         = MPMFractureCell(g, &pts.f[MPM_FIELD_POSITION][p * d]);
-    s[p].m            = m;
-    for (PetscInt k = 0; k < d; k++) s[p].mv[k] = m * pts.f[MPM_FIELD_VELOCITY][p * d + k];
+    if (intact && MPMPointFailed(&mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]], pts.f, p)) continue;
+    s[ns].key = MPMFractureCell(g, &pts.f[MPM_FIELD_POSITION][p * d]) + (by_body && pts.f[MPM_FIELD_BODY] ? (PetscInt64)pts.f[MPM_FIELD_BODY][p] * nc : 0);
+    s[ns].m   = m;
+    for (PetscInt k = 0; k < d; k++) s[ns].mv[k] = m * pts.f[MPM_FIELD_VELOCITY][p * d + k];
+    ns++;
   }
-  n = MPMFractureMerge(s, pts.n);
+  ns = MPMFractureMerge(s, ns);
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-  PetscCall(PetscMPIIntCast(n * nr, &cnt));
+  PetscCall(PetscMPIIntCast(ns * nr, &cnt));
+  *all = NULL;
+  *n   = 0;
   if (rank == 0) PetscCall(PetscMalloc2(size, &counts, size, &displs));
   PetscCallMPI(MPI_Gather(&cnt, 1, MPI_INT, counts, 1, MPI_INT, 0, mpm->comm));
   if (rank == 0) {
@@ -114,83 +183,213 @@ static PetscErrorCode MPMFractureCount(MPMModule mod, MPM mpm)
       displs[r] = (PetscMPIInt)tot;
       tot += counts[r];
     }
-    PetscCheck(tot <= PETSC_MPI_INT_MAX, PETSC_COMM_SELF, PETSC_ERR_SUP, "Fragment count: %" PetscInt64_FMT " reals of occupied cells to gather exceed an MPI count", tot);
-    ntot = (PetscInt)(tot / nr);
-    PetscCall(PetscMalloc1(ntot + 1, &all));
+    PetscCheck(tot <= PETSC_MPI_INT_MAX, PETSC_COMM_SELF, PETSC_ERR_SUP, "Fragments: %" PetscInt64_FMT " reals of occupied cells to gather exceed an MPI count", tot);
+    *n = (PetscInt)(tot / nr);
+    PetscCall(PetscMalloc1(*n + 1, all));
   }
-  PetscCallMPI(MPI_Gatherv(s, cnt, MPIU_REAL, all, counts, displs, MPIU_REAL, 0, mpm->comm));
+  PetscCallMPI(MPI_Gatherv(s, cnt, MPIU_REAL, *all, counts, displs, MPIU_REAL, 0, mpm->comm));
   PetscCall(PetscFree(s));
   if (rank == 0) {
-    PetscInt *parent, nf = 0, *root;
-    PetscReal mtot = 0.0;
-    ntot           = MPMFractureMerge(all, ntot);
-    PetscCall(PetscMalloc2(ntot + 1, &parent, ntot + 1, &root));
-    for (PetscInt i = 0; i < ntot; i++) parent[i] = i;
-    for (PetscInt i = 0; i < ntot; i++) { /* union with the occupied neighbours of higher index */
-      PetscInt64 c = all[i].cell, ijk[MPM_MAX_DIM];
-      for (PetscInt k = 0; k < d; k++) {
-        ijk[k] = c % g->cells[k];
-        c /= g->cells[k];
-      }
-      for (PetscInt o = 0; o < (d == 1 ? 3 : d == 2 ? 9 : 27); o++) {
-        PetscInt64 nb = 0, oo = o;
-        PetscBool  in = PETSC_TRUE, ahead = PETSC_FALSE;
-        PetscInt   off[MPM_MAX_DIM];
-        for (PetscInt k = 0; k < d; k++, oo /= 3) off[k] = (PetscInt)(oo % 3) - 1;
-        for (PetscInt k = d - 1; k >= 0; k--) {
-          const PetscInt64 j = ijk[k] + off[k];
-          if (j < 0 || j >= g->cells[k]) in = PETSC_FALSE;
-          nb = nb * g->cells[k] + j;
-          if (!ahead && off[k]) ahead = (PetscBool)(off[k] > 0); /* the neighbour's index is higher iff its last nonzero offset is positive */
-        }
-        if (!in || !ahead) continue;
-        { /* binary search among the occupied cells after i */
-          PetscInt lo = i + 1, hi = ntot - 1;
-          while (lo <= hi) {
-            const PetscInt mid = (lo + hi) / 2;
-            if (all[mid].cell < nb)
-              lo = mid + 1;
-            else if (all[mid].cell > nb)
-              hi = mid - 1;
-            else {
-              const PetscInt a = MPMFractureFind(parent, i), b = MPMFractureFind(parent, mid);
-              if (a != b) parent[PetscMax(a, b)] = PetscMin(a, b);
-              break;
-            }
-          }
-        }
-      }
-    }
-    for (PetscInt i = 0; i < ntot; i++) root[i] = -1;
-    for (PetscInt i = 0; i < ntot; i++) {
-      const PetscInt r = MPMFractureFind(parent, i);
-      if (root[r] < 0) root[r] = nf++;
-    }
-    if (nf > fr->nalloc) {
-      PetscCall(PetscFree(fr->frag));
-      fr->nalloc = nf;
-      PetscCall(PetscMalloc1(nf * (1 + MPM_MAX_DIM), &fr->frag));
-    }
-    PetscCall(PetscArrayzero(fr->frag, nf * (1 + MPM_MAX_DIM)));
-    for (PetscInt i = 0; i < ntot; i++) {
-      PetscReal *f = &fr->frag[root[MPMFractureFind(parent, i)] * (1 + MPM_MAX_DIM)];
-      f[0] += all[i].m;
-      for (PetscInt k = 0; k < d; k++) f[1 + k] += all[i].mv[k];
-      mtot += all[i].m;
-    }
-    for (PetscInt i = 1; i < nf; i++) /* largest first (insertion sort of the records) */
-      for (PetscInt j = i; j > 0 && fr->frag[j * (1 + MPM_MAX_DIM)] > fr->frag[(j - 1) * (1 + MPM_MAX_DIM)]; j--)
-        for (PetscInt k = 0; k < 1 + MPM_MAX_DIM; k++) {
-          const PetscReal t                         = fr->frag[j * (1 + MPM_MAX_DIM) + k];
-          fr->frag[j * (1 + MPM_MAX_DIM) + k]       = fr->frag[(j - 1) * (1 + MPM_MAX_DIM) + k];
-          fr->frag[(j - 1) * (1 + MPM_MAX_DIM) + k] = t;
-        }
-    fr->nfrag   = nf;
-    fr->largest = nf && mtot > 0.0 ? fr->frag[0] / mtot : 0.0;
-    PetscCall(PetscFree2(parent, root));
-    PetscCall(PetscFree(all));
+    *n = MPMFractureMerge(*all, *n);
     PetscCall(PetscFree2(counts, displs));
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Union-find over the n sorted records: records of face, edge or corner neighbour cells of the same body are joined;
+   root[i] is the connected set of record i, numbered 0 .. *nset - 1 in the order of their first record. */
+static PetscErrorCode MPMFractureLabel(const MPMGrid *g, const MPMFractureCellSum *all, PetscInt n, PetscInt root[], PetscInt *nset)
+{
+  const PetscInt no = g->dim == 1 ? 3 : g->dim == 2 ? 9 : 27;
+  PetscInt      *parent, *label;
+
+  PetscFunctionBegin;
+  PetscCall(PetscMalloc2(n + 1, &parent, n + 1, &label));
+  for (PetscInt i = 0; i < n; i++) parent[i] = i;
+  for (PetscInt i = 0; i < n; i++)
+    for (PetscInt o = 0; o < no; o++) {
+      const PetscInt64 nb = MPMFractureNeighbour(g, all[i].key, o);
+      PetscInt         j;
+      if (nb <= all[i].key) continue; /* each pair once, from its lower key */
+      j = MPMFractureSearch(all + i + 1, n - i - 1, nb);
+      if (j >= 0) {
+        const PetscInt a = MPMFractureFind(parent, i), b = MPMFractureFind(parent, i + 1 + j);
+        if (a != b) parent[PetscMax(a, b)] = PetscMin(a, b);
+      }
+    }
+  *nset = 0;
+  for (PetscInt i = 0; i < n; i++) label[i] = -1;
+  for (PetscInt i = 0; i < n; i++) {
+    const PetscInt r = MPMFractureFind(parent, i);
+    if (label[r] < 0) label[r] = (*nset)++;
+    root[i] = label[r];
+  }
+  PetscCall(PetscFree2(parent, label));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The fragments now: fr->nfrag, fr->largest and fr->frag on rank 0 (collective). */
+static PetscErrorCode MPMFractureCount(MPMModule mod, MPM mpm)
+{
+  MPMFracture        *fr = (MPMFracture *)mod->data;
+  const PetscInt      d  = mpm->grid.dim;
+  MPMFractureCellSum *all;
+  PetscInt            ntot, nf, *root;
+  PetscReal           mtot = 0.0;
+
+  PetscFunctionBegin;
+  PetscCall(MPMFractureGather(mpm, PETSC_FALSE, PETSC_FALSE, &all, &ntot));
+  if (!all) PetscFunctionReturn(PETSC_SUCCESS); /* rank 0 counts */
+  PetscCall(PetscMalloc1(ntot + 1, &root));
+  PetscCall(MPMFractureLabel(&mpm->grid, all, ntot, root, &nf));
+  if (nf > fr->nalloc) {
+    PetscCall(PetscFree(fr->frag));
+    fr->nalloc = nf;
+    PetscCall(PetscMalloc1(nf * (1 + MPM_MAX_DIM), &fr->frag));
+  }
+  PetscCall(PetscArrayzero(fr->frag, nf * (1 + MPM_MAX_DIM)));
+  for (PetscInt i = 0; i < ntot; i++) {
+    PetscReal *f = &fr->frag[root[i] * (1 + MPM_MAX_DIM)];
+    f[0] += all[i].m;
+    for (PetscInt k = 0; k < d; k++) f[1 + k] += all[i].mv[k];
+    mtot += all[i].m;
+  }
+  for (PetscInt i = 1; i < nf; i++) /* largest first (insertion sort of the records) */
+    for (PetscInt j = i; j > 0 && fr->frag[j * (1 + MPM_MAX_DIM)] > fr->frag[(j - 1) * (1 + MPM_MAX_DIM)]; j--)
+      for (PetscInt k = 0; k < 1 + MPM_MAX_DIM; k++) {
+        const PetscReal t                         = fr->frag[j * (1 + MPM_MAX_DIM) + k];
+        fr->frag[j * (1 + MPM_MAX_DIM) + k]       = fr->frag[(j - 1) * (1 + MPM_MAX_DIM) + k];
+        fr->frag[(j - 1) * (1 + MPM_MAX_DIM) + k] = t;
+      }
+  fr->nfrag   = nf;
+  fr->largest = nf && mtot > 0.0 ? fr->frag[0] / mtot : 0.0;
+  PetscCall(PetscFree(root));
+  PetscCall(PetscFree(all));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Adds the body for a piece of body parent: named <parent>_<k>, k counting the pieces added in the run. */
+static PetscErrorCode MPMFractureAddBody(MPMFracture *fr, MPM mpm, PetscInt parent)
+{
+  char     name[MPM_MAX_NAME];
+  PetscInt b;
+
+  PetscFunctionBegin;
+  PetscCall(PetscSNPrintf(name, sizeof(name), "%s_%" PetscInt_FMT, mpm->bodyname[parent], fr->nadded + 1));
+  PetscCall(MPMBodyAdd(mpm, name, &b));
+  fr->parent[fr->nadded++] = parent;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Pieces become bodies (point phase MPM_PHASE_POINT_END, -mpm_fracture_bodies): where points failed since the last
+   look, the intact material of each body is labelled into connected sets of occupied cells (as the fragments are);
+   a body whose intact material has fallen apart keeps its largest piece, and each other piece of at least
+   -mpm_fracture_min_mass of the body's intact mass becomes a body of its own (up to MPM_MAX_BODIES), which meets the
+   others through the contact module: the faces of the crack part without the pull of shared nodes and can close
+   again. Rank 0 decides and broadcasts the moved cells; a point in a moved cell follows its piece, and a failed point
+   with a moved cell among its 3^d neighbours (of the same body) the first such piece. */
+static PetscErrorCode MPMFractureApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *node)
+{
+  MPMFracture        *fr      = (MPMFracture *)mod->data;
+  const MPMGrid      *g       = &mpm->grid;
+  const PetscInt      d       = g->dim;
+  const PetscInt64    nc      = MPMFractureNumCells(g);
+  PetscReal           nfailed = 0.0;
+  MPMFractureCellSum *all, *moved  = NULL;
+  PetscInt            ntot, nmoved = 0, nnew = 0, first = mpm->nbodies, newparent[MPM_MAX_BODIES];
+  PetscMPIInt         rank;
+
+  PetscFunctionBegin;
+  for (PetscInt i = 0; i < mpm->nmat; i++)
+    if (mpm->mat[i].damage) nfailed += (PetscReal)mpm->mat[i].damage->nfailed;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &nfailed, 1, MPIU_REAL, MPIU_SUM, mpm->comm));
+  if (nfailed == fr->looked || mpm->steps % fr->interval) PetscFunctionReturn(PETSC_SUCCESS);
+  fr->looked = nfailed;
+  PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
+  PetscCall(MPMFractureGather(mpm, PETSC_TRUE, PETSC_TRUE, &all, &ntot));
+  if (rank == 0) {
+    PetscInt  *root, nset, *order;
+    PetscReal *mset, mbody[MPM_MAX_BODIES] = {0}, *newb;
+    PetscCall(PetscMalloc1(ntot + 1, &root));
+    PetscCall(MPMFractureLabel(g, all, ntot, root, &nset));
+    PetscCall(PetscCalloc3(nset + 1, &mset, nset + 1, &order, nset + 1, &newb));
+    for (PetscInt i = 0; i < ntot; i++) {
+      mset[root[i]] += all[i].m;
+      mbody[all[i].key / nc] += all[i].m;
+    }
+    for (PetscInt s = 0; s < nset; s++) {
+      order[s] = s;
+      newb[s]  = -1.0;
+    }
+    for (PetscInt i = 1; i < nset; i++) /* the sets by mass, largest first (ties: first record first) */
+      for (PetscInt j = i; j > 0 && mset[order[j]] > mset[order[j - 1]]; j--) {
+        const PetscInt t = order[j];
+        order[j]         = order[j - 1];
+        order[j - 1]     = t;
+      }
+    {
+      PetscBool kept[MPM_MAX_BODIES] = {PETSC_FALSE};
+      PetscInt  body[1]              = {0};
+      for (PetscInt i = 0, s; i < nset; i++) { /* each body's largest set stays; the others heavy enough move */
+        PetscInt r;
+        s = order[i];
+        for (r = 0; r < ntot && root[r] != s; r++) {
+        }
+        body[0] = (PetscInt)(all[r].key / nc);
+        if (!kept[body[0]])
+          kept[body[0]] = PETSC_TRUE;
+        else if (mset[s] >= fr->min_mass * mbody[body[0]] && first + nnew < MPM_MAX_BODIES) {
+          newb[s]           = (PetscReal)(first + nnew);
+          newparent[nnew++] = body[0];
+        }
+      }
+    }
+    for (PetscInt i = 0; i < ntot; i++)
+      if (newb[root[i]] >= 0.0) nmoved++;
+    PetscCall(PetscMalloc1(nmoved + 1, &moved));
+    for (PetscInt i = 0, j = 0; i < ntot; i++)
+      if (newb[root[i]] >= 0.0) {
+        moved[j]   = all[i];
+        moved[j].m = newb[root[i]]; /* the record carries the new body */
+        j++;
+      }
+    PetscCall(PetscFree3(mset, order, newb));
+    PetscCall(PetscFree(root));
+    PetscCall(PetscFree(all));
+  }
+  PetscCallMPI(MPI_Bcast(&nnew, 1, MPIU_INT, 0, mpm->comm));
+  if (!nnew) {
+    PetscCall(PetscFree(moved));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCallMPI(MPI_Bcast(newparent, (PetscMPIInt)nnew, MPIU_INT, 0, mpm->comm));
+  PetscCallMPI(MPI_Bcast(&nmoved, 1, MPIU_INT, 0, mpm->comm));
+  if (rank) PetscCall(PetscMalloc1(nmoved + 1, &moved));
+  {
+    const PetscInt nr = (PetscInt)(sizeof(MPMFractureCellSum) / sizeof(PetscReal));
+    PetscMPIInt    cnt;
+    PetscCall(PetscMPIIntCast(nmoved * nr, &cnt));
+    PetscCallMPI(MPI_Bcast(moved, cnt, MPIU_REAL, 0, mpm->comm));
+  }
+  for (PetscInt i = 0; i < nnew; i++) PetscCall(MPMFractureAddBody(fr, mpm, newparent[i]));
+  { /* the points follow their pieces */
+    MPMPoints pts;
+    PetscCall(MPMPointsGetArrays(mpm, &pts));
+    for (PetscInt p = 0; p < pts.n; p++) {
+      const PetscInt64 key = MPMFractureCell(g, &pts.f[MPM_FIELD_POSITION][p * d]) + (PetscInt64)pts.f[MPM_FIELD_BODY][p] * nc;
+      PetscInt         j   = MPMFractureSearch(moved, nmoved, key);
+      if (j < 0 && MPMPointFailed(&mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]], pts.f, p))
+        for (PetscInt o = 0; o < (d == 1 ? 3 : d == 2 ? 9 : 27) && j < 0; o++) {
+          const PetscInt64 nb = MPMFractureNeighbour(g, key, o);
+          if (nb >= 0) j = MPMFractureSearch(moved, nmoved, nb);
+        }
+      if (j >= 0) pts.f[MPM_FIELD_BODY][p] = moved[j].m;
+    }
+    PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  }
+  PetscCall(PetscFree(moved));
+  (void)ctx;
+  (void)node;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -260,9 +459,17 @@ static PetscErrorCode MPMFractureReport(MPMModule mod, MPM mpm, MPMReport rep)
 /* The damage objects' tallies, per material, by name. */
 static PetscErrorCode MPMFractureCheckpoint(MPMModule mod, MPM mpm, MPMCheckpoint ck)
 {
-  char name[MPM_MAX_NAME + 16];
+  MPMFracture *fr = (MPMFracture *)mod->data;
+  char         name[MPM_MAX_NAME + 16];
+  PetscReal    a[1 + MPM_MAX_BODIES];
+  PetscInt     had = fr->nadded;
 
   PetscFunctionBegin;
+  a[0] = (PetscReal)fr->nadded;
+  for (PetscInt i = 0; i < MPM_MAX_BODIES; i++) a[1 + i] = i < fr->nadded ? (PetscReal)fr->parent[i] : -1.0;
+  PetscCall(MPMCheckpointReals(ck, "added_bodies", 1 + MPM_MAX_BODIES, a, MPM_CKPT_GLOBAL)); /* the count, then the body each came from */
+  PetscCall(MPMCheckpointReals(ck, "looked", 1, &fr->looked, MPM_CKPT_GLOBAL));
+  for (PetscInt i = had; i < (PetscInt)a[0]; i++) PetscCall(MPMFractureAddBody(fr, mpm, (PetscInt)a[1 + i])); /* reading: the bodies the run had added */
   for (PetscInt i = 0; i < mpm->nmat; i++) {
     if (!mpm->mat[i].damage) continue;
     PetscCall(PetscSNPrintf(name, sizeof(name), "failed_%s", mpm->mat[i].name));
@@ -288,7 +495,11 @@ PetscErrorCode MPMModuleCreate_Fracture(MPMModule mod)
   PetscFunctionBegin;
   PetscCall(PetscNew(&fr));
   fr->list                = 10;
+  fr->bodies              = PETSC_FALSE;
+  fr->min_mass            = 0.01;
+  fr->interval            = 1;
   mod->data               = fr;
+  mod->ops.apply          = MPMFractureApply;
   mod->phase              = MPM_PHASE_NONE;
   mod->ops.setfromoptions = MPMFractureSetFromOptions;
   mod->ops.report         = MPMFractureReport;

@@ -54,8 +54,8 @@ PetscErrorCode MPMModulesRegisterAll(void)
   PetscCall(MPMModuleRegister("domain", MPMModuleCreate_Domain));
   PetscCall(MPMModuleRegister("split", MPMModuleCreate_Split));
   PetscCall(MPMModuleRegister("damping", MPMModuleCreate_Damping));
+  PetscCall(MPMModuleRegister("fracture", MPMModuleCreate_Fracture)); /* before contact: it says whether bodies may be added (MPM::bodies_open) */
   PetscCall(MPMModuleRegister("contact", MPMModuleCreate_Contact));
-  PetscCall(MPMModuleRegister("fracture", MPMModuleCreate_Fracture));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

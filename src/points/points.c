@@ -96,7 +96,7 @@ PetscErrorCode MPMPointsSelectFields(MPM mpm)
   mpm->field_on[MPM_FIELD_REFPOSITION] = (PetscBool)(mpm->exact != NULL);
   mpm->field_on[MPM_FIELD_DOMAINSCALE] = mpm->field_req[MPM_FIELD_DOMAINSCALE];
   mpm->field_on[MPM_FIELD_HOOPRATE]    = mpm->grid.axisym;
-  mpm->field_on[MPM_FIELD_BODY]        = (PetscBool)(mpm->nbodies > 1);
+  mpm->field_on[MPM_FIELD_BODY]        = (PetscBool)(mpm->nbodies > 1 || mpm->bodies_open);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
