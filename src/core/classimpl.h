@@ -80,6 +80,7 @@ typedef struct {
   PetscReal *const *f;
   const PetscReal  *id; /* per point: its persistent id (the same on every rank count) */
   const PetscReal  *L, *m, *rho, *e, *p, *q, *T;
+  const PetscReal  *Lv;    /* per point: the velocity gradient F was advanced with, F^{n+1} = (I + dt Lv) F^n (L itself but in r-z) */
   PetscReal        *F, *S; /* F^{n+1} (NULL where the points carry none) and s */
   PetscReal        *rho1;  /* the core's; the damage stage holds a failed point's density where the step would stretch it into tension */
   const PetscReal  *dvol, *ws;

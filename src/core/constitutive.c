@@ -119,6 +119,7 @@ static inline __attribute__((always_inline)) PetscErrorCode MPMConstitutiveChunk
                               .f            = pts->f,
                               .id           = pts->f[MPM_FIELD_ID],
                               .L            = Lsh ? Lsh : L,
+                              .Lv           = L,
                               .F            = F,
                               .m            = m,
                               .rho          = rho,

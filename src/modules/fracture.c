@@ -3,10 +3,12 @@
    unless -mpm_fracture_bodies puts it after migration, MPM_PHASE_POINT_END, to make pieces bodies: MPMFractureApply). It reports what failed: per material the points that failed (D reached 1),
    their mass now, and the elastic shear energy they held when they failed (the damage stage leaves it in their
    internal energy as heat: the fracture's share of the energy budget's "rest"); and the fragments.
-   Fragments are the connected sets of occupied cells: a cell is occupied where a point lies in it, and two occupied
-   cells that share a face, an edge or a corner are connected, so two pieces count apart once a whole empty cell lies
-   between them (a crack narrower than a cell does not part them: the count is resolution-limited, and converges only
-   as the pieces' gaps exceed a cell). Each fragment's mass is the sum of its points' masses and its velocity their
+   Fragments are the connected sets of occupied cells: a cell is occupied where a point's volume, taken as a cube about
+   it (a square in 2D, a segment in 1D; in r-z its area per radian), reaches into it, and two occupied cells that share
+   a face, an edge or a corner are connected, so two pieces count apart once a whole empty cell lies between them (a
+   crack narrower than a cell does not part them: the count is resolution-limited). The volume, not the point alone:
+   material stretched in tension spreads its points more than a cell apart, and its cells would be empty between them
+   (the half-width is held at h / 2, so material stays connected up to a stretch of 2). Each fragment's mass is the sum of its points' masses and its velocity their
    momentum over its mass. Each rank sums its points per cell (sorted by the global cell index), rank 0 gathers the
    occupied cells (one record per occupied cell and rank: O(points) at most), merges them and labels the connected
    sets by union-find over the 3^d - 1 neighbours (binary search in the sorted cells). At every output the count and
@@ -92,6 +94,8 @@ static inline PetscInt64 MPMFractureNeighbour(const MPMGrid *g, PetscInt64 key, 
   return (key / nc) * nc + nb;
 }
 
+#define MPM_FRACTURE_CHUNK 4096 /* points between compactions of the occupied-cell records */
+
 typedef struct {
   PetscInt64 key; /* body * ncells + cell */
   PetscReal  m, mv[MPM_MAX_DIM];
@@ -142,9 +146,9 @@ static PetscInt MPMFractureFind(PetscInt *parent, PetscInt i)
   return i;
 }
 
-/* The occupied cells (collective): each rank sums its points per key (by_body: body * ncells + cell, else the cell;
-   intact: only points that have not failed) and rank 0 gets the merged records of all ranks, sorted (*all, *n; NULL
-   and 0 on the other ranks). */
+/* The occupied cells (collective): each rank sums its intact points (intact) or its failed points per key (by_body:
+   body * ncells + cell, else the cell), an intact point occupying the cells of its volume's box and a failed one its
+   own cell, and rank 0 gets the merged records of all ranks, sorted (*all, *n; NULL and 0 on the other ranks). */
 static PetscErrorCode MPMFractureGather(MPM mpm, PetscBool by_body, PetscBool intact, MPMFractureCellSum **all, PetscInt *n)
 {
   const MPMGrid      *g  = &mpm->grid;
@@ -153,7 +157,7 @@ static PetscErrorCode MPMFractureGather(MPM mpm, PetscBool by_body, PetscBool in
   const PetscInt64    nc = MPMFractureNumCells(g);
   MPMPoints           pts;
   MPMFractureCellSum *s;
-  PetscInt            ns = 0;
+  PetscInt            ns = 0, cap;
   PetscMPIInt         size, rank, cnt, *counts = NULL, *displs = NULL;
 
   PetscFunctionBegin;
@@ -161,14 +165,39 @@ static PetscErrorCode MPMFractureGather(MPM mpm, PetscBool by_body, PetscBool in
   PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
   PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
   PetscCall(MPMPointsGetArrays(mpm, &pts));
-  PetscCall(PetscCalloc1(pts.n + 1, &s));
+  cap = (1 + (1 << d)) * PetscMin(pts.n, MPM_FRACTURE_CHUNK) + pts.n + 1;
+  PetscCall(PetscMalloc1(cap, &s));
   for (PetscInt p = 0; p < pts.n; p++) {
-    const PetscReal m = pts.f[MPM_FIELD_MASS][p];
-    if (intact && MPMPointFailed(&mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]], pts.f, p)) continue;
-    s[ns].key = MPMFractureCell(g, &pts.f[MPM_FIELD_POSITION][p * d]) + (by_body && pts.f[MPM_FIELD_BODY] ? (PetscInt64)pts.f[MPM_FIELD_BODY][p] * nc : 0);
+    const PetscReal *x = &pts.f[MPM_FIELD_POSITION][p * d], m = pts.f[MPM_FIELD_MASS][p];
+    const PetscInt64 body = by_body && pts.f[MPM_FIELD_BODY] ? (PetscInt64)pts.f[MPM_FIELD_BODY][p] * nc : 0;
+    PetscReal        a    = pts.f[MPM_FIELD_VOLUME][p];
+    PetscInt64       c0;
+    if (intact == MPMPointFailed(&mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]], pts.f, p)) continue; /* the intact points, or the failed ones */
+    if (ns + 1 + (1 << d) > cap) {                                                                       /* compact what is there, and grow if that is not enough */
+      ns = MPMFractureMerge(s, ns);
+      if (ns + (1 + (1 << d)) * MPM_FRACTURE_CHUNK > cap) {
+        cap = 2 * cap + (1 + (1 << d)) * MPM_FRACTURE_CHUNK;
+        PetscCall(PetscRealloc(cap * sizeof(*s), &s));
+      }
+    }
+    if (g->axisym) a /= PetscMax(x[0], 0.5 * g->h[0]);                             /* per radian: the area in the r-z plane */
+    a         = 0.5 * (d == 1 ? a : d == 2 ? PetscSqrtReal(a) : PetscCbrtReal(a)); /* the half-width of its volume as a cube */
+    c0        = MPMFractureCell(g, x) + body;                                      /* its mass and momentum in the cell of its centre */
+    s[ns].key = c0;
     s[ns].m   = m;
-    for (PetscInt k = 0; k < d; k++) s[ns].mv[k] = m * pts.f[MPM_FIELD_VELOCITY][p * d + k];
+    for (PetscInt k = 0; k < MPM_MAX_DIM; k++) s[ns].mv[k] = k < d ? m * pts.f[MPM_FIELD_VELOCITY][p * d + k] : 0.0;
     ns++;
+    for (PetscInt c = 0; intact && c < (1 << d); c++) { /* an intact point's box: the cells its corners lie in are occupied too (no mass); the half-width at most h / 2, so that the box spans at most two cells a direction */
+      PetscReal  y[MPM_MAX_DIM];
+      PetscInt64 key;
+      for (PetscInt k = 0; k < d; k++) y[k] = x[k] + ((c >> k) & 1 ? 1.0 : -1.0) * PetscMin(a, 0.5 * g->h[k]);
+      key = MPMFractureCell(g, y) + body;
+      if (key == c0) continue;
+      s[ns].key = key;
+      s[ns].m   = 0.0;
+      for (PetscInt k = 0; k < MPM_MAX_DIM; k++) s[ns].mv[k] = 0.0;
+      ns++;
+    }
   }
   ns = MPMFractureMerge(s, ns);
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
@@ -228,32 +257,63 @@ static PetscErrorCode MPMFractureLabel(const MPMGrid *g, const MPMFractureCellSu
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The fragments now: fr->nfrag, fr->largest and fr->frag on rank 0 (collective). */
+/* The fragments now: fr->nfrag, fr->largest and fr->frag on rank 0 (collective). The intact material's connected sets
+   are the fragments; a failed point joins the set of an intact cell among its 3^d neighbours (the first), so that
+   the failed points between two pieces do not join them, and failed points with no intact neighbour form debris
+   fragments of their own, connected among themselves. */
 static PetscErrorCode MPMFractureCount(MPMModule mod, MPM mpm)
 {
   MPMFracture        *fr = (MPMFracture *)mod->data;
-  const PetscInt      d  = mpm->grid.dim;
-  MPMFractureCellSum *all;
-  PetscInt            ntot, nf, *root;
+  const MPMGrid      *g  = &mpm->grid;
+  const PetscInt      d = g->dim, no = d == 1 ? 3 : d == 2 ? 9 : 27;
+  MPMFractureCellSum *all, *fl, *loose;
+  PetscInt            ntot, nfl, nf, nloose = 0, *root, *froot, *lroot, nl;
   PetscReal           mtot = 0.0;
 
   PetscFunctionBegin;
-  PetscCall(MPMFractureGather(mpm, PETSC_FALSE, PETSC_FALSE, &all, &ntot));
+  PetscCall(MPMFractureGather(mpm, PETSC_FALSE, PETSC_TRUE, &all, &ntot));
+  PetscCall(MPMFractureGather(mpm, PETSC_FALSE, PETSC_FALSE, &fl, &nfl));
   if (!all) PetscFunctionReturn(PETSC_SUCCESS); /* rank 0 counts */
-  PetscCall(PetscMalloc1(ntot + 1, &root));
-  PetscCall(MPMFractureLabel(&mpm->grid, all, ntot, root, &nf));
-  if (nf > fr->nalloc) {
+  PetscCall(PetscMalloc4(ntot + 1, &root, nfl + 1, &froot, nfl + 1, &loose, nfl + 1, &lroot));
+  PetscCall(MPMFractureLabel(g, all, ntot, root, &nf));
+  for (PetscInt i = 0; i < nfl; i++) { /* a failed cell joins an intact neighbour's set, or is loose */
+    froot[i] = -1;
+    for (PetscInt o = 0; o < no && froot[i] < 0; o++) {
+      const PetscInt64 nb = MPMFractureNeighbour(g, fl[i].key, o);
+      const PetscInt   j  = nb >= 0 ? MPMFractureSearch(all, ntot, nb) : -1;
+      if (j >= 0) froot[i] = root[j];
+    }
+    if (froot[i] < 0) loose[nloose++] = fl[i];
+  }
+  PetscCall(MPMFractureLabel(g, loose, nloose, lroot, &nl)); /* debris: the loose failed cells' own sets */
+  if (nf + nl > fr->nalloc) {
     PetscCall(PetscFree(fr->frag));
-    fr->nalloc = nf;
-    PetscCall(PetscMalloc1(nf * (1 + MPM_MAX_DIM), &fr->frag));
+    fr->nalloc = nf + nl;
+    PetscCall(PetscMalloc1(fr->nalloc * (1 + MPM_MAX_DIM), &fr->frag));
   }
-  PetscCall(PetscArrayzero(fr->frag, nf * (1 + MPM_MAX_DIM)));
-  for (PetscInt i = 0; i < ntot; i++) {
-    PetscReal *f = &fr->frag[root[i] * (1 + MPM_MAX_DIM)];
-    f[0] += all[i].m;
-    for (PetscInt k = 0; k < d; k++) f[1 + k] += all[i].mv[k];
-    mtot += all[i].m;
+  PetscCall(PetscArrayzero(fr->frag, (nf + nl) * (1 + MPM_MAX_DIM)));
+  for (PetscInt i = 0; i < ntot + nfl; i++) { /* the intact cells, the failed cells that joined them, the debris */
+    const MPMFractureCellSum *r = i < ntot ? &all[i] : &fl[i - ntot];
+    PetscInt                  set;
+    if (i < ntot)
+      set = root[i];
+    else if (froot[i - ntot] >= 0)
+      set = froot[i - ntot];
+    else
+      set = -1;
+    if (set >= 0) {
+      PetscReal *f = &fr->frag[set * (1 + MPM_MAX_DIM)];
+      f[0] += r->m;
+      for (PetscInt k = 0; k < d; k++) f[1 + k] += r->mv[k];
+    }
+    mtot += r->m;
   }
+  for (PetscInt i = 0; i < nloose; i++) {
+    PetscReal *f = &fr->frag[(nf + lroot[i]) * (1 + MPM_MAX_DIM)];
+    f[0] += loose[i].m;
+    for (PetscInt k = 0; k < d; k++) f[1 + k] += loose[i].mv[k];
+  }
+  nf += nl;
   for (PetscInt i = 1; i < nf; i++) /* largest first (insertion sort of the records) */
     for (PetscInt j = i; j > 0 && fr->frag[j * (1 + MPM_MAX_DIM)] > fr->frag[(j - 1) * (1 + MPM_MAX_DIM)]; j--)
       for (PetscInt k = 0; k < 1 + MPM_MAX_DIM; k++) {
@@ -263,8 +323,9 @@ static PetscErrorCode MPMFractureCount(MPMModule mod, MPM mpm)
       }
   fr->nfrag   = nf;
   fr->largest = nf && mtot > 0.0 ? fr->frag[0] / mtot : 0.0;
-  PetscCall(PetscFree(root));
+  PetscCall(PetscFree4(root, froot, loose, lroot));
   PetscCall(PetscFree(all));
+  PetscCall(PetscFree(fl));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
