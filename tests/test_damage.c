@@ -6,32 +6,33 @@
 #include "core/petmpmimpl.h"
 #include "strength/hypoelastic.h"
 
-/* An object of a class created with its type set through the options under the prefix mat_NAME_. */
-static PetscErrorCode DamageCreate(const char *name, const char *type, MPMDamage *dmg)
+/* Gives a new object of a class (key: "damage", "strength") its type through the options under the prefix mat_NAME_. */
+static PetscErrorCode Configure(void *obj, const char *name, const char *key, const char *type)
 {
   char prefix[64], option[96];
 
   PetscFunctionBegin;
   PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "mat_%s_", name));
-  PetscCall(PetscSNPrintf(option, sizeof(option), "-%sdamage_type", prefix));
+  PetscCall(PetscSNPrintf(option, sizeof(option), "-%s%s_type", prefix, key));
   PetscCall(PetscOptionsSetValue(NULL, option, type));
+  PetscCall(MPMObjectSetOptionsPrefix(obj, prefix));
+  PetscCall(MPMObjectSetFromOptions(obj));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode DamageCreate(const char *name, const char *type, MPMDamage *dmg)
+{
+  PetscFunctionBegin;
   PetscCall(MPMDamageCreate(PETSC_COMM_WORLD, dmg));
-  PetscCall(MPMDamageSetOptionsPrefix(*dmg, prefix));
-  PetscCall(MPMDamageSetFromOptions(*dmg));
+  PetscCall(Configure(*dmg, name, "damage", type));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 static PetscErrorCode StrengthCreate(const char *name, const char *type, MPMStrength *st)
 {
-  char prefix[64], option[96];
-
   PetscFunctionBegin;
-  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "mat_%s_", name));
-  PetscCall(PetscSNPrintf(option, sizeof(option), "-%sstrength_type", prefix));
-  PetscCall(PetscOptionsSetValue(NULL, option, type));
   PetscCall(MPMStrengthCreate(PETSC_COMM_WORLD, st));
-  PetscCall(MPMStrengthSetOptionsPrefix(*st, prefix));
-  PetscCall(MPMStrengthSetFromOptions(*st));
+  PetscCall(Configure(*st, name, "strength", type));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
