@@ -29,7 +29,7 @@ def test_help():
         check(not missing, f"-help of the flyer plate with {model} lists its options (missing: {missing})")
     for model, opts in [("johnsoncook", ["-mat_copper_damage_johnsoncook_D1", "-mat_copper_damage_johnsoncook_D5", "-mat_copper_damage_johnsoncook_epsdot0"]), ("spall", ["-mat_copper_damage_spall_strength"])]:
         p = run(["-options_file", flyer, "-mat_copper_strength_type", "johnsoncook", "-mat_copper_damage_type", model, "-mpm_exact_type", "none", "-help"])
-        missing = [n for n in opts + ["-mat_copper_damage_type", "-mpm_fragments_list"] if n not in p.stdout]
+        missing = [n for n in opts + ["-mat_copper_damage_type", "-mat_copper_damage_scatter", "-mpm_fragments_list", "-mpm_fracture_bodies", "-mpm_fracture_min_mass"] if n not in p.stdout]
         check(not missing, f"-help of the flyer plate with damage type {model} lists its options (missing: {missing})")
 
 
