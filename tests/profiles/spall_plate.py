@@ -23,9 +23,10 @@ sigma = rho0 c0 du / 2 of du from the plateau to the first minimum gives back th
 at the middle from the start, above the spall strength), at 400 and 800 cells: it fails at the middle and the halves
 part with the momentum they carry, -+M v / 2 (velocities within 1% of v, closer at the finer grid, and half the mass
 each within 1%), momentum kept to round-off.
-(4) The plate impact of (1) across a 2D grid (10 and 20 cells across, symmetry walls on the sides) at 500 and 1000
-cells along: the first failure time is the 1D run's to 1e-8 (the steps' round-off), the fragments' masses and velocities to the report's 7
-digits (the 2D principal stress, the fragment count's 2D neighbours and the 2D transfers of a plane wave).
+(4) The plate impact of (1) across a 2D grid (10 and 20 cells across, symmetry walls on the sides) and a 3D grid (2 x 2
+cells across) at 500 and 1000 cells along: the first failure time is the 1D run's to 1e-8 (the steps' round-off), the fragments' masses and velocities to the report's 7
+digits in 2D and 1e-5 of v in 3D (the 2D and 3D principal stress, the fragment count's neighbours and the transfers
+of a plane wave).
 (5) With -mpm_fracture_bodies (pieces become bodies that meet through contact): the plate's scab becomes a body of
 its own (a third of the mass within 0.03) flying at v within 2%, closer at the finer grid (1000 and 2000 cells); the
 pulled bar's halves part at -+v within 0.1% (400 and 800 cells); 2 ranks give the bodies of 1 rank to 1e-9.
@@ -118,6 +119,16 @@ def test_spall():
             same = len(f1) == len(f2) and abs(t2d / t1d - 1) < 1e-8
             same = same and all(abs(a["mass"] / m1 - b["mass"] / m2) < 2e-6 and abs(a["velocity"][0] - b["velocity"][0]) < 2e-6 * V and abs(b["velocity"][1]) < 1e-9 * V for a, b in zip(f1, f2))
             check(same, f"2D, {cells} x {cells // 50} cells: first failure {t2d * 1e6:.4f} us, {len(f2)} fragments (the scab at {f2[1]['velocity'][0]:.1f} cm/s), the 1D run's (time to 1e-8, fragments to the report's 7 digits)")
+            w = 2 * 0.005 * 1000 / cells  # 2 x 2 cells across
+            rep = scene("spall_plate_1d", os.path.join(tmp, f"r{cells}"), ["-mpm_dim", "3", "-mpm_lo", "-1.5,0,0", "-mpm_hi", f"3.5,{w:g},{w:g}", "-mpm_cells", f"{cells},2,2", "-region_flyer_lo", "-1,0,0",
+                                                                          "-region_flyer_hi", f"0,{w:g},{w:g}", "-region_target_lo", "0,0,0", "-region_target_hi", f"2,{w:g},{w:g}", "-region_flyer_velocity", f"{V:g},0,0",
+                                                                          "-region_target_velocity", "0,0,0", "-mpm_bc_lo", "free,wall,wall", "-mpm_bc_hi", "free,wall,wall"])
+            t3d, _ = first_failure(os.path.join(tmp, f"r{cells}", "petmpm.h5"))
+            f3 = rep["damage"]["fragment_list"]
+            m3 = sum(f["mass"] for f in f3)
+            same = len(f1) == len(f3) and abs(t3d / t1d - 1) < 1e-8
+            same = same and all(abs(a["mass"] / m1 - b["mass"] / m3) < 2e-6 and abs(a["velocity"][0] - b["velocity"][0]) < 1e-5 * V and abs(b["velocity"][1]) + abs(b["velocity"][2]) < 1e-9 * V for a, b in zip(f1, f3))
+            check(same, f"3D, {cells} x 2 x 2 cells: first failure {t3d * 1e6:.4f} us, {len(f3)} fragments (the scab at {f3[1]['velocity'][0]:.1f} cm/s), the 1D run's (time to 1e-8, fragments to 1e-5 of v)")
         berr, bodies = [], {}
         for cells in (1000, 2000):
             for ranks in ((1, 2) if cells == 1000 else (1,)):
