@@ -369,14 +369,16 @@ static PetscErrorCode MPMFractureApply(MPMModule mod, MPM mpm, const MPMStepCont
   PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
   PetscCall(MPMFractureGather(mpm, PETSC_TRUE, PETSC_TRUE, &all, &ntot));
   if (rank == 0) {
-    PetscInt  *root, nset, *order;
+    PetscInt  *root, nset, *order, *sbody;
     PetscReal *mset, mbody[MPM_MAX_BODIES] = {0}, *newb;
+    PetscBool  kept[MPM_MAX_BODIES] = {PETSC_FALSE};
     PetscCall(PetscMalloc1(ntot + 1, &root));
     PetscCall(MPMFractureLabel(g, all, ntot, root, &nset));
-    PetscCall(PetscCalloc3(nset + 1, &mset, nset + 1, &order, nset + 1, &newb));
+    PetscCall(PetscCalloc4(nset + 1, &mset, nset + 1, &order, nset + 1, &newb, nset + 1, &sbody));
     for (PetscInt i = 0; i < ntot; i++) {
       mset[root[i]] += all[i].m;
       mbody[all[i].key / nc] += all[i].m;
+      sbody[root[i]] = (PetscInt)(all[i].key / nc); /* a set lies in one body */
     }
     for (PetscInt s = 0; s < nset; s++) {
       order[s] = s;
@@ -388,21 +390,13 @@ static PetscErrorCode MPMFractureApply(MPMModule mod, MPM mpm, const MPMStepCont
         order[j]         = order[j - 1];
         order[j - 1]     = t;
       }
-    {
-      PetscBool kept[MPM_MAX_BODIES] = {PETSC_FALSE};
-      PetscInt  body[1]              = {0};
-      for (PetscInt i = 0, s; i < nset; i++) { /* each body's largest set stays; the others heavy enough move */
-        PetscInt r;
-        s = order[i];
-        for (r = 0; r < ntot && root[r] != s; r++) {
-        }
-        body[0] = (PetscInt)(all[r].key / nc);
-        if (!kept[body[0]])
-          kept[body[0]] = PETSC_TRUE;
-        else if (mset[s] >= fr->min_mass * mbody[body[0]] && first + nnew < MPM_MAX_BODIES) {
-          newb[s]           = (PetscReal)(first + nnew);
-          newparent[nnew++] = body[0];
-        }
+    for (PetscInt i = 0; i < nset; i++) { /* each body's largest set stays; the others heavy enough move */
+      const PetscInt s = order[i], b = sbody[s];
+      if (!kept[b])
+        kept[b] = PETSC_TRUE;
+      else if (mset[s] >= fr->min_mass * mbody[b] && first + nnew < MPM_MAX_BODIES) {
+        newb[s]           = (PetscReal)(first + nnew);
+        newparent[nnew++] = b;
       }
     }
     for (PetscInt i = 0; i < ntot; i++)
@@ -414,7 +408,7 @@ static PetscErrorCode MPMFractureApply(MPMModule mod, MPM mpm, const MPMStepCont
         moved[j].m = newb[root[i]]; /* the record carries the new body */
         j++;
       }
-    PetscCall(PetscFree3(mset, order, newb));
+    PetscCall(PetscFree4(mset, order, newb, sbody));
     PetscCall(PetscFree(root));
     PetscCall(PetscFree(all));
   }
