@@ -21,7 +21,8 @@ def test_restart():
     report's checks equal the uninterrupted run's bit for bit (1 and 2 ranks; on 2 the grid balanced by default, its
     ownership ranges set at a rebalance before step 520, which the checkpoint carries); a checkpoint written on 2 ranks
     continued on 1 gives the same checks to 1e-6; a run stopped by SIGTERM writes a checkpoint that continues to the
-    uninterrupted answer, bit for bit."""
+    uninterrupted answer, bit for bit. Also: two bodies in contact, a load ramp, a rigid body's velocity table, damage
+    with pieces that became bodies (1 and 2 ranks), outflow, and a checkpoint of another version refused."""
     import h5py
     import numpy as np
     import signal
@@ -103,6 +104,19 @@ def test_restart():
             diff = same_files(u, w)
             check(r2["contact"] == r1["contact"] and r2.get("load") == r1.get("load") and r2["energy_accounted"] == r1["energy_accounted"] and not diff,
                   f"{name} on {ranks} rank(s), restarted at step {at} inside its ramp: equal to the uninterrupted run bit for bit (differing: {diff})")
+        # damage and pieces that became bodies (inputs/spall_plate_1d.opts with -mpm_fracture_bodies): the damage fields,
+        # the failed-point tallies and the bodies added after the spall travel in the checkpoint
+        spall = ["-options_file", os.path.join(SRC, "inputs", "spall_plate_1d.opts"), "-mpm_cells", "1000", "-mpm_fracture_bodies"]
+        for ranks in (1, 2):
+            u, w = os.path.join(d, f"spu{ranks}"), os.path.join(d, f"spw{ranks}")
+            run([*spall, "-mpm_output", u, "-mpm_report", os.path.join(u, "report.json")], ranks)
+            run([*spall, "-mpm_output", w, "-mpm_checkpoint_interval", "2400", "-ts_max_steps", "2400"], ranks)
+            run([*spall, "-mpm_output", w, "-mpm_restart", os.path.join(w, "checkpoint-2400.h5"), "-mpm_report", os.path.join(w, "report.json")], ranks)
+            with open(os.path.join(u, "report.json")) as f1, open(os.path.join(w, "report.json")) as f2:
+                r1, r2 = json.load(f1), json.load(f2)
+            diff = same_files(u, w)
+            check(r2["damage"] == r1["damage"] and r2["contact"] == r1["contact"] and len(r1["contact"]["bodies"]) == 2 and not diff,
+                  f"spall with pieces as bodies on {ranks} rank(s), restarted at step 2400 (after the scab became {r1['contact']['bodies'][-1]['name']}): equal to the uninterrupted run bit for bit (differing: {diff})")
         # a checkpoint of another version (its /state one value short, as before -mpm_dt_min_ratio's entry): refused, said why
         old = os.path.join(d, "old-checkpoint.h5")
         shutil.copy(os.path.join(p, "checkpoint-800.h5"), old)
