@@ -181,6 +181,26 @@ static inline PetscReal MPMDeterminant(PetscInt d, const PetscReal A[])
   return A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6]) + A[2] * (A[3] * A[7] - A[4] * A[6]);
 }
 
+/* Ai = A^-1 of a d x d row-major matrix (the adjugate over the determinant). */
+static inline void MPMInverse(PetscInt d, const PetscReal A[], PetscReal Ai[])
+{
+  const PetscReal idet = 1.0 / MPMDeterminant(d, A);
+
+  if (d == 1)
+    Ai[0] = idet;
+  else if (d == 2) {
+    Ai[0] = A[3] * idet;
+    Ai[1] = -A[1] * idet;
+    Ai[2] = -A[2] * idet;
+    Ai[3] = A[0] * idet;
+  } else
+    for (PetscInt i = 0; i < 3; i++)
+      for (PetscInt j = 0; j < 3; j++) { /* the cofactor of (j, i) */
+        const PetscInt r0 = (j + 1) % 3, r1 = (j + 2) % 3, c0 = (i + 1) % 3, c1 = (i + 2) % 3;
+        Ai[i * 3 + j] = (A[r0 * 3 + c0] * A[r1 * 3 + c1] - A[r0 * 3 + c1] * A[r1 * 3 + c0]) * idet;
+      }
+}
+
 /* One RK4 step along an isentrope, de/drho = P(rho, e) / rho^2, from (rho, e) to rho + h: e at rho + h. P is the
    stress that does the work (the EOS pressure, or the longitudinal stress P_xx of a solid in uniaxial strain). */
 static inline PetscReal MPMIsentropeStep(PetscReal (*P)(void *, PetscReal, PetscReal), void *ctx, PetscReal rho, PetscReal e, PetscReal h)

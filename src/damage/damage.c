@@ -38,9 +38,48 @@ static PetscErrorCode MPMDamageReset(void *obj)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static const MPMClass MPMDamageClass = {
-  "damage model", "damage",  "Damage and failure",  "MPMDamage", "How the material's points fail (none: never, but for the EOS's tension cut-offs)", MPMDAMAGENONE, &MPMDamageList, sizeof(MPMDamageOps), MPMDamageReset, NULL, NULL,
-  NULL,           "scatter", "johnsoncook or spall"};
+/* The class's own option, for every type that fails points: the flaws' spread (MPMDamageFlaw). */
+static PetscErrorCode MPMDamageSetFromOptions_Class(void *obj, PetscOptionItems *PetscOptionsObject)
+{
+  MPMDamage dmg = (MPMDamage)obj;
+  char      opt[256];
+
+  PetscFunctionBegin;
+  if (!dmg->ops.increment) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscOptionsHeadBegin(PetscOptionsObject, "Damage: flaws");
+  PetscCall(
+    PetscOptionsReal("-damage_scatter",
+                     "Spread of the points' failure thresholds (eps_f, the spall strength): each point's is multiplied by a flaw factor of mean 1 and this standard deviation, uniform and fixed by its id [-], in [0, 0.5] (0: a homogeneous material)",
+                     "", dmg->scatter, &dmg->scatter, NULL));
+  PetscOptionsHeadEnd();
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sdamage_scatter", dmg->prefix ? dmg->prefix : ""));
+  PetscCall(MPMOptionsCheckRange(opt, dmg->scatter, 0.0, 0.5, PETSC_FALSE, PETSC_FALSE));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMDamageView_Class(void *obj, PetscViewer viewer)
+{
+  MPMDamage dmg = (MPMDamage)obj;
+
+  PetscFunctionBegin;
+  if (dmg->scatter > 0.0) PetscCall(PetscViewerASCIIPrintf(viewer, "flaws: failure thresholds scattered by %g (standard deviation, uniform)\n", (double)dmg->scatter));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static const MPMClass MPMDamageClass = {"damage model",
+                                        "damage",
+                                        "Damage and failure",
+                                        "MPMDamage",
+                                        "How the material's points fail (none: never, but for the EOS's tension cut-offs)",
+                                        MPMDAMAGENONE,
+                                        &MPMDamageList,
+                                        sizeof(MPMDamageOps),
+                                        MPMDamageReset,
+                                        MPMDamageSetFromOptions_Class,
+                                        MPMDamageView_Class,
+                                        NULL,
+                                        "scatter",
+                                        "johnsoncook or spall"};
 
 MPM_CLASS_INTERFACE(MPMDamage)
 
@@ -87,47 +126,19 @@ PetscErrorCode MPMDamageDeclareFields(MPMDamage dmg)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* -<prefix>damage_scatter, read by every type that fails points. */
-PetscErrorCode MPMDamageScatterOption(MPMDamage dmg, PetscOptionItems *PetscOptionsObject)
-{
-  char opt[256];
-
-  PetscFunctionBegin;
-  PetscCall(
-    PetscOptionsReal("-damage_scatter",
-                     "Spread of the points' failure thresholds (eps_f, the spall strength): each point's is multiplied by a flaw factor of mean 1 and this standard deviation, uniform and fixed by its id [-], in [0, 0.5] (0: a homogeneous material)",
-                     "", dmg->scatter, &dmg->scatter, NULL));
-  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sdamage_scatter", dmg->prefix ? dmg->prefix : ""));
-  PetscCall(MPMOptionsCheckRange(opt, dmg->scatter, 0.0, 0.5, PETSC_FALSE, PETSC_FALSE));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* F^n = (I + dt L)^-1 F^{n+1}: a failed point held in tension keeps its domain (by the adjugate; I + dt L is close to I). */
+/* F^n = (I + dt L)^-1 F^{n+1}: a failed point held in tension keeps its domain. */
 static void MPMDamageHoldDomain(PetscInt d, PetscReal dt, const PetscReal L[], PetscReal F[])
 {
-  PetscReal A[9], B[9], G[9], det;
+  PetscReal A[9], Ai[9], G[9];
 
   for (PetscInt a = 0; a < d * d; a++) A[a] = dt * L[a] + (a % (d + 1) == 0 ? 1.0 : 0.0);
-  det = MPMDeterminant(d, A);
-  if (d == 1)
-    B[0] = 1.0;
-  else if (d == 2) {
-    B[0] = A[3];
-    B[1] = -A[1];
-    B[2] = -A[2];
-    B[3] = A[0];
-  } else
-    for (PetscInt r = 0; r < 3; r++)
-      for (PetscInt c = 0; c < 3; c++) { /* B = adj(A): B_rc = cofactor of A_cr */
-        const PetscInt r1 = (c + 1) % 3, r2 = (c + 2) % 3, c1 = (r + 1) % 3, c2 = (r + 2) % 3;
-        B[r * 3 + c] = A[r1 * 3 + c1] * A[r2 * 3 + c2] - A[r1 * 3 + c2] * A[r2 * 3 + c1];
-      }
+  MPMInverse(d, A, Ai);
   for (PetscInt r = 0; r < d; r++)
     for (PetscInt c = 0; c < d; c++) {
       G[r * d + c] = 0.0;
-      for (PetscInt k = 0; k < d; k++) G[r * d + c] += B[r * d + k] * F[k * d + c];
+      for (PetscInt k = 0; k < d; k++) G[r * d + c] += Ai[r * d + k] * F[k * d + c];
     }
-  for (PetscInt a = 0; a < d * d; a++) F[a] = G[a] / det;
+  for (PetscInt a = 0; a < d * d; a++) F[a] = G[a];
 }
 
 /* The damage stage of a material's constitutive update (MPMStage), after its strength and EOS stages: D += dD of the

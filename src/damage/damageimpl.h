@@ -44,7 +44,6 @@ static inline PetscReal MPMMaxPrincipalStress(PetscInt d, const PetscReal s[], P
 
 PETSC_INTERN PetscErrorCode MPMDamageStageUpdate(void *, MPMStageChunk *);
 PETSC_INTERN PetscErrorCode MPMDamageDeclareFields(MPMDamage);
-PETSC_INTERN PetscErrorCode MPMDamageScatterOption(MPMDamage, PetscOptionItems *);
 
 /* The flaw factor of the point with persistent id `id` (the same on every rank count and after a restart; a split
    child takes an id of its own): w = 1 + s sqrt(3) (2 u - 1), u uniform in [0, 1) from the SplitMix64 hash of the id

@@ -27,6 +27,7 @@ typedef struct {
   PetscReal  largest;                        /* the largest fragment's mass over the total (rank 0)   */
   PetscReal *frag;                           /* rank 0: per fragment, mass and momentum (1 + d values), largest first */
   PetscInt   nalloc;                         /* fragments frag has room for */
+  PetscInt   counted;                        /* the step of the last fragment count (-1: none yet) */
 } MPMFracture;
 
 static PetscErrorCode MPMFractureSetFromOptions(MPMModule mod, MPM mpm, PetscOptionItems *PetscOptionsObject)
@@ -55,11 +56,7 @@ static inline PetscInt64 MPMFractureCell(const MPMGrid *g, const PetscReal x[])
 {
   PetscInt64 c = 0;
 
-  for (PetscInt k = g->dim - 1; k >= 0; k--) {
-    PetscInt i = (PetscInt)PetscFloorReal((x[k] - g->lo[k]) / g->h[k]);
-    i          = PetscMin(PetscMax(i, 0), g->cells[k] - 1);
-    c          = c * g->cells[k] + i;
-  }
+  for (PetscInt k = g->dim - 1; k >= 0; k--) c = c * g->cells[k] + MPMCellIndex(g, k, x[k]);
   return c;
 }
 
@@ -94,7 +91,8 @@ static inline PetscInt64 MPMFractureNeighbour(const MPMGrid *g, PetscInt64 key, 
   return (key / nc) * nc + nb;
 }
 
-#define MPM_FRACTURE_CHUNK 4096 /* points between compactions of the occupied-cell records */
+#define MPM_FRACTURE_CHUNK 4096            /* points between compactions of the occupied-cell records */
+#define MPM_FRACTURE_FAILED MPM_MAX_BODIES /* failed points' keys lie beyond every body's cells (MPMFractureGather) */
 
 typedef struct {
   PetscInt64 key; /* body * ncells + cell */
@@ -146,10 +144,11 @@ static PetscInt MPMFractureFind(PetscInt *parent, PetscInt i)
   return i;
 }
 
-/* The occupied cells (collective): each rank sums its intact points (intact) or its failed points per key (by_body:
-   body * ncells + cell, else the cell), an intact point occupying the cells of its volume's box and a failed one its
-   own cell, and rank 0 gets the merged records of all ranks, sorted (*all, *n; NULL and 0 on the other ranks). */
-static PetscErrorCode MPMFractureGather(MPM mpm, PetscBool by_body, PetscBool intact, MPMFractureCellSum **all, PetscInt *n)
+/* The occupied cells (collective): each rank sums its points per key (by_body: body * ncells + cell, else the cell),
+   an intact point occupying the cells of its volume's box and a failed one (failed_too; else left out) its own cell
+   under the key offset MPM_FRACTURE_FAILED * ncells, so that the failed records sort after the intact ones; rank 0 gets
+   the merged records of all ranks, sorted (*all, *n; NULL and 0 on the other ranks). */
+static PetscErrorCode MPMFractureGather(MPM mpm, PetscBool by_body, PetscBool failed_too, MPMFractureCellSum **all, PetscInt *n)
 {
   const MPMGrid      *g  = &mpm->grid;
   const PetscInt      d  = g->dim;
@@ -169,20 +168,21 @@ static PetscErrorCode MPMFractureGather(MPM mpm, PetscBool by_body, PetscBool in
   PetscCall(PetscMalloc1(cap, &s));
   for (PetscInt p = 0; p < pts.n; p++) {
     const PetscReal *x = &pts.f[MPM_FIELD_POSITION][p * d], m = pts.f[MPM_FIELD_MASS][p];
-    const PetscInt64 body = by_body && pts.f[MPM_FIELD_BODY] ? (PetscInt64)pts.f[MPM_FIELD_BODY][p] * nc : 0;
-    PetscReal        a    = pts.f[MPM_FIELD_VOLUME][p];
+    const PetscInt64 body   = by_body && pts.f[MPM_FIELD_BODY] ? (PetscInt64)pts.f[MPM_FIELD_BODY][p] * nc : 0;
+    PetscReal        a      = pts.f[MPM_FIELD_VOLUME][p];
+    const PetscBool  intact = (PetscBool)!MPMPointFailed(&mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]], pts.f, p);
     PetscInt64       c0;
-    if (intact == MPMPointFailed(&mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]], pts.f, p)) continue; /* the intact points, or the failed ones */
-    if (ns + 1 + (1 << d) > cap) {                                                                       /* compact what is there, and grow if that is not enough */
+    if (!intact && !failed_too) continue;
+    if (ns + 1 + (1 << d) > cap) { /* compact what is there, and grow if that is not enough */
       ns = MPMFractureMerge(s, ns);
       if (ns + (1 + (1 << d)) * MPM_FRACTURE_CHUNK > cap) {
         cap = 2 * cap + (1 + (1 << d)) * MPM_FRACTURE_CHUNK;
         PetscCall(PetscRealloc(cap * sizeof(*s), &s));
       }
     }
-    if (g->axisym) a /= PetscMax(x[0], 0.5 * g->h[0]);                             /* per radian: the area in the r-z plane */
-    a         = 0.5 * (d == 1 ? a : d == 2 ? PetscSqrtReal(a) : PetscCbrtReal(a)); /* the half-width of its volume as a cube */
-    c0        = MPMFractureCell(g, x) + body;                                      /* its mass and momentum in the cell of its centre */
+    if (g->axisym) a /= PetscMax(x[0], 0.5 * g->h[0]);                                  /* per radian: the area in the r-z plane */
+    a         = 0.5 * (d == 1 ? a : d == 2 ? PetscSqrtReal(a) : PetscCbrtReal(a));      /* the half-width of its volume as a cube */
+    c0        = MPMFractureCell(g, x) + body + (intact ? 0 : MPM_FRACTURE_FAILED * nc); /* its mass and momentum in the cell of its centre */
     s[ns].key = c0;
     s[ns].m   = m;
     for (PetscInt k = 0; k < MPM_MAX_DIM; k++) s[ns].mv[k] = k < d ? m * pts.f[MPM_FIELD_VELOCITY][p * d + k] : 0.0;
@@ -266,14 +266,20 @@ static PetscErrorCode MPMFractureCount(MPMModule mod, MPM mpm)
   MPMFracture        *fr = (MPMFracture *)mod->data;
   const MPMGrid      *g  = &mpm->grid;
   const PetscInt      d = g->dim, no = d == 1 ? 3 : d == 2 ? 9 : 27;
+  const PetscInt64    off = MPM_FRACTURE_FAILED * MPMFractureNumCells(g);
   MPMFractureCellSum *all, *fl, *loose;
-  PetscInt            ntot, nfl, nf, nloose = 0, *root, *froot, *lroot, nl;
+  PetscInt            nall, ntot = 0, nfl, nf, nloose = 0, *root, *froot, *lroot, nl;
   PetscReal           mtot = 0.0;
 
   PetscFunctionBegin;
-  PetscCall(MPMFractureGather(mpm, PETSC_FALSE, PETSC_TRUE, &all, &ntot));
-  PetscCall(MPMFractureGather(mpm, PETSC_FALSE, PETSC_FALSE, &fl, &nfl));
-  if (!all) PetscFunctionReturn(PETSC_SUCCESS); /* rank 0 counts */
+  if (fr->counted == mpm->steps) PetscFunctionReturn(PETSC_SUCCESS); /* counted at this step already (the last output, then the report) */
+  fr->counted = mpm->steps;
+  PetscCall(MPMFractureGather(mpm, PETSC_FALSE, PETSC_TRUE, &all, &nall));
+  if (!all) PetscFunctionReturn(PETSC_SUCCESS);      /* rank 0 counts */
+  while (ntot < nall && all[ntot].key < off) ntot++; /* the intact records, then the failed ones */
+  fl  = all + ntot;
+  nfl = nall - ntot;
+  for (PetscInt i = 0; i < nfl; i++) fl[i].key -= off;
   PetscCall(PetscMalloc4(ntot + 1, &root, nfl + 1, &froot, nfl + 1, &loose, nfl + 1, &lroot));
   PetscCall(MPMFractureLabel(g, all, ntot, root, &nf));
   for (PetscInt i = 0; i < nfl; i++) { /* a failed cell joins an intact neighbour's set, or is loose */
@@ -325,7 +331,6 @@ static PetscErrorCode MPMFractureCount(MPMModule mod, MPM mpm)
   fr->largest = nf && mtot > 0.0 ? fr->frag[0] / mtot : 0.0;
   PetscCall(PetscFree4(root, froot, loose, lroot));
   PetscCall(PetscFree(all));
-  PetscCall(PetscFree(fl));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -367,7 +372,7 @@ static PetscErrorCode MPMFractureApply(MPMModule mod, MPM mpm, const MPMStepCont
   if (nfailed == fr->looked || mpm->steps % fr->interval) PetscFunctionReturn(PETSC_SUCCESS);
   fr->looked = nfailed;
   PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
-  PetscCall(MPMFractureGather(mpm, PETSC_TRUE, PETSC_TRUE, &all, &ntot));
+  PetscCall(MPMFractureGather(mpm, PETSC_TRUE, PETSC_FALSE, &all, &ntot));
   if (rank == 0) {
     PetscInt  *root, nset, *order, *sbody;
     PetscReal *mset, mbody[MPM_MAX_BODIES] = {0}, *newb;
@@ -550,6 +555,7 @@ PetscErrorCode MPMModuleCreate_Fracture(MPMModule mod)
   PetscFunctionBegin;
   PetscCall(PetscNew(&fr));
   fr->list                = 10;
+  fr->counted             = -1;
   fr->bodies              = PETSC_FALSE;
   fr->min_mass            = 0.01;
   fr->interval            = 1;

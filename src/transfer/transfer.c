@@ -423,22 +423,7 @@ static void MPMAffineFromMoments(const MPMGrid *g, const PetscReal B[], PetscRea
   PetscReal      Di[MPM_MAX_DIM * MPM_MAX_DIM];
 
   for (PetscInt k = 0; k < d; k++) D[k * d + k] += 1e-12 * g->h[k] * g->h[k];
-  if (d == 1)
-    Di[0] = 1.0 / D[0];
-  else if (d == 2) {
-    const PetscReal idet = 1.0 / (D[0] * D[3] - D[1] * D[2]);
-    Di[0]                = D[3] * idet;
-    Di[1]                = -D[1] * idet;
-    Di[2]                = -D[2] * idet;
-    Di[3]                = D[0] * idet;
-  } else {
-    const PetscReal idet = 1.0 / MPMDeterminant(3, D);
-    for (PetscInt i = 0; i < 3; i++)
-      for (PetscInt j = 0; j < 3; j++) { /* the adjugate: cofactor of (j, i) */
-        const PetscInt r0 = (j + 1) % 3, r1 = (j + 2) % 3, c0 = (i + 1) % 3, c1 = (i + 2) % 3;
-        Di[i * 3 + j] = (D[r0 * 3 + c0] * D[r1 * 3 + c1] - D[r0 * 3 + c1] * D[r1 * 3 + c0]) * idet;
-      }
-  }
+  MPMInverse(d, D, Di);
   for (PetscInt i = 0; i < d; i++)
     for (PetscInt j = 0; j < d; j++) {
       C[i * d + j] = 0.0;

@@ -58,7 +58,6 @@ static PetscErrorCode MPMDamageSetFromOptions_JC(MPMDamage dmg, PetscOptionItems
     PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%s%s", pre, par[i].name));
     PetscCall(PetscOptionsReal(opt, par[i].text, "", *par[i].v, par[i].v, NULL));
   }
-  PetscCall(MPMDamageScatterOption(dmg, PetscOptionsObject));
   PetscOptionsHeadEnd();
   for (size_t i = 0; i < sizeof(par) / sizeof(par[0]); i++) {
     PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%s%s%s", dmg->prefix ? dmg->prefix : "", pre, par[i].name));
@@ -74,9 +73,8 @@ static PetscErrorCode MPMDamageView_JC(MPMDamage dmg, PetscViewer viewer)
   Damage_JC *jc = (Damage_JC *)dmg->data;
 
   PetscFunctionBegin;
-  PetscCall(PetscViewerASCIIPrintf(viewer, "Johnson-Cook failure: D1 %g, D2 %g, D3 %g, D4 %g (epsdot0 %g 1/s), D5 %g, Tm %g eV, Tr %g eV; eps_f %g in uniaxial tension, %g in shear (at epsdot0, Tr); flaw scatter %g\n", (double)jc->D1, (double)jc->D2,
-                                   (double)jc->D3, (double)jc->D4, (double)jc->epsdot0, (double)jc->D5, (double)jc->Tm, (double)jc->Tr, (double)MPMDamageFailureStrain_JC(jc, 1.0 / 3.0, 0.0, jc->Tr),
-                                   (double)MPMDamageFailureStrain_JC(jc, 0.0, 0.0, jc->Tr), (double)dmg->scatter));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "Johnson-Cook failure: D1 %g, D2 %g, D3 %g, D4 %g (epsdot0 %g 1/s), D5 %g, Tm %g eV, Tr %g eV; eps_f %g in uniaxial tension, %g in shear (at epsdot0, Tr)\n", (double)jc->D1, (double)jc->D2, (double)jc->D3,
+                                   (double)jc->D4, (double)jc->epsdot0, (double)jc->D5, (double)jc->Tm, (double)jc->Tr, (double)MPMDamageFailureStrain_JC(jc, 1.0 / 3.0, 0.0, jc->Tr), (double)MPMDamageFailureStrain_JC(jc, 0.0, 0.0, jc->Tr)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -27,7 +27,6 @@ static PetscErrorCode MPMDamageSetFromOptions_Spall(MPMDamage dmg, PetscOptionIt
   PetscFunctionBegin;
   PetscOptionsHeadBegin(PetscOptionsObject, "Spall");
   PetscCall(PetscOptionsReal("-damage_spall_strength", "Spall strength sigma_s [dyn/cm^2], > 0: a point whose largest principal stress (tension positive) reaches it fails", "", sp->strength, &sp->strength, NULL));
-  PetscCall(MPMDamageScatterOption(dmg, PetscOptionsObject));
   PetscOptionsHeadEnd();
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sdamage_spall_strength", dmg->prefix ? dmg->prefix : ""));
   PetscCall(MPMOptionsCheckRange(opt, sp->strength, 0.0, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
@@ -37,7 +36,7 @@ static PetscErrorCode MPMDamageSetFromOptions_Spall(MPMDamage dmg, PetscOptionIt
 static PetscErrorCode MPMDamageView_Spall(MPMDamage dmg, PetscViewer viewer)
 {
   PetscFunctionBegin;
-  PetscCall(PetscViewerASCIIPrintf(viewer, "spall: a point fails where its largest principal stress reaches %g dyn/cm^2; flaw scatter %g\n", (double)((Damage_Spall *)dmg->data)->strength, (double)dmg->scatter));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "spall: a point fails where its largest principal stress reaches %g dyn/cm^2\n", (double)((Damage_Spall *)dmg->data)->strength));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
