@@ -134,6 +134,7 @@ PetscErrorCode MPMStep(MPM mpm, PetscReal tn, PetscReal tmax, PetscReal *dt)
   PetscCall(MPMBodiesRun(mpm, MPM_BODY_ADVANCE, &ctx, &nbad)); /* (mv)_I += dt_kick f_I; walls */
   PetscCall(PetscLogEventEnd(mpm->log.advance, 0, 0, 0, 0));
   PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_CONTACT, &ctx)); /* bodies that meet */
+  PetscCall(MPMModulesSettle(mpm, &ctx));                        /* the kick's velocity changes' work, with v^{n+1/2} */
   if (mpm->scheme == MPM_SCHEME_MUSL) {
     PetscCall(MPMBodiesRun(mpm, MPM_BODY_REMAP, &ctx, &nbad));
     ctx.remap = PETSC_TRUE;

@@ -5,14 +5,16 @@
    with v_I* the kicked velocity. A body with no other force slows as (1 + c dt)^-n -> exp(-c t); it brings a
    quasi-static problem (a column settling under gravity, a slow indentation) to rest, the mass-proportional part of
    Rayleigh damping (Bathe, Finite Element Procedures, 1996, section 9.3). It acts in the kick only (the MUSL remap's
-   velocities come from points that already felt it). Its work is what the step's energy loses, tallied per node as
-   m_I (v* - v) . (v_I^n + v) / 2 as for wall friction (walls.c), and added back by the energy budgets
-   (report key damping_work [erg]). */
+   velocities come from points that already felt it). Its work is what the step's energy loses, per node
+   m_I (v* - v) . (v_I^n + v_I^{n+1/2}) / 2 with the velocity v_I^{n+1/2} the kick ends with (after contact: the
+   impulse m_I (v* - v) waits for MPMModulesSettle), added back by the energy budgets (report key damping_work [erg]). */
 #include "core/petmpmimpl.h"
 
 typedef struct {
-  PetscReal c;    /* -mpm_damping: the damping rate c [1/s]              */
-  PetscReal work; /* energy the damping took out on this rank's nodes [erg] */
+  PetscReal  c;                  /* -mpm_damping: the damping rate c [1/s]              */
+  PetscReal  work;               /* energy the damping took out on this rank's nodes [erg] */
+  PetscReal *J[MPM_MAX_BODIES];  /* per body, per local node: the impulse m_I (v* - v) of this kick [g cm/s], d per node */
+  PetscInt   nJ[MPM_MAX_BODIES]; /* its length                                          */
 } MPMDamping;
 
 static PetscErrorCode MPMDampingSetFromOptions(MPMModule mod, MPM mpm, PetscOptionItems *PetscOptionsObject)
@@ -32,16 +34,43 @@ static PetscErrorCode MPMDampingApply(MPMModule mod, MPM mpm, const MPMStepConte
   const PetscInt  d  = mpm->grid.dim;
   const PetscReal s  = 1.0 / (1.0 + dp->c * ctx->kick);
 
+  const MPMGrid *g = &mpm->grid;
+  const PetscInt n = g->gm[0] * g->gm[1] * g->gm[2] * d, b = mpm->body;
+  PetscReal     *J;
+
   PetscFunctionBegin;
   if (ctx->remap) PetscFunctionReturn(PETSC_SUCCESS);
+  if (dp->nJ[b] != n) { /* a new grid, or a body added during the run */
+    PetscCall(PetscFree(dp->J[b]));
+    PetscCall(PetscMalloc1(n, &dp->J[b]));
+    dp->nJ[b] = n;
+  }
+  J = dp->J[b];
   MPM_FOR_BOX_NODES(mpm, c)
   {
     MPMNode *nd = &node[c];
     for (PetscInt k = 0; k < d; k++) {
       const PetscReal vs = nd->p[k]; /* the kicked velocity v* */
       nd->p[k]           = s * vs;
-      dp->work += nd->m * (vs - nd->p[k]) * (nd->v0[k] + nd->p[k]) * 0.5;
+      J[c * d + k]       = nd->m * (vs - nd->p[k]);
     }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The work of this kick's impulses with the velocity the kick ended with, J . (v_I^n + v_I^{n+1/2}) / 2. */
+static PetscErrorCode MPMDampingSettle(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *node)
+{
+  MPMDamping      *dp = (MPMDamping *)mod->data;
+  const PetscInt   d  = mpm->grid.dim;
+  const PetscReal *J  = dp->J[mpm->body];
+
+  PetscFunctionBegin;
+  if (!J) PetscFunctionReturn(PETSC_SUCCESS);
+  MPM_FOR_BOX_NODES(mpm, c)
+  {
+    const MPMNode *nd = &node[c];
+    for (PetscInt k = 0; k < d; k++) dp->work += J[c * d + k] * (nd->v0[k] + nd->p[k]) * 0.5;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -74,6 +103,16 @@ static PetscErrorCode MPMDampingCheckpoint(MPMModule mod, MPM mpm, MPMCheckpoint
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+static PetscErrorCode MPMDampingDestroy(MPMModule mod)
+{
+  MPMDamping *dp = (MPMDamping *)mod->data;
+
+  PetscFunctionBegin;
+  for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) PetscCall(PetscFree(dp->J[b]));
+  PetscCall(PetscFree(mod->data));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode MPMModuleCreate_Damping(MPMModule mod)
 {
   MPMDamping *dp;
@@ -84,6 +123,8 @@ PetscErrorCode MPMModuleCreate_Damping(MPMModule mod)
   mod->phase              = MPM_PHASE_GRID_VELOCITY;
   mod->ops.setfromoptions = MPMDampingSetFromOptions;
   mod->ops.apply          = MPMDampingApply;
+  mod->ops.settle         = MPMDampingSettle;
+  mod->ops.destroy        = MPMDampingDestroy;
   mod->ops.view           = MPMDampingView;
   mod->ops.report         = MPMDampingReport;
   mod->ops.checkpoint     = MPMDampingCheckpoint;

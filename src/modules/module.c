@@ -136,6 +136,29 @@ PetscErrorCode MPMModulesApply(MPM mpm, MPMPhase phase, const MPMStepContext *ct
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* After the kick and its contact: the grid-velocity modules' settle ops on each body's nodes in turn. A velocity change
+   m (v_a - v_b) made in the kick does the work m (v_a - v_b) . (v^n + v^{n+1/2}) / 2 with the velocity v^{n+1/2} the kick
+   ends with, as the points' energy update takes it; a module whose change a later one (contact) follows tallies its work
+   here, not with its own velocity v_b. */
+PetscErrorCode MPMModulesSettle(MPM mpm, const MPMStepContext *ctx)
+{
+  PetscBool any = PETSC_FALSE;
+
+  PetscFunctionBegin;
+  for (MPMModule mod = mpm->modules[MPM_PHASE_GRID_VELOCITY]; mod; mod = mod->next) any = (PetscBool)(any || mod->ops.settle);
+  if (!any) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt b = 0; b < mpm->nbodies; b++) {
+    MPMNode *node;
+    PetscCall(MPMBodySelect(mpm, b));
+    PetscCall(VecGetArray(mpm->lnodes, (PetscScalar **)&node));
+    for (MPMModule mod = mpm->modules[MPM_PHASE_GRID_VELOCITY]; mod; mod = mod->next)
+      if (mod->ops.settle) PetscCall(mod->ops.settle(mod, mpm, ctx, node));
+    PetscCall(VecRestoreArray(mpm->lnodes, (PetscScalar **)&node));
+  }
+  PetscCall(MPMBodySelect(mpm, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode MPMModulesView(MPM mpm, PetscViewer viewer)
 {
   PetscFunctionBegin;

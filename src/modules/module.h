@@ -30,9 +30,10 @@ typedef struct _p_MPMReport     *MPMReport;     /* the run's report while it is 
 typedef struct _p_MPMCheckpoint *MPMCheckpoint; /* a checkpoint while it is written or read (src/io/checkpoint.c) */
 
 typedef struct {
-  PetscErrorCode (*setfromoptions)(MPMModule, MPM, PetscOptionItems *);       /* its options -mpm_<name>...; sets active          */
-  PetscErrorCode (*setup)(MPMModule, MPM);                                    /* before the points are seeded; may leave the step */
-  PetscErrorCode (*apply)(MPMModule, MPM, const MPMStepContext *, MPMNode *); /* the owned nodes in grid phases, else NULL   */
+  PetscErrorCode (*setfromoptions)(MPMModule, MPM, PetscOptionItems *);        /* its options -mpm_<name>...; sets active          */
+  PetscErrorCode (*setup)(MPMModule, MPM);                                     /* before the points are seeded; may leave the step */
+  PetscErrorCode (*apply)(MPMModule, MPM, const MPMStepContext *, MPMNode *);  /* the owned nodes in grid phases, else NULL   */
+  PetscErrorCode (*settle)(MPMModule, MPM, const MPMStepContext *, MPMNode *); /* a grid-velocity module, once the kick's last velocity change (contact) is made: on each body's nodes, the work of its own change with the velocity the kick ends with */
   PetscErrorCode (*view)(MPMModule, MPM, PetscViewer);
   PetscErrorCode (*report)(MPMModule, MPM, MPMReport);         /* every module, in the step or not: its report keys (zeros when out) */
   PetscErrorCode (*checkpoint)(MPMModule, MPM, MPMCheckpoint); /* its state, written or read by name (MPMCheckpointReals) */
@@ -61,6 +62,7 @@ PETSC_INTERN PetscErrorCode MPMModulesCreate(MPM);
 PETSC_INTERN PetscErrorCode MPMModulesSetFromOptions(MPM);
 PETSC_INTERN PetscErrorCode MPMModulesSetUp(MPM);
 PETSC_INTERN PetscErrorCode MPMModulesApply(MPM, MPMPhase, const MPMStepContext *);
+PETSC_INTERN PetscErrorCode MPMModulesSettle(MPM, const MPMStepContext *);
 PETSC_INTERN PetscErrorCode MPMModulesView(MPM, PetscViewer);
 PETSC_INTERN PetscErrorCode MPMModulesReport(MPM, MPMReport);
 PETSC_INTERN PetscErrorCode MPMModulesDestroy(MPM);
