@@ -341,6 +341,7 @@ PetscErrorCode MPMDestroy(MPM *mpm)
   PetscCall(TSDestroy(&m->ts));
   PetscCall(VecDestroy(&m->tsu));
   PetscCall(MPMDestroyGrid(m));
+  PetscCall(MPMCrackDestroy(m));
   PetscCall(PetscFree3(m->widx, m->work, m->wL));
   if (m->swarm) PetscCall(MPMPointsRelease(m));
   PetscCall(DMDestroy(&m->swarm));

@@ -63,6 +63,19 @@ typedef struct {
   PetscReal outflow[MPM_OUTFLOW_N];       /* what left through outflow faces on this rank (MPMMigrate; MPM_OUTFLOW_*) */
 } MPMDiagnostics;
 
+/* The crack fields' bookkeeping (src/grid/crack.c; MPMFieldsCount and MPMFieldSlot in src/grid/bodies.c read it). */
+struct _n_MPMCrack {
+  PetscInt      twin[MPM_MAX_BODIES];   /* body b's crack field (its MPM::bnodes slot), -1: none yet */
+  PetscInt      parent[MPM_MAX_BODIES]; /* per slot: the body of a crack field, -1 for the others     */
+  PetscLogEvent ev;                     /* -log_view: MPMCrackFields (MPMCrackUpdate)              */
+  PetscInt      ntwin;                  /* crack fields in the run: slots MPM_MAX_BODIES - 1 down    */
+  PetscInt      gid, nloc;              /* the grid the arrays below were made for, its local nodes  */
+  PetscReal    *D[MPM_MAX_BODIES];      /* per body with a crack field, per local node: D_I          */
+  PetscReal    *G[MPM_MAX_BODIES];      /* per local node, d values: G_I                             */
+  char         *sep[MPM_MAX_BODIES];    /* per local node: a failed point of the body reaches it     */
+  char         *near[MPM_MAX_BODIES];   /* per local node: a point whose cell starts here may reach a sep node (MPMGridDilate) */
+};
+
 struct _p_MPM {
   MPI_Comm comm;
   /* scene */
@@ -105,6 +118,7 @@ struct _p_MPM {
   PetscInt             nmat, nreg;
   PetscInt             nbodies;     /* bodies of the scene (MPMSceneBodies), each with its own nodal velocity field */
   PetscBool            bodies_open; /* bodies may be added during the run (MPMBodyAdd: the pieces a body breaks into) */
+  MPMCrack             crack;       /* crack fields (src/grid/crack.c), NULL: none (-mpm_fracture_fields) */
   char                 bodyname[MPM_MAX_BODIES][MPM_MAX_NAME];
   MPMMaterial          mat[MPM_MAX_MATERIALS];
   MPMRegion            reg[MPM_MAX_REGIONS];

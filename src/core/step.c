@@ -76,17 +76,32 @@ static PetscErrorCode MPMBodyPhaseRun(MPM mpm, MPMBodyPhase phase, MPMStepContex
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* A phase of the step on every body in turn; then body 0's nodes and all points again. */
+/* A phase of the step on every body in turn, then on the crack fields (src/grid/crack.c: points to grid from their
+   body's points, the kick; they have no points of their own); then body 0's nodes and all points again. */
 static PetscErrorCode MPMBodiesRun(MPM mpm, MPMBodyPhase phase, MPMStepContext *ctx, PetscInt *nbad)
 {
+  const PetscInt nf = MPMFieldsCount(mpm);
+
   PetscFunctionBegin;
-  if (mpm->nbodies == 1) {
+  if (nf == 1) {
     PetscCall(MPMBodyPhaseRun(mpm, phase, ctx, nbad));
     if (phase == MPM_BODY_POINTS) PetscCall(MPMPointsSetWindow(mpm, 0, -1));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  for (PetscInt b = 0; b < mpm->nbodies; b++) {
-    PetscCall(MPMBodyWindow(mpm, b));
+  for (PetscInt i = 0; i < nf; i++) {
+    PetscInt       body;
+    const PetscInt s = MPMFieldSlot(mpm, i, &body);
+    if (s == body) {
+      PetscCall(MPMCrackBodyWindow(mpm, body));
+      PetscCall(MPMBodySelect(mpm, body));
+    } else { /* a crack field */
+      if (phase == MPM_BODY_REMAP || phase == MPM_BODY_POINTS) continue;
+      PetscCall(MPMBodySelect(mpm, s));
+      if (phase == MPM_BODY_P2G)
+        PetscCall(MPMCrackBodyWindow(mpm, body));
+      else
+        PetscCall(MPMPointsSetWindow(mpm, 0, 0));
+    }
     PetscCall(MPMBodyPhaseRun(mpm, phase, ctx, nbad));
   }
   PetscCall(MPMBodiesEnd(mpm));
@@ -121,6 +136,7 @@ PetscErrorCode MPMStep(MPM mpm, PetscReal tn, PetscReal tmax, PetscReal *dt)
 
   PetscFunctionBegin;
   if (mpm->nbodies > 1) PetscCall(MPMPointsSortByBody(mpm)); /* each body's points together */
+  if (mpm->crack) PetscCall(MPMCrackUpdate(mpm));            /* crack fields: the sides of the cracks */
   PetscCall(MPMBodiesRun(mpm, MPM_BODY_P2G, &ctx, &nbad));   /* m_I, (mv)_I, f_I at t^n; gravity */
   PetscCall(MPMStepSize(mpm, tn, tmax, dt, &t));             /* dt_n, t^{n+1}                    */
   if (mpm->failed) PetscFunctionReturn(PETSC_SUCCESS);

@@ -123,9 +123,9 @@ PetscErrorCode MPMComputeTimeStep(MPM mpm, PetscBool diagnose, PetscReal *dt)
       const PetscReal s = MPMSignalSpeed(&pts, p, d, PETSC_TRUE, hoop, mu, h, &div);
       if (s == mx[0] || s != s) pmax = p;
     }
-  for (PetscInt b = 0; b < mpm->nbodies; b++) { /* every body's nodes */
+  for (PetscInt i = 0; i < MPMFieldsCount(mpm); i++) { /* every body's nodes, and the crack fields' */
     const MPMNode *node;
-    PetscCall(MPMBodySelect(mpm, b));
+    PetscCall(MPMBodySelect(mpm, MPMFieldSlot(mpm, i, NULL)));
     PetscCall(VecGetArrayRead(mpm->lnodes, (const PetscScalar **)&node));
     MPM_FOR_BOX_NODES(mpm, c)
     {

@@ -28,7 +28,7 @@ PetscErrorCode MPMBodyAdd(MPM mpm, const char name[], PetscInt *b)
 
   PetscFunctionBegin;
   PetscCheck(mpm->bodies_open, mpm->comm, PETSC_ERR_PLIB, "Body %s added to a run whose bodies are fixed", name);
-  PetscCheck(mpm->nbodies < MPM_MAX_BODIES, mpm->comm, PETSC_ERR_SUP, "Body %s: more than %d bodies", name, MPM_MAX_BODIES);
+  PetscCheck(mpm->nbodies < MPM_MAX_BODIES - (mpm->crack ? MPMFieldsCount(mpm) - mpm->nbodies : 0), mpm->comm, PETSC_ERR_SUP, "Body %s: more than %d bodies and crack fields", name, MPM_MAX_BODIES);
   *b = mpm->nbodies;
   bn = &mpm->bnodes[*b];
   PetscCall(PetscStrncpy(mpm->bodyname[*b], name, MPM_MAX_NAME));
@@ -42,8 +42,9 @@ PetscErrorCode MPMBodyAdd(MPM mpm, const char name[], PetscInt *b)
 PetscErrorCode MPMBodiesDestroyNodes(MPM mpm)
 {
   PetscFunctionBegin;
-  if (mpm->nbodies > 1 && mpm->lnodes) PetscCall(MPMBodySelect(mpm, 0));
-  for (PetscInt b = 1; b < mpm->nbodies; b++) {
+  if (MPMFieldsCount(mpm) > 1 && mpm->lnodes) PetscCall(MPMBodySelect(mpm, 0));
+  for (PetscInt i = 1; i < MPMFieldsCount(mpm); i++) { /* the bodies' and the crack fields' (made again on the next grid, MPMCrackUpdate) */
+    const PetscInt b = MPMFieldSlot(mpm, i, NULL);
     PetscCall(VecDestroy(&mpm->bnodes[b].lnodes));
     PetscCall(PetscFree(mpm->bnodes[b].xcell));
   }
@@ -95,4 +96,19 @@ void MPMBodyBox(MPM mpm, PetscInt b, const PetscInt **lo, const PetscInt **hi)
 {
   *lo = b == mpm->body ? mpm->box_lo : mpm->bnodes[b].box_lo;
   *hi = b == mpm->body ? mpm->box_hi : mpm->bnodes[b].box_hi;
+}
+
+/* The nodal fields the step runs: the bodies, then the crack fields. */
+PetscInt MPMFieldsCount(MPM mpm)
+{
+  return mpm->nbodies + (mpm->crack ? mpm->crack->ntwin : 0);
+}
+
+/* The MPM::bnodes slot of field i (MPMFieldsCount) and the body whose points fill it (its own slot for a body). */
+PetscInt MPMFieldSlot(MPM mpm, PetscInt i, PetscInt *body)
+{
+  const PetscInt s = i < mpm->nbodies ? i : MPM_MAX_BODIES - 1 - (i - mpm->nbodies);
+
+  if (body) *body = i < mpm->nbodies ? i : mpm->crack->parent[s];
+  return s;
 }

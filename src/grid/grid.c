@@ -548,3 +548,36 @@ PetscErrorCode MPMGridZeroForScatter(MPM mpm, PetscInt n, const PetscReal x[], M
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+/* near = shared dilated by sw + 1 nodes along each direction of the ghosted local box (a point touches only nodes
+   within sw cells of its own cell: where near is 0 at its cell's first node, MPMGridCellNode, none of its stencil's
+   nodes is shared). */
+PetscErrorCode MPMGridDilate(const MPMGrid *g, const char shared[], char near[])
+{
+  const PetscInt n = g->gm[0] * g->gm[1] * g->gm[2], r = g->sw + 1;
+  char          *tmp;
+
+  PetscFunctionBegin;
+  PetscCall(PetscMalloc1(n, &tmp));
+  PetscCall(PetscArraycpy(near, shared, n));
+  for (PetscInt k = 0; k < g->dim; k++) { /* along each line of direction k: marked where a mark lies within r, from the distances to the last and the next mark */
+    const PetscInt stride = k == 0 ? 1 : k == 1 ? g->gm[0] : g->gm[0] * g->gm[1], len = g->gm[k];
+    const PetscInt na = k == 0 ? g->gm[1] : g->gm[0], nb = k == 2 ? g->gm[1] : g->gm[2], sa = k == 0 ? g->gm[0] : 1, sb = k == 2 ? g->gm[0] : g->gm[0] * g->gm[1];
+    PetscCall(PetscArraycpy(tmp, near, n));
+    for (PetscInt ib = 0; ib < nb; ib++)
+      for (PetscInt ia = 0; ia < na; ia++) {
+        const PetscInt base = ib * sb + ia * sa;
+        PetscInt       last = -2 * r - 2, next = len + 2 * r + 2;
+        for (PetscInt j = 0; j < len; j++) {
+          if (tmp[base + j * stride]) last = j;
+          near[base + j * stride] = (char)(j - last <= r);
+        }
+        for (PetscInt j = len - 1; j >= 0; j--) {
+          if (tmp[base + j * stride]) next = j;
+          if (next - j <= r) near[base + j * stride] = 1;
+        }
+      }
+  }
+  PetscCall(PetscFree(tmp));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

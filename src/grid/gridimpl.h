@@ -219,8 +219,18 @@ static inline void MPMGridCellBasis(const MPMGrid *g, const PetscInt ijk[], MPMS
   MPMShapeTensor(g, nn, idx, w, dw, sg, st);
 }
 
+/* The ghosted-local index of the first node of the cell that holds x (clamped to the ghosted box). */
+static inline PetscInt MPMGridCellNode(const MPMGrid *g, const PetscReal x[])
+{
+  PetscInt i[MPM_MAX_DIM] = {0, 0, 0};
+
+  for (PetscInt k = 0; k < g->dim; k++) i[k] = PetscMin(PetscMax((PetscInt)PetscFloorReal((x[k] - g->lo[k]) * g->hinv[k]) - g->gs[k], 0), g->gm[k] - 1);
+  return (i[2] * g->gm[1] + i[1]) * g->gm[0] + i[0];
+}
+
 /* The grid of the MPM object (src/grid/grid.c). */
 PETSC_INTERN PetscErrorCode MPMCreateGrid(MPM, PetscInt, const char[]);
+PETSC_INTERN PetscErrorCode MPMGridDilate(const MPMGrid *, const char[], char[]);
 PETSC_INTERN PetscErrorCode MPMGridGhostSum(MPM);
 PETSC_INTERN PetscErrorCode MPMGridGhostSumForce(MPM);
 PETSC_INTERN PetscErrorCode MPMGridOwnedToGlobal(MPM);
@@ -233,4 +243,53 @@ PETSC_INTERN PetscErrorCode MPMBodySelect(MPM, PetscInt);
 PETSC_INTERN Vec            MPMBodyNodesVec(MPM, PetscInt);
 PETSC_INTERN void           MPMBodyBox(MPM, PetscInt, const PetscInt **, const PetscInt **);
 PETSC_INTERN PetscErrorCode MPMGridGhostFill(MPM);
+
+/* Crack fields (src/grid/crack.c): a body with failed points gets a second nodal field, and each of its points sends
+   its share at each node to the side of the crack it lies on there. */
+typedef struct _n_MPMCrack *MPMCrack;
+
+typedef struct {
+  const PetscReal *D;     /* per local node: the body's nodal damage D_I                                          */
+  const PetscReal *G;     /* per local node, d values: the reference damage gradient G_I                           */
+  PetscReal        g2min; /* |g_p|^2 below which a point's damage gradient is zero (MPMCrackPointGradient) [1/cm^2] */
+  PetscInt         keep;  /* points to grid: the side whose entries these nodes take (0: the body's, 1: its crack field's) */
+  PetscInt         twin;  /* the crack field's slot (MPM::bnodes)                                                  */
+  const MPMNode   *alt;   /* grid to points: the crack field's nodes, read where an entry is on side 1             */
+  const char      *near;  /* per local node: a point whose cell starts here may have entries on side 1 (else none)  */
+} MPMCrackSplit;
+
+/* The point's damage gradient g = sum_a D_I grad N_I(x_p) over its stencil, zero where |g|^2 < g2min (a gradient
+   the order of the ranks' sums can flip); returns |g|^2. */
+static inline PetscReal MPMCrackPointGradient(const PetscReal D[], PetscInt d, const MPMStencil *st, PetscReal g2min, PetscReal g[])
+{
+  PetscReal g2 = 0.0;
+
+  for (PetscInt k = 0; k < d; k++) g[k] = 0.0;
+  for (PetscInt a = 0; a < st->n; a++)
+    for (PetscInt k = 0; k < d; k++) g[k] += D[st->node[a]] * st->dw[a][k];
+  for (PetscInt k = 0; k < d; k++) g2 += g[k] * g[k];
+  if (g2 < g2min) {
+    for (PetscInt k = 0; k < d; k++) g[k] = 0.0;
+    g2 = 0.0;
+  }
+  return g2;
+}
+
+/* The side of the crack a point with damage gradient g lies on at local node c: 1 where G_c . g < 0. */
+static inline PetscInt MPMCrackSide(const MPMCrackSplit *cs, PetscInt d, PetscInt c, const PetscReal g[])
+{
+  PetscReal s = 0.0;
+
+  for (PetscInt k = 0; k < d; k++) s += cs->G[c * d + k] * g[k];
+  return s < 0.0;
+}
+
+PETSC_INTERN PetscErrorCode MPMCrackCreate(MPM);
+PETSC_INTERN PetscErrorCode MPMCrackDestroy(MPM);
+PETSC_INTERN PetscErrorCode MPMCrackUpdate(MPM);
+PETSC_INTERN PetscErrorCode MPMCrackBodyWindow(MPM, PetscInt);
+PETSC_INTERN PetscBool      MPMCrackSplitOf(MPM, MPMCrackSplit *);
+PETSC_INTERN PetscInt       MPMCrackOf(MPM, PetscInt, const PetscReal **, const char **);
+PETSC_INTERN PetscInt       MPMFieldsCount(MPM);
+PETSC_INTERN PetscInt       MPMFieldSlot(MPM, PetscInt, PetscInt *);
 PETSC_INTERN PetscErrorCode MPMGridZeroForScatter(MPM, PetscInt, const PetscReal[], MPMNode *);

@@ -13,7 +13,7 @@
    conserved exactly), or mass, along g_b; where a rigid body is present, minus the rigid body's own normal (its
    surface is exact: the averaged normal tilts at a block's corners and slowed a frictionless block on an incline).
    Gap test (-mpm_contact_gap): volume (default), the bodies touch at node I only where their volumes there fill it,
-   sum_b sum_p N_I(x_p) V_p >= f V_I, V_I the cell volume (r-z: times r_I), f = -mpm_contact_fill (default 0.5; the
+   sum_b sum_p N_I(x_p) V_p >= f V_I, V_I the node's share of the cells (r-z: times r_I; half a cell for each symmetry plane the node lies on), f = -mpm_contact_fill (default 0.5; the
    approach test alone, none, lets bodies meet a cell early: the disks of inputs/disks_2d.opts lose 12% of their
    kinetic energy to contact at 20^2 cells against 4% with f = 0.5); surface, where the points' domains of the two
    bodies reach each other along the normal (MPMContactExtents; docs/contact.md gives what each measured).
@@ -24,7 +24,10 @@
    m_b (v_b' - v_b*) . v_r, is the work the moving rigid body does, energy from outside that the report's budgets add
    with the rigid bodies' kinetic energy change), heats the points of every body at that node by their mass shares (MPMContactHeat: an
    inelastic impact heats its interface), so the total energy is kept to round-off; the report gives its sum (contact.work) and the
-   frictional part (contact.friction_work). */
+   frictional part (contact.friction_work).
+   A body's crack field (src/grid/crack.c) meets its body here too (MPMContactCrackPair): welded where no failed point
+   reaches the node, else as two bodies; at such a node the general contact takes the body's fields as one and the
+   energy is tallied from each field's first and last velocities. */
 #include "core/petmpmimpl.h"
 
 typedef enum { MPM_CONTACT_NORMAL_AVERAGE, MPM_CONTACT_NORMAL_MASS } MPMContactNormal;
@@ -55,6 +58,9 @@ typedef struct {
   PetscReal        patch[MPM_MAX_BODIES];      /* the rms radius of the normal forces on it in the last kick, across the force [cm] */
   PetscReal        rwork;                      /* the work the moving rigid bodies did on the others, all ranks [erg] */
   PetscInt         nodes;                      /* node-corrections made, this rank */
+  PetscInt         nf;                         /* the nodal fields this step: the bodies, then the crack fields (src/grid/crack.c) */
+  PetscInt         slot[MPM_MAX_BODIES];       /* per field: its MPM::bnodes slot                                  */
+  PetscInt         fam[MPM_MAX_BODIES];        /* per field: its body (a crack field's is the body it splits)      */
 } MPMContact;
 
 static PetscErrorCode MPMContactSetFromOptions(MPMModule mod, MPM mpm, PetscOptionItems *PetscOptionsObject)
@@ -104,40 +110,7 @@ static PetscErrorCode MPMContactSetFromOptions(MPMModule mod, MPM mpm, PetscOpti
                    (double)mpm->reg[r].v[k], (double)ct->vrigid[b][k]);
     }
   }
-  mod->active = (PetscBool)(mpm->nbodies > 1 || mpm->bodies_open);
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* The ghosted-local index of the first node of the cell that holds x (clamped to the ghosted box). */
-static inline PetscInt MPMContactCellNode(const MPMGrid *g, const PetscReal x[])
-{
-  PetscInt i[MPM_MAX_DIM] = {0, 0, 0};
-
-  for (PetscInt k = 0; k < g->dim; k++) i[k] = PetscMin(PetscMax((PetscInt)PetscFloorReal((x[k] - g->lo[k]) * g->hinv[k]) - g->gs[k], 0), g->gm[k] - 1);
-  return (i[2] * g->gm[1] + i[1]) * g->gm[0] + i[0];
-}
-
-/* near = shared dilated by sw + 1 nodes along each direction of the ghosted local box (a point touches only nodes
-   within sw cells of its own cell). */
-static PetscErrorCode MPMContactDilate(const MPMGrid *g, const char shared[], char near[])
-{
-  const PetscInt n = g->gm[0] * g->gm[1] * g->gm[2], r = g->sw + 1;
-  char          *tmp;
-
-  PetscFunctionBegin;
-  PetscCall(PetscMalloc1(n, &tmp));
-  PetscCall(PetscArraycpy(near, shared, n));
-  for (PetscInt k = 0; k < g->dim; k++) {
-    const PetscInt stride = k == 0 ? 1 : k == 1 ? g->gm[0] : g->gm[0] * g->gm[1], len = g->gm[k];
-    PetscCall(PetscArraycpy(tmp, near, n));
-    for (PetscInt c = 0; c < n; c++) {
-      const PetscInt ik  = (c / stride) % len;
-      char           any = 0;
-      for (PetscInt j = PetscMax(0, ik - r); j <= PetscMin(len - 1, ik + r) && !any; j++) any = tmp[c + (j - ik) * stride];
-      near[c] = any;
-    }
-  }
-  PetscCall(PetscFree(tmp));
+  mod->active = (PetscBool)(mpm->nbodies > 1 || mpm->bodies_open || mpm->crack);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -147,16 +120,16 @@ static PetscErrorCode MPMContactDilate(const MPMGrid *g, const char shared[], ch
    masses are the kick's, ghosts filled. */
 static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const *node)
 {
-  const PetscInt d = mpm->grid.dim, nb = mpm->nbodies;
-  PetscInt       nloc, ns              = 0;
+  const PetscInt d = mpm->grid.dim, nb = mpm->nbodies, nf = ct->nf;
+  PetscInt       nloc, ns = 0;
 
   PetscFunctionBegin;
   PetscCall(VecGetLocalSize(mpm->lnodes, &nloc));
   nloc /= MPM_NODE_DOF;
   if (ct->gid != mpm->grid.id) { /* a new grid (set-up, rebalance): new vectors */
-    for (PetscInt b = 0; b < nb; b++) {
+    for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) {
       PetscCall(VecDestroy(&ct->geo[b]));
-      PetscCall(DMCreateLocalVector(mpm->da, &ct->geo[b]));
+      if (b < nf) PetscCall(DMCreateLocalVector(mpm->da, &ct->geo[b]));
     }
     PetscCall(PetscFree2(ct->shared, ct->near));
     PetscCall(PetscMalloc2(nloc, &ct->shared, nloc, &ct->near));
@@ -166,20 +139,21 @@ static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const
     }
     ct->gid = mpm->grid.id;
   }
-  for (PetscInt b = 0; b < nb; b++) { /* a body added during the run (a piece a body broke into, fracture.c) */
+  for (PetscInt b = 0; b < nf; b++) { /* a body added during the run (a piece a body broke into, fracture.c), a crack field */
     if (!ct->geo[b]) PetscCall(DMCreateLocalVector(mpm->da, &ct->geo[b]));
-    if (!ct->ext[b] && ct->gap == MPM_CONTACT_GAP_SURFACE) PetscCall(PetscMalloc1(nloc, &ct->ext[b]));
+    if (!ct->ext[b] && ct->gap == MPM_CONTACT_GAP_SURFACE && b < nb) PetscCall(PetscMalloc1(nloc, &ct->ext[b]));
   }
   for (PetscInt c = 0; c < nloc; c++) { /* the shared nodes, ghosts included */
     PetscInt nin = 0;
-    for (PetscInt b = 0; b < nb; b++) nin += node[b][c].m > 0.0;
+    for (PetscInt b = 0; b < nf; b++) nin += node[b][c].m > 0.0;
     ct->shared[c] = (char)(nin > 1);
     ns += nin > 1;
   }
   PetscCall(MPIU_Allreduce(&ns, &ct->nshared, 1, MPIU_INT, MPIU_SUM, mpm->comm));
   ct->ncand = 0;
   if (!ct->nshared) PetscFunctionReturn(PETSC_SUCCESS); /* the bodies are apart: nothing to correct this step */
-  PetscCall(MPMContactDilate(&mpm->grid, ct->shared, ct->near));
+  PetscCall(MPMGridDilate(&mpm->grid, ct->shared, ct->near));
+  for (PetscInt b = nb; b < nf; b++) PetscCall(VecZeroEntries(ct->geo[b])); /* a crack field has no points: its body's geometry stands for it */
   for (PetscInt b = 0; b < nb; b++) {
     MPMNode  *geo;
     MPMPoints pts;
@@ -192,7 +166,7 @@ static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const
       PetscReal       Fs[MPM_MAX_DIM * MPM_MAX_DIM];
       PetscBool       near = PETSC_FALSE;
       MPMStencil      st;
-      if (!ct->near[MPMContactCellNode(&mpm->grid, &pts.f[MPM_FIELD_POSITION][p * d])]) continue; /* no shared node within its reach */
+      if (!ct->near[MPMGridCellNode(&mpm->grid, &pts.f[MPM_FIELD_POSITION][p * d])]) continue; /* no shared node within its reach */
       MPMShapeEvaluate(mpm->shape, &mpm->grid, &pts.f[MPM_FIELD_POSITION][p * d], MPMPointDomain(d, pts.f[MPM_FIELD_DEFGRAD], pts.f[MPM_FIELD_DOMAINSCALE], p, Fs), &st);
       for (PetscInt a = 0; a < st.n && !near; a++) near = (PetscBool)ct->shared[st.node[a]];
       if (!near) continue;
@@ -233,7 +207,7 @@ static PetscErrorCode MPMContactHeat(MPMContact *ct, MPM mpm, MPMNode *const *no
   MPMPoints      pts;
 
   PetscFunctionBegin;
-  for (PetscInt b = 0; b < mpm->nbodies; b++) {
+  for (PetscInt b = 0; b < ct->nf; b++) {
     PetscCall(VecGetArray(ct->geo[b], (PetscScalar **)&geo[b]));
     PetscCall(MPMGhostExchange(mpm, mpm->node_type, (PetscScalar *)geo[b], PETSC_FALSE, PETSC_TRUE));
   }
@@ -246,7 +220,7 @@ static PetscErrorCode MPMContactHeat(MPMContact *ct, MPM mpm, MPMNode *const *no
     for (PetscInt a = 0; a < st.n; a++) {
       const PetscInt c = st.node[a];
       PetscReal      E = 0.0, M = 0.0;
-      for (PetscInt b = 0; b < mpm->nbodies; b++) {
+      for (PetscInt b = 0; b < ct->nf; b++) {
         E += geo[b][c].f[0];
         M += node[b][c].m;
       }
@@ -255,7 +229,7 @@ static PetscErrorCode MPMContactHeat(MPMContact *ct, MPM mpm, MPMNode *const *no
     pts.f[MPM_FIELD_ENERGY][p] += de;
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-  for (PetscInt b = 0; b < mpm->nbodies; b++) {
+  for (PetscInt b = 0; b < ct->nf; b++) {
     PetscInt n;
     PetscCall(VecGetLocalSize(ct->geo[b], &n));
     for (PetscInt c = 0; c < n / MPM_NODE_DOF; c++) geo[b][c].f[0] = 0.0;
@@ -270,10 +244,10 @@ static void MPMContactNormalAt(const MPMContact *ct, PetscInt d, PetscInt nb, Pe
   PetscReal nn = 0.0;
 
   for (PetscInt k = 0; k < d; k++) {
-    n[k] = geo[b][c].p[k];
+    n[k] = geo[ct->fam[b]][c].p[k]; /* a crack field's: its body's */
     if (!own && ct->normal == MPM_CONTACT_NORMAL_AVERAGE)
       for (PetscInt o = 0; o < nb; o++)
-        if (o != b) n[k] -= geo[o][c].p[k];
+        if (ct->fam[o] != ct->fam[b]) n[k] -= geo[o][c].p[k];
     nn += n[k] * n[k];
   }
   nn = nn > 0.0 ? 1.0 / PetscSqrtReal(nn) : 0.0;
@@ -300,7 +274,7 @@ static PetscInt MPMContactOnWall(MPM mpm, PetscInt c)
    nodes, so g there has a spurious component across it). n = 0 where the gradients cancel. */
 static void MPMContactNormalOf(const MPMContact *ct, MPM mpm, MPMNode *const *node, MPMNode *const *geo, PetscInt b, PetscInt c, PetscReal n[])
 {
-  const PetscInt d = mpm->grid.dim, nb = mpm->nbodies, onwall = MPMContactOnWall(mpm, c);
+  const PetscInt d = mpm->grid.dim, nb = ct->nf, onwall = MPMContactOnWall(mpm, c);
   PetscInt       rb = -1;
   PetscReal      g2 = 0.0, nn = 0.0;
 
@@ -337,8 +311,8 @@ static PetscErrorCode MPMContactExtents(MPMContact *ct, MPM mpm, MPMNode *const 
   PetscFunctionBegin;
   PetscCall(VecGetLocalSize(mpm->lnodes, &nloc));
   nloc /= MPM_NODE_DOF;
-  for (PetscInt b = 0; b < nb; b++) {
-    for (PetscInt c = 0; c < nloc; c++) ct->ext[b][c] = -PETSC_MAX_REAL;
+  for (PetscInt b = 0; b < ct->nf; b++) {
+    for (PetscInt c = 0; b < nb && c < nloc; c++) ct->ext[b][c] = -PETSC_MAX_REAL;
     PetscCall(VecGetArray(ct->geo[b], (PetscScalar **)&geo[b]));
   }
   PetscCall(MPMPointsGetArrays(mpm, &pts));
@@ -358,8 +332,8 @@ static PetscErrorCode MPMContactExtents(MPMContact *ct, MPM mpm, MPMNode *const 
     }
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  for (PetscInt b = 0; b < ct->nf; b++) PetscCall(VecRestoreArray(ct->geo[b], (PetscScalar **)&geo[b]));
   for (PetscInt b = 0; b < nb; b++) {
-    PetscCall(VecRestoreArray(ct->geo[b], (PetscScalar **)&geo[b]));
     if (mpm->ghost_sf) {
       PetscCall(PetscSFReduceBegin(mpm->ghost_sf, MPIU_REAL, ct->ext[b], ct->ext[b], MPI_MAX));
       PetscCall(PetscSFReduceEnd(mpm->ghost_sf, MPIU_REAL, ct->ext[b], ct->ext[b], MPI_MAX));
@@ -396,28 +370,106 @@ static PetscReal MPMContactPatch(const PetscReal m[], const PetscReal F[], Petsc
   return PetscSqrtReal(PetscMax(r2, 0.0));
 }
 
+/* One field's correction at a node (Bardenhagen et al. 2000): where it approaches, dn = (v - v_cm) . n > 0, its normal
+   part is removed and friction mu takes at most mu dn of its tangential part dv_t; the kinetic energy each takes out,
+   m (v_a - v_b) . ((v^n + v_b) / 2 - v_ref), in wn and wt, and the velocity before in vold. PETSC_FALSE: it separates. */
+static PetscBool MPMContactCorrect(MPMNode *nd, PetscInt d, const PetscReal n[], const PetscReal vcm[], const PetscReal vref[], PetscReal mu, PetscReal *dnp, PetscReal vold[], PetscReal *wn, PetscReal *wt)
+{
+  PetscReal dv[3], dn = 0.0, dvt[3], t2 = 0.0;
+
+  *wn = *wt = 0.0;
+  for (PetscInt k = 0; k < d; k++) {
+    dv[k] = nd->p[k] - vcm[k];
+    dn += dv[k] * n[k];
+  }
+  *dnp = dn;
+  if (!(dn > 0.0)) return PETSC_FALSE; /* separating, or no normal */
+  for (PetscInt k = 0; k < d; k++) {
+    dvt[k] = dv[k] - dn * n[k];
+    t2 += dvt[k] * dvt[k];
+    vold[k] = nd->p[k];
+    nd->p[k] -= dn * n[k];
+    *wn += nd->m * (vold[k] - nd->p[k]) * ((nd->v0[k] + nd->p[k]) * 0.5 - vref[k]);
+  }
+  if (mu > 0.0 && t2 > 0.0) {
+    const PetscReal t = PetscSqrtReal(t2), s = PetscMin(mu * dn, t) / t;
+    for (PetscInt k = 0; k < d; k++) {
+      const PetscReal vk = nd->p[k];
+      nd->p[k] -= s * dvt[k];
+      *wt += nd->m * (vk - nd->p[k]) * ((nd->v0[k] + nd->p[k]) * 0.5 - vref[k]);
+    }
+  }
+  return PETSC_TRUE;
+}
+
+/* A body and its crack field at node c (src/grid/crack.c): where no failed point reaches the node, they stick (one
+   velocity, their centre of mass's); else, where their volumes fill the node (the gap test), they meet along
+   n = G_I / |G_I| (the body's side's outward normal, towards the crack; on a symmetry plane its component across the
+   plane removed, as MPMContactNormalOf's) with the body's self-friction. The caller tallies the energy the node's
+   corrections took out (v^n stays each field's own: the kinetic energy fix and the FLIP increment need
+   m_I v_I^n = sum_p N_I m_p v_p per field). */
+static void MPMContactCrackPair(MPMContact *ct, MPM mpm, MPMNode *const *node, PetscInt f, PetscInt c, PetscBool gap)
+{
+  const PetscInt   d = mpm->grid.dim, b = ct->fam[f];
+  const PetscReal *G, vref[3]           = {0.0, 0.0, 0.0};
+  const char      *sep;
+  MPMNode         *nb = &node[b][c], *nt = &node[f][c];
+  const PetscReal  M = nb->m + nt->m;
+  PetscReal        vcm[3], n[3], nn = 0.0;
+
+  if (!(nb->m > 0.0) || !(nt->m > 0.0)) return;
+  (void)MPMCrackOf(mpm, b, &G, &sep);
+  for (PetscInt k = 0; k < d; k++) vcm[k] = (nb->m * nb->p[k] + nt->m * nt->p[k]) / M;
+  if (!sep[c]) {
+    for (PetscInt side = 0; side < 2; side++) {
+      MPMNode *nd = side ? nt : nb;
+      for (PetscInt k = 0; k < d; k++) nd->p[k] = vcm[k];
+    }
+    return;
+  }
+  if (!gap) return;
+  for (PetscInt k = 0; k < d; k++) {
+    n[k] = (MPMContactOnWall(mpm, c) >> k) & 1 ? 0.0 : G[c * d + k]; /* on a symmetry plane without the component across it */
+    nn += n[k] * n[k];
+  }
+  if (!(nn > 0.0)) return;
+  nn = 1.0 / PetscSqrtReal(nn);
+  for (PetscInt k = 0; k < d; k++) n[k] *= nn;
+  for (PetscInt side = 0; side < 2; side++) {
+    MPMNode  *nd = side ? nt : nb;
+    PetscReal dn, vold[3], wn, wt;
+    if (side)
+      for (PetscInt k = 0; k < d; k++) n[k] = -n[k];
+    if (!MPMContactCorrect(nd, d, n, vcm, vref, ct->mu[b][b], &dn, vold, &wn, &wt)) continue;
+    ct->friction += wt;
+    ct->nodes++;
+  }
+}
+
 static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
 {
   MPMContact    *ct = (MPMContact *)mod->data;
   const MPMGrid *g  = &mpm->grid;
   const PetscInt d = g->dim, nb = mpm->nbodies;
   MPMNode       *node[MPM_MAX_BODIES] = {NULL}, *geo[MPM_MAX_BODIES] = {NULL};
-  PetscInt       lo[MPM_MAX_DIM], hi[MPM_MAX_DIM];
+  PetscInt       lo[MPM_MAX_DIM], hi[MPM_MAX_DIM], nf;
   PetscReal      frc[MPM_MAX_BODIES][13]; /* per rigid body: the force on it; the normal forces' moments sum f_n, sum f_n x, sum f_n x_i x_j (xx yy zz xy xz yz) */
   PetscBool      anyrigid = PETSC_FALSE;
 
   PetscFunctionBegin;
-  for (PetscInt b = 0; b < nb; b++) PetscCall(VecGetArray(MPMBodyNodesVec(mpm, b), (PetscScalar **)&node[b]));
+  ct->nf = nf = MPMFieldsCount(mpm);
+  for (PetscInt i = 0; i < nf; i++) ct->slot[i] = MPMFieldSlot(mpm, i, &ct->fam[i]);
+  for (PetscInt b = 0; b < nf; b++) PetscCall(VecGetArray(MPMBodyNodesVec(mpm, ct->slot[b]), (PetscScalar **)&node[b]));
   if (!ctx->remap) PetscCall(MPMContactGeometry(ct, mpm, node));
   if (!ctx->remap && ct->nshared && ct->gap == MPM_CONTACT_GAP_SURFACE) PetscCall(MPMContactExtents(ct, mpm, node));
-  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) { /* the union of the bodies' node boxes */
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) { /* the union of the fields' node boxes */
     lo[k] = PETSC_MAX_INT;
     hi[k] = -1;
   }
-  for (PetscInt b = 0; b < nb; b++) {
+  for (PetscInt b = 0; b < nf; b++) {
     const PetscInt *blo, *bhi;
     PetscBool       empty = PETSC_FALSE;
-    MPMBodyBox(mpm, b, &blo, &bhi);
+    MPMBodyBox(mpm, ct->slot[b], &blo, &bhi);
     for (PetscInt k = 0; k < MPM_MAX_DIM; k++) empty = (PetscBool)(empty || blo[k] >= bhi[k]);
     for (PetscInt k = 0; k < MPM_MAX_DIM && !empty; k++) {
       lo[k] = PetscMin(lo[k], blo[k]);
@@ -425,7 +477,7 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
     }
     PetscCall(VecGetArray(ct->geo[b], (PetscScalar **)&geo[b]));
     for (PetscInt k = 0; k < 13; k++) frc[b][k] = 0.0;
-    anyrigid = (PetscBool)(anyrigid || ct->rigid[b]);
+    anyrigid = (PetscBool)(anyrigid || (b < nb && ct->rigid[b]));
   }
   if (anyrigid) /* a rigid body's nodes move at its velocity: v^{n+1/2} = v(t^n + dt_n/2), before the kick v^{n-1/2} */
     for (PetscInt b = 0; b < nb; b++) {
@@ -446,80 +498,119 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
               }
           }
     }
-  for (PetscInt i2 = lo[2]; ct->nshared && i2 < hi[2]; i2++) /* where the bodies share nodes */
+  for (PetscInt i2 = lo[2]; ct->nshared && i2 < hi[2]; i2++) /* where the fields share nodes */
     for (PetscInt i1 = lo[1]; i1 < hi[1]; i1++)
       for (PetscInt i0 = lo[0]; i0 < hi[0]; i0++) {
         const PetscInt c   = MPMOwnedToLocal(g, i0, i1, i2);
-        PetscInt       nin = 0, rb = -1, heavy[MPM_MAX_BODIES];
+        PetscInt       nin = 0, rb = -1, heavy[MPM_MAX_BODIES], nfam = 0, fam0 = -1;
         PetscReal      M = 0.0, P[3] = {0.0, 0.0, 0.0}, vcm[3], vref[3], Vsum = 0.0, Vnode = g->vcell;
-        for (PetscInt b = 0; b < nb; b++)
+        PetscBool      gap, crk = PETSC_FALSE; /* a crack field has mass here: the node's energy is tallied once, from its first and last velocities */
+        PetscReal      vs[MPM_MAX_BODIES][3];
+        for (PetscInt b = 0; b < nf; b++)
           if (node[b][c].m > 0.0) {
             nin++;
-            M += node[b][c].m;
             Vsum += geo[b][c].m;
-            for (PetscInt k = 0; k < d; k++) P[k] += node[b][c].m * node[b][c].p[k];
-            if (ct->rigid[b]) rb = b;
+            if (fam0 < 0 || (ct->fam[b] != fam0 && nfam < 2)) nfam++;
+            if (fam0 < 0) fam0 = ct->fam[b];
           }
         if (nin < 2) continue;
-        if (g->axisym) Vnode *= g->lo[0] + (i0 + g->xs[0]) * g->h[0];               /* per radian: r_I h_r h_z */
-        if (ct->gap == MPM_CONTACT_GAP_VOLUME && Vsum < ct->fill * Vnode) continue; /* a gap between them */
-        for (PetscInt k = 0; k < d; k++) {
-          vcm[k]  = rb >= 0 ? ct->vrigid[rb][k] : P[k] / M;
-          vref[k] = rb >= 0 ? ct->vrigid[rb][k] : 0.0; /* the frame whose kinetic energy the correction turns into heat */
+        if (g->axisym) Vnode *= g->lo[0] + (i0 + g->xs[0]) * g->h[0]; /* per radian: r_I h_r h_z */
+        for (PetscInt k = 0, w = MPMContactOnWall(mpm, c); k < d; k++)
+          if ((w >> k) & 1) Vnode *= 0.5; /* a node on a symmetry plane holds half a cell: its points' images are not summed there */
+        gap = (PetscBool)(ct->gap != MPM_CONTACT_GAP_VOLUME || Vsum >= ct->fill * Vnode);
+        for (PetscInt k = 0; k < d; k++) vref[k] = 0.0;
+        for (PetscInt f = nb; f < nf; f++) crk = (PetscBool)(crk || node[f][c].m > 0.0);
+        for (PetscInt b = 0; crk && b < nf; b++)
+          for (PetscInt k = 0; k < d; k++) vs[b][k] = node[b][c].p[k];
+        for (PetscInt f = nb; f < nf && !ctx->remap; f++) MPMContactCrackPair(ct, mpm, node, f, c, gap); /* a body and its crack field */
+        if (nfam > 1 && gap) {                                                                           /* the bodies that meet here; with a crack field, each body's fields as one (their centre of mass), so that two bodies' corrections balance */
+          MPMNode *U[MPM_MAX_BODIES], agg[MPM_MAX_BODIES];
+          PetscInt uf[MPM_MAX_BODIES], nu = 0;
+          for (PetscInt b = 0; !crk && b < nf; b++) {
+            U[nu]    = &node[b][c];
+            uf[nu++] = b;
+          }
+          for (PetscInt F = 0; crk && F < nb; F++) {
+            MPMNode *a   = &agg[nu];
+            PetscInt nin = 0;
+            PetscCall(PetscArrayzero(a, 1));
+            for (PetscInt b = 0; b < nf; b++) {
+              const MPMNode *nd = &node[b][c];
+              if (ct->fam[b] != F || !(nd->m > 0.0)) continue;
+              nin++;
+              a->m += nd->m;
+              for (PetscInt k = 0; k < d; k++) {
+                a->p[k] += nd->m * nd->p[k];
+                a->v0[k] += nd->m * nd->v0[k];
+              }
+            }
+            if (!nin) continue;
+            for (PetscInt k = 0; k < d; k++) {
+              a->p[k] /= a->m;
+              a->v0[k] /= a->m;
+            }
+            U[nu]    = a;
+            uf[nu++] = F;
+          }
+          for (PetscInt u = 0; u < nu; u++)
+            if (U[u]->m > 0.0) {
+              M += U[u]->m;
+              for (PetscInt k = 0; k < d; k++) P[k] += U[u]->m * U[u]->p[k];
+              if (uf[u] < nb && ct->rigid[uf[u]]) rb = uf[u];
+            }
+          for (PetscInt k = 0; k < d; k++) {
+            vcm[k]  = rb >= 0 ? ct->vrigid[rb][k] : P[k] / M;
+            vref[k] = rb >= 0 ? ct->vrigid[rb][k] : 0.0; /* the frame whose kinetic energy the correction turns into heat */
+          }
+          for (PetscInt u = 0; u < nu; u++) { /* each one's heaviest partner of another body at the node, whose friction coefficient it feels */
+            heavy[u] = -1;
+            for (PetscInt o = 0; o < nu; o++) {
+              const PetscBool orig = (PetscBool)(uf[o] < nb && ct->rigid[uf[o]]), hrig = (PetscBool)(heavy[u] >= 0 && uf[heavy[u]] < nb && ct->rigid[uf[heavy[u]]]);
+              if (ct->fam[uf[o]] != ct->fam[uf[u]] && U[o]->m > 0.0 && (heavy[u] < 0 || orig || (U[o]->m > U[heavy[u]]->m && !hrig))) heavy[u] = o;
+            }
+          }
+          for (PetscInt u = 0; u < nu; u++) {
+            MPMNode       *nd = U[u];
+            const PetscInt b  = uf[u];
+            PetscReal      n[3], dn, vold[3], wn, wt;
+            if (!(nd->m > 0.0) || (b < nb && ct->rigid[b]) || heavy[u] < 0) continue;
+            MPMContactNormalOf(ct, mpm, node, geo, b, c, n);
+            if (ct->gap == MPM_CONTACT_GAP_SURFACE && ct->ext[ct->fam[b]][c] + ct->ext[ct->fam[uf[heavy[u]]]][c] < -1e-9 * g->hmin) continue; /* their surfaces apart along n */
+            if (!MPMContactCorrect(nd, d, n, vcm, vref, ct->mu[ct->fam[b]][ct->fam[uf[heavy[u]]]], &dn, vold, &wn, &wt)) continue;
+            if (!crk) {
+              geo[b][c].f[0] = wn + wt; /* heats the body's points there (MPMContactHeat) */
+              ct->work += wn + wt;
+            }
+            for (PetscInt f = 0; crk && f < nf; f++) /* the body's fields take its change */
+              if (ct->fam[f] == b && node[f][c].m > 0.0)
+                for (PetscInt k = 0; k < d; k++) node[f][c].p[k] += nd->p[k] - vold[k];
+            ct->friction += wt;
+            ct->nodes++;
+            if (rb >= 0) {
+              const PetscReal fn     = nd->m * dn / ctx->kick;
+              const PetscInt  ijk[3] = {i0, i1, i2}, ij[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
+              PetscReal       x[3] = {0.0, 0.0, 0.0}; /* the node's position */
+              for (PetscInt k = 0; k < d; k++) {
+                frc[rb][k] += nd->m * (vold[k] - nd->p[k]) / ctx->kick; /* the push the rigid body gave, reversed */
+                x[k] = g->lo[k] + (ijk[k] + g->xs[k]) * g->h[k];
+              }
+              frc[rb][3] += fn;
+              for (PetscInt k = 0; k < 3; k++) frc[rb][4 + k] += fn * x[k];
+              for (PetscInt k = 0; k < 6; k++) frc[rb][7 + k] += fn * x[ij[k][0]] * x[ij[k][1]];
+            }
+          }
         }
-        for (PetscInt b = 0; b < nb; b++) { /* each body's heaviest partner at the node, whose friction coefficient it feels */
-          heavy[b] = -1;
-          for (PetscInt o = 0; o < nb; o++)
-            if (o != b && node[o][c].m > 0.0 && (heavy[b] < 0 || ct->rigid[o] || (node[o][c].m > node[heavy[b]][c].m && !ct->rigid[heavy[b]]))) heavy[b] = o;
-        }
-        for (PetscInt b = 0; b < nb; b++) {
+        for (PetscInt b = 0; crk && b < nf; b++) { /* with a crack field: each field's energy taken out from its first to its last velocity, in the frame of a rigid body there */
           MPMNode  *nd = &node[b][c];
-          PetscReal n[3], dv[3], dn = 0.0, dvt[3], t2 = 0.0, mu, vold[3], wn = 0.0, wt = 0.0;
-          if (!(nd->m > 0.0) || ct->rigid[b]) continue;
-          MPMContactNormalOf(ct, mpm, node, geo, b, c, n);
-          if (ct->gap == MPM_CONTACT_GAP_SURFACE && ct->ext[b][c] + ct->ext[heavy[b]][c] < -1e-9 * g->hmin) continue; /* their surfaces apart along n */
-          for (PetscInt k = 0; k < d; k++) {
-            dv[k] = nd->p[k] - vcm[k];
-            dn += dv[k] * n[k];
-          }
-          if (!(dn > 0.0)) continue; /* separating, or no normal */
-          mu = ct->mu[b][heavy[b]];
-          for (PetscInt k = 0; k < d; k++) {
-            dvt[k] = dv[k] - dn * n[k];
-            t2 += dvt[k] * dvt[k];
-            vold[k] = nd->p[k];
-            nd->p[k] -= dn * n[k];
-            wn += nd->m * (vold[k] - nd->p[k]) * ((nd->v0[k] + nd->p[k]) * 0.5 - vref[k]);
-          }
-          if (mu > 0.0 && t2 > 0.0) {
-            const PetscReal t = PetscSqrtReal(t2), s = PetscMin(mu * dn, t) / t;
-            for (PetscInt k = 0; k < d; k++) {
-              const PetscReal vk = nd->p[k];
-              nd->p[k] -= s * dvt[k];
-              wt += nd->m * (vk - nd->p[k]) * ((nd->v0[k] + nd->p[k]) * 0.5 - vref[k]);
-            }
-          }
-          geo[b][c].f[0] = wn + wt; /* heats the body's points there (MPMContactHeat) */
-          ct->work += wn + wt;
-          ct->friction += wt;
-          ct->nodes++;
-          if (rb >= 0) {
-            const PetscReal fn     = nd->m * dn / ctx->kick;
-            const PetscInt  ijk[3] = {i0, i1, i2}, ij[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
-            PetscReal       x[3] = {0.0, 0.0, 0.0}; /* the node's position */
-            for (PetscInt k = 0; k < d; k++) {
-              frc[rb][k] += nd->m * (vold[k] - nd->p[k]) / ctx->kick; /* the push the rigid body gave, reversed */
-              x[k] = g->lo[k] + (ijk[k] + g->xs[k]) * g->h[k];
-            }
-            frc[rb][3] += fn;
-            for (PetscInt k = 0; k < 3; k++) frc[rb][4 + k] += fn * x[k];
-            for (PetscInt k = 0; k < 6; k++) frc[rb][7 + k] += fn * x[ij[k][0]] * x[ij[k][1]];
-          }
+          PetscReal w  = 0.0;
+          for (PetscInt k = 0; k < d; k++) w += nd->m * (vs[b][k] - nd->p[k]) * ((nd->v0[k] + nd->p[k]) * 0.5 - vref[k]);
+          geo[b][c].f[0] = w;
+          ct->work += w;
         }
       }
-  for (PetscInt b = 0; b < nb; b++) PetscCall(VecRestoreArray(ct->geo[b], (PetscScalar **)&geo[b]));
+  for (PetscInt b = 0; b < nf; b++) PetscCall(VecRestoreArray(ct->geo[b], (PetscScalar **)&geo[b]));
   if (ct->nshared) PetscCall(MPMContactHeat(ct, mpm, node));
-  for (PetscInt b = 0; b < nb; b++) PetscCall(VecRestoreArray(MPMBodyNodesVec(mpm, b), (PetscScalar **)&node[b]));
+  for (PetscInt b = 0; b < nf; b++) PetscCall(VecRestoreArray(MPMBodyNodesVec(mpm, ct->slot[b]), (PetscScalar **)&node[b]));
   if (anyrigid) { /* the contact force on each rigid body, all ranks; its impulse over the kicks */
     PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &frc[0][0], 13 * MPM_MAX_BODIES, MPIU_REAL, MPIU_SUM, mpm->comm));
     for (PetscInt b = 0; b < nb; b++) {
@@ -536,8 +627,8 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
       if (!ctx->remap) ct->patch[b] = MPMContactPatch(frc[b], ct->force[b], mpm->grid.axisym);
     }
   }
-  for (PetscInt b = 0; (ct->nshared || anyrigid) && b < nb; b++) { /* the ghosts of the corrected nodes */
-    PetscCall(MPMBodySelect(mpm, b));
+  for (PetscInt b = 0; (ct->nshared || anyrigid) && b < nf; b++) { /* the ghosts of the corrected nodes */
+    PetscCall(MPMBodySelect(mpm, ct->slot[b]));
     PetscCall(MPMGridGhostFill(mpm));
   }
   PetscCall(MPMBodySelect(mpm, 0));

@@ -18,6 +18,7 @@
 
 typedef struct {
   PetscBool  bodies;                         /* -mpm_fracture_bodies: the pieces a body breaks into become bodies */
+  PetscBool  fields;                         /* -mpm_fracture_fields: crack fields (src/grid/crack.c)             */
   PetscReal  min_mass;                       /* -mpm_fracture_min_mass: the lightest piece that becomes a body, of its body's intact mass */
   PetscInt   interval;                       /* -mpm_fracture_interval: steps between looks for pieces */
   PetscReal  looked;                         /* the failed points (all ranks) at the last look */
@@ -42,6 +43,11 @@ static PetscErrorCode MPMFractureSetFromOptions(MPMModule mod, MPM mpm, PetscOpt
   PetscCall(PetscOptionsReal("-mpm_fracture_min_mass", "The lightest piece that becomes a body of its own, a fraction of its body's intact mass [-], in (0, 1]", "", fr->min_mass, &fr->min_mass, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_fracture_min_mass", fr->min_mass, 0.0, 1.0, PETSC_TRUE, PETSC_FALSE));
   PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-mpm_fracture_interval", "Steps between looks for pieces that become bodies (only steps in which points failed) [-], >= 1", &fr->interval, 1, PETSC_MAX_INT));
+  PetscCall(PetscOptionsBool("-mpm_fracture_fields",
+                             "Where a material has a damage type: a body with failed points gets a crack field, and at each node its points' shares go to the field of the side of the crack they lie on there (damage-gradient partitioning): cracks "
+                             "open and close through contact (USL with point integration)",
+                             "", fr->fields, &fr->fields, NULL));
+  if (mod->active && fr->fields && mpm->scheme == MPM_SCHEME_USL && mpm->stress_integration == MPM_STRESS_POINT && !mpm->crack) PetscCall(MPMCrackCreate(mpm));
   fr->bodies = (PetscBool)(fr->bodies && mod->active);
   if (fr->bodies) {
     mod->phase       = MPM_PHASE_POINT_END;
@@ -557,6 +563,7 @@ PetscErrorCode MPMModuleCreate_Fracture(MPMModule mod)
   fr->list                = 10;
   fr->counted             = -1;
   fr->bodies              = PETSC_FALSE;
+  fr->fields              = PETSC_TRUE;
   fr->min_mass            = 0.01;
   fr->interval            = 1;
   mod->data               = fr;

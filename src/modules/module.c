@@ -147,9 +147,9 @@ PetscErrorCode MPMModulesSettle(MPM mpm, const MPMStepContext *ctx)
   PetscFunctionBegin;
   for (MPMModule mod = mpm->modules[MPM_PHASE_GRID_VELOCITY]; mod; mod = mod->next) any = (PetscBool)(any || mod->ops.settle);
   if (!any) PetscFunctionReturn(PETSC_SUCCESS);
-  for (PetscInt b = 0; b < mpm->nbodies; b++) {
+  for (PetscInt i = 0; i < MPMFieldsCount(mpm); i++) { /* the bodies' nodes and the crack fields' */
     MPMNode *node;
-    PetscCall(MPMBodySelect(mpm, b));
+    PetscCall(MPMBodySelect(mpm, MPMFieldSlot(mpm, i, NULL)));
     PetscCall(VecGetArray(mpm->lnodes, (PetscScalar **)&node));
     for (MPMModule mod = mpm->modules[MPM_PHASE_GRID_VELOCITY]; mod; mod = mod->next)
       if (mod->ops.settle) PetscCall(mod->ops.settle(mod, mpm, ctx, node));

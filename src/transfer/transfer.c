@@ -214,9 +214,10 @@ static inline void MPMStencilOffsets(const MPMGrid *g, const PetscReal xp[], con
    compile-time flag of the same loop body, so that the reference carries no branch for them:
      AFFINE  APIC's affine velocity v_p + C_p (x_I - x_p) and its moments B_p, D_p (-mpm_update_type apic),
      HOOP    the axisymmetric hoop force -sigma_tt V_p / r_p, the hoop rate and its work (-mpm_axisymmetric),
-     BODY    a manufactured solution's body force sum_p N_I m_p b(X_p, t^n) (points to grid only).
+     BODY    a manufactured solution's body force sum_p N_I m_p b(X_p, t^n) (points to grid only),
+     CRACK   a body with a crack field: each stencil entry on the side the point lies on there (src/grid/crack.c).
    MPMScatterVariant and MPMGatherVariant name each instantiation. */
-typedef enum { MPM_GENERIC_REFERENCE = 0, MPM_GENERIC_AFFINE = 1, MPM_GENERIC_HOOP = 2, MPM_GENERIC_BODY = 4 } MPMGenericVariant;
+typedef enum { MPM_GENERIC_REFERENCE = 0, MPM_GENERIC_AFFINE = 1, MPM_GENERIC_HOOP = 2, MPM_GENERIC_BODY = 4, MPM_GENERIC_CRACK = 8 } MPMGenericVariant;
 
 /* The variant a run's generic loops take: APIC's affine part, the hoop terms of an axisymmetric grid, and (points to
    grid with the force) a manufactured body force. */
@@ -227,7 +228,8 @@ static inline PetscInt MPMGenericVariantOf(MPM mpm, PetscBool body)
 
 /* The generic scatter's point loop, with the dimension d and the variant's terms compile-time constants where
    MPMScatterVariant calls it, so that its loops over d unroll; the same operations in the same order for every d. */
-MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node, PetscReal tn, PetscBool force, PetscBool cellrule, PetscBool stress, const PetscBool AFFINE, const PetscBool HOOP, const PetscBool BODY, const PetscInt d)
+MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node, PetscReal tn, PetscBool force, PetscBool cellrule, PetscBool stress, const MPMCrackSplit *cs, const PetscBool AFFINE, const PetscBool HOOP, const PetscBool BODY,
+                                   const PetscBool CRACK, const PetscInt d)
 {
   const MPMGrid   *g = &mpm->grid;
   const PetscReal *x = pts->f[MPM_FIELD_POSITION], *v = pts->f[MPM_FIELD_VELOCITY], *m = pts->f[MPM_FIELD_MASS];
@@ -246,12 +248,15 @@ MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node,
     }
     if (HOOP && force) hoop = V[p] * (P + (stress ? S[p * d * d] + S[p * d * d + d + 1] : 0.0)) / x[p * d]; /* -sigma_tt V / r, sigma_tt = -P - (s_rr + s_zz) */
     if (BODY) mpm->exact->ops.bodyforce(mpm->exact->data, tn, &X[p * d], F ? &F[p * d * d] : NULL, b);
-    PetscReal dx[MPM_MAX_STENCIL][MPM_MAX_DIM];
+    PetscReal dx[MPM_MAX_STENCIL][MPM_MAX_DIM], gc[MPM_MAX_DIM];
+    if (CRACK && cs->keep && !cs->near[MPMGridCellNode(g, &x[p * d])]) continue; /* far from failed material: every entry is the body's */
     MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, F, ds, p, Fs), &st);
     if (AFFINE) MPMStencilOffsets(g, &x[p * d], &st, dx);
+    if (CRACK) MPMCrackPointGradient(cs->D, d, &st, cs->g2min, gc);
     for (PetscInt a = 0; a < st.n; a++) {
       MPMNode        *nd = &node[st.node[a]];
       const PetscReal wm = st.w[a] * m[p];
+      if (CRACK && MPMCrackSide(cs, d, st.node[a], gc) != cs->keep) continue; /* the other field's entry */
       nd->m += wm;
       nd->w2 += st.w[a] * st.w[a];
       if (AFFINE) /* APIC: the point's affine velocity at the node, v_p + C_p dx_a */
@@ -280,47 +285,60 @@ MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node,
 
 /* The generic scatter of one variant over the dimensions: AFFINE, HOOP and BODY compile-time constants of each
    instantiation (MPMScatterVariant passes literals); the hoop terms exist in 2D only. */
-MPM_TINLINE void MPMScatterDims(MPM mpm, const MPMPoints *pts, MPMNode *node, PetscReal tn, PetscBool force, PetscBool cellrule, PetscBool stress, const PetscBool AFFINE, const PetscBool HOOP, const PetscBool BODY)
+MPM_TINLINE void MPMScatterDims(MPM mpm, const MPMPoints *pts, MPMNode *node, PetscReal tn, PetscBool force, PetscBool cellrule, PetscBool stress, const MPMCrackSplit *cs, const PetscBool AFFINE, const PetscBool HOOP, const PetscBool BODY,
+                                const PetscBool CRACK)
 {
   const PetscInt d = mpm->grid.dim;
 
   if (HOOP || d == 2)
-    MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, AFFINE, HOOP, BODY, 2);
+    MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, cs, AFFINE, HOOP, BODY, CRACK, 2);
   else if (d == 3)
-    MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, AFFINE, PETSC_FALSE, BODY, 3);
+    MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, cs, AFFINE, PETSC_FALSE, BODY, CRACK, 3);
   else
-    MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, AFFINE, PETSC_FALSE, BODY, 1);
+    MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, cs, AFFINE, PETSC_FALSE, BODY, CRACK, 1);
 }
 
 /* The generic scatter's named variants (a sum of MPMGenericVariant flags). */
-static void MPMScatterVariant(MPM mpm, const MPMPoints *pts, MPMNode *node, PetscReal tn, PetscBool force, PetscBool cellrule, PetscBool stress, PetscInt variant)
+static void MPMScatterVariant(MPM mpm, const MPMPoints *pts, MPMNode *node, PetscReal tn, PetscBool force, PetscBool cellrule, PetscBool stress, const MPMCrackSplit *cs, PetscInt variant)
 {
   const PetscBool T = PETSC_TRUE, F = PETSC_FALSE;
 
   switch (variant) {
   case MPM_GENERIC_REFERENCE:
-    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, F, F, F);
+    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, F, F, F, F);
     break;
   case MPM_GENERIC_AFFINE:
-    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, T, F, F);
+    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, T, F, F, F);
     break;
   case MPM_GENERIC_HOOP:
-    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, F, T, F);
+    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, F, T, F, F);
     break;
   case MPM_GENERIC_HOOP | MPM_GENERIC_AFFINE:
-    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, T, T, F);
+    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, T, T, F, F);
     break;
   case MPM_GENERIC_BODY:
-    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, F, F, T);
+    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, F, F, T, F);
     break;
   case MPM_GENERIC_BODY | MPM_GENERIC_AFFINE:
-    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, T, F, T);
+    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, T, F, T, F);
     break;
   case MPM_GENERIC_BODY | MPM_GENERIC_HOOP:
-    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, F, T, T);
+    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, F, T, T, F);
     break;
-  default:
-    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, T, T, T);
+  case MPM_GENERIC_BODY | MPM_GENERIC_HOOP | MPM_GENERIC_AFFINE:
+    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, T, T, T, F);
+    break;
+  case MPM_GENERIC_CRACK:
+    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, F, F, F, T);
+    break;
+  case MPM_GENERIC_CRACK | MPM_GENERIC_AFFINE:
+    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, T, F, F, T);
+    break;
+  case MPM_GENERIC_CRACK | MPM_GENERIC_HOOP:
+    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, F, T, F, T);
+    break;
+  default: /* a manufactured body force never has a crack (crack.c: only where a material has a damage type) */
+    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, T, T, F, T);
   }
 }
 
@@ -340,8 +358,11 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
   const PetscBool stress = (PetscBool)(force && mpm->has_stress), body = (PetscBool)(force && mpm->has_bodyforce);
   MPMPoints       pts;
   MPMNode        *node;
+  MPMCrackSplit   cs;
+  const PetscBool crack = (PetscBool)(force && MPMCrackSplitOf(mpm, &cs)); /* the step's points to grid of a body with a crack field, or of the crack field */
 
   PetscFunctionBegin;
+  PetscCheck(!crack || (!cellrule && !body), mpm->comm, PETSC_ERR_PLIB, "Crack fields with the cell rule or a manufactured body force");
   PetscCall(VecGetArray(mpm->lnodes, (PetscScalar **)&node));
   if (cellrule) PetscCall(PetscArrayzero(mpm->xcell, 2 * g->nxcells));
   PetscCall(MPMPointsGetArrays(mpm, &pts));
@@ -351,7 +372,7 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
     const PetscReal *V = pts.f[MPM_FIELD_VOLUME], *pr = pts.f[MPM_FIELD_PRESSURE], *q = pts.f[MPM_FIELD_VISCOSITY];
     const PetscReal *S = pts.f[MPM_FIELD_STRESS];
 
-    if (mpm->kern && !body) { /* the specialised kernel, then the cell sums of the cell rule */
+    if (mpm->kern && !body && !crack) { /* the specialised kernel, then the cell sums of the cell rule */
       const MPMTransferArgs A = {.n    = pts.n,
                                  .x    = (PetscReal *)x,
                                  .v    = (PetscReal *)v,
@@ -373,7 +394,7 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
       else if (cellrule)
         MPMCellRuleAddFull(mpm, pts.n, x, V, pr, q, 3);
     } else
-      MPMScatterVariant(mpm, &pts, node, tn, force, cellrule, stress, MPMGenericVariantOf(mpm, body));
+      MPMScatterVariant(mpm, &pts, node, tn, force, cellrule, stress, crack ? &cs : NULL, MPMGenericVariantOf(mpm, body) | (crack ? MPM_GENERIC_CRACK : 0));
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   if (cellrule) { /* f_I += V_c P_c grad N_I(x_c): full, h^d times the cell's mean P; points, the shares' sum (V P)_c, linear in them, so a rank adds its own */
@@ -433,7 +454,8 @@ static void MPMAffineFromMoments(const MPMGrid *g, const PetscReal B[], PetscRea
 
 /* The generic gather's point loop (the reference the specialised kernels reproduce), with the dimension d a constant
    where MPMGather calls it, so that its loops over d unroll; the same operations in the same order for every d. */
-MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPoints *pts, const MPMNode *node, PetscBool velocity, PetscBool kinematics, PetscBool work, const PetscBool AFFINE, const PetscBool HOOP, const PetscInt d)
+MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPoints *pts, const MPMNode *node, PetscBool velocity, PetscBool kinematics, PetscBool work, const PetscBool AFFINE, const PetscBool HOOP, const PetscBool CRACK,
+                                  const PetscInt d)
 {
   const MPMGrid   *g     = &mpm->grid;
   const PetscReal  alpha = A->alpha, dt = A->dt;
@@ -448,12 +470,13 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
     PetscReal Lbtt                          = 0.0;                                      /* axisymmetric: the hoop rate of vbar, sum N (2 v_I - dv_I)_r / r_p */
     PetscReal Bm[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Dm[MPM_MAX_DIM * MPM_MAX_DIM] = {0}; /* APIC's moments */
     PetscReal Cdv = 0.0;                                                                /* APIC: sum N (C_p (x_I - x_p)) . dv_I */
-    PetscReal dx[MPM_MAX_STENCIL][MPM_MAX_DIM];
+    PetscReal dx[MPM_MAX_STENCIL][MPM_MAX_DIM], gc[MPM_MAX_DIM];
     MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, A->F, A->ds, p, Fs), &st);
     if (AFFINE && velocity) MPMStencilOffsets(g, &x[p * d], &st, dx);
+    if (CRACK) MPMCrackPointGradient(A->crack->D, d, &st, A->crack->g2min, gc);
     for (PetscInt a = 0; a < st.n; a++) {
-      const MPMNode *nd              = &node[st.node[a]];
-      PetscReal      Cx[MPM_MAX_DIM] = {0, 0, 0}; /* APIC: the point's affine velocity at the node less v_p, C_p (x_I - x_p) */
+      const MPMNode *nd              = CRACK && MPMCrackSide(A->crack, d, st.node[a], gc) ? &A->crack->alt[st.node[a]] : &node[st.node[a]]; /* the entry's side's field */
+      PetscReal      Cx[MPM_MAX_DIM] = {0, 0, 0};                                                                                           /* APIC: the point's affine velocity at the node less v_p, C_p (x_I - x_p) */
       if (AFFINE && velocity)
         for (PetscInt i = 0; i < d; i++)
           for (PetscInt j = 0; j < d; j++) {
@@ -517,16 +540,16 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
 }
 
 /* The generic gather of one variant over the dimensions, as MPMScatterDims. */
-MPM_TINLINE void MPMGatherDims(MPM mpm, const MPMTransferArgs *A, const MPMPoints *pts, const MPMNode *node, PetscBool velocity, PetscBool kinematics, PetscBool work, const PetscBool AFFINE, const PetscBool HOOP)
+MPM_TINLINE void MPMGatherDims(MPM mpm, const MPMTransferArgs *A, const MPMPoints *pts, const MPMNode *node, PetscBool velocity, PetscBool kinematics, PetscBool work, const PetscBool AFFINE, const PetscBool HOOP, const PetscBool CRACK)
 {
   const PetscInt d = mpm->grid.dim;
 
   if (HOOP || d == 2)
-    MPMGatherGeneric(mpm, A, pts, node, velocity, kinematics, work, AFFINE, HOOP, 2);
+    MPMGatherGeneric(mpm, A, pts, node, velocity, kinematics, work, AFFINE, HOOP, CRACK, 2);
   else if (d == 3)
-    MPMGatherGeneric(mpm, A, pts, node, velocity, kinematics, work, AFFINE, PETSC_FALSE, 3);
+    MPMGatherGeneric(mpm, A, pts, node, velocity, kinematics, work, AFFINE, PETSC_FALSE, CRACK, 3);
   else
-    MPMGatherGeneric(mpm, A, pts, node, velocity, kinematics, work, AFFINE, PETSC_FALSE, 1);
+    MPMGatherGeneric(mpm, A, pts, node, velocity, kinematics, work, AFFINE, PETSC_FALSE, CRACK, 1);
 }
 
 /* The generic gather's named variants (MPMGenericVariant flags but BODY). */
@@ -534,18 +557,30 @@ static void MPMGatherVariant(MPM mpm, const MPMTransferArgs *A, const MPMPoints 
 {
   const PetscBool T = PETSC_TRUE, F = PETSC_FALSE;
 
-  switch (variant & (MPM_GENERIC_AFFINE | MPM_GENERIC_HOOP)) {
+  switch (variant & (MPM_GENERIC_AFFINE | MPM_GENERIC_HOOP | MPM_GENERIC_CRACK)) {
   case MPM_GENERIC_REFERENCE:
-    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, F, F);
+    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, F, F, F);
     break;
   case MPM_GENERIC_AFFINE:
-    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, T, F);
+    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, T, F, F);
     break;
   case MPM_GENERIC_HOOP:
-    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, F, T);
+    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, F, T, F);
+    break;
+  case MPM_GENERIC_HOOP | MPM_GENERIC_AFFINE:
+    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, T, T, F);
+    break;
+  case MPM_GENERIC_CRACK:
+    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, F, F, T);
+    break;
+  case MPM_GENERIC_CRACK | MPM_GENERIC_AFFINE:
+    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, T, F, T);
+    break;
+  case MPM_GENERIC_CRACK | MPM_GENERIC_HOOP:
+    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, F, T, T);
     break;
   default:
-    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, T, T);
+    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, T, T, T);
   }
 }
 
@@ -582,9 +617,13 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
   MPMPoints       pts;
   MPMNode        *node; /* read, and with remap f_I written */
   PetscReal      *pointwork = NULL;
+  MPMCrackSplit   cs;
+  const PetscBool crack = MPMCrackSplitOf(mpm, &cs); /* a body with a crack field: each entry from its side's field */
 
   PetscFunctionBegin;
   PetscCheck(!remap || (mpm->kern && velocity && !kinematics), mpm->comm, PETSC_ERR_PLIB, "The remap's momentum is fused only into a specialised velocity gather");
+  PetscCheck(!crack || (!remap && cs.keep == 0), mpm->comm, PETSC_ERR_PLIB, "Crack fields with the MUSL remap, or a gather to a crack field");
+  if (crack) PetscCall(VecGetArrayRead(MPMBodyNodesVec(mpm, cs.twin), (const PetscScalar **)&cs.alt));
   if (remap)
     PetscCall(VecGetArray(mpm->lnodes, (PetscScalar **)&node));
   else
@@ -643,14 +682,16 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
                                 .wfac      = wfac,
                                 .expand    = MPMExpansionWork,
                                 .ectx      = &ex,
-                                .threshold = mpm->isentrope_threshold};
+                                .threshold = mpm->isentrope_threshold,
+                                .crack     = crack ? &cs : NULL};
     if (remap) { /* f_I, zeroed by the kick (MPMGridAdvance, and the ghosts from their owners), takes the remap's momenta (MPMRemapApply) */
       mpm->kern->g2p_remap[work ? MPM_G2P_MODE_VELOCITY_WORK : MPM_G2P_MODE_VELOCITY](g, mpm->shape->data, &A, node);
-    } else if (mpm->kern) {
+    } else if (mpm->kern && !crack) {
       mpm->kern->g2p[(velocity ? MPM_G2P_VELOCITY : 0) | (kinematics ? MPM_G2P_KINEMATICS : 0) | (work ? MPM_G2P_WORK : 0)](g, mpm->shape->data, &A, node);
     } else
-      MPMGatherVariant(mpm, &A, &pts, node, velocity, kinematics, work, MPMGenericVariantOf(mpm, PETSC_FALSE));
+      MPMGatherVariant(mpm, &A, &pts, node, velocity, kinematics, work, MPMGenericVariantOf(mpm, PETSC_FALSE) | (crack ? MPM_GENERIC_CRACK : 0));
   }
+  if (crack) PetscCall(VecRestoreArrayRead(MPMBodyNodesVec(mpm, cs.twin), (const PetscScalar **)&cs.alt));
   PetscCall(PetscFree(pointwork));
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   if (remap)

@@ -58,9 +58,10 @@ typedef struct {
   PetscBool        kefix, stress;                                         /* kinetic-energy fix; the stress enters the work               */
   PetscReal        dt, wfac;                                              /* step, half the kick (the work's time factor)                 */
   PetscReal (*expand)(void *, PetscInt, PetscReal, PetscReal, PetscReal); /* (ctx, p, e_p, eps, linear work) -> the pressure's work along the isentrope; NULL: always linear */
-  void     *ectx;
-  PetscReal threshold; /* relative expansion over the kick above which expand takes the pressure's work [-] */
-  PetscBool runs;      /* points to grid by runs of same-cell points (seeded with several points per cell) */
+  void                *ectx;
+  PetscReal            threshold; /* relative expansion over the kick above which expand takes the pressure's work [-] */
+  PetscBool            runs;      /* points to grid by runs of same-cell points (seeded with several points per cell) */
+  const MPMCrackSplit *crack;     /* generic grid to points: the body's crack field, read by each entry's side (src/grid/crack.c), or NULL */
 } MPMTransferArgs;
 
 /* The point's force matrix -V_p sigma_p = V_p ((p + q) I - s_p) (d x d, row major) in place of its deviatoric stress
