@@ -39,28 +39,31 @@ static const char *const MPMContactGaps[] = {"surface", "volume", "none", "MPMCo
 typedef struct {
   PetscReal        mu[MPM_MAX_BODIES][MPM_MAX_BODIES]; /* Coulomb friction coefficient of each pair of bodies [-] */
   MPMContactNormal normal;
-  MPMContactGap    gap;                        /* -mpm_contact_gap                                   */
-  PetscReal        fill;                       /* -mpm_contact_fill: the volume gap test's fraction f [-] */
-  PetscReal       *ext[MPM_MAX_BODIES];        /* surface gap test, per local node: max_p (x_p . n_b + a_p) over the body's points there [cm] */
-  PetscBool        rigid[MPM_MAX_BODIES];      /* -body_<b>_rigid_velocity given                  */
-  MPMTable         vtab[MPM_MAX_BODIES];       /* its velocity over time (-body_<b>_rigid_velocity[_times]) [cm/s] */
-  PetscReal        vrigid[MPM_MAX_BODIES][3];  /* its velocity in this kick, v(t^n + dt_n / 2) [cm/s] */
-  Vec              geo[MPM_MAX_BODIES];        /* per body, ghosted local nodes: m = sum N V_p, p = grad m (MPMNode layout) */
-  PetscInt         gid;                        /* the grid the vectors were made for (MPMGrid::id)   */
-  char            *shared;                     /* per local node: two or more bodies have mass there */
-  char            *near;                       /* per local node: a shared node within the ghost width sw (a point whose cell starts there may reach one) */
-  PetscInt        *cand, ncand, maxcand;       /* the local points whose stencil reaches a shared node */
-  PetscInt         nshared;                    /* shared nodes on all ranks this step (0: the bodies are apart) */
-  PetscReal        work, friction;             /* energy the corrections took out of the grid, its frictional part, this rank [erg] */
-  PetscReal        impulse[MPM_MAX_BODIES][3]; /* integral of the contact force on each rigid body, this rank [dyn s] */
-  PetscReal        force[MPM_MAX_BODIES][3];   /* the contact force on each rigid body in the last kick, all ranks [dyn] */
-  PetscReal        fmax[MPM_MAX_BODIES];       /* the largest |force| so far [dyn] */
-  PetscReal        patch[MPM_MAX_BODIES];      /* the rms radius of the normal forces on it in the last kick, across the force [cm] */
-  PetscReal        rwork;                      /* the work the moving rigid bodies did on the others, all ranks [erg] */
-  PetscInt         nodes;                      /* node-corrections made, this rank */
-  PetscInt         nf;                         /* the nodal fields this step: the bodies, then the crack fields (src/grid/crack.c) */
-  PetscInt         slot[MPM_MAX_BODIES];       /* per field: its MPM::bnodes slot                                  */
-  PetscInt         fam[MPM_MAX_BODIES];        /* per field: its body (a crack field's is the body it splits)      */
+  MPMContactGap    gap;                                                          /* -mpm_contact_gap                                   */
+  PetscReal        fill;                                                         /* -mpm_contact_fill: the volume gap test's fraction f [-] */
+  PetscReal       *ext[MPM_MAX_BODIES];                                          /* surface gap test, per local node: max_p (x_p . n_b + a_p) over the body's points there [cm] */
+  PetscBool        rigid[MPM_MAX_BODIES];                                        /* -body_<b>_rigid_velocity given                  */
+  MPMTable         vtab[MPM_MAX_BODIES];                                         /* its velocity over time (-body_<b>_rigid_velocity[_times]) [cm/s] */
+  PetscReal        vrigid[MPM_MAX_BODIES][3];                                    /* its velocity in this kick, v(t^n + dt_n / 2) [cm/s] */
+  Vec              geo[MPM_MAX_BODIES];                                          /* per body, ghosted local nodes: m = sum N V_p, p = grad m (MPMNode layout) */
+  PetscInt         gid;                                                          /* the grid the vectors were made for (MPMGrid::id)   */
+  char            *shared;                                                       /* per local node: two or more bodies have mass there */
+  char            *near;                                                         /* per local node: a shared node within the ghost width sw (a point whose cell starts there may reach one) */
+  PetscInt        *cand, ncand, maxcand;                                         /* the local points whose stencil reaches a shared node */
+  PetscInt         nshared;                                                      /* shared nodes on all ranks this step (0: the bodies are apart) */
+  PetscReal        work, friction;                                               /* energy the corrections took out of the grid, its frictional part, this rank [erg] */
+  PetscReal        impulse[MPM_MAX_BODIES][3];                                   /* integral of the contact force on each rigid body, this rank [dyn s] */
+  PetscReal        force[MPM_MAX_BODIES][3];                                     /* the contact force on each rigid body in the last kick, all ranks [dyn] */
+  PetscReal        fmax[MPM_MAX_BODIES];                                         /* the largest |force| so far [dyn] */
+  PetscReal        patch[MPM_MAX_BODIES];                                        /* the rms radius of the normal forces on it in the last kick, across the force [cm] */
+  PetscReal        rwork;                                                        /* the work the moving rigid bodies did on the others, all ranks [erg] */
+  PetscInt         nodes;                                                        /* node-corrections made, this rank */
+  PetscInt         nf;                                                           /* the nodal fields this step: the bodies, then the crack fields (src/grid/crack.c) */
+  PetscInt         slot[MPM_MAX_BODIES];                                         /* per field: its MPM::bnodes slot                                  */
+  PetscInt         fam[MPM_MAX_BODIES];                                          /* per field: its body (a crack field's is the body it splits)      */
+  PetscInt         nbz;                                                          /* the bodies when the crack fields' geometry was last zeroed      */
+  PetscInt        *wl[MPM_MAX_BODIES], nwl[MPM_MAX_BODIES], mwl[MPM_MAX_BODIES]; /* one rank: per body, the nodes its geometry was summed into last (zeroed next, not the whole vector) */
+  char            *wmark;                                                        /* one rank: per local node, in the list being built            */
 } MPMContact;
 
 static PetscErrorCode MPMContactSetFromOptions(MPMModule mod, MPM mpm, PetscOptionItems *PetscOptionsObject)
@@ -130,9 +133,13 @@ static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const
     for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) {
       PetscCall(VecDestroy(&ct->geo[b]));
       if (b < nf) PetscCall(DMCreateLocalVector(mpm->da, &ct->geo[b]));
+      if (b < nf) PetscCall(VecZeroEntries(ct->geo[b]));
     }
     PetscCall(PetscFree2(ct->shared, ct->near));
     PetscCall(PetscMalloc2(nloc, &ct->shared, nloc, &ct->near));
+    PetscCall(PetscFree(ct->wmark));
+    PetscCall(PetscCalloc1(nloc, &ct->wmark));
+    for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) ct->nwl[b] = 0; /* the new vectors are zero */
     for (PetscInt b = 0; b < nb; b++) {
       PetscCall(PetscFree(ct->ext[b]));
       if (ct->gap == MPM_CONTACT_GAP_SURFACE) PetscCall(PetscMalloc1(nloc, &ct->ext[b]));
@@ -140,7 +147,10 @@ static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const
     ct->gid = mpm->grid.id;
   }
   for (PetscInt b = 0; b < nf; b++) { /* a body added during the run (a piece a body broke into, fracture.c), a crack field */
-    if (!ct->geo[b]) PetscCall(DMCreateLocalVector(mpm->da, &ct->geo[b]));
+    if (!ct->geo[b]) {
+      PetscCall(DMCreateLocalVector(mpm->da, &ct->geo[b]));
+      PetscCall(VecZeroEntries(ct->geo[b]));
+    }
     if (!ct->ext[b] && ct->gap == MPM_CONTACT_GAP_SURFACE && b < nb) PetscCall(PetscMalloc1(nloc, &ct->ext[b]));
   }
   for (PetscInt c = 0; c < nloc; c++) { /* the shared nodes, ghosts included */
@@ -153,12 +163,17 @@ static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const
   ct->ncand = 0;
   if (!ct->nshared) PetscFunctionReturn(PETSC_SUCCESS); /* the bodies are apart: nothing to correct this step */
   PetscCall(MPMGridDilate(&mpm->grid, ct->shared, ct->near));
-  for (PetscInt b = nb; b < nf; b++) PetscCall(VecZeroEntries(ct->geo[b])); /* a crack field has no points: its body's geometry stands for it */
+  for (PetscInt b = nb; b < nf && ct->nbz != nb; b++)
+    PetscCall(VecZeroEntries(ct->geo[b])); /* a crack field has no points (its body's geometry stands for it): zero but for the heat, which MPMContactHeat clears; again where a body added in the run took its index */
+  ct->nbz = nb;
   for (PetscInt b = 0; b < nb; b++) {
     MPMNode  *geo;
     MPMPoints pts;
-    PetscCall(VecZeroEntries(ct->geo[b]));
+    PetscBool list = (PetscBool)!mpm->ghost_sf; /* one rank: only the nodes the last sum wrote hold values */
+    if (!list) PetscCall(VecZeroEntries(ct->geo[b]));
     PetscCall(VecGetArray(ct->geo[b], (PetscScalar **)&geo));
+    for (PetscInt i = 0; list && i < ct->nwl[b]; i++) PetscCall(PetscArrayzero(&geo[ct->wl[b][i]], 1));
+    ct->nwl[b] = 0;
     PetscCall(MPMBodyWindow(mpm, b));
     PetscCall(MPMPointsGetArrays(mpm, &pts));
     for (PetscInt p = 0; p < pts.n; p++) {
@@ -183,8 +198,21 @@ static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const
         MPMNode *nd = &geo[st.node[a]];
         nd->m += st.w[a] * V;
         for (PetscInt k = 0; k < d; k++) nd->p[k] += st.s[a][k] * m * st.dw[a][k];
+        if (list && !ct->wmark[st.node[a]]) {
+          if (ct->nwl[b] == ct->mwl[b]) {
+            PetscInt *w2;
+            ct->mwl[b] = PetscMax(1024, 2 * ct->mwl[b]);
+            PetscCall(PetscMalloc1(ct->mwl[b], &w2));
+            PetscCall(PetscArraycpy(w2, ct->wl[b], ct->nwl[b]));
+            PetscCall(PetscFree(ct->wl[b]));
+            ct->wl[b] = w2;
+          }
+          ct->wmark[st.node[a]]   = 1;
+          ct->wl[b][ct->nwl[b]++] = st.node[a];
+        }
       }
     }
+    for (PetscInt i = 0; list && i < ct->nwl[b]; i++) ct->wmark[ct->wl[b][i]] = 0;
     PetscCall(MPMPointsRestoreArrays(mpm, &pts));
     PetscCall(MPMGhostExchange(mpm, mpm->node_type, (PetscScalar *)geo, PETSC_TRUE, PETSC_TRUE));
     PetscCall(VecRestoreArray(ct->geo[b], (PetscScalar **)&geo));
@@ -232,7 +260,8 @@ static PetscErrorCode MPMContactHeat(MPMContact *ct, MPM mpm, MPMNode *const *no
   for (PetscInt b = 0; b < ct->nf; b++) {
     PetscInt n;
     PetscCall(VecGetLocalSize(ct->geo[b], &n));
-    for (PetscInt c = 0; c < n / MPM_NODE_DOF; c++) geo[b][c].f[0] = 0.0;
+    for (PetscInt c = 0; c < n / MPM_NODE_DOF; c++) /* E was set at shared nodes only (their ghosts filled from their owners) */
+      if (ct->shared[c]) geo[b][c].f[0] = 0.0;
     PetscCall(VecRestoreArray(ct->geo[b], (PetscScalar **)&geo[b]));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -743,6 +772,8 @@ static PetscErrorCode MPMContactDestroy(MPMModule mod)
   PetscCall(PetscFree2(ct->shared, ct->near));
   PetscCall(PetscFree(ct->cand));
   for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) PetscCall(PetscFree(ct->ext[b]));
+  for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) PetscCall(PetscFree(ct->wl[b]));
+  PetscCall(PetscFree(ct->wmark));
   PetscCall(PetscFree(mod->data));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
