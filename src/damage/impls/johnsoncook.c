@@ -29,11 +29,15 @@ static PetscReal MPMDamageFailureStrain_JC(void *ctx, PetscReal eta, PetscReal r
 
 static PetscReal MPMDamageIncrement_JC(void *ctx, PetscInt d, PetscReal dt, const PetscReal s[], PetscReal p, PetscReal depsp, PetscReal T, PetscReal w)
 {
-  PetscReal seq, epsf;
+  PetscReal seq, eta, epsf;
 
   if (!(depsp > 0.0)) return 0.0;
-  seq  = MPMVonMisesStress(d, s);
-  epsf = w * MPMDamageFailureStrain_JC(ctx, seq > 0.0 ? -p / seq : 0.0, dt > 0.0 ? depsp / dt : 0.0, T);
+  seq = MPMVonMisesStress(d, s);
+  /* eta = -p / sigma_eq, and its limit where sigma_eq = 0 (a melted point flowing without strength): -inf in compression
+     (eps_f infinite, no damage), +inf in tension (eps_f = D1 (...)). Taking 0 there, the shear value, made the
+     increment jump between a round-off sigma_eq of 1e-6 dyn/cm^2 and an exact 0, and the damage depend on the rank count. */
+  eta  = seq > 0.0 ? -p / seq : (p > 0.0 ? PETSC_NINFINITY : (p < 0.0 ? PETSC_INFINITY : 0.0));
+  epsf = w * MPMDamageFailureStrain_JC(ctx, eta, dt > 0.0 ? depsp / dt : 0.0, T);
   return epsf > 0.0 ? depsp / epsf : 1.0;
 }
 
