@@ -6,7 +6,7 @@
    (Bardenhagen, Brackbill & Sulsky, CMAME 187 (2000) 529): a node moving into it loses its normal velocity v_n and
    friction takes at most mu |v_n| of its tangential velocity, v_t <- v_t max(0, 1 - mu |v_n| / |v_t|); a node moving
    away separates. Symmetry planes act first; friction acts in the kick only, and the MUSL remap holds and frees the
-   contact nodes as the kick did (MPMWallPass). Friction's work, m_I (v* - v_t) . (v_I^n + v_t) / 2 per node [erg]
+   contact nodes as the kick did (MPMWallPass). Friction's work, m_I (v* - v_t) . (v_I^n + v_I^{n+1/2}) / 2 per node [erg] with the velocity the kick ends with (MPMWallsSettle, after damping and contact)
    (v* the tangential velocity before friction), left the system: the report adds it back (friction_work).
    Why and what it measured: docs/modules.md. */
 #include "core/petmpmimpl.h"
@@ -19,6 +19,7 @@
 typedef struct {
   PetscReal  mu, *work;
   PetscBool *held;
+  PetscReal *J; /* the kick: per contact node, friction's impulse m_I (v* - v) [g cm/s], d values (its work waits for MPMModulesSettle) */
   PetscInt   n;
   PetscBool  remap;
 } MPMWallPass;
@@ -28,6 +29,8 @@ typedef struct {
   PetscInt   n;
   PetscBool *held;
   PetscReal  friction_work;
+  PetscReal *J[MPM_MAX_BODIES]; /* per field (its MPM::bnodes slot): the kick's impulses, MPMWallPass::J */
+  PetscInt   nJ[MPM_MAX_BODIES];
 } MPMWalls;
 
 /* Calls fn on every owned node in the plane of local index ik of direction k (side -1: the lower face, +1: the upper). */
@@ -71,7 +74,7 @@ static void MPMWallNode(MPMNode *nd, PetscInt d, PetscInt k, PetscInt side, MPMW
 }
 
 /* A frictional wall: a contact. In the kick a node moving into it is held: it loses its normal velocity and, by
-   friction, at most mu times that of its tangential velocity (pass->work: the energy friction took); a node moving away
+   friction, at most mu times that of its tangential velocity (pass->J: the impulse friction took); a node moving away
    separates. The MUSL remap holds and frees the nodes as the kick did, without friction. */
 static void MPMWallContactNode(MPMNode *nd, PetscInt d, PetscInt k, PetscInt side, MPMWallPass *pass)
 {
@@ -79,8 +82,11 @@ static void MPMWallContactNode(MPMNode *nd, PetscInt d, PetscInt k, PetscInt sid
   const PetscBool held = pass->remap ? pass->held[pass->n] : (PetscBool)(vn >= 0.0);
   PetscReal       vt   = 0.0;
 
+  PetscReal *J = pass->remap ? NULL : &pass->J[pass->n * d];
+
   if (!pass->remap) pass->held[pass->n] = held;
   pass->n++;
+  for (PetscInt j = 0; J && j < d; j++) J[j] = 0.0;
   if (!held) return;
   for (PetscInt j = 0; j < d; j++)
     if (j != k) vt += nd->p[j] * nd->p[j];
@@ -91,7 +97,7 @@ static void MPMWallContactNode(MPMNode *nd, PetscInt d, PetscInt k, PetscInt sid
       {
         const PetscReal vs = nd->p[j];
         nd->p[j]           = (1.0 - lambda) * vs;
-        *pass->work += nd->m * (vs - nd->p[j]) * (nd->v0[j] + nd->p[j]) * 0.5;
+        J[j]               = nd->m * (vs - nd->p[j]);
       }
     }
   }
@@ -101,7 +107,7 @@ static void MPMWallContactNode(MPMNode *nd, PetscInt d, PetscInt k, PetscInt sid
 static PetscErrorCode MPMWallsApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *node)
 {
   MPMWalls      *w    = (MPMWalls *)mod->data;
-  MPMWallPass    pass = {0.0, &w->friction_work, NULL, 0, ctx->remap};
+  MPMWallPass    pass = {0.0, &w->friction_work, NULL, NULL, 0, ctx->remap};
   const PetscInt n    = MPMWallFacesEach(mpm, node, PETSC_TRUE, &pass, NULL); /* contact nodes on this rank */
 
   PetscFunctionBegin;
@@ -113,8 +119,34 @@ static PetscErrorCode MPMWallsApply(MPMModule mod, MPM mpm, const MPMStepContext
     PetscCall(PetscMalloc1(n, &w->held));
     w->n = n;
   }
+  if (!ctx->remap && w->nJ[mpm->body] < n * mpm->grid.dim) {
+    PetscCall(PetscFree(w->J[mpm->body]));
+    PetscCall(PetscMalloc1(n * mpm->grid.dim, &w->J[mpm->body]));
+    w->nJ[mpm->body] = n * mpm->grid.dim;
+  }
   pass.held = w->held;
+  pass.J    = w->J[mpm->body];
   MPMWallFacesEach(mpm, node, PETSC_TRUE, &pass, MPMWallContactNode); /* friction acts in the kick only */
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Friction's work at one contact node: its impulse J with the velocity the kick ended with, J . (v_I^n + v_I^{n+1/2}) / 2. */
+static void MPMWallSettleNode(MPMNode *nd, PetscInt d, PetscInt k, PetscInt side, MPMWallPass *pass)
+{
+  const PetscReal *J = &pass->J[pass->n++ * d];
+
+  for (PetscInt j = 0; j < d; j++)
+    if (J[j] != 0.0) *pass->work += J[j] * (nd->v0[j] + nd->p[j]) * 0.5;
+}
+
+/* After the kick's contact (MPMModulesSettle): friction's work with the final velocities, in the kick's node order. */
+static PetscErrorCode MPMWallsSettle(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *node)
+{
+  MPMWalls   *w    = (MPMWalls *)mod->data;
+  MPMWallPass pass = {0.0, &w->friction_work, NULL, w->J[mpm->body], 0, PETSC_FALSE};
+
+  PetscFunctionBegin;
+  if (pass.J) MPMWallFacesEach(mpm, node, PETSC_TRUE, &pass, MPMWallSettleNode);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -155,6 +187,7 @@ static PetscErrorCode MPMWallsDestroy(MPMModule mod)
 {
   PetscFunctionBegin;
   PetscCall(PetscFree(((MPMWalls *)mod->data)->held));
+  for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) PetscCall(PetscFree(((MPMWalls *)mod->data)->J[b]));
   PetscCall(PetscFree(mod->data));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -170,6 +203,7 @@ PetscErrorCode MPMModuleCreate_Walls(MPMModule mod)
   mod->active         = PETSC_TRUE; /* until set-up */
   mod->ops.setup      = MPMWallsSetUp;
   mod->ops.apply      = MPMWallsApply;
+  mod->ops.settle     = MPMWallsSettle;
   mod->ops.report     = MPMWallsReport;
   mod->ops.checkpoint = MPMWallsCheckpoint;
   mod->ops.destroy    = MPMWallsDestroy;
