@@ -68,6 +68,7 @@ struct _n_MPMCrack {
   PetscInt      twin[MPM_MAX_BODIES];   /* body b's crack field (its MPM::bnodes slot), -1: none yet */
   PetscInt      parent[MPM_MAX_BODIES]; /* per slot: the body of a crack field, -1 for the others     */
   PetscLogEvent ev;                     /* -log_view: MPMCrackFields (MPMCrackUpdate)              */
+  PetscBool     full;                   /* a body found no free slot for its crack field (warned once) */
   PetscInt      ntwin;                  /* crack fields in the run: slots MPM_MAX_BODIES - 1 down    */
   PetscInt      gid, nloc;              /* the grid the arrays below were made for, its local nodes  */
   PetscReal    *D[MPM_MAX_BODIES];      /* per body with a crack field, per local node: D_I          */

@@ -196,7 +196,11 @@ PetscErrorCode MPMCrackUpdate(MPM mpm)
     if (!failed[b]) continue;
     if (failed[b] == 1) {
       s = MPM_MAX_BODIES - 1 - ck->ntwin;
-      PetscCheck(s >= nb, mpm->comm, PETSC_ERR_SUP, "Body %s: a crack field needs a free body slot (%d at most, bodies and crack fields together)", mpm->bodyname[b], MPM_MAX_BODIES);
+      if (s < nb) { /* every slot taken (bodies and crack fields, MPM_MAX_BODIES together): the body stays on one field */
+        if (!ck->full) PetscCall(PetscPrintf(mpm->comm, "petmpm: warning: body %s has failed points but no free body slot for a crack field (%d bodies and crack fields at most): its cracks stay on one field\n", mpm->bodyname[b], MPM_MAX_BODIES));
+        ck->full = PETSC_TRUE;
+        continue;
+      }
       ck->twin[b]   = s;
       ck->parent[s] = b;
       ck->ntwin++;

@@ -405,7 +405,7 @@ static PetscErrorCode MPMFractureApply(MPMModule mod, MPM mpm, const MPMStepCont
       const PetscInt s = order[i], b = sbody[s];
       if (!kept[b])
         kept[b] = PETSC_TRUE;
-      else if (mset[s] >= fr->min_mass * mbody[b] && first + nnew < MPM_MAX_BODIES) {
+      else if (mset[s] >= fr->min_mass * mbody[b] && first + nnew < MPM_MAX_BODIES - (MPMFieldsCount(mpm) - mpm->nbodies)) { /* the slots the crack fields leave */
         newb[s]           = (PetscReal)(first + nnew);
         newparent[nnew++] = b;
       }
