@@ -346,7 +346,7 @@ static PetscErrorCode MPMContactExtents(MPMContact *ct, MPM mpm, MPMNode *const 
   }
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   for (PetscInt i = 0; i < ct->ncand; i++) {
-    const PetscInt   p = ct->cand[i], b = (PetscInt)pts.f[MPM_FIELD_BODY][p];
+    const PetscInt   p = ct->cand[i], b = pts.f[MPM_FIELD_BODY] ? (PetscInt)pts.f[MPM_FIELD_BODY][p] : 0; /* one body with a crack field: no body field */
     const PetscReal *x = &pts.f[MPM_FIELD_POSITION][p * d];
     PetscReal        Fs[MPM_MAX_DIM * MPM_MAX_DIM];
     MPMStencil       st;
@@ -449,11 +449,11 @@ static void MPMContactCrackPair(MPMContact *ct, MPM mpm, MPMNode *const *node, P
   if (!(nb->m > 0.0) || !(nt->m > 0.0)) return;
   (void)MPMCrackOf(mpm, b, &G, &sep);
   for (PetscInt k = 0; k < d; k++) vcm[k] = (nb->m * nb->p[k] + nt->m * nt->p[k]) / M;
-  if (!sep[c]) {
-    for (PetscInt side = 0; side < 2; side++) {
-      MPMNode *nd = side ? nt : nb;
-      for (PetscInt k = 0; k < d; k++) nd->p[k] = vcm[k];
-    }
+  if (!sep[c]) { /* but across a wall: a frictional wall held one field there (v, v^n zero along its normal) and may have freed the other */
+    const PetscInt w = MPMContactOnWall(mpm, c);
+    for (PetscInt k = 0; k < d; k++)
+      if (!((w >> k) & 1)) nb->p[k] = nt->p[k] = vcm[k];
+    ct->nodes++;
     return;
   }
   if (!gap) return;

@@ -49,16 +49,32 @@ static PetscErrorCode MPMLoadSetFromOptions(MPMModule mod, MPM mpm, PetscOptionI
 static PetscErrorCode MPMLoadApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *node)
 {
   MPMLoad       *ld = (MPMLoad *)mod->data;
-  const PetscInt d = mpm->grid.dim, b = mpm->body;
+  const PetscInt d = mpm->grid.dim, b = mpm->body < mpm->nbodies ? mpm->body : mpm->crack->parent[mpm->body];
   PetscReal      MP[4] = {0.0, 0.0, 0.0, 0.0}, *F = ld->now[b], a[3], FP = 0.0;
 
   PetscFunctionBegin;
   if (!ld->loaded[b]) PetscFunctionReturn(PETSC_SUCCESS);
-  MPM_FOR_BOX_NODES(mpm, c)
-  {
-    MP[0] += node[c].m;
-    for (PetscInt k = 0; k < d; k++) MP[1 + k] += node[c].p[k];
+  if (b != mpm->body) { /* a crack field (src/grid/crack.c) takes its body's acceleration, which its body's nodes took first */
+    MPM_FOR_BOX_NODES(mpm, c)
+    {
+      for (PetscInt k = 0; k < d; k++) node[c].f[k] += node[c].m * ld->last[b][2 + k];
+    }
+    PetscFunctionReturn(PETSC_SUCCESS);
   }
+  if (MPMCrackOf(mpm, b, NULL, NULL) >= 0) { /* a body split between two fields: its mass and momentum from its points (the window) */
+    MPMPoints pts;
+    PetscCall(MPMPointsGetArrays(mpm, &pts));
+    for (PetscInt p = 0; p < pts.n; p++) {
+      MP[0] += pts.f[MPM_FIELD_MASS][p];
+      for (PetscInt k = 0; k < d; k++) MP[1 + k] += pts.f[MPM_FIELD_MASS][p] * pts.f[MPM_FIELD_VELOCITY][p * d + k];
+    }
+    PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  } else
+    MPM_FOR_BOX_NODES(mpm, c)
+    {
+      MP[0] += node[c].m;
+      for (PetscInt k = 0; k < d; k++) MP[1 + k] += node[c].p[k];
+    }
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, MP, 4, MPIU_REAL, MPIU_SUM, mpm->comm));
   ld->work[b] += MPMLoadLastWork(ld, mpm, b, &MP[1]);
   for (PetscInt k = 0; k < 5; k++) ld->last[b][k] = 0.0;

@@ -24,7 +24,9 @@ static PetscReal MPMDamageFailureStrain_JC(void *ctx, PetscReal eta, PetscReal r
   const PetscReal  r     = rate / jc->epsdot0;
   const PetscReal  Tstar = PetscMin(1.0, PetscMax(0.0, (T - jc->Tr) / (jc->Tm - jc->Tr)));
 
-  return (jc->D1 + jc->D2 * PetscExpReal(jc->D3 * eta)) * (1.0 + (r > 1.0 ? jc->D4 * PetscLogReal(r) : 0.0)) * (1.0 + jc->D5 * Tstar);
+  const PetscReal tri = jc->D2 == 0.0 ? 0.0 : (jc->D3 == 0.0 ? jc->D2 : jc->D2 * PetscExpReal(jc->D3 * eta)); /* D2 exp(D3 eta), its limits at eta = -+inf without 0 inf */
+
+  return (jc->D1 + tri) * (1.0 + (r > 1.0 ? jc->D4 * PetscLogReal(r) : 0.0)) * (1.0 + jc->D5 * Tstar);
 }
 
 static PetscReal MPMDamageIncrement_JC(void *ctx, PetscInt d, PetscReal dt, const PetscReal s[], PetscReal p, PetscReal depsp, PetscReal T, PetscReal w)
