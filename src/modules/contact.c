@@ -533,10 +533,13 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
         const PetscInt c   = MPMOwnedToLocal(g, i0, i1, i2);
         PetscInt       nin = 0, rb = -1, heavy[MPM_MAX_BODIES], nfam = 0, fam0 = -1;
         PetscReal      M = 0.0, P[3] = {0.0, 0.0, 0.0}, vcm[3], vref[3], Vsum = 0.0, Vnode = g->vcell;
-        PetscBool      gap, crk = PETSC_FALSE; /* a crack field has mass here: the node's energy is tallied once, from its first and last velocities */
+        PetscBool      gap, crk = PETSC_FALSE, endt, hasfam[MPM_MAX_BODIES] = {PETSC_FALSE}; /* crk: a crack field has mass here */
+        PetscInt       nbod = 0;                                                             /* bodies with mass here                 */
         PetscReal      vs[MPM_MAX_BODIES][3];
         for (PetscInt b = 0; b < nf; b++)
           if (node[b][c].m > 0.0) {
+            if (!hasfam[ct->fam[b]]) nbod++;
+            hasfam[ct->fam[b]] = PETSC_TRUE;
             nin++;
             Vsum += geo[b][c].m;
             if (fam0 < 0 || (ct->fam[b] != fam0 && nfam < 2)) nfam++;
@@ -549,12 +552,14 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
         gap = (PetscBool)(ct->gap != MPM_CONTACT_GAP_VOLUME || Vsum >= ct->fill * Vnode);
         for (PetscInt k = 0; k < d; k++) vref[k] = 0.0;
         for (PetscInt f = nb; f < nf; f++) crk = (PetscBool)(crk || node[f][c].m > 0.0);
-        for (PetscInt b = 0; crk && b < nf; b++)
+        endt = (PetscBool)(crk || nbod > 2); /* the node's energy tallied once, from its fields' first and last velocities */
+        for (PetscInt b = 0; endt && b < nf; b++)
           for (PetscInt k = 0; k < d; k++) vs[b][k] = node[b][c].p[k];
         for (PetscInt f = nb; f < nf && !ctx->remap; f++) MPMContactCrackPair(ct, mpm, node, f, c, gap); /* a body and its crack field */
         if (nfam > 1 && gap) {                                                                           /* the bodies that meet here; with a crack field, each body's fields as one (their centre of mass), so that two bodies' corrections balance */
-          MPMNode *U[MPM_MAX_BODIES], agg[MPM_MAX_BODIES];
-          PetscInt uf[MPM_MAX_BODIES], nu = 0;
+          MPMNode  *U[MPM_MAX_BODIES], agg[MPM_MAX_BODIES];
+          PetscReal ub[MPM_MAX_BODIES][3]; /* each one's velocity before the corrections */
+          PetscInt  uf[MPM_MAX_BODIES], nu = 0;
           for (PetscInt b = 0; !crk && b < nf; b++) {
             U[nu]    = &node[b][c];
             uf[nu++] = b;
@@ -598,6 +603,8 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
               if (ct->fam[uf[o]] != ct->fam[uf[u]] && U[o]->m > 0.0 && (heavy[u] < 0 || orig || (U[o]->m > U[heavy[u]]->m && !hrig))) heavy[u] = o;
             }
           }
+          for (PetscInt u = 0; u < nu; u++)
+            for (PetscInt k = 0; k < d; k++) ub[u][k] = U[u]->p[k];
           for (PetscInt u = 0; u < nu; u++) {
             MPMNode       *nd = U[u];
             const PetscInt b  = uf[u];
@@ -606,7 +613,7 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
             MPMContactNormalOf(ct, mpm, node, geo, b, c, n);
             if (ct->gap == MPM_CONTACT_GAP_SURFACE && ct->ext[ct->fam[b]][c] + ct->ext[ct->fam[uf[heavy[u]]]][c] < -1e-9 * g->hmin) continue; /* their surfaces apart along n */
             if (!MPMContactCorrect(nd, d, n, vcm, vref, ct->mu[ct->fam[b]][ct->fam[uf[heavy[u]]]], &dn, vold, &wn, &wt)) continue;
-            if (!crk) {
+            if (!endt) {
               geo[b][c].f[0] = wn + wt; /* heats the body's points there (MPMContactHeat) */
               ct->work += wn + wt;
             }
@@ -628,8 +635,20 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
               for (PetscInt k = 0; k < 6; k++) frc[rb][7 + k] += fn * x[ij[k][0]] * x[ij[k][1]];
             }
           }
+          if (nbod > 2 && rb < 0) { /* three or more bodies: each corrected against their centre of mass along its own normal, the impulses need not balance; the net one, spread by mass, is taken back */
+            PetscReal dP[3] = {0.0, 0.0, 0.0};
+            for (PetscInt u = 0; u < nu; u++)
+              for (PetscInt k = 0; k < d; k++) dP[k] += U[u]->m * (U[u]->p[k] - ub[u][k]);
+            for (PetscInt u = 0; u < nu; u++) {
+              if (!(U[u]->m > 0.0)) continue;
+              for (PetscInt k = 0; k < d; k++) U[u]->p[k] -= dP[k] / M;
+              for (PetscInt f = 0; crk && f < nf; f++) /* the body's fields take its change */
+                if (ct->fam[f] == uf[u] && node[f][c].m > 0.0)
+                  for (PetscInt k = 0; k < d; k++) node[f][c].p[k] -= dP[k] / M;
+            }
+          }
         }
-        for (PetscInt b = 0; crk && b < nf; b++) { /* with a crack field: each field's energy taken out from its first to its last velocity, in the frame of a rigid body there */
+        for (PetscInt b = 0; endt && b < nf; b++) { /* each field's energy taken out from its first to its last velocity, in the frame of a rigid body there */
           MPMNode  *nd = &node[b][c];
           PetscReal w  = 0.0;
           for (PetscInt k = 0; k < d; k++) w += nd->m * (vs[b][k] - nd->p[k]) * ((nd->v0[k] + nd->p[k]) * 0.5 - vref[k]);
