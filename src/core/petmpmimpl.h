@@ -71,7 +71,7 @@ struct _n_MPMCrack {
   PetscBool     full;                   /* a body found no free slot for its crack field (warned once) */
   PetscInt      ntwin;                  /* crack fields in the run: slots MPM_MAX_BODIES - 1 down    */
   PetscInt      gid, nloc;              /* the grid the arrays below were made for, its local nodes  */
-  PetscReal    *D[MPM_MAX_BODIES];      /* per body with a crack field, per local node: D_I          */
+  PetscReal    *D[MPM_MAX_BODIES];      /* per body with a crack field, per local node: the failed fraction D_I */
   PetscReal    *G[MPM_MAX_BODIES];      /* per local node, d values: G_I                             */
   char         *sep[MPM_MAX_BODIES];    /* per local node: a failed point of the body reaches it     */
   char         *near[MPM_MAX_BODIES];   /* per local node: a point whose cell starts here may reach a sep node (MPMGridDilate) */

@@ -3,8 +3,10 @@
    Once a body has a failed point it gets a second nodal velocity field, its crack field (a slot of MPM::bnodes above
    the bodies, with no points of its own), and at every node each of the body's points sends its share to one of
    the two by the side of the crack it lies on there:
-     D_I   = sum_p N_I m_p D_p / sum_p N_I m_p            the nodal damage of the body's points,
-     g_p   = sum_I D_I grad N_I(x_p)                      the point's damage gradient (it points into the crack),
+     D_I   = sum_p N_I m_p phi_p / sum_p N_I m_p          the nodal failed fraction of the body's points (phi_p = 1 for
+                                                          a failed point, else 0: Johnson-Cook's D itself grows wherever
+                                                          the metal flows, and its gradient split intact jets),
+     g_p   = sum_I D_I grad N_I(x_p)                      the point's gradient (it points into the failed material),
      G_I   = the g_p of largest |g_p| among the points whose stencil holds I (ties: the larger point id), the node's
              reference, the same on every rank,
      side  = 1 where G_I . g_p < 0, else 0: side 0 goes to the body's field, side 1 to its crack field.
@@ -14,7 +16,8 @@
    their centre of mass's, as one field would have) unless a failed point reaches it (sep_I), where they meet as two
    bodies do, frictionless and non-adhesive, along n = G_I / |G_I| (side 0's outward normal: towards the crack). A
    crack thus opens where it has failed material and closes again under compression; elsewhere the body moves as one
-   field. The crack fields are derived from the points every step: nothing of theirs is checkpointed. Off with
+   field. Where a crack field meets another body, contact takes the body's two fields as one (MPMContactApply). The
+   crack fields are derived from the points every step: nothing of theirs is checkpointed. Off with
    -mpm_fracture_fields false (fracture.c), and under MUSL and the cell rule (their remap and cell pressure are not
    split). */
 #include "core/petmpmimpl.h"

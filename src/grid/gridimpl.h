@@ -249,7 +249,7 @@ PETSC_INTERN PetscErrorCode MPMGridGhostFill(MPM);
 typedef struct _n_MPMCrack *MPMCrack;
 
 typedef struct {
-  const PetscReal *D;     /* per local node: the body's nodal damage D_I                                          */
+  const PetscReal *D;     /* per local node: the body's nodal failed fraction D_I                                   */
   const PetscReal *G;     /* per local node, d values: the reference damage gradient G_I                           */
   PetscReal        g2min; /* |g_p|^2 below which a point's damage gradient is zero (MPMCrackPointGradient) [1/cm^2] */
   PetscInt         keep;  /* points to grid: the side whose entries these nodes take (0: the body's, 1: its crack field's) */
