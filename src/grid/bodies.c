@@ -109,6 +109,12 @@ PetscInt MPMFieldSlot(MPM mpm, PetscInt i, PetscInt *body)
 {
   const PetscInt s = i < mpm->nbodies ? i : MPM_MAX_BODIES - 1 - (i - mpm->nbodies);
 
-  if (body) *body = i < mpm->nbodies ? i : mpm->crack->parent[s];
+  if (body) *body = MPMSlotBody(mpm, s);
   return s;
+}
+
+/* The body whose points fill the nodes of slot s (MPM::bnodes): itself, or the body a crack field splits. */
+PetscInt MPMSlotBody(MPM mpm, PetscInt s)
+{
+  return s < mpm->nbodies ? s : mpm->crack->parent[s];
 }

@@ -49,7 +49,7 @@ static PetscErrorCode MPMLoadSetFromOptions(MPMModule mod, MPM mpm, PetscOptionI
 static PetscErrorCode MPMLoadApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *node)
 {
   MPMLoad       *ld = (MPMLoad *)mod->data;
-  const PetscInt d = mpm->grid.dim, b = mpm->body < mpm->nbodies ? mpm->body : mpm->crack->parent[mpm->body];
+  const PetscInt d = mpm->grid.dim, b = MPMSlotBody(mpm, mpm->body);
   PetscReal      MP[4] = {0.0, 0.0, 0.0, 0.0}, *F = ld->now[b], a[3], FP = 0.0;
 
   PetscFunctionBegin;

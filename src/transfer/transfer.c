@@ -298,48 +298,36 @@ MPM_TINLINE void MPMScatterDims(MPM mpm, const MPMPoints *pts, MPMNode *node, Pe
     MPMScatterGeneric(mpm, pts, node, tn, force, cellrule, stress, cs, AFFINE, PETSC_FALSE, BODY, CRACK, 1);
 }
 
-/* The generic scatter's named variants (a sum of MPMGenericVariant flags). */
-static void MPMScatterVariant(MPM mpm, const MPMPoints *pts, MPMNode *node, PetscReal tn, PetscBool force, PetscBool cellrule, PetscBool stress, const MPMCrackSplit *cs, PetscInt variant)
+/* The generic scatter of a variant's AFFINE and HOOP terms, with BODY and CRACK (never both: crack fields need a
+   damage type, a manufactured body force none) compile-time constants. */
+MPM_TINLINE void MPMScatterAffineHoop(MPM mpm, const MPMPoints *pts, MPMNode *node, PetscReal tn, PetscBool force, PetscBool cellrule, PetscBool stress, const MPMCrackSplit *cs, PetscInt variant, const PetscBool BODY, const PetscBool CRACK)
 {
   const PetscBool T = PETSC_TRUE, F = PETSC_FALSE;
 
-  switch (variant) {
+  switch (variant & (MPM_GENERIC_AFFINE | MPM_GENERIC_HOOP)) {
   case MPM_GENERIC_REFERENCE:
-    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, F, F, F, F);
+    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, F, F, BODY, CRACK);
     break;
   case MPM_GENERIC_AFFINE:
-    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, T, F, F, F);
+    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, T, F, BODY, CRACK);
     break;
   case MPM_GENERIC_HOOP:
-    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, F, T, F, F);
+    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, F, T, BODY, CRACK);
     break;
-  case MPM_GENERIC_HOOP | MPM_GENERIC_AFFINE:
-    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, T, T, F, F);
-    break;
-  case MPM_GENERIC_BODY:
-    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, F, F, T, F);
-    break;
-  case MPM_GENERIC_BODY | MPM_GENERIC_AFFINE:
-    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, T, F, T, F);
-    break;
-  case MPM_GENERIC_BODY | MPM_GENERIC_HOOP:
-    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, F, T, T, F);
-    break;
-  case MPM_GENERIC_BODY | MPM_GENERIC_HOOP | MPM_GENERIC_AFFINE:
-    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, T, T, T, F);
-    break;
-  case MPM_GENERIC_CRACK:
-    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, F, F, F, T);
-    break;
-  case MPM_GENERIC_CRACK | MPM_GENERIC_AFFINE:
-    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, T, F, F, T);
-    break;
-  case MPM_GENERIC_CRACK | MPM_GENERIC_HOOP:
-    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, F, T, F, T);
-    break;
-  default: /* a manufactured body force never has a crack (crack.c: only where a material has a damage type) */
-    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, T, T, F, T);
+  default:
+    MPMScatterDims(mpm, pts, node, tn, force, cellrule, stress, cs, T, T, BODY, CRACK);
   }
+}
+
+/* The generic scatter's named variants (a sum of MPMGenericVariant flags). */
+static void MPMScatterVariant(MPM mpm, const MPMPoints *pts, MPMNode *node, PetscReal tn, PetscBool force, PetscBool cellrule, PetscBool stress, const MPMCrackSplit *cs, PetscInt variant)
+{
+  if (variant & MPM_GENERIC_BODY)
+    MPMScatterAffineHoop(mpm, pts, node, tn, force, cellrule, stress, cs, variant, PETSC_TRUE, PETSC_FALSE);
+  else if (variant & MPM_GENERIC_CRACK)
+    MPMScatterAffineHoop(mpm, pts, node, tn, force, cellrule, stress, cs, variant, PETSC_FALSE, PETSC_TRUE);
+  else
+    MPMScatterAffineHoop(mpm, pts, node, tn, force, cellrule, stress, cs, variant, PETSC_FALSE, PETSC_FALSE);
 }
 
 /* m_I = sum_p N_I m_p, (mv)_I = sum_p N_I m_p v_p and, with the force, f_I = -int sigma . grad N_I dV.
@@ -552,36 +540,33 @@ MPM_TINLINE void MPMGatherDims(MPM mpm, const MPMTransferArgs *A, const MPMPoint
     MPMGatherGeneric(mpm, A, pts, node, velocity, kinematics, work, AFFINE, PETSC_FALSE, CRACK, 1);
 }
 
-/* The generic gather's named variants (MPMGenericVariant flags but BODY). */
-static void MPMGatherVariant(MPM mpm, const MPMTransferArgs *A, const MPMPoints *pts, const MPMNode *node, PetscBool velocity, PetscBool kinematics, PetscBool work, PetscInt variant)
+/* The generic gather of a variant's AFFINE and HOOP terms, with CRACK a compile-time constant. */
+MPM_TINLINE void MPMGatherAffineHoop(MPM mpm, const MPMTransferArgs *A, const MPMPoints *pts, const MPMNode *node, PetscBool velocity, PetscBool kinematics, PetscBool work, PetscInt variant, const PetscBool CRACK)
 {
   const PetscBool T = PETSC_TRUE, F = PETSC_FALSE;
 
-  switch (variant & (MPM_GENERIC_AFFINE | MPM_GENERIC_HOOP | MPM_GENERIC_CRACK)) {
+  switch (variant & (MPM_GENERIC_AFFINE | MPM_GENERIC_HOOP)) {
   case MPM_GENERIC_REFERENCE:
-    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, F, F, F);
+    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, F, F, CRACK);
     break;
   case MPM_GENERIC_AFFINE:
-    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, T, F, F);
+    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, T, F, CRACK);
     break;
   case MPM_GENERIC_HOOP:
-    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, F, T, F);
-    break;
-  case MPM_GENERIC_HOOP | MPM_GENERIC_AFFINE:
-    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, T, T, F);
-    break;
-  case MPM_GENERIC_CRACK:
-    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, F, F, T);
-    break;
-  case MPM_GENERIC_CRACK | MPM_GENERIC_AFFINE:
-    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, T, F, T);
-    break;
-  case MPM_GENERIC_CRACK | MPM_GENERIC_HOOP:
-    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, F, T, T);
+    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, F, T, CRACK);
     break;
   default:
-    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, T, T, T);
+    MPMGatherDims(mpm, A, pts, node, velocity, kinematics, work, T, T, CRACK);
   }
+}
+
+/* The generic gather's named variants (MPMGenericVariant flags but BODY). */
+static void MPMGatherVariant(MPM mpm, const MPMTransferArgs *A, const MPMPoints *pts, const MPMNode *node, PetscBool velocity, PetscBool kinematics, PetscBool work, PetscInt variant)
+{
+  if (variant & MPM_GENERIC_CRACK)
+    MPMGatherAffineHoop(mpm, A, pts, node, velocity, kinematics, work, variant, PETSC_TRUE);
+  else
+    MPMGatherAffineHoop(mpm, A, pts, node, velocity, kinematics, work, variant, PETSC_FALSE);
 }
 
 /* Gathers the grid velocity (stored in MPMNode::p after the advance) to the points:

@@ -37,6 +37,15 @@ def test_restart():
             names = ["time", "particle_count", "grid/nodes"] + ["particle_fields/" + k for k in fa["particle_fields"]]
             return [n for n in names if n not in fb or not np.array_equal(fa[n][:], fb[n][:])]
 
+    def restarted(args, u, w, at, ranks):
+        """The run through into u, and stopped at step `at` with a checkpoint and continued into w: both reports and
+        the datasets that differ."""
+        run([*args, "-mpm_output", u, "-mpm_report", os.path.join(u, "report.json")], ranks)
+        run([*args, "-mpm_output", w, "-mpm_checkpoint_interval", at, "-ts_max_steps", at], ranks)
+        run([*args, "-mpm_output", w, "-mpm_restart", os.path.join(w, f"checkpoint-{at}.h5"), "-mpm_report", os.path.join(w, "report.json")], ranks)
+        with open(os.path.join(u, "report.json")) as f1, open(os.path.join(w, "report.json")) as f2:
+            return json.load(f1), json.load(f2), same_files(u, w)
+
     with tempfile.TemporaryDirectory() as d:
         ref = {}
         for ranks in (1, 2):
@@ -81,12 +90,7 @@ def test_restart():
         for ranks in (1, 2):  # two bodies in contact (inputs/disks_2d.opts): the body field and the contact module's tallies
             u, w = os.path.join(d, f"u{ranks}"), os.path.join(d, f"w{ranks}")
             disks = ["-options_file", os.path.join(SRC, "inputs", "disks_2d.opts"), "-mpm_cells", "20,20"]
-            run([*disks, "-mpm_output", u, "-mpm_report", os.path.join(u, "report.json")], ranks)
-            run([*disks, "-mpm_output", w, "-mpm_checkpoint_interval", "80", "-ts_max_steps", "80"], ranks)
-            run([*disks, "-mpm_output", w, "-mpm_restart", os.path.join(w, "checkpoint-80.h5"), "-mpm_report", os.path.join(w, "report.json")], ranks)
-            with open(os.path.join(u, "report.json")) as f1, open(os.path.join(w, "report.json")) as f2:
-                r1, r2 = json.load(f1), json.load(f2)
-            diff = same_files(u, w)
+            r1, r2, diff = restarted(disks, u, w, "80", ranks)
             check(r2["contact"] == r1["contact"] and r1["contact"]["corrections"] > 0 and not diff,
                   f"{ranks} rank(s): two bodies in contact restarted at step 80 (after the impact) equal the uninterrupted run bit for bit (contact work {r2['contact']['work']:.4e}; differing: {diff})")
         # a load ramp (the pushed block, inputs/pushed_block_2d.opts) and a rigid body's velocity table (a piston on the
@@ -96,12 +100,7 @@ def test_restart():
                   "-body_right_rigid_velocity_times", "0,2e-6", "-ts_max_time", "4e-6"]
         for name, sc, ranks, at in (("pushed", pushed, 2, "300"), ("piston", piston, 1, "100")):
             u, w = os.path.join(d, name + "u"), os.path.join(d, name + "w")
-            run([*sc, "-mpm_output", u, "-mpm_report", os.path.join(u, "report.json")], ranks)
-            run([*sc, "-mpm_output", w, "-mpm_checkpoint_interval", at, "-ts_max_steps", at], ranks)
-            run([*sc, "-mpm_output", w, "-mpm_restart", os.path.join(w, f"checkpoint-{at}.h5"), "-mpm_report", os.path.join(w, "report.json")], ranks)
-            with open(os.path.join(u, "report.json")) as f1, open(os.path.join(w, "report.json")) as f2:
-                r1, r2 = json.load(f1), json.load(f2)
-            diff = same_files(u, w)
+            r1, r2, diff = restarted(sc, u, w, at, ranks)
             check(r2["contact"] == r1["contact"] and r2.get("load") == r1.get("load") and r2["energy_accounted"] == r1["energy_accounted"] and not diff,
                   f"{name} on {ranks} rank(s), restarted at step {at} inside its ramp: equal to the uninterrupted run bit for bit (differing: {diff})")
         # damage and pieces that became bodies (inputs/spall_plate_1d.opts with -mpm_fracture_bodies): the damage fields,
@@ -109,12 +108,7 @@ def test_restart():
         spall = ["-options_file", os.path.join(SRC, "inputs", "spall_plate_1d.opts"), "-mpm_cells", "1000", "-mpm_fracture_bodies"]
         for ranks in (1, 2):
             u, w = os.path.join(d, f"spu{ranks}"), os.path.join(d, f"spw{ranks}")
-            run([*spall, "-mpm_output", u, "-mpm_report", os.path.join(u, "report.json")], ranks)
-            run([*spall, "-mpm_output", w, "-mpm_checkpoint_interval", "2400", "-ts_max_steps", "2400"], ranks)
-            run([*spall, "-mpm_output", w, "-mpm_restart", os.path.join(w, "checkpoint-2400.h5"), "-mpm_report", os.path.join(w, "report.json")], ranks)
-            with open(os.path.join(u, "report.json")) as f1, open(os.path.join(w, "report.json")) as f2:
-                r1, r2 = json.load(f1), json.load(f2)
-            diff = same_files(u, w)
+            r1, r2, diff = restarted(spall, u, w, "2400", ranks)
             check(r2["damage"] == r1["damage"] and r2["contact"] == r1["contact"] and len(r1["contact"]["bodies"]) == 2 and not diff,
                   f"spall with pieces as bodies on {ranks} rank(s), restarted at step 2400 (after the scab became {r1['contact']['bodies'][-1]['name']}): equal to the uninterrupted run bit for bit (differing: {diff})")
         # a checkpoint of another version (its /state one value short, as before -mpm_dt_min_ratio's entry): refused, said why
