@@ -16,7 +16,9 @@
    sum_b sum_p N_I(x_p) V_p >= f V_I, V_I the node's share of the cells (r-z: times r_I; half a cell for each symmetry plane the node lies on), f = -mpm_contact_fill (default 0.5; the
    approach test alone, none, lets bodies meet a cell early: the disks of inputs/disks_2d.opts lose 12% of their
    kinetic energy to contact at 20^2 cells against 4% with f = 0.5); surface, where the points' domains of the two
-   bodies reach each other along the normal (MPMContactExtents; docs/contact.md gives what each measured).
+   bodies reach each other along the normal (MPMContactExtents); position, where their extents along the normal, each
+   from the body's mass at the node and a cell inwards, meet at the end of the step (MPMContactApart: a node under a
+   curved surface a fraction of a cell above the other body is not a support); docs/contact.md gives what each measured.
    A rigid body (-body_<b>_rigid_velocity) moves at its prescribed velocity: its nodes take it, and at a shared node
    v_cm is it (infinite mass); the force it exerts on the other bodies is the contact force on it (report, HDF5
    history). The kinetic energy a correction takes out of the grid, m_b (v_b* - v_b') . ((v_b^n + v_b') / 2 - v_r) per
@@ -33,8 +35,8 @@
 typedef enum { MPM_CONTACT_NORMAL_AVERAGE, MPM_CONTACT_NORMAL_MASS } MPMContactNormal;
 static const char *const MPMContactNormals[] = {"average", "mass", "MPMContactNormal", "MPM_CONTACT_NORMAL_", NULL};
 
-typedef enum { MPM_CONTACT_GAP_SURFACE, MPM_CONTACT_GAP_VOLUME, MPM_CONTACT_GAP_NONE } MPMContactGap;
-static const char *const MPMContactGaps[] = {"surface", "volume", "none", "MPMContactGap", "MPM_CONTACT_GAP_", NULL};
+typedef enum { MPM_CONTACT_GAP_SURFACE, MPM_CONTACT_GAP_VOLUME, MPM_CONTACT_GAP_NONE, MPM_CONTACT_GAP_POSITION } MPMContactGap;
+static const char *const MPMContactGaps[] = {"surface", "volume", "none", "position", "MPMContactGap", "MPM_CONTACT_GAP_", NULL};
 
 typedef struct {
   PetscReal        mu[MPM_MAX_BODIES][MPM_MAX_BODIES]; /* Coulomb friction coefficient of each pair of bodies [-] */
@@ -93,8 +95,10 @@ static PetscErrorCode MPMContactSetFromOptions(MPMModule mod, MPM mpm, PetscOpti
     }
   PetscCall(PetscOptionsEnum("-mpm_contact_normal", "Outward normal of a body at a shared node: average (of its own and the other bodies' mass gradients; conserves momentum) or mass (its own mass gradient)", "", MPMContactNormals,
                              (PetscEnum)ct->normal, (PetscEnum *)&ct->normal, NULL));
-  PetscCall(PetscOptionsEnum("-mpm_contact_gap", "Gap test at a shared node: surface (the bodies' point domains reach each other along the normal), volume (their volumes fill -mpm_contact_fill of the cell) or none (wherever they approach)", "",
-                             MPMContactGaps, (PetscEnum)ct->gap, (PetscEnum *)&ct->gap, NULL));
+  PetscCall(PetscOptionsEnum("-mpm_contact_gap",
+                             "Gap test at a shared node: volume (their volumes fill -mpm_contact_fill of the cell), position (their extents along the normal, from each body's mass at the node and a cell inwards, meet: resolves gaps below a cell), "
+                             "surface (the bodies' point domains reach each other along the normal) or none (wherever they approach)",
+                             "", MPMContactGaps, (PetscEnum)ct->gap, (PetscEnum *)&ct->gap, NULL));
   PetscCall(PetscOptionsReal("-mpm_contact_fill", "Volume gap test (-mpm_contact_gap volume): bodies touch at a node where their volumes fill this fraction of its cell volume [-], in [0, 1]", "", ct->fill, &ct->fill, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_contact_fill", ct->fill, 0.0, 1.0, PETSC_FALSE, PETSC_FALSE));
   for (PetscInt b = 0; b < mpm->nbodies; b++) {
@@ -326,6 +330,52 @@ static void MPMContactNormalOf(const MPMContact *ct, MPM mpm, MPMNode *const *no
   for (PetscInt k = 0; k < d; k++) n[k] *= nn;
 }
 
+/* Position gap test: each body's extent beyond node c along its outward normal n, from its mass at c and at the node c'
+   a cell inwards (along the axis k of n's largest component, against n). A body that fills the region
+   (x - x_I) . n <= e has there m = lambda rho h F(e / h) and m' = lambda rho h F(e / h + 1), F(t) = int_{-1}^{t} N the
+   integral of the tent: so R = m / m' = F(t) / F(t + 1), whatever the share lambda of the supports it covers across n
+   (a corner, a curved surface) and its density rho, gives t = e / h_k: (1 + t)^2 / (2 - t^2) on [-1, 0] and
+   1 - (1 - t)^2 / 2 on [0, 1]. Bodies b and o are apart where their extents do not meet at the end of the step,
+   e_b + e_o < (v_b - v_o) . n_b dt: a node under a curved surface a fraction of a cell above the other body is not a
+   support (the volume test takes it as one). */
+static PetscReal MPMContactFamMass(const MPMContact *ct, MPMNode *const *node, PetscInt F, PetscInt c)
+{
+  PetscReal m = 0.0;
+
+  for (PetscInt f = 0; f < ct->nf; f++)
+    if (ct->fam[f] == F) m += node[f][c].m;
+  return m;
+}
+
+static PetscReal MPMContactExtentOf(PetscReal m, PetscReal mi)
+{
+  const PetscReal R = mi > 0.0 ? m / mi : 1.0;
+
+  if (R >= 1.0) return 1.0;
+  if (R > 0.5) return 1.0 - PetscSqrtReal(2.0 * (1.0 - R));
+  return (PetscSqrtReal(R + 2.0 * R * R) - 1.0) / (1.0 + R);
+}
+
+static PetscBool MPMContactApart(const MPMContact *ct, MPM mpm, MPMNode *const *node, const PetscReal n[], PetscInt b, PetscInt o, PetscInt c, const PetscReal vb[], const PetscReal vo[], PetscReal dt)
+{
+  const MPMGrid *g     = &mpm->grid;
+  const PetscInt gs[3] = {1, g->gm[0], g->gm[0] * g->gm[1]};
+  PetscInt       k     = 0, s, ik;
+  PetscReal      dv    = 0.0, eb, eo;
+
+  for (PetscInt j = 0; j < g->dim; j++) {
+    dv += (vb[j] - vo[j]) * n[j];
+    if (PetscAbsReal(n[j]) > PetscAbsReal(n[k])) k = j;
+  }
+  if (n[k] == 0.0) return PETSC_FALSE;
+  s  = n[k] > 0.0 ? 1 : -1; /* the step outwards from b along axis k */
+  ik = (c / gs[k]) % g->gm[k];
+  /* a neighbour beyond the grid's edge holds no mass: the body there fills the node (R >= 1) */
+  eb = MPMContactExtentOf(MPMContactFamMass(ct, node, ct->fam[b], c), ik - s >= 0 && ik - s < g->gm[k] ? MPMContactFamMass(ct, node, ct->fam[b], c - s * gs[k]) : 0.0);
+  eo = MPMContactExtentOf(MPMContactFamMass(ct, node, ct->fam[o], c), ik + s >= 0 && ik + s < g->gm[k] ? MPMContactFamMass(ct, node, ct->fam[o], c + s * gs[k]) : 0.0);
+  return (PetscBool)((eb + eo) * g->h[k] + dv * dt < 0.0);
+}
+
 /* Surface gap test: per body at each shared node, how far its points' domains reach along its outward normal there,
    ext_b = max_p (x_p . n_b + a_p(n_b)) with a_p the half extent of p's domain along n_b; ranks' maxima combined. Two
    bodies touch at the node where ext_b + ext_o >= 0 (n_o = -n_b: their surfaces meet or overlap), whatever their
@@ -533,8 +583,8 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
         const PetscInt c   = MPMOwnedToLocal(g, i0, i1, i2);
         PetscInt       nin = 0, rb = -1, heavy[MPM_MAX_BODIES], nfam = 0, fam0 = -1;
         PetscReal      M = 0.0, P[3] = {0.0, 0.0, 0.0}, vcm[3], vref[3], Vsum = 0.0, Vnode = g->vcell;
-        PetscBool      gap, crk = PETSC_FALSE, endt, hasfam[MPM_MAX_BODIES] = {PETSC_FALSE}; /* crk: a crack field has mass here */
-        PetscInt       nbod = 0;                                                             /* bodies with mass here                 */
+        PetscBool      gap, volgap, crk = PETSC_FALSE, endt, hasfam[MPM_MAX_BODIES] = {PETSC_FALSE}; /* crk: a crack field has mass here */
+        PetscInt       nbod = 0;                                                                     /* bodies with mass here                 */
         PetscReal      vs[MPM_MAX_BODIES][3];
         for (PetscInt b = 0; b < nf; b++)
           if (node[b][c].m > 0.0) {
@@ -549,14 +599,15 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
         if (g->axisym) Vnode *= g->lo[0] + (i0 + g->xs[0]) * g->h[0]; /* per radian: r_I h_r h_z */
         for (PetscInt k = 0, w = MPMContactOnWall(mpm, c); k < d; k++)
           if ((w >> k) & 1) Vnode *= 0.5; /* a node on a symmetry plane holds half a cell: its points' images are not summed there */
-        gap = (PetscBool)(ct->gap != MPM_CONTACT_GAP_VOLUME || Vsum >= ct->fill * Vnode);
+        volgap = (PetscBool)(Vsum >= ct->fill * Vnode);
+        gap    = (PetscBool)(ct->gap != MPM_CONTACT_GAP_VOLUME || volgap);
         for (PetscInt k = 0; k < d; k++) vref[k] = 0.0;
         for (PetscInt f = nb; f < nf; f++) crk = (PetscBool)(crk || node[f][c].m > 0.0);
         endt = (PetscBool)(crk || nbod > 2); /* the node's energy tallied once, from its fields' first and last velocities */
         for (PetscInt b = 0; endt && b < nf; b++)
           for (PetscInt k = 0; k < d; k++) vs[b][k] = node[b][c].p[k];
-        for (PetscInt f = nb; f < nf && !ctx->remap; f++) MPMContactCrackPair(ct, mpm, node, f, c, gap); /* a body and its crack field */
-        if (nfam > 1 && gap) {                                                                           /* the bodies that meet here; with a crack field, each body's fields as one (their centre of mass), so that two bodies' corrections balance */
+        for (PetscInt f = nb; f < nf && !ctx->remap; f++) MPMContactCrackPair(ct, mpm, node, f, c, ct->gap == MPM_CONTACT_GAP_POSITION ? volgap : gap); /* a body and its crack field */
+        if (nfam > 1 && gap) { /* the bodies that meet here; with a crack field, each body's fields as one (their centre of mass), so that two bodies' corrections balance */
           MPMNode  *U[MPM_MAX_BODIES], agg[MPM_MAX_BODIES];
           PetscReal ub[MPM_MAX_BODIES][3]; /* each one's velocity before the corrections */
           PetscInt  uf[MPM_MAX_BODIES], nu = 0;
@@ -612,6 +663,7 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
             if (!(nd->m > 0.0) || (b < nb && ct->rigid[b]) || heavy[u] < 0) continue;
             MPMContactNormalOf(ct, mpm, node, geo, b, c, n);
             if (ct->gap == MPM_CONTACT_GAP_SURFACE && ct->ext[ct->fam[b]][c] + ct->ext[ct->fam[uf[heavy[u]]]][c] < -1e-9 * g->hmin) continue; /* their surfaces apart along n */
+            if (ct->gap == MPM_CONTACT_GAP_POSITION && MPMContactApart(ct, mpm, node, n, b, uf[heavy[u]], c, ub[u], ub[heavy[u]], ctx->dt)) continue;
             if (!MPMContactCorrect(nd, d, n, vcm, vref, ct->mu[ct->fam[b]][ct->fam[uf[heavy[u]]]], &dn, vold, &wn, &wt)) continue;
             if (!endt) {
               geo[b][c].f[0] = wn + wt; /* heats the body's points there (MPMContactHeat) */
