@@ -370,7 +370,7 @@ static PetscBool MPMContactApart(const MPMContact *ct, MPM mpm, MPMNode *const *
   if (n[k] == 0.0) return PETSC_FALSE;
   s  = n[k] > 0.0 ? 1 : -1; /* the step outwards from b along axis k */
   ik = (c / gs[k]) % g->gm[k];
-  /* a neighbour beyond the grid's edge holds no mass: the body there fills the node (R >= 1) */
+  /* an inward neighbour without the body's mass (beyond the grid's edge, or a body thinner than a cell) reads as full, R = 1: touching */
   eb = MPMContactExtentOf(MPMContactFamMass(ct, node, ct->fam[b], c), ik - s >= 0 && ik - s < g->gm[k] ? MPMContactFamMass(ct, node, ct->fam[b], c - s * gs[k]) : 0.0);
   eo = MPMContactExtentOf(MPMContactFamMass(ct, node, ct->fam[o], c), ik + s >= 0 && ik + s < g->gm[k] ? MPMContactFamMass(ct, node, ct->fam[o], c + s * gs[k]) : 0.0);
   return (PetscBool)((eb + eo) * g->h[k] + dv * dt < 0.0);
