@@ -336,8 +336,9 @@ static void MPMContactNormalOf(const MPMContact *ct, MPM mpm, MPMNode *const *no
    integral of the tent: so R = m / m' = F(t) / F(t + 1), whatever the share lambda of the supports it covers across n
    (a corner, a curved surface) and its density rho, gives t = e / h_k: (1 + t)^2 / (2 - t^2) on [-1, 0] and
    1 - (1 - t)^2 / 2 on [0, 1]. Bodies b and o are apart where their extents do not meet at the end of the step,
-   e_b + e_o < (v_b - v_o) . n_b dt: a node under a curved surface a fraction of a cell above the other body is not a
-   support (the volume test takes it as one). */
+   e_b + e_o < (v_b - v_o) . n dt, n the pair's line (n_b - n_o normalised: both bodies take the same decision): a node
+   under a curved surface a fraction of a cell above the other body is not a support (the volume test takes it as one).
+   In r-z along r the masses per radian are compared per unit r. Linear, GIMP and CPDI shapes (MPMContactSetUp). */
 static PetscReal MPMContactFamMass(const MPMContact *ct, MPMNode *const *node, PetscInt F, PetscInt c)
 {
   PetscReal m = 0.0;
@@ -370,6 +371,16 @@ static PetscBool MPMContactApart(const MPMContact *ct, MPM mpm, MPMNode *const *
   if (n[k] == 0.0) return PETSC_FALSE;
   s  = n[k] > 0.0 ? 1 : -1; /* the step outwards from b along axis k */
   ik = (c / gs[k]) % g->gm[k];
+  if (g->axisym && k == 0) { /* r-z, a radial normal: the masses per radian grow as r; compare them per unit r */
+    const PetscReal r = g->lo[0] + (ik + g->gs[0]) * g->h[0];
+    PetscReal       m[4];
+    if (!(r > 0.0) || ik - s < 0 || ik + s < 0 || ik - s >= g->gm[0] || ik + s >= g->gm[0]) return PETSC_FALSE; /* the axis, the grid's edge: touching */
+    m[0] = MPMContactFamMass(ct, node, ct->fam[b], c) / r;
+    m[1] = r - s * g->h[0] > 0.0 ? MPMContactFamMass(ct, node, ct->fam[b], c - s) / (r - s * g->h[0]) : 0.0; /* the inward neighbour on the axis: full */
+    m[2] = MPMContactFamMass(ct, node, ct->fam[o], c) / r;
+    m[3] = r + s * g->h[0] > 0.0 ? MPMContactFamMass(ct, node, ct->fam[o], c + s) / (r + s * g->h[0]) : 0.0;
+    return (PetscBool)((MPMContactExtentOf(m[0], m[1]) + MPMContactExtentOf(m[2], m[3])) * g->h[k] + dv * dt < 0.0);
+  }
   /* an inward neighbour without the body's mass (beyond the grid's edge, or a body thinner than a cell) reads as full, R = 1: touching */
   eb = MPMContactExtentOf(MPMContactFamMass(ct, node, ct->fam[b], c), ik - s >= 0 && ik - s < g->gm[k] ? MPMContactFamMass(ct, node, ct->fam[b], c - s * gs[k]) : 0.0);
   eo = MPMContactExtentOf(MPMContactFamMass(ct, node, ct->fam[o], c), ik + s >= 0 && ik + s < g->gm[k] ? MPMContactFamMass(ct, node, ct->fam[o], c + s * gs[k]) : 0.0);
@@ -525,6 +536,23 @@ static void MPMContactCrackPair(MPMContact *ct, MPM mpm, MPMNode *const *node, P
   }
 }
 
+/* The position gap test reads the integral of the tent from the nodal masses: linear, GIMP and CPDI shapes only. */
+static PetscErrorCode MPMContactSetUp(MPMModule mod, MPM mpm)
+{
+  MPMContact  *ct = (MPMContact *)mod->data;
+  MPMShapeType type;
+  PetscBool    tent[3];
+
+  PetscFunctionBegin;
+  PetscCall(MPMShapeGetType(mpm->shape, &type));
+  PetscCall(PetscStrcmp(type, MPMSHAPELINEAR, &tent[0]));
+  PetscCall(PetscStrcmp(type, MPMSHAPEGIMP, &tent[1]));
+  PetscCall(PetscStrcmp(type, MPMSHAPECPDI, &tent[2]));
+  PetscCheck(ct->gap != MPM_CONTACT_GAP_POSITION || tent[0] || tent[1] || tent[2], mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_contact_gap position reads the tent's integral from the nodal masses: it needs -mpm_shape_type linear, gimp or cpdi, not %s",
+             type);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
 {
   MPMContact    *ct = (MPMContact *)mod->data;
@@ -663,7 +691,16 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
             if (!(nd->m > 0.0) || (b < nb && ct->rigid[b]) || heavy[u] < 0) continue;
             MPMContactNormalOf(ct, mpm, node, geo, b, c, n);
             if (ct->gap == MPM_CONTACT_GAP_SURFACE && ct->ext[ct->fam[b]][c] + ct->ext[ct->fam[uf[heavy[u]]]][c] < -1e-9 * g->hmin) continue; /* their surfaces apart along n */
-            if (ct->gap == MPM_CONTACT_GAP_POSITION && MPMContactApart(ct, mpm, node, n, b, uf[heavy[u]], c, ub[u], ub[heavy[u]], ctx->dt)) continue;
+            if (ct->gap == MPM_CONTACT_GAP_POSITION) {                                                                                        /* one decision for the pair: along n_b - n_o, the same line for both */
+              PetscReal no[3], np[3], nn = 0.0;
+              MPMContactNormalOf(ct, mpm, node, geo, uf[heavy[u]], c, no);
+              for (PetscInt k = 0; k < d; k++) {
+                np[k] = n[k] - no[k];
+                nn += np[k] * np[k];
+              }
+              for (PetscInt k = 0; k < d; k++) np[k] = nn > 0.0 ? np[k] / PetscSqrtReal(nn) : 0.0;
+              if (MPMContactApart(ct, mpm, node, np, b, uf[heavy[u]], c, ub[u], ub[heavy[u]], ctx->dt)) continue;
+            }
             if (!MPMContactCorrect(nd, d, n, vcm, vref, ct->mu[ct->fam[b]][ct->fam[uf[heavy[u]]]], &dn, vold, &wn, &wt)) continue;
             if (!endt) {
               geo[b][c].f[0] = wn + wt; /* heats the body's points there (MPMContactHeat) */
@@ -861,6 +898,7 @@ PetscErrorCode MPMModuleCreate_Contact(MPMModule mod)
   mod->data               = ct;
   mod->phase              = MPM_PHASE_GRID_CONTACT;
   mod->ops.setfromoptions = MPMContactSetFromOptions;
+  mod->ops.setup          = MPMContactSetUp;
   mod->ops.apply          = MPMContactApply;
   mod->ops.view           = MPMContactView;
   mod->ops.report         = MPMContactReport;

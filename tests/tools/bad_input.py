@@ -37,6 +37,7 @@ def test_bad_input():
             (["-options_file", BARS, "-mpm_contact_friction", "-0.1", "-mpm_output", d], "-mpm_contact_friction"),
             (["-options_file", BARS, "-mpm_contact_fill", "1.5", "-mpm_output", d], "-mpm_contact_fill"),
             (["-options_file", BARS, "-mpm_contact_gap", "touching", "-mpm_output", d], "-mpm_contact_gap"),
+            (["-options_file", BARS, "-mpm_contact_gap", "position", "-mpm_shape_type", "bspline2", "-mpm_output", d], "-mpm_contact_gap position"),
             ([*SCENE_CTH, "-mpm_output", "/proc/petmpm/none"], "/proc/petmpm/none"),
             ([*SCENE_CTH, "-mpm_output", d, "-mpm_report", "/proc/petmpm/r.json"], "-mpm_report"),
             ([*SCENE_CTH, "-mpm_shpae_type", "linear", "-mpm_output", d], "-mpm_shpae_type"),
