@@ -37,8 +37,13 @@ def test_paraview():
             cmd = [pv, os.path.join(SRC, "scripts", "paraview_check.py"), out]
             if xvfb and name in ("dam", "anvil"):  # and draws it: Mesa's software GL under Xvfb
                 cmd = [xvfb, "-a", "-s", "-screen 0 1280x1024x24 +extension GLX", *cmd, "--render", os.path.join(d, name + ".png"), "pressure" if name == "dam" else "density"]
-            p = subprocess.run(cmd, capture_output=True, text=True, env={**os.environ, "LIBGL_ALWAYS_SOFTWARE": "1"})
-            lines = [ln for ln in p.stdout.splitlines() if ln.startswith(("PASSED", "FAILED"))]
+            for attempt in range(2):  # once more where ParaView itself died on a signal (its software GL under Xvfb aborted
+                # once in a loaded full suite, after every read check had passed) without a failed check
+                p = subprocess.run(cmd, capture_output=True, text=True, env={**os.environ, "LIBGL_ALWAYS_SOFTWARE": "1"})
+                lines = [ln for ln in p.stdout.splitlines() if ln.startswith(("PASSED", "FAILED"))]
+                if not ((p.returncode < 0 or p.returncode > 128) and not any(ln.startswith("FAILED") for ln in lines)):
+                    break
+                print(f"{name}: ParaView died on a signal (exit {p.returncode}) after {len(lines)} passed checks; run again")
             want = 4 + (0 if cmd[0] != xvfb else 3 if name == "dam" else 4)
             check(p.returncode == 0 and len(lines) >= want and all(ln.startswith("PASSED") for ln in lines),
                   f"{name} ({ranks} rank(s)): ParaView reads the output as written: " + "; ".join(ln[7:] for ln in lines) + (p.stderr[-1500:] if p.returncode else ""))
