@@ -348,43 +348,50 @@ static PetscReal MPMContactFamMass(const MPMContact *ct, MPMNode *const *node, P
   return m;
 }
 
-static PetscReal MPMContactExtentOf(PetscReal m, PetscReal mi)
+/* Body F's extent beyond node c along axis k in cells, from its masses at c and at c + step
+   cells along k (inwards): R = m / m', t = F^{-1}(R) as above. An inward neighbour without the body's mass (beyond the
+   grid's edge, on the r-z axis, or a body thinner than a cell) reads as full, R = 1. In r-z along r the masses per
+   radian are compared per unit r. */
+static PetscReal MPMContactExtent(const MPMContact *ct, const MPMGrid *g, MPMNode *const *node, PetscInt F, PetscInt c, PetscInt k, PetscInt step)
 {
-  const PetscReal R = mi > 0.0 ? m / mi : 1.0;
+  const PetscInt gs[3] = {1, g->gm[0], g->gm[0] * g->gm[1]}, ik = (c / gs[k]) % g->gm[k];
+  PetscReal      m = MPMContactFamMass(ct, node, F, c), mi = 0.0, R;
 
+  if (ik + step >= 0 && ik + step < g->gm[k]) mi = MPMContactFamMass(ct, node, F, c + step * gs[k]);
+  if (g->axisym && k == 0) {
+    const PetscReal r = g->lo[0] + (ik + g->gs[0]) * g->h[0], ri = r + step * g->h[0];
+    if (!(r > 0.0)) return 1.0;
+    m /= r;
+    mi = ri > 0.0 ? mi / ri : 0.0;
+  }
+  R = mi > 0.0 ? m / mi : 1.0;
   if (R >= 1.0) return 1.0;
   if (R > 0.5) return 1.0 - PetscSqrtReal(2.0 * (1.0 - R));
   return (PetscSqrtReal(R + 2.0 * R * R) - 1.0) / (1.0 + R);
 }
 
-static PetscBool MPMContactApart(const MPMContact *ct, MPM mpm, MPMNode *const *node, const PetscReal n[], PetscInt b, PetscInt o, PetscInt c, const PetscReal vb[], const PetscReal vo[], PetscReal dt)
+/* Bodies b and o at node c, b's outward normal n_b: apart (PETSC_TRUE) where their extents along the pair's line
+   n = (n_b - n_o) / |n_b - n_o| (the same line, reversed, for o: one decision for the pair) do not meet at the end of
+   the step, e_b + e_o < (v_b - v_o) . n dt; v before any correction at the node. */
+static PetscBool MPMContactApart(const MPMContact *ct, MPM mpm, MPMNode *const *node, MPMNode *const *geo, const PetscReal nb[], PetscInt b, PetscInt o, PetscInt c, const PetscReal vb[], const PetscReal vo[], PetscReal dt)
 {
-  const MPMGrid *g     = &mpm->grid;
-  const PetscInt gs[3] = {1, g->gm[0], g->gm[0] * g->gm[1]};
-  PetscInt       k     = 0, s, ik;
-  PetscReal      dv    = 0.0, eb, eo;
+  const MPMGrid *g = &mpm->grid;
+  PetscInt       k = 0, s;
+  PetscReal      n[3], no[3], nn = 0.0, dv = 0.0;
 
+  MPMContactNormalOf(ct, mpm, node, geo, o, c, no);
   for (PetscInt j = 0; j < g->dim; j++) {
+    n[j] = nb[j] - no[j];
+    nn += n[j] * n[j];
+  }
+  if (!(nn > 0.0)) return PETSC_FALSE;
+  for (PetscInt j = 0; j < g->dim; j++) {
+    n[j] /= PetscSqrtReal(nn);
     dv += (vb[j] - vo[j]) * n[j];
     if (PetscAbsReal(n[j]) > PetscAbsReal(n[k])) k = j;
   }
-  if (n[k] == 0.0) return PETSC_FALSE;
-  s  = n[k] > 0.0 ? 1 : -1; /* the step outwards from b along axis k */
-  ik = (c / gs[k]) % g->gm[k];
-  if (g->axisym && k == 0) { /* r-z, a radial normal: the masses per radian grow as r; compare them per unit r */
-    const PetscReal r = g->lo[0] + (ik + g->gs[0]) * g->h[0];
-    PetscReal       m[4];
-    if (!(r > 0.0) || ik - s < 0 || ik + s < 0 || ik - s >= g->gm[0] || ik + s >= g->gm[0]) return PETSC_FALSE; /* the axis, the grid's edge: touching */
-    m[0] = MPMContactFamMass(ct, node, ct->fam[b], c) / r;
-    m[1] = r - s * g->h[0] > 0.0 ? MPMContactFamMass(ct, node, ct->fam[b], c - s) / (r - s * g->h[0]) : 0.0; /* the inward neighbour on the axis: full */
-    m[2] = MPMContactFamMass(ct, node, ct->fam[o], c) / r;
-    m[3] = r + s * g->h[0] > 0.0 ? MPMContactFamMass(ct, node, ct->fam[o], c + s) / (r + s * g->h[0]) : 0.0;
-    return (PetscBool)((MPMContactExtentOf(m[0], m[1]) + MPMContactExtentOf(m[2], m[3])) * g->h[k] + dv * dt < 0.0);
-  }
-  /* an inward neighbour without the body's mass (beyond the grid's edge, or a body thinner than a cell) reads as full, R = 1: touching */
-  eb = MPMContactExtentOf(MPMContactFamMass(ct, node, ct->fam[b], c), ik - s >= 0 && ik - s < g->gm[k] ? MPMContactFamMass(ct, node, ct->fam[b], c - s * gs[k]) : 0.0);
-  eo = MPMContactExtentOf(MPMContactFamMass(ct, node, ct->fam[o], c), ik + s >= 0 && ik + s < g->gm[k] ? MPMContactFamMass(ct, node, ct->fam[o], c + s * gs[k]) : 0.0);
-  return (PetscBool)((eb + eo) * g->h[k] + dv * dt < 0.0);
+  s = n[k] > 0.0 ? 1 : -1; /* the step outwards from b along axis k */
+  return (PetscBool)((MPMContactExtent(ct, g, node, ct->fam[b], c, k, -s) + MPMContactExtent(ct, g, node, ct->fam[o], c, k, s)) * g->h[k] + dv * dt < 0.0);
 }
 
 /* Surface gap test: per body at each shared node, how far its points' domains reach along its outward normal there,
@@ -691,16 +698,7 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
             if (!(nd->m > 0.0) || (b < nb && ct->rigid[b]) || heavy[u] < 0) continue;
             MPMContactNormalOf(ct, mpm, node, geo, b, c, n);
             if (ct->gap == MPM_CONTACT_GAP_SURFACE && ct->ext[ct->fam[b]][c] + ct->ext[ct->fam[uf[heavy[u]]]][c] < -1e-9 * g->hmin) continue; /* their surfaces apart along n */
-            if (ct->gap == MPM_CONTACT_GAP_POSITION) {                                                                                        /* one decision for the pair: along n_b - n_o, the same line for both */
-              PetscReal no[3], np[3], nn = 0.0;
-              MPMContactNormalOf(ct, mpm, node, geo, uf[heavy[u]], c, no);
-              for (PetscInt k = 0; k < d; k++) {
-                np[k] = n[k] - no[k];
-                nn += np[k] * np[k];
-              }
-              for (PetscInt k = 0; k < d; k++) np[k] = nn > 0.0 ? np[k] / PetscSqrtReal(nn) : 0.0;
-              if (MPMContactApart(ct, mpm, node, np, b, uf[heavy[u]], c, ub[u], ub[heavy[u]], ctx->dt)) continue;
-            }
+            if (ct->gap == MPM_CONTACT_GAP_POSITION && MPMContactApart(ct, mpm, node, geo, n, b, uf[heavy[u]], c, ub[u], ub[heavy[u]], ctx->dt)) continue;
             if (!MPMContactCorrect(nd, d, n, vcm, vref, ct->mu[ct->fam[b]][ct->fam[uf[heavy[u]]]], &dn, vold, &wn, &wt)) continue;
             if (!endt) {
               geo[b][c].f[0] = wn + wt; /* heats the body's points there (MPMContactHeat) */
