@@ -14,8 +14,14 @@ report's max/mean points per rank at the end. The DMDA splits the box into equal
 usage: scripts/scaling.py [--exe build/petmpm] [--ranks 1,2,4] [--repeat 3] [--steps 40] [--markdown docs/scaling.md]
 A machine with fewer cores than ranks runs them oversubscribed (the figures then say so): the 2-core machine of this
 project gives no speed-up past 2 ranks.
+
+       scripts/scaling.py --from RUNS.jsonl [--markdown FILE]
+tabulates the runs of scripts/scaling_runs.sh (1 to 16 ranks on a machine without Python, issue 43 item 4): per case
+and method, the median point-steps per second of the runs at each rank count and the efficiency against one rank's
+median; the -log_view runs are left out.
 """
 import argparse
+import json
 import os
 import statistics
 import sys
@@ -42,6 +48,31 @@ def case(exe, ranks, balance, weak, steps, cells):
     return rep, rep["particle_steps_per_second"], imb
 
 
+def tabulate(path, say):
+    """The tables of scripts/scaling_runs.sh's JSONL runs (see the module's doc)."""
+    rates, machine, pts = {}, None, {}
+    with open(path) as f:
+        for line in f:
+            d = json.loads(line)
+            if "machine" in d:
+                machine = d["machine"]
+            elif not d.get("failed") and not d.get("log_view"):
+                key = (d["case"], d["method"], d["ranks"])
+                rates.setdefault(key, []).append(d["report"]["particle_steps_per_second"])
+                pts[key] = (d["report"]["particles"], get(d["report"], "balance.imbalance"))
+    if machine:
+        say(f"{machine['cores']} cores ({machine['cpu']}), mpiexec {machine['bind']}; medians of the runs at each rank count.")
+        say()
+    say("| case | method | ranks | points | runs | point-steps/s | per rank | efficiency | imbalance (max/mean points) |")
+    say("|---|---|---|---|---|---|---|---|---|")
+    for case, method in sorted({k[:2] for k in rates}, key=lambda k: (k[0], k[1] != "def")):
+        one = statistics.median(rates.get((case, method, 1), [float("nan")]))
+        for r in sorted(k[2] for k in rates if k[:2] == (case, method)):
+            v = rates[(case, method, r)]
+            med = statistics.median(v)
+            say(f"| {case} | {'default' if method == 'def' else 'linear MUSL'} | {r} | {pts[(case, method, r)][0]} | {len(v)} | {med:.3g} | {med / r:.3g} | {med / (r * one):.2f} | {pts[(case, method, r)][1]:.2f} |")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0], formatter_class=argparse.RawDescriptionHelpFormatter, epilog=__doc__)
     ap.add_argument("--exe", default=os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "build", "petmpm"))
@@ -50,7 +81,13 @@ def main():
     ap.add_argument("--steps", type=int, default=40)
     ap.add_argument("--cells", default="36,36,156")
     ap.add_argument("--markdown", default="")
+    ap.add_argument("--from", dest="runs", default="", help="tabulate scripts/scaling_runs.sh's JSONL instead of running")
     a = ap.parse_args()
+    if a.runs:
+        say = Transcript()
+        tabulate(a.runs, say)
+        say.write(a.markdown)
+        return 0
     ranks = [int(r) for r in a.ranks.split(",")]
     cores = os.cpu_count()
     say = Transcript()

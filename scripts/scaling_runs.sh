@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-2-Clause
+# Strong and weak scaling runs of issue 43 item 4, for a machine with many cores and no Python (the lent 16-core
+# machine inside ../shared/devkit's root; run from the directory that holds petmpm and inputs/). Each run's report
+# becomes one line of JSONL in RESULTS; scripts/scaling.py --from RESULTS turns them into the tables of
+# docs/performance.md.
+#
+#   strong3d  the 3D copper bar of inputs/bar_impact_3d.opts at 84 x 84 x 364 cells: 1,053,696 points
+#   weak3d    bench.py's bar1 per rank (36 x 36 x 156 cells, 82,944 points), the box and the bar stretched along z
+#   strong2d  the 2D bar of inputs/bar_impact_2d.opts at 600 x 2600 cells: 960,000 points
+# each in linear MUSL ("lin", the scene's own method) and in the program's default method ("def",
+# inputs/methods/cpdi1.opts), on every rank count of RANKS, REPEAT times interleaved (repeat-major, so that a drift of
+# the machine's speed touches every rank count alike), after one -log_view run of each method on 1 rank and on the
+# largest count (LOGVIEW= empty: none).
+# Runs stop being started once BUDGET seconds have passed (what is done is kept).
+#
+# usage: [CASES="strong3d weak3d strong2d"] [LOGVIEW=1] scripts/scaling_runs.sh RESULTS [RANKS="1 2 4 8 16"] [REPEAT=3]
+#        [STEPS=20] [BUDGET=480]
+# On the lent machine (../shared/devkit/README.md): pack with this script as an extra file, bind $OUT into the root
+# and run it there, e.g. bash .devkit/run.sh bash scaling_runs.sh /out/runs.jsonl
+set -u
+res=$1
+ranks=${2:-1 2 4 8 16}
+repeat=${3:-3}
+steps=${4:-20}
+budget=${5:-480}
+exe=./petmpm
+t0=$(date +%s)
+bind="--map-by core --bind-to core"
+mpiexec -n 2 $bind $exe -help > /dev/null 2>&1 || bind="--bind-to none --oversubscribe"
+{
+  echo "{\"machine\": {\"cores\": $(nproc), \"cpu\": \"$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')\", \"bind\": \"$bind\"}}"
+} >> "$res"
+tmp=$(mktemp -d)
+
+one() { # one CASE METHOD RANKS REP [LOGVIEW]: run and append {"case", "method", "ranks", "rep", "seconds", "report"}
+  local c=$1 m=$2 r=$3 k=$4 lv=${5:-} args=() s e
+  case $c in
+    strong3d) args=(-options_file inputs/bar_impact_3d.opts -mpm_cells 84,84,364) ;;
+    weak3d) args=(-options_file inputs/bar_impact_3d.opts -mpm_cells 36,36,$((156 * r)) -mpm_hi 0.6,0.6,$((26 * r / 10)).$((26 * r % 10))
+      -region_bar_hi 0.4,0.4,$((24 * r / 10)).$((24 * r % 10))) ;;
+    strong2d) args=(-options_file inputs/bar_impact_2d.opts -mpm_cells 600,2600) ;;
+  esac
+  [[ $m == def ]] && args+=(-options_file inputs/methods/cpdi1.opts)
+  [[ -n $lv ]] && args+=(-log_view)
+  rm -rf "$tmp/o" "$tmp/r.json"
+  s=$(date +%s%N)
+  mpiexec -n "$r" $bind $exe "${args[@]}" -ts_max_steps "$steps" -mpm_progress 0 -mpm_output "$tmp/o" \
+    -mpm_report "$tmp/r.json" > "$tmp/log" 2>&1
+  e=$(date +%s%N)
+  if [[ -s $tmp/r.json ]]; then
+    printf '{"case": "%s", "method": "%s", "ranks": %s, "rep": %s, "log_view": %s, "seconds": %s, "report": %s}\n' "$c" "$m" "$r" "$k" \
+      "$([[ -n $lv ]] && echo true || echo false)" "$(( (e - s) / 1000000000 )).$(printf %03d $(( (e - s) / 1000000 % 1000 )))" "$(tr -d '\n' < "$tmp/r.json")" >> "$res"
+  else
+    printf '{"case": "%s", "method": "%s", "ranks": %s, "rep": %s, "failed": true}\n' "$c" "$m" "$r" "$k" >> "$res"
+    tail -5 "$tmp/log"
+  fi
+  [[ -n $lv ]] && { echo "== log_view $c $m $r"; sed -n '/Summary of Stages/,$p' "$tmp/log"; } >> "$res.log_view"
+  echo "$c $m $r rep $k: $(( $(date +%s) - t0 )) s"
+}
+
+late() { (( $(date +%s) - t0 > budget )); }
+last=${ranks##* }
+[[ ${LOGVIEW-1} ]] && for r in 1 "$last"; do for m in def lin; do late || one strong3d $m "$r" 0 logview; done; done
+for c in ${CASES:-strong3d weak3d strong2d}; do
+  for k in $(seq "$repeat"); do
+    for r in $ranks; do
+      for m in def lin; do
+        late && break 4
+        one $c $m "$r" "$k"
+      done
+    done
+  done
+done
+rm -rf "$tmp"
+echo "done in $(( $(date +%s) - t0 )) s"
