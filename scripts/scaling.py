@@ -48,6 +48,9 @@ def case(exe, ranks, balance, weak, steps, cells):
     return rep, rep["particle_steps_per_second"], imb
 
 
+NAMES = {"def": "default", "defw": "default, balance by work", "lin": "linear MUSL"}
+
+
 def tabulate(path, say):
     """The tables of scripts/scaling_runs.sh's JSONL runs (see the module's doc)."""
     rates, machine, pts = {}, None, {}
@@ -65,12 +68,12 @@ def tabulate(path, say):
         say()
     say("| case | method | ranks | points | runs | point-steps/s | per rank | efficiency | imbalance (max/mean points) |")
     say("|---|---|---|---|---|---|---|---|---|")
-    for case, method in sorted({k[:2] for k in rates}, key=lambda k: (k[0], k[1] != "def")):
+    for case, method in sorted({k[:2] for k in rates}, key=lambda k: (k[0], list(NAMES).index(k[1]) if k[1] in NAMES else 9)):
         one = statistics.median(rates.get((case, method, 1), [float("nan")]))
         for r in sorted(k[2] for k in rates if k[:2] == (case, method)):
             v = rates[(case, method, r)]
             med = statistics.median(v)
-            say(f"| {case} | {'default' if method == 'def' else 'linear MUSL'} | {r} | {pts[(case, method, r)][0]} | {len(v)} | {med:.3g} | {med / r:.3g} | {med / (r * one):.2f} | {pts[(case, method, r)][1]:.2f} |")
+            say(f"| {case} | {NAMES.get(method, method)} | {r} | {pts[(case, method, r)][0]} | {len(v)} | {med:.3g} | {med / r:.3g} | {med / (r * one):.2f} | {pts[(case, method, r)][1]:.2f} |")
 
 
 def main():

@@ -14,8 +14,9 @@
 # largest count (LOGVIEW= empty: none).
 # Runs stop being started once BUDGET seconds have passed (what is done is kept).
 #
-# usage: [CASES="strong3d weak3d strong2d"] [LOGVIEW=1] scripts/scaling_runs.sh RESULTS [RANKS="1 2 4 8 16"] [REPEAT=3]
-#        [STEPS=20] [BUDGET=480]
+# METHODS="def defw lin" adds the default method with -mpm_balance_weight work ("defw").
+# usage: [CASES="strong3d weak3d strong2d"] [METHODS="def lin"] [LOGVIEW=1] scripts/scaling_runs.sh RESULTS
+#        [RANKS="1 2 4 8 16"] [REPEAT=3] [STEPS=20] [BUDGET=480]
 # On the lent machine (../shared/devkit/README.md): pack with this script as an extra file, bind $OUT into the root
 # and run it there, e.g. bash .devkit/run.sh bash scaling_runs.sh /out/runs.jsonl
 set -u
@@ -41,7 +42,8 @@ one() { # one CASE METHOD RANKS REP [LOGVIEW]: run and append {"case", "method",
       -region_bar_hi 0.4,0.4,$((24 * r / 10)).$((24 * r % 10))) ;;
     strong2d) args=(-options_file inputs/bar_impact_2d.opts -mpm_cells 600,2600) ;;
   esac
-  [[ $m == def ]] && args+=(-options_file inputs/methods/cpdi1.opts)
+  [[ $m == def* ]] && args+=(-options_file inputs/methods/cpdi1.opts)
+  [[ $m == defw ]] && args+=(-mpm_balance_weight work)
   [[ -n $lv ]] && args+=(-log_view)
   rm -rf "$tmp/o" "$tmp/r.json"
   s=$(date +%s%N)
@@ -65,7 +67,7 @@ last=${ranks##* }
 for c in ${CASES:-strong3d weak3d strong2d}; do
   for k in $(seq "$repeat"); do
     for r in $ranks; do
-      for m in def lin; do
+      for m in ${METHODS:-def lin}; do
         late && break 4
         one $c $m "$r" "$k"
       done

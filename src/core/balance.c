@@ -22,12 +22,51 @@ PetscErrorCode MPMPointBalance(MPM mpm, PetscReal *imbalance, PetscInt *nmin, Pe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Rebalance (-mpm_balance): the DMDA's ownership ranges from the points. Along each direction k the points' cells
-   give a histogram over the cells; each of the grid's rank columns along k gets a run of cells holding an equal
-   share of the points (at least the ghost width plus one cell). The grid is rebuilt with those ranges and the points
-   migrate to the ranks that own their cells. A tensor-product partition balances the marginals exactly; a body in
+/* The balance check of the run (-mpm_balance, every -mpm_balance_interval steps): rebalance where the largest rank's
+   load exceeds -mpm_balance_threshold times the mean. The load: a rank's points, or with -mpm_balance_weight work a
+   model of its seconds since the last check, W_r = a n_r + T_r: T_r its measured seconds in the point phases (grid to
+   points to the constitutive update, MPMStep; no communication inside), whose cost per point differs between ranks (a
+   plastic zone, hot points), and a n_r the rest of the step, a cost per point taken as the same on every rank: the
+   least over the ranks of (window - T_r) / n_r (the rank that waited least for the others). Each point then weighs
+   a + T_r / n_r, its rank's. */
+PetscErrorCode MPMBalanceCheck(MPM mpm)
+{
+  PetscMPIInt size;
+  PetscReal   imb, wpt = 1.0;
+
+  PetscFunctionBegin;
+  PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
+  if (size == 1) PetscFunctionReturn(PETSC_SUCCESS);
+  if (!mpm->balance_work) {
+    PetscCall(MPMPointBalance(mpm, &imb, NULL, NULL));
+  } else {
+    const PetscReal now = MPI_Wtime();
+    PetscInt        n, ntot;
+    PetscReal       a, W[2];
+    PetscCall(DMSwarmGetLocalSize(mpm->swarm, &n));
+    a = n > 0 ? PetscMax(now - mpm->work_t0 - mpm->work_time, 0.0) / n : PETSC_MAX_REAL;
+    PetscCallMPI(MPIU_Allreduce(MPI_IN_PLACE, &a, 1, MPIU_REAL, MPIU_MIN, mpm->comm));
+    if (a == PETSC_MAX_REAL) a = 0.0; /* no rank holds points */
+    W[0] = W[1] = a * n + mpm->work_time;
+    PetscCallMPI(MPIU_Allreduce(MPI_IN_PLACE, &W[0], 1, MPIU_REAL, MPIU_MAX, mpm->comm));
+    PetscCallMPI(MPIU_Allreduce(MPI_IN_PLACE, &W[1], 1, MPIU_REAL, MPIU_SUM, mpm->comm));
+    imb = W[1] > 0.0 ? W[0] * size / W[1] : 1.0;
+    PetscCall(DMSwarmGetSize(mpm->swarm, &ntot));
+    wpt = n > 0 ? a + mpm->work_time / n : 1.0;
+    if (!(wpt > 0.0)) wpt = ntot > 0 && W[1] > 0.0 ? W[1] / ntot : 1.0; /* nothing measured here: the mean cost per point, or count */
+    mpm->work_time = 0.0;
+    mpm->work_t0   = now;
+  }
+  if (imb > mpm->balance_threshold) PetscCall(MPMRebalance(mpm, wpt));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Rebalance (-mpm_balance): the DMDA's ownership ranges from the points, each weighted by wpt (this rank's; 1 counts
+   them). Along each direction k the points' cells give a histogram over the cells; each of the grid's rank columns
+   along k gets a run of cells holding an equal share of the weight (at least the ghost width plus one cell). The grid
+   is rebuilt with those ranges and the points migrate to the ranks that own their cells. A tensor-product partition balances the marginals exactly; a body in
    one corner of a 2D or 3D box is balanced along each axis, not in every rank. */
-PetscErrorCode MPMRebalance(MPM mpm)
+PetscErrorCode MPMRebalance(MPM mpm, PetscReal wpt)
 {
   MPMGrid  *g                = &mpm->grid;
   PetscInt *own[MPM_MAX_DIM] = {NULL, NULL, NULL};
@@ -40,7 +79,7 @@ PetscErrorCode MPMRebalance(MPM mpm)
     PetscReal     *hist, total = 0.0, acc = 0.0;
     PetscInt       r = 0, start = 0;
     PetscCall(PetscCalloc1(nc, &hist));
-    for (PetscInt p = 0; p < pts.n; p++) hist[MPMCellIndex(g, k, pts.f[MPM_FIELD_POSITION][p * g->dim + k])] += 1.0;
+    for (PetscInt p = 0; p < pts.n; p++) hist[MPMCellIndex(g, k, pts.f[MPM_FIELD_POSITION][p * g->dim + k])] += wpt;
     PetscCall(MPIU_Allreduce(MPI_IN_PLACE, hist, nc, MPIU_REAL, MPIU_SUM, mpm->comm));
     for (PetscInt c = 0; c < nc; c++) total += hist[c];
     PetscCall(PetscMalloc1(np, &own[k]));

@@ -202,6 +202,15 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
     PetscCall(PetscOptionsReal("-mpm_balance_threshold", "Rebalance when the most points on a rank exceed this multiple of the mean [-], >= 1", "", mpm->balance_threshold, &mpm->balance_threshold, NULL));
     PetscCall(MPMOptionsCheckRange("-mpm_balance_threshold", mpm->balance_threshold, 1.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
     PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-mpm_balance_interval", "Steps between checks of the balance [-], >= 1", &mpm->balance_interval, 1, PETSC_MAX_INT));
+    {
+      const char *const weights[] = {"count", "work"};
+      PetscInt          w         = mpm->balance_work ? 1 : 0;
+      PetscCall(PetscOptionsEList("-mpm_balance_weight",
+                                  "What the run's checks share equally between the ranks: count (points) or work (a model of each rank's seconds since the last check: its measured seconds in the point phases, grid to points to the constitutive "
+                                  "update, plus a cost per point for the rest of the step; the partition then depends on the timings)",
+                                  "", weights, 2, weights[w], &w, NULL));
+      mpm->balance_work = (PetscBool)(w == 1);
+    }
   }
   PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-mpm_checkpoint_interval", "Steps between checkpoints DIR/checkpoint-STEP.h5 (the last two kept) [-], >= 0 (0: none)", &mpm->ckpt_interval, 0, PETSC_MAX_INT));
   PetscCall(PetscOptionsReal("-mpm_checkpoint_wall", "Seconds of wall time between checkpoints [s], >= 0 (0: none)", "", mpm->ckpt_wall, &mpm->ckpt_wall, NULL));
@@ -284,7 +293,7 @@ PetscErrorCode MPMSetUp(MPM mpm)
   if (mpm->balance) { /* the seeded points set the ownership ranges */
     PetscMPIInt size;
     PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
-    if (size > 1) PetscCall(MPMRebalance(mpm));
+    if (size > 1) PetscCall(MPMRebalance(mpm, 1.0));
   }
   PetscCall(MPMDiagnoseVacuum(mpm, NULL, NULL)); /* the baseline: gaps between bodies in the initial state */
   PetscCall(MPMCheckUnusedOptions(mpm));

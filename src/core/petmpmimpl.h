@@ -188,6 +188,9 @@ struct _p_MPM {
   PetscBool      balance;                               /* -mpm_balance: ownership ranges from the points, at set-up and in the run */
   PetscReal      balance_threshold;                     /* -mpm_balance_threshold: rebalance when max/mean points per rank exceeds it */
   PetscInt       balance_interval;                      /* -mpm_balance_interval: steps between checks of the balance */
+  PetscBool      balance_work;                          /* -mpm_balance_weight work: the points weighted by their rank's measured work */
+  PetscReal      work_time, work_total;                 /* this rank's seconds in the point phases since the last check, and in the run */
+  PetscReal      work_t0;                               /* MPI_Wtime of the last check (or of the loop's start) */
   PetscInt       ckpt_interval;                         /* -mpm_checkpoint_interval: steps between checkpoints, 0: none */
   PetscReal      ckpt_wall;                             /* -mpm_checkpoint_wall: seconds of wall time between checkpoints, 0: none */
   PetscReal      ckpt_last;                             /* MPI_Wtime of the last checkpoint (or of the loop's start) */
@@ -267,7 +270,8 @@ static inline PetscBool MPMPointInShock(MPM mpm, const MPMPoints *pts, PetscInt 
 /* Internal API */
 PETSC_INTERN PetscClassId   MPM_CLASSID; /* log events of petmpm (src/core/init.c) */
 PETSC_INTERN PetscErrorCode MPMLogRegister(MPM);
-PETSC_INTERN PetscErrorCode MPMRebalance(MPM);
+PETSC_INTERN PetscErrorCode MPMRebalance(MPM, PetscReal);
+PETSC_INTERN PetscErrorCode MPMBalanceCheck(MPM);
 PETSC_INTERN PetscErrorCode MPMGridSetOwnership(MPM, PetscInt *[]);
 PETSC_INTERN PetscErrorCode MPMPointBalance(MPM, PetscReal *, PetscInt *, PetscInt *);
 PETSC_INTERN PetscErrorCode MPMStep(MPM, PetscReal, PetscReal, PetscReal *);

@@ -157,7 +157,13 @@ PetscErrorCode MPMStep(MPM mpm, PetscReal tn, PetscReal tmax, PetscReal *dt)
     PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_CONTACT, &ctx));
     ctx.remap = PETSC_FALSE;
   }
-  PetscCall(MPMBodiesRun(mpm, MPM_BODY_POINTS, &ctx, &nbad));
+  {
+    PetscReal w = MPI_Wtime(); /* this rank's seconds in the point phases (-mpm_balance_weight work, the report's balance) */
+    PetscCall(MPMBodiesRun(mpm, MPM_BODY_POINTS, &ctx, &nbad));
+    w = MPI_Wtime() - w;
+    mpm->work_time += w;
+    mpm->work_total += w;
+  }
   PetscCall(MPMConstitutiveFailure(mpm, nbad));
   if (mpm->failed) PetscFunctionReturn(PETSC_SUCCESS);                                           /* the time loop stops               */
   PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_ADAPT, &ctx));                                  /* domain reset, point splitting     */

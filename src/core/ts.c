@@ -192,15 +192,7 @@ static PetscErrorCode MPMTSPostStep(TS ts)
     PetscCall(PetscPrintf(mpm->comm, "petmpm %s: t = %.4g s (%.1f%%), step %" PetscInt_FMT ", dt %.3g s, %" PetscInt_FMT " points, %.0f s elapsed, about %.0f s to go\n", mpm->scene, (double)t, (double)(100.0 * t / tmax), step, (double)dt,
                           mpm->npoints, (double)el, (double)(frac > 0.0 ? el * (1.0 - frac) / frac : 0.0)));
   }
-  if (mpm->balance && step % mpm->balance_interval == 0) { /* the points moved: rebalance past the threshold */
-    PetscReal   imb;
-    PetscMPIInt size;
-    PetscCallMPI(MPI_Comm_size(mpm->comm, &size));
-    if (size > 1) {
-      PetscCall(MPMPointBalance(mpm, &imb, NULL, NULL));
-      if (imb > mpm->balance_threshold) PetscCall(MPMRebalance(mpm));
-    }
-  }
+  if (mpm->balance && step % mpm->balance_interval == 0) PetscCall(MPMBalanceCheck(mpm)); /* the points moved: rebalance past the threshold */
   {
     PetscMPIInt sig[2] = {(PetscMPIInt)MPMSignalCaught, mpm->ckpt_wall > 0.0 && MPI_Wtime() - mpm->ckpt_last >= mpm->ckpt_wall}; /* rank 0's clock decides */
     if (mpm->ckpt_wall > 0.0) PetscCallMPI(MPI_Bcast(&sig[1], 1, MPI_INT, 0, mpm->comm));
@@ -290,8 +282,8 @@ PetscErrorCode MPMSolve(MPM mpm)
   PetscCall(PetscLogStagePush(mpm->log.loop));
   t0                  = MPI_Wtime();
   out0                = mpm->wall_output;
-  mpm->progress_start = mpm->progress_last = mpm->ckpt_last = t0;
-  mpm->progress_t0                                          = mpm->time;
+  mpm->progress_start = mpm->progress_last = mpm->ckpt_last = mpm->work_t0 = t0;
+  mpm->progress_t0                                                         = mpm->time;
   PetscCall(TSSolve(mpm->ts, mpm->tsu));
   mpm->wall_loop = MPI_Wtime() - t0 - (mpm->wall_output - out0); /* the time loop without its outputs */
   PetscCall(PetscLogStagePop());

@@ -588,7 +588,7 @@ PetscErrorCode MPMRestartRead(MPM mpm)
   }
   PetscCheck(H5Fclose(f) >= 0, mpm->comm, PETSC_ERR_FILE_READ, "-mpm_restart %s: cannot close the checkpoint", mpm->restart);
   if (wsize != size || (mpm->balance && !owned)) PetscCall(MPMMigrate(mpm)); /* to the ranks that own their cells now */
-  if (mpm->balance && size > 1 && !owned) PetscCall(MPMRebalance(mpm));
+  if (mpm->balance && size > 1 && !owned) PetscCall(MPMRebalance(mpm, 1.0));
   PetscCall(TSSetTime(mpm->ts, mpm->time));
   PetscCall(TSSetStepNumber(mpm->ts, mpm->steps));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -499,8 +499,9 @@ static PetscErrorCode MPMWriteReportWith(MPM mpm, MPMReport rep)
   PetscInt       nonfinite = 0, npoints, nvac, nempty, nmin, nmax;
   PetscReal      imbalance;
   PetscReal      eisen, nisen, nreflect, nspall, wfric, out[3] = {0, 0, 0};
-  PetscBool      outflow = PETSC_FALSE;
-  PetscInt      *perrank = NULL; /* points on each rank (rank 0, for the report) */
+  PetscBool      outflow  = PETSC_FALSE;
+  PetscInt      *perrank  = NULL;                       /* points on each rank (rank 0, for the report) */
+  PetscReal     *workrank = NULL, work[2] = {0.0, 0.0}; /* each rank's seconds in the point phases (rank 0); their max and sum */
   PetscMPIInt    size, rank;
 
   PetscFunctionBegin;
@@ -512,6 +513,9 @@ static PetscErrorCode MPMWriteReportWith(MPM mpm, MPMReport rep)
   PetscCall(MPMComputeChecks(mpm));
   PetscCall(MPMDiagnoseVacuum(mpm, &nvac, &nempty));
   PetscCall(MPMPointBalance(mpm, &imbalance, &nmin, &nmax));
+  work[0] = work[1] = mpm->work_total;
+  PetscCallMPI(MPIU_Allreduce(MPI_IN_PLACE, &work[0], 1, MPIU_REAL, MPIU_MAX, mpm->comm));
+  PetscCallMPI(MPIU_Allreduce(MPI_IN_PLACE, &work[1], 1, MPIU_REAL, MPIU_SUM, mpm->comm));
   {
     enum { ISEN_ENERGY, ISEN_POINTS, REFLECT, PLASTIC, ELASTIC, SPALL, NSUM };
     PetscReal s[NSUM] = {mpm->diag.isentrope_energy, (PetscReal)mpm->diag.isentrope_points, (PetscReal)mpm->diag.wall_reflections, mpm->diag.plastic_work, 0.0, (PetscReal)mpm->diag.spalled};
@@ -578,7 +582,9 @@ static PetscErrorCode MPMWriteReportWith(MPM mpm, MPMReport rep)
                           (double)(eisen / PetscAbsReal(mpm->energy0)), (double)nisen, (double)mpm->isentrope_threshold));
   if (outflow) PetscCall(PetscPrintf(mpm->comm, "  outflow: %.0f points left through outflow faces, carrying %.3e of the mass and %.3e of the total energy (the conservation figures count them)\n", (double)out[0], (double)out[1], (double)out[2]));
   PetscCall(PetscPrintf(mpm->comm, "%s", rep->text));
-  if (size > 1) PetscCall(PetscPrintf(mpm->comm, "  balance: %" PetscInt_FMT " to %" PetscInt_FMT " points per rank, max/mean %.3f; %" PetscInt_FMT " rebalance(s) (-mpm_balance)\n", nmin, nmax, (double)imbalance, mpm->diag.rebalances));
+  if (size > 1)
+    PetscCall(PetscPrintf(mpm->comm, "  balance: %" PetscInt_FMT " to %" PetscInt_FMT " points per rank, max/mean %.3f; the point phases' seconds max/mean %.3f; %" PetscInt_FMT " rebalance(s) (-mpm_balance, by %s)\n", nmin, nmax, (double)imbalance,
+                          (double)(work[1] > 0.0 ? work[0] * size / work[1] : 1.0), mpm->diag.rebalances, mpm->balance_work ? "work" : "count"));
   if (mpm->has_gravity) { /* potential energy released, and where it went */
     gb[0] = mpm->potential0 - mpm->potential;
     if (gb[0] != 0.0) {
@@ -619,6 +625,8 @@ static PetscErrorCode MPMWriteReportWith(MPM mpm, MPMReport rep)
     PetscCall(DMSwarmGetLocalSize(mpm->swarm, &nloc));
     if (!rank) PetscCall(PetscMalloc1(size, &perrank));
     PetscCallMPI(MPI_Gather(&nloc, 1, MPIU_INT, perrank, 1, MPIU_INT, 0, mpm->comm));
+    if (!rank) PetscCall(PetscMalloc1(size, &workrank));
+    PetscCallMPI(MPI_Gather(&mpm->work_total, 1, MPIU_REAL, workrank, 1, MPIU_REAL, 0, mpm->comm));
   }
   if (rank) PetscFunctionReturn(PETSC_SUCCESS);
   {
@@ -652,8 +660,11 @@ static PetscErrorCode MPMWriteReportWith(MPM mpm, MPMReport rep)
     fprintf(fp, "]},\n  \"kinetic_energy_fraction\": %s,\n  \"rest_time\": %.10g,\n", MPMJSONReal(mpm->kinetic0 > 0 ? kinetic / mpm->kinetic0 : 0.0, "%.6e", num[0]), (double)mpm->rest_time);
     fprintf(fp, "  \"balance\": {\"points_min\": %" PetscInt_FMT ", \"points_max\": %" PetscInt_FMT ", \"imbalance\": %.6f, \"rebalances\": %" PetscInt_FMT ", \"points_per_rank\": [", nmin, nmax, (double)imbalance, mpm->diag.rebalances);
     for (PetscMPIInt r = 0; r < size; r++) fprintf(fp, "%s%" PetscInt_FMT, r ? ", " : "", perrank[r]);
+    fprintf(fp, "], \"weight\": \"%s\", \"work_imbalance\": %.6f, \"work_seconds_per_rank\": [", mpm->balance_work ? "work" : "count", (double)(work[1] > 0.0 ? work[0] * size / work[1] : 1.0));
+    for (PetscMPIInt r = 0; r < size; r++) fprintf(fp, "%s%.6g", r ? ", " : "", (double)workrank[r]);
     fprintf(fp, "]},\n");
     PetscCall(PetscFree(perrank));
+    PetscCall(PetscFree(workrank));
     if (mpm->has_gravity) fprintf(fp, "  \"gravity_budget\": {\"released\": %.6e, \"kinetic\": %.6e, \"internal_change\": %.6e, \"error\": %.6e},\n", (double)gb[0], (double)gb[1], (double)gb[2], (double)gb[3]);
     if (budget) fprintf(fp, "  \"energy_budget\": {\"kinetic\": %.6e, \"internal_change\": %.6e, \"plastic_work\": %.6e, \"elastic\": %.6e, \"error\": %.6e},\n", (double)eb[0], (double)eb[1], (double)eb[2], (double)eb[3], (double)eb[4]);
     fprintf(fp, "  \"energy_accounted\": %.6e", (double)(mpm->energy0 != 0 ? (denergy * PetscAbsReal(mpm->energy0) + wfric - eisen) / PetscAbsReal(mpm->energy0) : denergy + wfric - eisen));
