@@ -23,7 +23,8 @@ Each case on every rank count of --ranks; with --before, the same runs with anot
 change) interleaved too, and the speed-up. The -log_view phase shares of each case on one rank, and the memory
 per point in 3D: the marginal process memory per point between two sizes (PETSc's -memory_view maximum), with block8
 in its method and with bardef in the default method; with bar1 and bardef (bar2d and bar2ddef) the default method's
-rate over the linear one on the same points.
+rate over the linear one on the same points. Last, the largest rank counts of --scaling (scripts/scaling_runs.sh's runs
+on the lent 16-core machine, docs/studies/scaling16/runs.jsonl by default), quoted as measured there.
 """
 import argparse
 import os
@@ -99,6 +100,8 @@ def main():
     ap.add_argument("--cases", default="", help="comma-separated case names (default: every case); the memory figure comes with block8")
     ap.add_argument("--markdown", default="")
     ap.add_argument("--out", default=os.path.join("output", "bench"))
+    ap.add_argument("--scaling", default=os.path.join(SRC, "docs", "studies", "scaling16", "runs.jsonl"),
+                    help="scripts/scaling_runs.sh's runs on a many-core machine, whose largest rank counts are quoted ('' for none)")
     a = ap.parse_args()
     exe = os.path.abspath(os.path.join(a.build, "petmpm"))
     ref = build_reference(os.path.join(a.build, "bench-ref"))
@@ -163,6 +166,11 @@ def main():
         say()
         say(f"Memory in 3D, {name} (8 ppc, -memory_view maximum): {m1['memory'] / 1e6:.0f} MB with {m1['points']} points, {m2['memory'] / 1e6:.0f} MB with "
             f"{m2['points']} points: {(m2['memory'] - m1['memory']) / (m2['points'] - m1['points']):.0f} bytes per additional point (grid included).")
+    if a.scaling and os.path.exists(a.scaling):  # measured elsewhere (the lent 16-core machine), quoted, not rerun
+        from scaling import tabulate
+        say()
+        say(f"The largest rank counts of {os.path.relpath(a.scaling, SRC)} (scripts/scaling_runs.sh on a many-core machine; not this run; efficiency against one rank there):")
+        tabulate(a.scaling, say, largest=True)
     say.write(a.markdown)
     return 0
 

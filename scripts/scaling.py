@@ -51,8 +51,8 @@ def case(exe, ranks, balance, weak, steps, cells):
 NAMES = {"def": "default", "defw": "default, balance by work", "lin": "linear MUSL"}
 
 
-def tabulate(path, say):
-    """The tables of scripts/scaling_runs.sh's JSONL runs (see the module's doc)."""
+def tabulate(path, say, largest=False):
+    """The tables of scripts/scaling_runs.sh's JSONL runs (see the module's doc); largest: only each case's largest rank count."""
     rates, machine, pts = {}, None, {}
     with open(path) as f:
         for line in f:
@@ -70,7 +70,8 @@ def tabulate(path, say):
     say("|---|---|---|---|---|---|---|---|---|")
     for case, method in sorted({k[:2] for k in rates}, key=lambda k: (k[0], list(NAMES).index(k[1]) if k[1] in NAMES else 9)):
         one = statistics.median(rates.get((case, method, 1), [float("nan")]))
-        for r in sorted(k[2] for k in rates if k[:2] == (case, method)):
+        counts = sorted(k[2] for k in rates if k[:2] == (case, method))
+        for r in counts[-1:] if largest else counts:
             v = rates[(case, method, r)]
             med = statistics.median(v)
             say(f"| {case} | {NAMES.get(method, method)} | {r} | {pts[(case, method, r)][0]} | {len(v)} | {med:.3g} | {med / r:.3g} | {med / (r * one):.2f} | {pts[(case, method, r)][1]:.2f} |")
