@@ -16,11 +16,12 @@
 #
 # METHODS="def defw lin" adds the default method with -mpm_balance_weight work ("defw").
 # usage: [CASES="strong3d weak3d strong2d"] [METHODS="def lin"] [LOGVIEW=1] scripts/scaling_runs.sh RESULTS
-#        [RANKS="1 2 4 8 16"] [REPEAT=3] [STEPS=20] [BUDGET=480]
+#        ["RANKS" (default "1 2 4 8 16")] [REPEAT (3)] [STEPS (20)] [BUDGET seconds (480)]
+# (positional after RESULTS; LOGVIEW= set empty skips the -log_view runs)
 # On the lent machine (../shared/devkit/README.md): pack with this script as an extra file, bind $OUT into the root
 # and run it there, e.g. bash .devkit/run.sh bash scaling_runs.sh /out/runs.jsonl
 set -u
-res=$1
+res=${1:?usage: scripts/scaling_runs.sh RESULTS [RANKS] [REPEAT] [STEPS] [BUDGET]}
 ranks=${2:-1 2 4 8 16}
 repeat=${3:-3}
 steps=${4:-20}
@@ -41,6 +42,7 @@ one() { # one CASE METHOD RANKS REP [LOGVIEW]: run and append {"case", "method",
     weak3d) args=(-options_file inputs/bar_impact_3d.opts -mpm_cells 36,36,$((156 * r)) -mpm_hi 0.6,0.6,$((26 * r / 10)).$((26 * r % 10))
       -region_bar_hi 0.4,0.4,$((24 * r / 10)).$((24 * r % 10))) ;;
     strong2d) args=(-options_file inputs/bar_impact_2d.opts -mpm_cells 600,2600) ;;
+    *) echo "scaling_runs.sh: unknown case $c (strong3d, weak3d, strong2d)" >&2; return 1 ;;
   esac
   [[ $m == def* ]] && args+=(-options_file inputs/methods/cpdi1.opts)
   [[ $m == defw ]] && args+=(-mpm_balance_weight work)

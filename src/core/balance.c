@@ -57,6 +57,7 @@ PetscErrorCode MPMBalanceCheck(MPM mpm)
     mpm->work_time = 0.0;
     mpm->work_t0   = now;
   }
+  PetscCallMPI(MPI_Bcast(&imb, 1, MPIU_REAL, 0, mpm->comm)); /* one decision: rank 0's (its sums may round differently) */
   if (imb > mpm->balance_threshold) PetscCall(MPMRebalance(mpm, wpt));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -94,7 +95,8 @@ PetscErrorCode MPMRebalance(MPM mpm, PetscReal wpt)
       own[k][r] = minc;
       start += minc;
     }
-    own[k][np - 1] = nc - start + 1; /* the last column also owns the last vertex */
+    own[k][np - 1] = nc - start + 1;                                          /* the last column also owns the last vertex */
+    PetscCallMPI(MPI_Bcast(own[k], (PetscMPIInt)np, MPIU_INT, 0, mpm->comm)); /* weighted sums may round differently per rank: rank 0's ranges for all */
     PetscCall(PetscFree(hist));
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));

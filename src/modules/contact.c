@@ -121,10 +121,10 @@ static PetscErrorCode MPMContactSetFromOptions(MPMModule mod, MPM mpm, PetscOpti
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Per body at the nodes two or more bodies share: sum N_I V_p (in m), g_I = sum m_p grad N_I(x_p) (in p; mirror images
-   across walls with their signs) and sum N_I m_p (in v0[0], the scale g_I is compared with), summed over the ranks, from
-   the points whose stencil reaches such a node (the candidates, kept for MPMContactHeat). In r-z m_p is taken per unit
-   r, m_p / r_p: the mass per radian of a body uniform in r grows as r, and its gradient would tilt the normal of a
+/* Per body at the nodes two or more bodies share: sum N_I V_p (in m), g_I = sum m_p grad N_I(x_p) (in p; mirror
+   images across walls with their signs) and in r-z sum N_I m_p (in v0[0], the scale g_I is compared with), summed over
+   the ranks, from the points whose stencil reaches such a node (the candidates, kept for MPMContactHeat). In r-z m_p
+   is taken per unit r, m_p / r_p: the mass per radian of a body uniform in r grows as r, and its gradient would tilt the normal of a
    flat face towards the axis by atan(h / r) (a rigid anvil's under a Taylor rod: 6 degrees at r = 10 h), which takes
    sin^2 of the radial velocity at each correction and lifts the rod. Once per step (the MUSL remap's pass reuses them:
    the points have not moved). The nodes' masses are the kick's, ghosts filled. */
@@ -206,7 +206,7 @@ static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const
         MPMNode *nd = &geo[st.node[a]];
         nd->m += st.w[a] * V;
         for (PetscInt k = 0; k < d; k++) nd->p[k] += st.s[a][k] * mg * st.dw[a][k];
-        nd->v0[0] += st.w[a] * mg;
+        if (mpm->grid.axisym) nd->v0[0] += st.w[a] * mg; /* the scale of g_I in r-z (MPMContactNormalOf) */
         if (list && !ct->wmark[st.node[a]]) {
           if (ct->nwl[b] == ct->mwl[b]) {
             PetscInt *w2;
@@ -321,7 +321,7 @@ static void MPMContactNormalOf(const MPMContact *ct, MPM mpm, MPMNode *const *no
   for (PetscInt k = 0; rb >= 0 && k < d; k++) g2 += PetscSqr(geo[rb][c].p[k]);
   if (ct->rigid[b])
     MPMContactNormalAt(ct, d, nb, b, geo, c, PETSC_TRUE, n);
-  else if (rb >= 0 && g2 * PetscSqr(mpm->grid.hmin) >= 0.01 * PetscSqr(geo[rb][c].v0[0])) {
+  else if (rb >= 0 && g2 * PetscSqr(mpm->grid.hmin) >= 0.01 * PetscSqr(mpm->grid.axisym ? geo[rb][c].v0[0] : node[rb][c].m) && (!mpm->grid.axisym || geo[rb][c].v0[0] > 0.0)) {
     MPMContactNormalAt(ct, d, nb, rb, geo, c, PETSC_TRUE, n);
     for (PetscInt k = 0; k < d; k++) n[k] = -n[k];
   } else
