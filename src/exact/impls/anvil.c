@@ -6,7 +6,7 @@
    outermost points' domains end where the surface is), about the rod's axis through -region_<r>_center:
      final_length   L = max_p (x_p,a + half extent of its domain along a) - lo_a       against -mpm_exact_anvil_length,
      footprint      D = 2 max_p (r_p + half extent along the radius), over every point  against -mpm_exact_anvil_diameter
-                    (the mushroom is widest at the anvil),
+                    (the mushroom is widest at the anvil) where the shot measured it (null otherwise),
      width_0.2L0    W = 2 max_p (r_p + half extent) over the points whose domain reaches x_a = lo_a + 0.2 L0, against
                     -mpm_exact_anvil_width where the shot measured it (the report gives null otherwise).
    -mpm_exact_anvil_speed names the shot's impact speed: a rod (the region's velocity) that strikes at another speed
@@ -43,7 +43,8 @@ static PetscErrorCode MPMExactSetUp_Anvil(MPMExact exact, const MPMScene *sc)
   PetscCheck(ea->surface || sc->bc_lo[ea->a] == MPM_BC_WALL, sc->comm, PETSC_ERR_USER_INPUT,
              "-mpm_exact_type anvil: the anvil is the wall at the lower end of the last coordinate (-mpm_bc_lo must be wall there), or a body whose face -mpm_exact_anvil_surface gives");
   PetscCheck(rod->axis < 0 || rod->axis == ea->a, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_type anvil: the rod (-region_%s_axis) must lie along the last coordinate", rod->name);
-  PetscCheck(ea->Lf > 0.0 && ea->Dmax > 0.0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_anvil_length %g and -mpm_exact_anvil_diameter %g: give the shot's final length and footprint diameter [cm], both > 0", (double)ea->Lf, (double)ea->Dmax);
+  PetscCheck(ea->Lf > 0.0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_anvil_length %g: give the shot's final length [cm], > 0", (double)ea->Lf);
+  PetscCheck(ea->Dmax >= 0.0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_anvil_diameter %g: valid is >= 0 cm (0: not measured)", (double)ea->Dmax);
   PetscCheck(ea->W >= 0.0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_anvil_width %g: valid is >= 0 cm (0: not measured)", (double)ea->W);
   PetscCheck(ea->V >= 0.0, sc->comm, PETSC_ERR_USER_INPUT, "-mpm_exact_anvil_speed %g: valid is >= 0 cm/s (0: not given)", (double)ea->V);
   if (ea->V > 0.0) {
@@ -72,7 +73,7 @@ static PetscErrorCode MPMExactChecks_Anvil(MPMExact exact, MPMProbe probe)
   PetscCall(MPMProbeExtent(probe, ea->a, ea->c, ea->lo + (ea->surface ? 1e-6 * ea->L0 : 0.0), PETSC_MAX_REAL, &zmax, &rmax, &found)); /* a body anvil: its own points, whose domains end at its face, left out */
   if (!found) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(MPMProbeAddCheck(probe, "final_length", zmax - ea->lo, ea->other ? PETSC_NAN : ea->Lf));
-  PetscCall(MPMProbeAddCheck(probe, "footprint", 2.0 * rmax, ea->other ? PETSC_NAN : ea->Dmax));
+  PetscCall(MPMProbeAddCheck(probe, "footprint", 2.0 * rmax, ea->other || !(ea->Dmax > 0.0) ? PETSC_NAN : ea->Dmax));
   PetscCall(MPMProbeExtent(probe, ea->a, ea->c, z0, z0, &zmax, &rmax, &found));
   if (found) PetscCall(MPMProbeAddCheck(probe, "width_0.2L0", 2.0 * rmax, ea->W > 0.0 && !ea->other ? ea->W : PETSC_NAN));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -85,7 +86,7 @@ static PetscErrorCode MPMExactSetFromOptions_Anvil(MPMExact exact, PetscOptionIt
   PetscFunctionBegin;
   PetscOptionsHeadBegin(PetscOptionsObject, "Taylor anvil validation");
   PetscCall(PetscOptionsReal("-exact_anvil_length", "The shot's final rod length Lf [cm], > 0", "", ea->Lf, &ea->Lf, NULL));
-  PetscCall(PetscOptionsReal("-exact_anvil_diameter", "The shot's footprint (mushroom) diameter Dmax [cm], > 0", "", ea->Dmax, &ea->Dmax, NULL));
+  PetscCall(PetscOptionsReal("-exact_anvil_diameter", "The shot's footprint (mushroom) diameter Dmax [cm], >= 0 (0: not measured)", "", ea->Dmax, &ea->Dmax, NULL));
   PetscCall(PetscOptionsReal("-exact_anvil_width", "The shot's rod diameter at 0.2 L0 from the anvil [cm], >= 0 (0: not measured)", "", ea->W, &ea->W, NULL));
   PetscCall(
     PetscOptionsReal("-exact_anvil_surface", "The anvil's face along the rod's axis [cm] where the anvil is a body (a rigid body, or the mirror rod of a rod-on-rod impact) rather than the wall at the lower end", "", ea->lo, &ea->lo, &ea->surface));
