@@ -11,13 +11,13 @@
 # each in linear MUSL ("lin", the scene's own method) and in the program's default method ("def",
 # inputs/methods/cpdi1.opts), on every rank count of RANKS, REPEAT times interleaved (repeat-major, so that a drift of
 # the machine's speed touches every rank count alike), after one -log_view run of each method on 1 rank and on the
-# largest count (LOGVIEW= empty: none).
+# largest count (LOGVIEW=0 or empty: none).
 # Runs stop being started once BUDGET seconds have passed (what is done is kept).
 #
 # METHODS="def defw lin" adds the default method with -mpm_balance_weight work ("defw").
 # usage: [CASES="strong3d weak3d strong2d"] [METHODS="def lin"] [LOGVIEW=1] scripts/scaling_runs.sh RESULTS
 #        ["RANKS" (default "1 2 4 8 16")] [REPEAT (3)] [STEPS (20)] [BUDGET seconds (480)]
-# (positional after RESULTS; LOGVIEW= set empty skips the -log_view runs)
+# (positional after RESULTS; LOGVIEW=0 or empty skips the -log_view runs)
 # On the lent machine (../shared/devkit/README.md): pack with this script as an extra file, bind $OUT into the root
 # and run it there, e.g. bash .devkit/run.sh bash scaling_runs.sh /out/runs.jsonl
 set -u
@@ -65,7 +65,7 @@ one() { # one CASE METHOD RANKS REP [LOGVIEW]: run and append {"case", "method",
 
 late() { (( $(date +%s) - t0 > budget )); }
 last=${ranks##* }
-[[ ${LOGVIEW-1} ]] && for r in 1 "$last"; do for m in def lin; do late || one strong3d $m "$r" 0 logview; done; done
+[[ ${LOGVIEW-1} && ${LOGVIEW-1} != 0 ]] && for r in 1 "$last"; do for m in def lin; do late || one strong3d $m "$r" 0 logview; done; done
 for c in ${CASES:-strong3d weak3d strong2d}; do
   for k in $(seq "$repeat"); do
     for r in $ranks; do
