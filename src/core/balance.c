@@ -65,8 +65,9 @@ PetscErrorCode MPMBalanceCheck(MPM mpm)
 /* Rebalance (-mpm_balance): the DMDA's ownership ranges from the points, each weighted by wpt (this rank's; 1 counts
    them). Along each direction k the points' cells give a histogram over the cells; each of the grid's rank columns
    along k gets a run of cells holding an equal share of the weight (at least the ghost width plus one cell). The grid
-   is rebuilt with those ranges and the points migrate to the ranks that own their cells. A tensor-product partition balances the marginals exactly; a body in
-   one corner of a 2D or 3D box is balanced along each axis, not in every rank. */
+   is rebuilt with those ranges and the points migrate to the ranks that own their cells. A tensor-product partition
+   balances the marginals exactly; a body in one corner of a 2D or 3D box is balanced along each axis, not in every
+   rank. */
 PetscErrorCode MPMRebalance(MPM mpm, PetscReal wpt)
 {
   MPMGrid  *g                = &mpm->grid;
