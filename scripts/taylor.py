@@ -4,8 +4,9 @@
 axisymmetric (inputs/taylor_anvil_rz.opts) at R0/6, R0/9 and R0/12 cells, every shot of
 ../shared/reference/taylor_ofhc_copper.csv on the rz rod at R0/12, and the rz rod at R0/9 with each shape family at
 1, 2 and 3 points per cell per direction, and the anvil's friction (-mpm_wall_friction_lo: mu 0 to 0.1 at the three
-resolutions, and every shot with mu = 0.05). Writes a markdown file (default docs/validation-taylor-runs.md) and the
-final-profile plot of the three 3D runs (docs/taylor_profile.png, scripts/taylor_profile.py).
+resolutions, and every shot with mu = 0.05), and the shots of two other materials (4340 steel and 6061-T6
+aluminium, ../shared/reference/taylor_other_materials.csv) at R0/6 and R0/12. Writes a markdown file (default
+docs/validation-taylor-runs.md) and the final-profile plot of the three 3D runs (docs/taylor_profile.png, scripts/taylor_profile.py).
 
 usage: scripts/taylor.py [--exe build/petmpm] [--out docs/validation-taylor-runs.md] [--quick]
 """
@@ -22,6 +23,14 @@ SHOTS = [("Johnson & Cook 1983", 1.3e4, 2.54, 1.956, 0.991), ("Johnson & Cook 19
          ("Johnson & Cook 1983", 1.9e4, 2.54, 1.621, 1.356), ("Wilkins & Guinan 1973", 2.1e4, 2.347, 1.509, 1.658)]
 RES = {6: ("16,16,42", "16,42"), 9: ("24,24,63", "24,63"), 12: ("32,32,84", "32,84")}
 FRICTION = (0.0, 0.02, 0.05, 0.1)  # the anvil's Coulomb friction coefficients tried (3D: 0 and 0.05)
+# Other materials (../shared/reference/taylor_other_materials.csv), each scene with its own published constants: (scene,
+# shot, V [cm/s], L0, Lf, Dmax, width at 0.2 L0 [cm] (0: not measured), box height [cm] and cells along the rod at R0/6)
+MATERIALS = [("taylor_steel_rz", "4340 steel, Johnson & Cook 1983", 2.08e4, 2.54, 2.248, 1.110, 0.832, 2.667, 42),
+             ("taylor_steel_rz", "4340 steel, Johnson & Cook 1983", 2.82e4, 1.27, 1.071, 1.040, 0.870, 1.4, 22),
+             ("taylor_steel_rz", "4340 steel, Johnson & Cook 1983", 3.43e4, 0.81, 0.654, 1.200, 0.950, 0.889, 14),
+             ("taylor_aluminium_rz", "6061-T6, Wilkins & Guinan 1973", 1.91e4, 2.347, 2.126, 0.0, 0.0, 2.667, 42),
+             ("taylor_aluminium_rz", "6061-T6, Wilkins & Guinan 1973", 2.62e4, 2.347, 1.981, 0.0, 0.0, 2.667, 42),
+             ("taylor_aluminium_rz", "6061-T6, Wilkins & Guinan 1973", 3.73e4, 2.347, 1.650, 1.660, 0.830, 2.667, 42)]
 
 
 def run(exe, scene, args, out):
@@ -91,6 +100,23 @@ def main():
                 continue
             md.append(f"| {src} | {v / 100:.0f} | {10 * lf:.2f} / {10 * check(rep, 'final_length'):.2f} | {100 * (check(rep, 'final_length') / lf - 1):+.1f}% | "
                       f"{10 * dm:.2f} / {10 * check(rep, 'footprint'):.2f} | {100 * (check(rep, 'footprint') / dm - 1):+.1f}% |")
+        md += ["", "## Other materials, each with its own published constants (inputs/taylor_steel_rz.opts, taylor_aluminium_rz.opts), rz rod",
+               "", "| shot | V [m/s] | L0 | cells a radius | Lf measured / computed | error | Dmax measured / computed | error | width at 0.2 L0 measured / computed | error |",
+               "|---|---|---|---|---|---|---|---|---|---|"]
+        for scene, src, v, L0, lf, dm, w, zhi, nz in MATERIALS:
+            for n in (6, 12):
+                rep, err = run(a.exe, scene, ["-mpm_hi", f"1.016,{zhi}", "-mpm_cells", f"{16 * n // 6},{nz * n // 6}", "-region_rod_hi", f"0.381,{L0}", "-region_rod_velocity", f"0,-{v}",
+                                              "-mpm_exact_anvil_speed", str(v), "-mpm_exact_anvil_length", str(lf), "-mpm_exact_anvil_diameter", str(dm), "-mpm_exact_anvil_width", str(w)],
+                               os.path.join(tmp, "material"))
+                if rep is None:
+                    md.append(f"| {src} | {v / 100:.0f} | {10 * L0:.1f} | {n} | failed: {err} |")
+                    continue
+
+                def cell(name, ref):
+                    val = check(rep, name)
+                    return f"{10 * ref:.2f} / {10 * val:.2f} | {100 * (val / ref - 1):+.1f}%" if ref > 0 else f"- / {10 * val:.2f} | not measured"
+
+                md.append(f"| {src} | {v / 100:.0f} | {10 * L0:.1f} | {n} | {cell('final_length', lf)} | {cell('footprint', dm)} | {cell('width_0.2L0', w)} |")
         md += ["", "## Shape families and points per cell, axisymmetric rod at R0/9", "", "| shape | ppc | Lf | Dmax | wall |", "|---|---|---|---|---|"]
         for shape in ("cpdi", "bspline2", "gimp", "linear"):
             for ppc in (1, 2, 3):

@@ -548,20 +548,16 @@ static void MPMContactCrackPair(MPMContact *ct, MPM mpm, MPMNode *const *node, P
   }
 }
 
-/* The position gap test reads the integral of the tent from the nodal masses: linear, GIMP and CPDI shapes only. */
+/* The position gap test reads the integral of the tent from the nodal masses: shape types whose masses are it
+   (MPMShape::tent_mass: linear, GIMP, CPDI). */
 static PetscErrorCode MPMContactSetUp(MPMModule mod, MPM mpm)
 {
   MPMContact  *ct = (MPMContact *)mod->data;
   MPMShapeType type;
-  PetscBool    tent[3];
 
   PetscFunctionBegin;
   PetscCall(MPMShapeGetType(mpm->shape, &type));
-  PetscCall(PetscStrcmp(type, MPMSHAPELINEAR, &tent[0]));
-  PetscCall(PetscStrcmp(type, MPMSHAPEGIMP, &tent[1]));
-  PetscCall(PetscStrcmp(type, MPMSHAPECPDI, &tent[2]));
-  PetscCheck(ct->gap != MPM_CONTACT_GAP_POSITION || tent[0] || tent[1] || tent[2], mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_contact_gap position reads the tent's integral from the nodal masses: it needs -mpm_shape_type linear, gimp or cpdi, not %s",
-             type);
+  PetscCheck(ct->gap != MPM_CONTACT_GAP_POSITION || mpm->shape->tent_mass, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_contact_gap position reads the tent's integral from the nodal masses: it needs -mpm_shape_type linear, gimp or cpdi, not %s", type);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -32,8 +32,10 @@ static PetscErrorCode MPMShapeReset(void *obj)
   MPMShape shape = (MPMShape)obj;
 
   PetscFunctionBegin;
-  shape->needs_F = PETSC_FALSE;
-  shape->kernels = NULL;
+  shape->needs_F       = PETSC_FALSE;
+  shape->edge_gradient = PETSC_FALSE;
+  shape->tent_mass     = PETSC_FALSE;
+  shape->kernels       = NULL;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -20,6 +20,9 @@ struct _p_MPMShape {
   PetscBool edge_gradient;           /* grad N_I does not vanish with N_I at the edge of the support (linear hats): a stencil
                                         node that only a point near its far side reaches (a free surface) has mass N_I m_p
                                         and force of order V sigma grad N_I, so its velocity grows like 1 / N_I */
+  PetscBool tent_mass;               /* a node's mass from a body that fills a region is the density times the integral of
+                                        the tent N over it (linear, GIMP, CPDI): the contact module's position gap test
+                                        reads a body's extent from two nodal masses */
   const MPMTransferKernels *kernels; /* specialised transfer kernels for d = 1, 2, 3 (kernels.h), NULL: generic only */
 };
 

@@ -328,6 +328,7 @@ PetscErrorCode MPMShapeCreate_CPDI(MPMShape shape)
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) cp->l0[k] = 0.25; /* until MPMShapeSetUp */
   shape->data               = cp;
   shape->needs_F            = PETSC_TRUE;
+  shape->tent_mass          = PETSC_TRUE; /* the tent integrated over domains that tile the body */
   shape->kernels            = MPMTransferKernels_CPDI;
   shape->ops.support        = MPMShapeSupport_CPDI;
   shape->ops.basis1d        = MPMShapeBasis1d_CPDI;

@@ -67,5 +67,6 @@ PetscErrorCode MPMShapeCreate_GIMP(MPMShape shape)
   shape->ops.basis1d = MPMShapeBasis1d_GIMP;
   shape->ops.setup   = MPMShapeSetUp_GIMP;
   shape->ops.view    = MPMShapeView_GIMP;
+  shape->tent_mass   = PETSC_TRUE; /* the tent convolved with domains that tile the body */
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -28,5 +28,6 @@ PetscErrorCode MPMShapeCreate_Linear(MPMShape shape)
   shape->ops.basis1d   = MPMShapeBasis1d_Linear;
   shape->kernels       = MPMTransferKernels_Linear;
   shape->edge_gradient = PETSC_TRUE;
+  shape->tent_mass     = PETSC_TRUE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
