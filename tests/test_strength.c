@@ -1,8 +1,10 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /* The strength models against closed forms: neo-Hookean (simple shear, uniaxial stretch, no stress at F = I, and
    the stored energy the report's budget reads), Newtonian viscosity (s = 2 mu D'), and the hypoelastic update
-   (elastic, the radial return of vonmises, johnsoncook's flow stress). */
+   (elastic, the radial return of vonmises, johnsoncook's flow stress, its batched update), and the vector exp, log and
+   pow of src/core/simdmath.h. */
 #include "core/petmpmimpl.h"
+#include "core/simdmath.h"
 
 /* A strength model of the given type under the options prefix mat_NAME_ (its other options set before). */
 static PetscErrorCode StrengthCreate(const char *name, const char *type, MPMStrength *st)
@@ -201,6 +203,95 @@ static PetscErrorCode TestReturnMapping(PetscInt *fails)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* src/core/simdmath.h against libm: exp and log within 1 ulp (fdlibm's bound), pow within (2 + |y ln x|) ulp, over
+   arguments spread on a log scale; each lane the same bits as the scalar form (lane 0). */
+static PetscErrorCode TestSimdMath(PetscInt *fails)
+{
+  PetscReal worst[3] = {0, 0, 0};
+  PetscInt  lanes    = 0;
+  PetscBool ok;
+
+  PetscFunctionBegin;
+  for (PetscInt i = 0; i < 20000; i += MPM_SIMD_LANES) {
+    MPMVd x, y, ex, lg, pw;
+    for (PetscInt l = 0; l < MPM_SIMD_LANES; l++) {
+      const PetscReal u = (PetscReal)(i + l) / 20000.0;
+      x[l]              = PetscExpReal(-46.0 + 50.0 * u); /* 1e-20 to 54 */
+      y[l]              = -30.0 + 60.0 * u;
+    }
+    ex = MPMVExp(y);
+    lg = MPMVLog(x);
+    pw = MPMVPow(x, 0.31);
+    for (PetscInt l = 0; l < MPM_SIMD_LANES; l++) {
+      const PetscReal e = PetscExpReal(y[l]), g = PetscLogReal(x[l]), p = PetscPowReal(x[l], 0.31);
+      worst[0] = PetscMax(worst[0], PetscAbsReal(ex[l] - e) / (nextafter(e, 2 * e) - e));
+      worst[1] = PetscMax(worst[1], PetscAbsReal(lg[l] - g) / (nextafter(PetscAbsReal(g), 2 * PetscAbsReal(g) + 1) - PetscAbsReal(g)));
+      worst[2] = PetscMax(worst[2], PetscAbsReal(pw[l] - p) / (nextafter(p, 2 * p) - p) / (2.0 + PetscAbsReal(0.31 * g)));
+      lanes += (MPMSimdPow(x[l], 0.31) != pw[l]) + (MPMSimdLog(x[l]) != lg[l]);
+    }
+  }
+  ok = (PetscBool)(worst[0] <= 1.0 && worst[1] <= 1.0 && worst[2] <= 1.0 && !lanes);
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s simdmath: exp %.2g ulp, log %.2g ulp (tol 1), pow %.2g of (2 + |y ln x|) ulp (tol 1); lanes unlike lane 0: %" PetscInt_FMT "\n", ok ? "PASSED" : "FAILED", (double)worst[0], (double)worst[1],
+                        (double)worst[2], lanes));
+  if (!ok) (*fails)++;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* johnsoncook's batched update (the returns in vector lanes) on 37 points, elastic and plastic, cold (T* = 0) and hot,
+   with and without plastic strain, with the plastic and the total rate: each point as the update of that point alone,
+   bit for bit, and every plastic point on Y(eps_p, rate, T) of its own flow stress. */
+static PetscErrorCode TestJohnsonCookBatch(PetscInt *fails)
+{
+  const PetscInt  n = 37, d = 3;
+  const PetscReal dt = 1e-8;
+  PetscInt        idx[37], differ = 0, plastic = 0;
+  PetscReal       L[37 * 9], s[37 * 9], s1[9], ep[37], ep0[37], rho[37], T[37], c2[37], c21, err = 0;
+  PetscRandom     rnd;
+  PetscBool       ok;
+
+  PetscFunctionBegin;
+  PetscCall(PetscRandomCreate(PETSC_COMM_SELF, &rnd));
+  PetscCall(PetscRandomSetInterval(rnd, -1.0, 1.0));
+  for (PetscInt total = 0; total < 2; total++) {
+    MPMStrength jc;
+    PetscCall(PetscOptionsSetValue(NULL, "-mat_jcb_strength_johnsoncook_total_rate", total ? "true" : "false"));
+    PetscCall(StrengthCreate("jcb", "johnsoncook", &jc));
+    for (PetscInt i = 0; i < n; i++) {
+      const PetscReal strain = i % 3 ? 1e-2 : 1e-4; /* a third below the yield strain */
+      idx[i]                 = n - 1 - i;
+      rho[i]                 = 8.93;
+      T[i]                   = i % 4 ? 0.02 + 0.002 * i : 0.01; /* a quarter below Tr = 0.0257 eV: T* = 0 */
+      ep[i] = ep0[i] = i % 5 ? 0.01 * i : 0.0;
+      for (PetscInt k = 0; k < d * d; k++) {
+        PetscCall(PetscRandomGetValueReal(rnd, &L[i * d * d + k]));
+        L[i * d * d + k] *= strain / dt;
+        s[i * d * d + k] = 0.0;
+      }
+    }
+    PetscCall(MPMStrengthStressBatch(jc, d, dt, n, idx, L, NULL, rho, T, s, ep, c2));
+    for (PetscInt i = 0; i < n; i++) {
+      const PetscInt p  = idx[i];
+      PetscReal      e1 = ep0[p], Y;
+      for (PetscInt k = 0; k < d * d; k++) s1[k] = 0.0;
+      PetscCall(MPMStrengthStress(jc, d, dt, &L[p * d * d], NULL, rho[i], T[p], s1, &e1, &c21));
+      for (PetscInt k = 0; k < d * d; k++) differ += s1[k] != s[p * d * d + k];
+      differ += (e1 != ep[p]) + (c21 != c2[i]);
+      if (!(ep[p] > ep0[p])) continue;
+      plastic++;
+      if (total) continue; /* the total rate's factor is not the flow stress's plastic one */
+      PetscCall(MPMStrengthFlowStress(jc, ep[p], (ep[p] - ep0[p]) / dt, T[p], &Y));
+      err = PetscMax(err, PetscAbsReal(VonMises(d, &s[p * d * d]) - Y) / Y);
+    }
+    PetscCall(MPMStrengthDestroy(&jc));
+  }
+  PetscCall(PetscRandomDestroy(&rnd));
+  ok = (PetscBool)(!differ && err < 1e-10 && plastic > 20);
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s johnsoncook batch: %" PetscInt_FMT " values unlike the point-by-point update (tol 0); %" PetscInt_FMT " plastic points on Y(eps_p, rate, T) to %.1e (tol 1e-10)\n", ok ? "PASSED" : "FAILED", differ,
+                        plastic, (double)err));
+  if (!ok) (*fails)++;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 int main(int argc, char **argv)
 {
   PetscInt fails = 0;
@@ -210,6 +301,8 @@ int main(int argc, char **argv)
   PetscCall(TestNeoHookean(&fails));
   PetscCall(TestNewtonian(&fails));
   PetscCall(TestReturnMapping(&fails));
+  PetscCall(TestSimdMath(&fails));
+  PetscCall(TestJohnsonCookBatch(&fails));
   PetscCall(PetscFinalize());
   return fails ? 1 : 0;
 }

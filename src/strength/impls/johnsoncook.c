@@ -11,6 +11,7 @@
    ../shared/reference/copper.md: G 4.77e11, A 9.0e8, B 2.92e9 dyn/cm^2, n 0.31, C 0.025, m 1.09,
    Tm 1356 K, Tr 298 K (in eV), epsdot0 1 1/s. */
 #include "../hypoelastic.h"
+#include "core/simdmath.h"
 
 typedef struct {
   PetscReal G, A, B, n, C, m, Tm, Tr, epsdot0;
@@ -28,21 +29,21 @@ static inline PetscReal MPMStrengthThermal_JC(const Strength_JC *jc, PetscReal T
 {
   const PetscReal Tstar = MPMStrengthHomologous_JC(jc, T);
 
-  return 1.0 - (Tstar > 0.0 ? PetscPowReal(Tstar, jc->m) : 0.0);
+  return 1.0 - (Tstar > 0.0 ? MPMSimdPow(Tstar, jc->m) : 0.0);
 }
 
-/* The flow stress with the thermal factor theta already evaluated: the radial return's iterations. */
 /* The rate factor 1 + C ln(epsdot / epsdot0) for r = epsdot / epsdot0 above 1, else 1. */
 static inline PetscReal MPMStrengthRateFactor_JC(const Strength_JC *jc, PetscReal r)
 {
-  return r > 1.0 ? 1.0 + jc->C * PetscLogReal(r) : 1.0;
+  return r > 1.0 ? 1.0 + jc->C * MPMSimdLog(r) : 1.0;
 }
 
+/* The flow stress with the thermal factor theta already evaluated. */
 static inline PetscReal MPMStrengthFlowTheta_JC(void *ctx, PetscReal epsp, PetscReal rate, PetscReal theta)
 {
   const Strength_JC *jc = (const Strength_JC *)ctx;
 
-  return (jc->A + (epsp > 0.0 ? jc->B * PetscPowReal(epsp, jc->n) : 0.0)) * MPMStrengthRateFactor_JC(jc, rate / jc->epsdot0) * theta;
+  return (jc->A + (epsp > 0.0 ? jc->B * MPMSimdPow(epsp, jc->n) : 0.0)) * MPMStrengthRateFactor_JC(jc, rate / jc->epsdot0) * theta;
 }
 
 static PetscReal MPMStrengthFlow_JC(void *ctx, PetscReal epsp, PetscReal rate, PetscReal T)
@@ -58,50 +59,108 @@ static PetscReal MPMStrengthFlow_JC(void *ctx, PetscReal epsp, PetscReal rate, P
    general return's tolerance |residual| <= 1e-12 sigma_eq^trial. Newton needs 5.5 evaluations of the flow stress per
    return (the yield check and 4.5 iterations, one pow and one log each; measured on the 3D bar) where the general
    return's regula falsi needs 9.2 (the check, the bracket's end and 7.2 iterations), so the
-   answers differ from it within that tolerance. With the total rate (rate >= 0, -mat_<m>_strength_johnsoncook_total_rate)
-   R is that rate's factor, fixed over the iterations, and dY/ddg loses its rate term. Returns dg. */
-static inline PetscReal MPMStrengthReturn_JC(const Strength_JC *jc, PetscInt d, PetscReal dt, PetscReal theta, PetscReal rate, PetscReal s[], PetscReal *epsp)
+   answers differ from it within that tolerance. With the total rate (-mat_<m>_strength_johnsoncook_total_rate) R is
+   that rate's factor Rt, fixed over the iterations, and dY/ddg loses its rate term.
+   The returns of MPM_SIMD_LANES points at once, in vector lanes (src/core/simdmath.h): seq the trial von Mises
+   stresses, ep the plastic strains, Ts the homologous temperatures, Rt the total rate's factors (1 without). Each
+   lane stops where its own return stops and keeps its answer while the others iterate on, so a lane's dg is the one
+   the return of its point alone gives. Returns dg (0 where a point does not yield). */
+static MPMVd MPMStrengthReturns_JC(const Strength_JC *jc, PetscReal dt, MPMVd seq, MPMVd ep, MPMVd Ts, MPMVd Rt)
 {
-  const PetscBool total = (PetscBool)(rate >= 0.0);
-  const PetscReal seq = MPMVonMisesStress(d, s), G3 = 3.0 * jc->G, rinv = dt > 0.0 ? 1.0 / (dt * jc->epsdot0) : 0.0;
-  const PetscReal Y0 = MPMStrengthFlowTheta_JC((void *)jc, *epsp, total ? rate : 0.0, theta), Rt = total ? MPMStrengthRateFactor_JC(jc, rate / jc->epsdot0) : 1.0;
-  PetscReal       a = 0.0, b, dg;
+  const PetscReal G3 = 3.0 * jc->G, rinv = dt > 0.0 ? 1.0 / (dt * jc->epsdot0) : 0.0, A = jc->A, B = jc->B, N = jc->n, C = jc->C;
+  const MPMVd     one = (MPMVd){0} + 1.0, zero = (MPMVd){0};
+  const MPMVi     hot = Ts > 0.0, plastic = ep > 0.0, ratem = (MPMVi){0} - !jc->total_rate; /* ratem: the plastic rate's factor */
+  const MPMVd     theta = 1.0 - MPMVSelect(hot, MPMVPow(MPMVSelect(hot, Ts, one), jc->m), zero);
+  const MPMVd     Y0    = (A + MPMVSelect(plastic, B * MPMVPow(MPMVSelect(plastic, ep, one), N), zero)) * Rt * theta;
+  MPMVd           a = zero, b = (seq - Y0) / G3, dg;
+  MPMVi           go = seq - Y0 > 0.0;
 
-  if (seq - Y0 <= 0.0) return 0.0;
-  dg = b = (seq - Y0) / G3;
+  dg = MPMVSelect(go, b, zero);
   for (PetscInt it = 0; it < 100; it++) {
-    const PetscReal eps = *epsp + dg, en = eps > 0.0 ? PetscPowReal(eps, jc->n) : 0.0, H = jc->A + jc->B * en, r = dg * rinv;
-    const PetscReal R = total ? Rt : MPMStrengthRateFactor_JC(jc, r), res = seq - G3 * dg - H * R * theta;
-    PetscReal       slope, next;
+    const MPMVd g = dg, eps = ep + g, r = g * rinv;
+    const MPMVi pos = eps > 0.0, fast = ratem & (r > 1.0);
+    const MPMVd es = MPMVSelect(pos, eps, one), en = MPMVSelect(pos, MPMVPow(es, N), zero), H = A + B * en;
+    const MPMVd R = MPMVSelect(fast, 1.0 + C * MPMVLog(MPMVSelect(fast, r, one)), MPMVSelect(ratem, one, Rt)), res = seq - G3 * g - H * R * theta;
+    MPMVi       more, in;
+    MPMVd       slope, next;
 
-    if (PetscAbsReal(res) <= 1e-12 * seq) break;
-    if (res > 0.0)
-      a = dg;
-    else
-      b = dg;
-    if (b - a <= 1e-14 * b) break;
-    slope = G3 + theta * ((eps > 0.0 ? jc->B * jc->n * en / eps : 0.0) * R + (!total && r > 1.0 ? H * jc->C / dg : 0.0));
-    next  = dg + res / slope;
-    dg    = next > a && next < b ? next : 0.5 * (a + b);
+    go    = go & ~(MPMVSelect(res < 0.0, -res, res) <= 1e-12 * seq);
+    a     = MPMVSelect(go & (res > 0.0), g, a);
+    b     = MPMVSelect(go & ~(res > 0.0), g, b);
+    more  = go & ~(b - a <= 1e-14 * b);
+    slope = G3 + theta * (MPMVSelect(pos, B * N * en / es, zero) * R + MPMVSelect(fast, H * C / MPMVSelect(fast, g, one), zero));
+    next  = g + res / slope;
+    in    = (next > a) & (next < b);
+    dg    = MPMVSelect(more, MPMVSelect(in, next, 0.5 * (a + b)), g);
+    go    = more;
+    {
+      PetscBool any = PETSC_FALSE;
+      for (PetscInt l = 0; l < MPM_SIMD_LANES; l++) any = (PetscBool)(any || go[l]);
+      if (!any) break;
+    }
   }
-  for (PetscInt i = 0; i < d * d; i++) s[i] *= (seq - G3 * dg) / seq;
-  *epsp += dg;
   return dg;
 }
 
-static void MPMStrengthStress_JC(void *ctx, PetscInt d, PetscReal dt, const PetscReal L[], const PetscReal F[], PetscReal rho, PetscReal T, PetscReal s[], PetscReal *epsp, PetscReal *c2)
+/* The batch of points idx[0..n): the trial deviator, the screen and the wave speed point by point; the returns of the
+   points past the screen MPM_SIMD_LANES at a time (MPMStrengthReturns_JC; the last group's spare lanes do not yield). */
+static inline __attribute__((always_inline)) void MPMStrengthStressD_JC(const Strength_JC *jc, const PetscInt d, PetscReal dt, PetscInt n, const PetscInt idx[], const PetscReal L[], const PetscReal rho[], const PetscReal T[], PetscReal s[],
+                                                                        PetscReal epsp[], PetscReal c2[])
+{
+  PetscInt q[MPM_SIMD_LANES], nq = 0;
+  MPMVd    seq = {0}, ep = {0}, Ts = {0}, Rt = {0};
+
+  for (PetscInt i = 0; i <= n; i++) {
+    if (i < n) { /* the trial deviator. An elastic trial below A (1 - T*) needs no return and no pow: for m >= 1,
+                    T*^m <= T* and eps_p^n >= 0, so the flow stress at the rate 0 of the yield check is at least
+                    A (1 - T*) (in floating point up to pow's last bits, which could only give a return of that size) */
+      const PetscInt  p   = idx[i];
+      const PetscReal Tsp = MPMStrengthHomologous_JC(jc, T[p]);
+      PetscReal       v;
+      MPMHypoelasticTrial(d, dt, jc->G, &L[p * d * d], &s[p * d * d]);
+      c2[i] = MPMHypoelasticWaveSpeed2(jc->G, rho[i]);
+      v     = MPMVonMisesStress(d, &s[p * d * d]);
+      if (jc->m >= 1.0 && v <= jc->A * (1.0 - Tsp)) continue;
+      q[nq]   = p;
+      seq[nq] = v;
+      ep[nq]  = epsp[p];
+      Ts[nq]  = Tsp;
+      Rt[nq]  = jc->total_rate ? MPMStrengthRateFactor_JC(jc, MPMEquivalentStrainRate(d, &L[p * d * d]) / jc->epsdot0) : 1.0;
+      nq++;
+    }
+    if (nq == MPM_SIMD_LANES || (i == n && nq)) {
+      const MPMVd dg = MPMStrengthReturns_JC(jc, dt, seq, ep, Ts, Rt);
+      for (PetscInt l = 0; l < nq; l++) { /* s scaled back to the flow stress, eps_p advanced */
+        if (!(dg[l] > 0.0)) continue;
+        for (PetscInt k = 0; k < d * d; k++) s[q[l] * d * d + k] *= (seq[l] - 3.0 * jc->G * dg[l]) / seq[l];
+        epsp[q[l]] += dg[l];
+      }
+      for (PetscInt l = 0; l < MPM_SIMD_LANES; l++) seq[l] = ep[l] = Ts[l] = Rt[l] = 0.0; /* spare lanes: seq = 0 does not yield */
+      nq = 0;
+    }
+  }
+}
+
+static void MPMStrengthStress_JC_n(void *ctx, PetscInt d, PetscReal dt, PetscInt n, const PetscInt idx[], const PetscReal L[], const PetscReal F[], const PetscReal rho[], const PetscReal T[], PetscReal s[], PetscReal epsp[], PetscReal c2[])
 {
   const Strength_JC *jc = (const Strength_JC *)ctx;
 
-  MPMHypoelasticTrial(d, dt, jc->G, L, s);
-  /* An elastic trial below A (1 - T*) needs no return and no pow: for m >= 1, T*^m <= T* and eps_p^n >= 0, so the flow
-     stress at the rate 0 of the yield check is at least A (1 - T*), in floating point too (pow is faithfully rounded
-     and the operations are monotonic): the return would find no yield and leave s and eps_p as they are. */
-  if (!(jc->m >= 1.0 && MPMVonMisesStress(d, s) <= jc->A * (1.0 - MPMStrengthHomologous_JC(jc, T)))) (void)MPMStrengthReturn_JC(jc, d, dt, MPMStrengthThermal_JC(jc, T), jc->total_rate ? MPMEquivalentStrainRate(d, L) : -1.0, s, epsp);
-  *c2 = MPMHypoelasticWaveSpeed2(jc->G, rho);
+  (void)F;
+  if (d == 3)
+    MPMStrengthStressD_JC(jc, 3, dt, n, idx, L, rho, T, s, epsp, c2); /* the dimension a constant: the tensor loops unrolled */
+  else if (d == 2)
+    MPMStrengthStressD_JC(jc, 2, dt, n, idx, L, rho, T, s, epsp, c2);
+  else
+    MPMStrengthStressD_JC(jc, 1, dt, n, idx, L, rho, T, s, epsp, c2);
 }
 
-MPM_STRENGTH_BATCHED(MPMStrengthStress_JC)
+/* One point: the batch of one. */
+static void MPMStrengthStress_JC(void *ctx, PetscInt d, PetscReal dt, const PetscReal L[], const PetscReal F[], PetscReal rho, PetscReal T, PetscReal s[], PetscReal *epsp, PetscReal *c2)
+{
+  const PetscInt zero = 0;
+
+  MPMStrengthStress_JC_n(ctx, d, dt, 1, &zero, L, F, &rho, &T, s, epsp, c2);
+}
 
 static PetscErrorCode MPMStrengthSetFromOptions_JC(MPMStrength str, PetscOptionItems *PetscOptionsObject)
 {
