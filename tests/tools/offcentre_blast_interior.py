@@ -1,0 +1,26 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-2-Clause
+"""ctest scene_offcentre_blast_interior (a known failure, WILL_FAIL): the off-centre cylindrical Sedov blast on a full plane
+(inputs/sedov_offcentre_2d.opts, scripts/blast2d.py) in the default method: the hot interior's pressure within 10% of
+the similarity solution at 128^2 cells (issue 41's goal). Measured (2026-11-27): 0.43, 0.22 and 0.08 of the exact at
+64^2, 128^2 and 256^2 (first-order Godunov 0.92, 0.95, 0.97), the points' volumes filling 1.39, 1.94 and 3.39 times the
+blast's area: point integration lets the split near-vacuum points overlap (docs/verification_2d.md). What passes in the
+same runs is asserted by scene_offcentre_blast.
+
+usage: offcentre_blast_interior.py BUILD_DIR SOURCE_DIR
+"""
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from offcentre_blast import blast2d  # noqa: E402
+from common import check, main  # noqa: E402
+
+
+def test_offcentre_blast_interior():
+    r = blast2d()[1]
+    check(abs(r["interior"] - 1.0) < 0.1, f"default, 128^2: interior pressure {r['interior']:.3f} of the exact (within 10%)")
+
+
+if __name__ == "__main__":
+    main(test_offcentre_blast_interior)
