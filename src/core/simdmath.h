@@ -9,21 +9,18 @@
    Arguments: log for normal x > 0 (no zero, subnormal, infinity or NaN), exp for |x| < 700. */
 #pragma once
 #include <stdint.h>
-#if defined(__GNUC__) && !defined(__clang__)
-#  pragma GCC diagnostic ignored "-Wpsabi" /* 64-byte vectors by value between static functions: no ABI crosses a library */
-#endif
 
 #define MPM_SIMD_LANES 8
 typedef double  MPMVd __attribute__((vector_size(MPM_SIMD_LANES * sizeof(double))));
 typedef int64_t MPMVi __attribute__((vector_size(MPM_SIMD_LANES * sizeof(int64_t))));
 
 /* Lane by lane: a where the mask (a comparison's result, all ones or zero) is set, else b. */
-static inline MPMVd MPMVSelect(MPMVi mask, MPMVd a, MPMVd b)
+static inline __attribute__((always_inline)) MPMVd MPMVSelect(MPMVi mask, MPMVd a, MPMVd b)
 {
   return (MPMVd)(((MPMVi)a & mask) | ((MPMVi)b & ~mask));
 }
 
-static inline MPMVd MPMVExp(MPMVd x)
+static inline __attribute__((always_inline)) MPMVd MPMVExp(MPMVd x)
 {
   const double ln2hi = 6.93147180369123816490e-01, ln2lo = 1.90821492927058770002e-10, invln2 = 1.44269504088896338700e+00;
   const double P1 = 1.66666666666666019037e-01, P2 = -2.77777777770155933842e-03, P3 = 6.61375632143793436117e-05, P4 = -1.65339022054652515390e-06, P5 = 4.13813679705723846039e-08;
@@ -35,7 +32,7 @@ static inline MPMVd MPMVExp(MPMVd x)
   return y * (MPMVd)((k + 1023) << 52); /* times 2^k */
 }
 
-static inline MPMVd MPMVLog(MPMVd x)
+static inline __attribute__((always_inline)) MPMVd MPMVLog(MPMVd x)
 {
   const double ln2hi = 6.93147180369123816490e-01, ln2lo = 1.90821492927058770002e-10;
   const double Lg1 = 6.666666666666735130e-01, Lg2 = 3.999999999940941908e-01, Lg3 = 2.857142874366239149e-01, Lg4 = 2.222219843214978396e-01, Lg5 = 1.818357216161805012e-01, Lg6 = 1.531383769920937332e-01, Lg7 = 1.479819860511658591e-01;
@@ -50,17 +47,17 @@ static inline MPMVd MPMVLog(MPMVd x)
 }
 
 /* x^y lane by lane, x > 0 normal, |y log x| < 700. */
-static inline MPMVd MPMVPow(MPMVd x, double y)
+static inline __attribute__((always_inline)) MPMVd MPMVPow(MPMVd x, double y)
 {
   return MPMVExp(y * MPMVLog(x));
 }
 
-static inline double MPMSimdLog(double x)
+static inline __attribute__((always_inline)) double MPMSimdLog(double x)
 {
   return MPMVLog((MPMVd){x, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0})[0];
 }
 
-static inline double MPMSimdPow(double x, double y)
+static inline __attribute__((always_inline)) double MPMSimdPow(double x, double y)
 {
   return MPMVPow((MPMVd){x, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0}, y)[0];
 }
