@@ -41,8 +41,9 @@ SCENE = os.path.join(ROOT, "inputs", "sedov_offcentre_2d.opts")
 GAMMA, CV, T_AMB = 1.4, 2.5e10, 1e-6  # the scene's gas and ambient temperature
 
 
-def scene_value(name):
-    with open(SCENE) as f:
+def scene_value(name, scene=SCENE):
+    """The value of option name in a scene file."""
+    with open(scene) as f:
         for line in f:
             w = line.split()
             if len(w) == 2 and w[0] == name:

@@ -12,7 +12,8 @@ usage: offcentre_blast_interior.py BUILD_DIR SOURCE_DIR
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # the test whose runs this one shares
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tests/common.py
 from offcentre_blast import blast2d  # noqa: E402
 from common import check, main  # noqa: E402
 
