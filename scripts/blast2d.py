@@ -38,7 +38,6 @@ import fv2d  # noqa: E402
 from riemann2d import binned  # noqa: E402
 
 SCENE = os.path.join(ROOT, "inputs", "sedov_offcentre_2d.opts")
-GAMMA, CV, T_AMB = 1.4, 2.5e10, 1e-6  # the scene's gas and ambient temperature
 
 
 def scene_value(name, scene=SCENE):
@@ -49,6 +48,9 @@ def scene_value(name, scene=SCENE):
             if len(w) == 2 and w[0] == name:
                 return w[1]
     raise KeyError(name)
+
+
+GAMMA, CV, T_AMB = (float(scene_value(k)) for k in ("-mat_gas_eos_idealgas_gamma", "-mat_gas_eos_idealgas_cv", "-region_ambient_temperature"))
 
 
 def points(h5, step, exact=True):
@@ -98,6 +100,7 @@ def main():
         Rs = check["shock_position"]["reference"]
         rp = np.hypot(P["position"][:, 0] - c[0], P["position"][:, 1] - c[1])
         o = np.argsort(rp)
+        o = o[rp[o] < Rs]  # the points behind the shock: the profile is not interpolated across it
         prof = lambda r, k, amb: np.where(r < Rs, np.interp(r, rp[o], P["exact_" + k][o]), amb)  # noqa: E731
         x, y, dx, dy = fv2d.grid(N, N, (0.0, 1.0, 0.0, 1.0))
         rc = np.hypot(x[None, :] - c[0], y[:, None] - c[1])

@@ -6,7 +6,8 @@
    vector into the target's registers). The scalar forms run the same operations in lane 0. The algorithms and
    coefficients are fdlibm's (Sun Microsystems, 1993; e_exp.c and e_log.c: a Remez polynomial of the reduced argument,
    error below 1 ulp); pow(x, y) = exp(y log x) for x > 0, relative error about (1 + |y log x|) ulp.
-   Arguments: log for normal x > 0 (no zero, subnormal, infinity or NaN), exp for |x| < 700. */
+   Arguments: log for normal x > 0 (no zero, subnormal, infinity or NaN); exp clamps x to [-708, 709] (e^-708 =
+   3.3e-308 stands for an underflow, e^709 = 8.2e307 for an overflow). */
 #pragma once
 #include <stdint.h>
 
@@ -20,10 +21,11 @@ static inline __attribute__((always_inline)) MPMVd MPMVSelect(MPMVi mask, MPMVd 
   return (MPMVd)(((MPMVi)a & mask) | ((MPMVi)b & ~mask));
 }
 
-static inline __attribute__((always_inline)) MPMVd MPMVExp(MPMVd x)
+static inline __attribute__((always_inline)) MPMVd MPMVExp(MPMVd x0)
 {
   const double ln2hi = 6.93147180369123816490e-01, ln2lo = 1.90821492927058770002e-10, invln2 = 1.44269504088896338700e+00;
   const double P1 = 1.66666666666666019037e-01, P2 = -2.77777777770155933842e-03, P3 = 6.61375632143793436117e-05, P4 = -1.65339022054652515390e-06, P5 = 4.13813679705723846039e-08;
+  const MPMVd  x    = MPMVSelect(x0 > 709.0, (MPMVd){0} + 709.0, MPMVSelect(x0 < -708.0, (MPMVd){0} - 708.0, x0)); /* 2^k stays a normal number */
   const MPMVd  half = MPMVSelect(x < 0.0, (MPMVd){0} - 0.5, (MPMVd){0} + 0.5);
   const MPMVi  k    = __builtin_convertvector(x * invln2 + half, MPMVi); /* x = k ln2 + r, |r| <= ln2 / 2 */
   const MPMVd  dk = __builtin_convertvector(k, MPMVd), hi = x - dk * ln2hi, lo = dk * ln2lo, r = hi - lo, t = r * r;
@@ -46,7 +48,7 @@ static inline __attribute__((always_inline)) MPMVd MPMVLog(MPMVd x)
   return dk * ln2hi - ((hfsq - (s * (hfsq + R) + dk * ln2lo)) - f);
 }
 
-/* x^y lane by lane, x > 0 normal, |y log x| < 700. */
+/* x^y lane by lane, x > 0 normal (y log x clamped as in MPMVExp). */
 static inline __attribute__((always_inline)) MPMVd MPMVPow(MPMVd x, double y)
 {
   return MPMVExp(y * MPMVLog(x));

@@ -31,7 +31,7 @@ def blast2d(extra=()):
 
 
 def test_offcentre_blast():
-    """Measured (2026-11-27): default L1 15.6% and 12.1% against first order 20.6% and 13.5%, shock +0.53 and +0.87
+    """Measured (2026-11-27): default L1 15.7% and 12.1% against first order 20.6% and 13.5%, shock +0.53 and +0.87
     cells; with the volume module L1 15.6% and 11.6%, interior pressure 0.90 and 0.96 of the exact, fill 0.99 and
     1.00."""
     for name, extra in (("default", ()), ("volume fill", ("-mpm_volume_fill", "0.5"))):

@@ -73,7 +73,7 @@ static MPMVd MPMStrengthReturns_JC(const Strength_JC *jc, PetscReal dt, MPMVd se
   const MPMVd     theta = 1.0 - MPMVSelect(hot, MPMVPow(MPMVSelect(hot, Ts, one), jc->m), zero);
   const MPMVd     Y0    = (A + MPMVSelect(plastic, B * MPMVPow(MPMVSelect(plastic, ep, one), N), zero)) * Rt * theta;
   MPMVd           a = zero, b = (seq - Y0) / G3, dg;
-  MPMVi           go = seq - Y0 > 0.0;
+  MPMVi           go = ~(seq - Y0 <= 0.0); /* a NaN yields, so that it reaches s */
 
   dg = MPMVSelect(go, b, zero);
   for (PetscInt it = 0; it < 100; it++) {
@@ -131,7 +131,7 @@ static inline __attribute__((always_inline)) void MPMStrengthStressD_JC(const St
     if (nq == MPM_SIMD_LANES || (i == n && nq)) {
       const MPMVd dg = MPMStrengthReturns_JC(jc, dt, seq, ep, Ts, Rt);
       for (PetscInt l = 0; l < nq; l++) { /* s scaled back to the flow stress, eps_p advanced */
-        if (!(dg[l] > 0.0)) continue;
+        if (dg[l] == 0.0) continue;       /* no yield */
         for (PetscInt k = 0; k < d * d; k++) s[q[l] * d * d + k] *= (seq[l] - 3.0 * jc->G * dg[l]) / seq[l];
         epsp[q[l]] += dg[l];
       }
