@@ -24,7 +24,6 @@ usage: scripts/blast2d.py [--cells 64,128] [--json out.json] [--markdown rows.md
 import argparse
 import json
 import os
-import subprocess
 import sys
 import tempfile
 import time
@@ -35,22 +34,55 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 import fv2d  # noqa: E402
+from petmpmlib import option_value, run  # noqa: E402
 from riemann2d import binned  # noqa: E402
 
-SCENE = os.path.join(ROOT, "inputs", "sedov_offcentre_2d.opts")
+SCENE = ["-options_file", os.path.join(ROOT, "inputs", "sedov_offcentre_2d.opts")]
 
 
-def scene_value(name, scene=SCENE):
-    """The value of option name in a scene file."""
-    with open(scene) as f:
-        for line in f:
-            w = line.split()
-            if len(w) == 2 and w[0] == name:
-                return w[1]
-    raise KeyError(name)
+GAMMA, CV, T_AMB = (float(option_value(SCENE, k)) for k in ("-mat_gas_eos_idealgas_gamma", "-mat_gas_eos_idealgas_cv", "-region_ambient_temperature"))
 
 
-GAMMA, CV, T_AMB = (float(scene_value(k)) for k in ("-mat_gas_eos_idealgas_gamma", "-mat_gas_eos_idealgas_cv", "-region_ambient_temperature"))
+def study_args(doc, cells):
+    """The command line of a study script (this one and implosion2d.py): --cells, --build, --json, --markdown and the
+    petmpm options after --."""
+    ap = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--cells", default=cells)
+    ap.add_argument("--build", default=os.path.join(ROOT, "build"))
+    ap.add_argument("--json")
+    ap.add_argument("--markdown", help="write the rows of docs/verification_2d.md's table")
+    ap.add_argument("extra", nargs="*", help="petmpm options after --")
+    return ap.parse_args()
+
+
+def petmpm(build, args, d):
+    """Runs petmpm args with its output and report in d; returns the report and the wall time."""
+    t0 = time.time()
+    report, p = run(os.path.join(build, "petmpm"), args, out=d)
+    if p.returncode != 0:
+        raise SystemExit(f"petmpm {' '.join(args)} exited {p.returncode}:\n{p.stdout[-2000:]}{p.stderr[-2000:]}")
+    return report, time.time() - t0
+
+
+def occupied(x, N):
+    """The unit square's N x N cells ([j, i]) that hold one of the points x."""
+    i, j = np.floor(x[:, 0] * N).astype(int), np.floor(x[:, 1] * N).astype(int)
+    ok = (i >= 0) & (i < N) & (j >= 0) & (j < N)
+    occ = np.zeros((N, N), bool)
+    occ[j[ok], i[ok]] = True
+    return occ
+
+
+def finish(a, rows, columns):
+    """The study's table (--markdown: columns = [(title, row -> text)]) and rows (--json)."""
+    if a.markdown:
+        with open(a.markdown, "w") as f:
+            f.write("| " + " | ".join(t for t, _ in columns) + " |\n|" + "---|" * len(columns) + "\n")
+            for w in rows:
+                f.write("| " + " | ".join(fmt(w) for _, fmt in columns) + " |\n")
+    if a.json:
+        with open(a.json, "w") as f:
+            json.dump({"petmpm_options": a.extra, "runs": rows}, f, indent=1)
 
 
 def points(h5, step, exact=True):
@@ -65,37 +97,27 @@ def points(h5, step, exact=True):
         return P
 
 
-def run(build, N, extra, d):
-    exe = os.path.join(build, "petmpm")
-    base = ["-options_file", SCENE, "-mpm_cells", f"{N},{N}", *extra]
+def runs(build, N, extra, d):
+    """The zero-step probe's seeded energy E, then the run to the end against the similarity solution of that E."""
+    base = [*SCENE, "-mpm_cells", f"{N},{N}", *extra]
     probe = os.path.join(d, "probe")
-    subprocess.run([exe, *base, "-ts_max_steps", "0", "-mpm_output", probe], check=True, stdout=subprocess.DEVNULL)
+    os.mkdir(probe)
+    petmpm(build, [*base, "-ts_max_steps", "0"], probe)
     p0 = points(os.path.join(probe, "petmpm.h5"), 0, exact=False)
     E = float(np.sum(p0["mass"] * (p0["energy"] - CV * T_AMB)))
-    rep = os.path.join(d, "report.json")
-    t0 = time.time()
-    subprocess.run([exe, *base, "-mpm_exact_sedov_energy", repr(E), "-mpm_output", d, "-mpm_report", rep], check=True, stdout=subprocess.DEVNULL)
-    wall = time.time() - t0
-    with open(rep) as f:
-        R = json.load(f)
+    R, wall = petmpm(build, [*base, "-mpm_exact_sedov_energy", repr(E)], d)
     return E, R, wall, points(os.path.join(d, "petmpm.h5"), -1), binned(os.path.join(d, "petmpm.h5"), N)
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--cells", default="64,128")
-    ap.add_argument("--build", default=os.path.join(ROOT, "build"))
-    ap.add_argument("--json")
-    ap.add_argument("--markdown", help="write the rows of docs/verification_2d.md's table")
-    ap.add_argument("extra", nargs="*", help="petmpm options after --")
-    a = ap.parse_args()
-    c = np.array([float(v) for v in scene_value("-mpm_exact_sedov_center").split(",")])
-    r0, tf = float(scene_value("-region_blast_rmax")), float(scene_value("-ts_max_time"))
+    a = study_args(__doc__, "64,128")
+    c = np.array([float(v) for v in option_value(SCENE, "-mpm_exact_sedov_center").split(",")])
+    r0, tf = float(option_value(SCENE, "-region_blast_rmax")), float(option_value(SCENE, "-ts_max_time"))
     p_amb = (GAMMA - 1.0) * CV * T_AMB
     rows = []
     for N in (int(v) for v in a.cells.split(",")):
         with tempfile.TemporaryDirectory() as d:
-            E, R, wall, P, (rho_b, empty_all, _) = run(a.build, N, a.extra, d)
+            E, R, wall, P, (rho_b, _, _) = runs(a.build, N, a.extra, d)
         check = {ck["name"]: ck for ck in R["checks"]}
         Rs = check["shock_position"]["reference"]
         rp = np.hypot(P["position"][:, 0] - c[0], P["position"][:, 1] - c[1])
@@ -110,10 +132,7 @@ def main():
         fv = {k: fv2d.solve(U0, (0, 1, 0, 1), tf, order=k) for k in (1, 2)}
         l1 = lambda q: float(np.abs(q - rho_ex).sum() / rho_ex.sum())  # noqa: E731
         inner, cin = rp < 0.5 * Rs, rc < 0.5 * Rs
-        i, j = np.floor(P["position"][:, 0] * N).astype(int), np.floor(P["position"][:, 1] * N).astype(int)
-        occ = np.zeros((N, N), bool)
-        ok = (i >= 0) & (i < N) & (j >= 0) & (j < N)
-        occ[j[ok], i[ok]] = True
+        occ = occupied(P["position"], N)
         row = {"cells": N, "energy": E, "L1": l1(rho_b), "L1_fv1": l1(fv[1]["rho"]), "L1_fv2": l1(fv[2]["rho"]),
                "interior": float(np.median(P["pressure"][inner] / P["exact_pressure"][inner])),
                "interior_fv1": float(np.median(fv[1]["p"][cin] / p_ex[cin])),
@@ -126,17 +145,10 @@ def main():
         print(f"N {N:4d}: L1 density petmpm {row['L1']:.4f}  first order {row['L1_fv1']:.4f}  second order {row['L1_fv2']:.4f};"
               f"  interior p/p_exact {row['interior']:.2f} / {row['interior_fv1']:.2f} / {row['interior_fv2']:.2f};  fill {row['fill']:.2f}"
               f"  emptied {row['emptied']}  shock {row['shock_cells']:+.2f} cells  {wall:.1f} s  {row['points']} points", flush=True)
-    if a.markdown:
-        with open(a.markdown, "w") as f:
-            f.write("| N | petmpm L1 | first order | second order | interior p / exact: petmpm | first order | second order | fill | emptied cells | shock [cells] |\n"
-                    "|---|---|---|---|---|---|---|---|---|---|\n")
-            for w in rows:
-                f.write(f"| {w['cells']} | {100 * w['L1']:.2f}% | {100 * w['L1_fv1']:.2f}% | {100 * w['L1_fv2']:.2f}% | {w['interior']:.2f} | {w['interior_fv1']:.2f} | "
-                        f"{w['interior_fv2']:.2f} | {w['fill']:.2f} | {w['emptied']} | {w['shock_cells']:+.2f} |\n")
-    if a.json:
-        with open(a.json, "w") as f:
-            json.dump({"petmpm_options": a.extra, "runs": rows}, f, indent=1)
-
+    finish(a, rows, [("N", lambda w: f"{w['cells']}"), ("petmpm L1", lambda w: f"{100 * w['L1']:.2f}%"), ("first order", lambda w: f"{100 * w['L1_fv1']:.2f}%"),
+                     ("second order", lambda w: f"{100 * w['L1_fv2']:.2f}%"), ("interior p / exact: petmpm", lambda w: f"{w['interior']:.2f}"),
+                     ("first order", lambda w: f"{w['interior_fv1']:.2f}"), ("second order", lambda w: f"{w['interior_fv2']:.2f}"), ("fill", lambda w: f"{w['fill']:.2f}"),
+                     ("emptied cells", lambda w: f"{w['emptied']}"), ("shock [cells]", lambda w: f"{w['shock_cells']:+.2f}")])
 
 if __name__ == "__main__":
     main()

@@ -6,7 +6,7 @@ first-order Godunov and second-order MUSCL-Hancock, HLLC fluxes, transmissive fa
 their cold gas at p = 1e-4 rho0 u0^2, Mach 80, where the second-order code keeps its pressure positive: its shock
 compresses 3.998 times where Mach 800 gives 4.000).
 
-Exact (Noh, J. Comput. Phys. 72 (1987) 78; gamma = 5/3, cylindrical): behind the shock at R = u0 t / 3 the gas is at
+Exact (Noh, J. Comput. Phys. 72 (1987) 78; the scene's gamma = 5/3, cylindrical): behind the shock at R = u0 t / 3 the gas is at
 rest at rho = 16 rho0; ahead of it rho = rho0 (1 + u0 t / r). The comparison is made inside r < d - u0 t, d the
 distance from the centre to the square's nearest face (beyond it the gas would have come from outside the square).
 Reported per run, as a table and as JSON (--json):
@@ -20,13 +20,9 @@ Reported per run, as a table and as JSON (--json):
 
 usage: scripts/implosion2d.py [--cells 100,200] [--json out.json] [--markdown rows.md] [-- petmpm options]
 """
-import argparse
-import json
 import os
-import subprocess
 import sys
 import tempfile
-import time
 
 import numpy as np
 
@@ -34,34 +30,23 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 import fv2d  # noqa: E402
-from blast2d import points, scene_value  # noqa: E402
+from blast2d import finish, occupied, petmpm, points, study_args  # noqa: E402
+from petmpmlib import option_value  # noqa: E402
 from riemann2d import binned  # noqa: E402
 
-SCENE = os.path.join(ROOT, "inputs", "noh_offcentre_2d.opts")
-GAMMA = 5.0 / 3.0
+SCENE = ["-options_file", os.path.join(ROOT, "inputs", "noh_offcentre_2d.opts")]
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--cells", default="100,200")
-    ap.add_argument("--build", default=os.path.join(ROOT, "build"))
-    ap.add_argument("--json")
-    ap.add_argument("--markdown", help="write the rows of docs/verification_2d.md's table")
-    ap.add_argument("extra", nargs="*", help="petmpm options after --")
-    a = ap.parse_args()
-    c = np.array([float(v) for v in scene_value("-mpm_exact_noh_center", SCENE).split(",")])
-    u0, tf = float(scene_value("-mpm_exact_noh_speed", SCENE)), float(scene_value("-ts_max_time", SCENE))
-    p0 = (GAMMA - 1.0) * float(scene_value("-mat_gas_eos_idealgas_cv", SCENE)) * float(scene_value("-region_gas_temperature", SCENE))
+    a = study_args(__doc__, "100,200")
+    c = np.array([float(v) for v in option_value(SCENE, "-mpm_exact_noh_center").split(",")])
+    u0, tf, gamma = (float(option_value(SCENE, k)) for k in ("-mpm_exact_noh_speed", "-ts_max_time", "-mat_gas_eos_idealgas_gamma"))
+    p0 = (gamma - 1.0) * float(option_value(SCENE, "-mat_gas_eos_idealgas_cv")) * float(option_value(SCENE, "-region_gas_temperature"))
     R, rmax = u0 * tf / 3.0, min(c[0], c[1], 1.0 - c[0], 1.0 - c[1]) - u0 * tf
     rows = []
     for N in (int(v) for v in a.cells.split(",")):
         with tempfile.TemporaryDirectory() as d:
-            rep = os.path.join(d, "report.json")
-            t0 = time.time()
-            subprocess.run([os.path.join(a.build, "petmpm"), "-options_file", SCENE, "-mpm_cells", f"{N},{N}", *a.extra, "-mpm_output", d, "-mpm_report", rep], check=True, stdout=subprocess.DEVNULL)
-            wall = time.time() - t0
-            with open(rep) as f:
-                Rep = json.load(f)
+            Rep, wall = petmpm(a.build, [*SCENE, "-mpm_cells", f"{N},{N}", *a.extra], d)
             P = points(os.path.join(d, "petmpm.h5"), -1, exact=False)
             rho_b = binned(os.path.join(d, "petmpm.h5"), N)[0]
         x, y, dx, dy = fv2d.grid(N, N, (0.0, 1.0, 0.0, 1.0))
@@ -70,14 +55,11 @@ def main():
         rho_ex = np.where(rc < R, 16.0, 1.0 + u0 * tf / rc)
         pfv = max(p0, 1e-4 * u0 * u0)  # the grid codes' cold gas: Mach 80 (at petmpm's Mach 800 MUSCL-Hancock's pressure turns negative)
         W0 = np.array([np.ones_like(rc), -u0 * (X - c[0]) / rc, -u0 * (Y - c[1]) / rc, pfv * np.ones_like(rc)])
-        fv = {k: fv2d.solve(fv2d.cons(W0, GAMMA), (0, 1, 0, 1), tf, order=k, gamma=GAMMA) for k in (1, 2)}
+        fv = {k: fv2d.solve(fv2d.cons(W0, gamma), (0, 1, 0, 1), tf, order=k, gamma=gamma) for k in (1, 2)}
         inside, shell = rc < rmax, (rc > 0.25 * R) & (rc < 0.75 * R)
         l1 = lambda q: float(np.abs(q - rho_ex)[inside].sum() / rho_ex[inside].sum())  # noqa: E731
         rp = np.hypot(P["position"][:, 0] - c[0], P["position"][:, 1] - c[1])
-        i, j = np.floor(P["position"][:, 0] * N).astype(int), np.floor(P["position"][:, 1] * N).astype(int)
-        occ = np.zeros((N, N), bool)
-        ok = (i >= 0) & (i < N) & (j >= 0) & (j < N)
-        occ[j[ok], i[ok]] = True
+        occ = occupied(P["position"], N)
         check = {ck["name"]: ck for ck in Rep["checks"]}
         row = {"cells": N, "L1": l1(rho_b), "L1_fv1": l1(fv[1]["rho"]), "L1_fv2": l1(fv[2]["rho"]),
                "plateau": float(np.median(P["density"][(rp > 0.25 * R) & (rp < 0.75 * R)])),
@@ -88,16 +70,10 @@ def main():
         print(f"N {N:4d}: L1 density petmpm {row['L1']:.4f}  first order {row['L1_fv1']:.4f}  second order {row['L1_fv2']:.4f};"
               f"  plateau {row['plateau']:.2f} / {row['plateau_fv1']:.2f} / {row['plateau_fv2']:.2f} (exact 16);  emptied {row['emptied']}"
               f"  shock {row['shock_cells']:+.2f} cells  {wall:.1f} s  {row['points']} points", flush=True)
-    if a.markdown:
-        with open(a.markdown, "w") as f:
-            f.write("| N | petmpm L1 | first order | second order | plateau (16): petmpm | first order | second order | emptied cells | shock [cells] |\n"
-                    "|---|---|---|---|---|---|---|---|---|\n")
-            for w in rows:
-                f.write(f"| {w['cells']} | {100 * w['L1']:.2f}% | {100 * w['L1_fv1']:.2f}% | {100 * w['L1_fv2']:.2f}% | {w['plateau']:.2f} | {w['plateau_fv1']:.2f} | "
-                        f"{w['plateau_fv2']:.2f} | {w['emptied']} | {w['shock_cells']:+.2f} |\n")
-    if a.json:
-        with open(a.json, "w") as f:
-            json.dump({"petmpm_options": a.extra, "runs": rows}, f, indent=1)
+    finish(a, rows, [("N", lambda w: f"{w['cells']}"), ("petmpm L1", lambda w: f"{100 * w['L1']:.2f}%"), ("first order", lambda w: f"{100 * w['L1_fv1']:.2f}%"),
+                     ("second order", lambda w: f"{100 * w['L1_fv2']:.2f}%"), ("plateau (16): petmpm", lambda w: f"{w['plateau']:.2f}"),
+                     ("first order", lambda w: f"{w['plateau_fv1']:.2f}"), ("second order", lambda w: f"{w['plateau_fv2']:.2f}"), ("emptied cells", lambda w: f"{w['emptied']}"),
+                     ("shock [cells]", lambda w: f"{w['shock_cells']:+.2f}")])
 
 
 if __name__ == "__main__":

@@ -56,6 +56,20 @@ def scene(name, out, extra=(), ranks=1):
         return json.load(f)
 
 
+def study(script, cells, extra=()):
+    """The rows (--json "runs") of the study scripts/SCRIPT at the given cells ("64,128") with petmpm options extra;
+    a study that fails is a failure of the test (SystemExit), not a row."""
+    import tempfile
+    with tempfile.TemporaryDirectory() as d:
+        out = os.path.join(d, "r.json")
+        p = subprocess.run(["/usr/bin/python3", os.path.join(SRC, "scripts", script), "--cells", cells, "--build", BUILD, "--json", out, "--", *extra], capture_output=True, text=True)
+        print(p.stdout, p.stderr)
+        if p.returncode != 0:
+            raise SystemExit(f"FAILED: {script} {' '.join(extra)} exited {p.returncode}")
+        with open(out) as f:
+            return json.load(f)["runs"]
+
+
 def signal_in_loop(cmd, sig):
     """Runs cmd (with -mpm_progress set), sends sig once its first progress line says the time loop is running;
     returns the exit code and everything it printed."""

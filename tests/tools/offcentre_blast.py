@@ -9,25 +9,11 @@ default method's interior pressure is the known failure scene_offcentre_blast_in
 
 usage: offcentre_blast.py BUILD_DIR SOURCE_DIR
 """
-import json
 import os
-import subprocess
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tests/common.py
-from common import SRC, check, main  # noqa: E402
-
-
-def blast2d(extra=()):
-    """scripts/blast2d.py's rows at 64^2 and 128^2 cells with the given petmpm options."""
-    with tempfile.TemporaryDirectory() as d:
-        out = os.path.join(d, "r.json")
-        p = subprocess.run(["/usr/bin/python3", os.path.join(SRC, "scripts", "blast2d.py"), "--cells", "64,128", "--build", sys.argv[1], "--json", out, "--", *extra],
-                           capture_output=True, text=True)
-        print(p.stdout, p.stderr)
-        check(p.returncode == 0, f"blast2d.py {' '.join(extra)} exits {p.returncode}")
-        return json.load(open(out))["runs"]
+from common import check, main, study  # noqa: E402
 
 
 def test_offcentre_blast():
@@ -35,7 +21,7 @@ def test_offcentre_blast():
     cells; with the volume module L1 15.6% and 11.6%, interior pressure 0.90 and 0.96 of the exact, fill 0.99 and
     1.00."""
     for name, extra in (("default", ()), ("volume fill", ("-mpm_volume_fill", "0.5"))):
-        rows = blast2d(extra)
+        rows = study("blast2d.py", "64,128", extra)
         for r in rows:
             check(r["L1"] < r["L1_fv1"], f"{name}, {r['cells']}^2: L1 density {r['L1']:.4f} below first-order Godunov's {r['L1_fv1']:.4f}")
             check(abs(r["shock_cells"]) < 1.0, f"{name}, {r['cells']}^2: shock {r['shock_cells']:+.2f} cells from the similarity solution's (within 1)")

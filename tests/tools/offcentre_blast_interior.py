@@ -12,14 +12,12 @@ usage: offcentre_blast_interior.py BUILD_DIR SOURCE_DIR
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # the test whose runs this one shares
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tests/common.py
-from offcentre_blast import blast2d  # noqa: E402
-from common import check, main  # noqa: E402
+from common import check, main, study  # noqa: E402
 
 
 def test_offcentre_blast_interior():
-    r = blast2d()[1]
+    r = study("blast2d.py", "64,128")[1]
     check(abs(r["interior"] - 1.0) < 0.1, f"default, 128^2: interior pressure {r['interior']:.3f} of the exact (within 10%)")
 
 

@@ -9,34 +9,20 @@ known failure scene_offcentre_implosion_default.
 
 usage: offcentre_implosion.py BUILD_DIR SOURCE_DIR
 """
-import json
 import os
-import subprocess
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tests/common.py
-from common import SRC, check, main  # noqa: E402
-
-
-def implosion2d(extra=()):
-    """scripts/implosion2d.py's rows at 100^2 and 200^2 cells with the given petmpm options."""
-    with tempfile.TemporaryDirectory() as d:
-        out = os.path.join(d, "r.json")
-        p = subprocess.run(["/usr/bin/python3", os.path.join(SRC, "scripts", "implosion2d.py"), "--cells", "100,200", "--build", sys.argv[1], "--json", out, "--", *extra],
-                           capture_output=True, text=True)
-        print(p.stdout, p.stderr)
-        check(p.returncode == 0, f"implosion2d.py {' '.join(extra)} exits {p.returncode}")
-        return json.load(open(out))["runs"]
+from common import check, main, study  # noqa: E402
 
 
 def test_offcentre_implosion():
     """Measured (2026-11-27): default L1 43.6% and 23.3%, plateau 10.77 and 13.18; limited viscosity L1 20.3% and
     14.3% against first order 28.1% and 19.4%, plateau 17.30 and 17.45, shock +0.66 and +0.73 cells."""
-    rows = implosion2d()
+    rows = study("implosion2d.py", "100,200")
     check(rows[1]["L1"] < rows[0]["L1"], f"default: L1 density falls with refinement ({rows[0]['L1']:.4f} -> {rows[1]['L1']:.4f})")
     check(abs(rows[1]["plateau"] - 16.0) < abs(rows[0]["plateau"] - 16.0), f"default: the plateau's error falls with refinement ({rows[0]['plateau']:.2f} -> {rows[1]['plateau']:.2f}, exact 16)")
-    rows = implosion2d(("-mpm_viscosity_type", "limited"))
+    rows = study("implosion2d.py", "100,200", ("-mpm_viscosity_type", "limited"))
     for r in rows:
         check(r["L1"] < r["L1_fv1"], f"limited, {r['cells']}^2: L1 density {r['L1']:.4f} below first-order Godunov's {r['L1_fv1']:.4f}")
         check(abs(r["plateau"] / 16.0 - 1.0) < 0.1, f"limited, {r['cells']}^2: plateau {r['plateau']:.2f} within 10% of 16")

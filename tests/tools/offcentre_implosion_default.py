@@ -12,14 +12,12 @@ usage: offcentre_implosion_default.py BUILD_DIR SOURCE_DIR
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # the test whose runs this one shares
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tests/common.py
-from common import check, main  # noqa: E402
-from offcentre_implosion import implosion2d  # noqa: E402
+from common import check, main, study  # noqa: E402
 
 
 def test_offcentre_implosion_default():
-    r = implosion2d()[1]
+    r = study("implosion2d.py", "100,200")[1]
     check(abs(r["plateau"] / 16.0 - 1.0) < 0.1, f"default, 200^2: plateau {r['plateau']:.2f} within 10% of 16")
     check(r["L1"] <= r["L1_fv1"], f"default, 200^2: L1 density {r['L1']:.4f} not above first-order Godunov's {r['L1_fv1']:.4f}")
 
