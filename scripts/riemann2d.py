@@ -54,16 +54,17 @@ def scene(config, cells):
     return o, tf
 
 
-def binned(h5, N):
-    """Density on the unit square's N x N cells from the final points (index [j, i]), the emptied-cell count and the
-    smallest point density in the unit square."""
+def binned(h5, N, domain=(0.0, 1.0, 0.0, 1.0)):
+    """Density on the cells of side 1 / N over the domain (x0, x1, y0, y1), the unit square's N x N cells unless
+    said, from the final points (index [j, i]), the emptied-cell count and the smallest point density in the domain."""
     import h5py
     with h5py.File(h5, "r") as f:
         n = int(f["particle_count"][-1])
         x, m, rho = (f["particle_fields/" + k][-1][:n] for k in ("position", "mass", "density"))
-    i, j = np.floor(x[:, 0] * N).astype(int), np.floor(x[:, 1] * N).astype(int)
-    ok = (i >= 0) & (i < N) & (j >= 0) & (j < N)
-    M, V = np.zeros((N, N)), np.zeros((N, N))
+    nx, ny = round((domain[1] - domain[0]) * N), round((domain[3] - domain[2]) * N)
+    i, j = np.floor((x[:, 0] - domain[0]) * N).astype(int), np.floor((x[:, 1] - domain[2]) * N).astype(int)
+    ok = (i >= 0) & (i < nx) & (j >= 0) & (j < ny)
+    M, V = np.zeros((ny, nx)), np.zeros((ny, nx))
     np.add.at(M, (j[ok], i[ok]), m[ok])
     np.add.at(V, (j[ok], i[ok]), (m / rho)[ok])
     r = np.where(V > 0, M / np.where(V > 0, V, 1.0), np.nan)

@@ -56,13 +56,13 @@ def scene(name, out, extra=(), ranks=1):
         return json.load(f)
 
 
-def study(script, cells, extra=()):
-    """The rows (--json "runs") of the study scripts/SCRIPT at the given cells ("64,128") with petmpm options extra;
-    a study that fails is a failure of the test (SystemExit), not a row."""
+def study(script, cells, extra=(), args=()):
+    """The rows (--json "runs") of the study scripts/SCRIPT at the given cells ("64,128") with the script's own
+    options args and petmpm options extra; a study that fails is a failure of the test (SystemExit), not a row."""
     import tempfile
     with tempfile.TemporaryDirectory() as d:
         out = os.path.join(d, "r.json")
-        p = subprocess.run(["/usr/bin/python3", os.path.join(SRC, "scripts", script), "--cells", cells, "--build", BUILD, "--json", out, "--", *extra], capture_output=True, text=True)
+        p = subprocess.run(["/usr/bin/python3", os.path.join(SRC, "scripts", script), "--cells", cells, "--build", BUILD, "--json", out, *args, "--", *extra], capture_output=True, text=True)
         print(p.stdout, p.stderr)
         if p.returncode != 0:
             raise SystemExit(f"FAILED: {script} {' '.join(extra)} exited {p.returncode}")
