@@ -449,11 +449,15 @@ static PetscErrorCode MPMWritePoints(MPM mpm)
   PetscCall(MPIU_Allreduce(&n, &N, 1, MPIU_INT, MPI_SUM, mpm->comm));
   for (PetscInt f = 0; f < mpm->nfields; f++)
     if (mpm->field_on[f] && mpm->field[f].output) PetscCall(MPMWritePointRow(mpm, mpm->field[f].name, MPMFieldBlockSize(mpm->field[f].bs, d), n, offset, N, pts.f[f]));
-  PetscCall(PetscMalloc1(3 * n + 1, &xyz));
-  for (PetscInt p = 0; p < n; p++)
-    for (PetscInt k = 0; k < 3; k++) xyz[3 * p + k] = k < d ? pts.f[MPM_FIELD_POSITION][p * d + k] : 0.0;
-  PetscCall(MPMWritePointRow(mpm, "xyz", 3, n, offset, N, xyz));
-  PetscCall(PetscFree(xyz));
+  if (d == 3)
+    PetscCall(MPMWritePointRow(mpm, "xyz", 3, n, offset, N, pts.f[MPM_FIELD_POSITION])); /* in 3D the positions themselves: no copy at the output's memory peak */
+  else {
+    PetscCall(PetscMalloc1(3 * n + 1, &xyz));
+    for (PetscInt p = 0; p < n; p++)
+      for (PetscInt k = 0; k < 3; k++) xyz[3 * p + k] = k < d ? pts.f[MPM_FIELD_POSITION][p * d + k] : 0.0;
+    PetscCall(MPMWritePointRow(mpm, "xyz", 3, n, offset, N, xyz));
+    PetscCall(PetscFree(xyz));
+  }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   mpm->output_count[mpm->noutputs] = N;
   PetscFunctionReturn(PETSC_SUCCESS);
