@@ -15,7 +15,8 @@ The scheme is exactly symmetric about x = y for symmetric data on a square grid 
 the state with u and v swapped).
 
 Initial data: quadrants (the four-quadrant Riemann problem, exact cell averages), lax_liu (configurations 3, 4, 6
-and 12 as tabulated by Kurganov & Tadmor 2002), disk (a circular region, sub-sampled cell averages).
+and 12 as tabulated by Kurganov & Tadmor 2002), disk (a circular region, sub-sampled cell averages), sampled (any
+state given as a function of position, sub-sampled cell averages).
 An exact Riemann solver (Toro ch. 4) serves the tests (--selftest).
 
 usage: scripts/fv2d.py --config 3 --cells 200 --order 2 --out file.npz [--tfinal T] [--cfl 0.4] [--bc transmissive]
@@ -251,13 +252,24 @@ def lax_liu(config, nx, ny=None, gamma=GAMMA):
     return quadrants(states, nx, ny or nx, gamma=gamma), tf
 
 
+def subsamples(nx, ny, domain, sub):
+    """The sub x sub sub-cell centres of every cell: abscissae X (nx*sub,) and ordinates Y (ny*sub,), cell by cell."""
+    x, y, dx, dy = grid(nx, ny, domain)
+    o = (np.arange(sub) + 0.5) / sub - 0.5
+    return (x[:, None] + dx * o[None, :]).ravel(), (y[:, None] + dy * o[None, :]).ravel()
+
+
+def sampled(state, nx, ny, domain=(0.0, 1.0, 0.0, 1.0), sub=8, gamma=GAMMA):
+    """Conserved cell averages (4, ny, nx) of the primitive state(X, Y) = (rho, u, v, p) on the (ny*sub, nx*sub) grid
+    of sub-cell centres: each cell the mean of its sub x sub conserved samples."""
+    X, Y = np.meshgrid(*subsamples(nx, ny, domain, sub))
+    return cons(np.stack(state(X, Y)), gamma).reshape(4, ny, sub, nx, sub).mean(axis=(2, 4))
+
+
 def disk(inside, outside, xc, yc, r, nx, ny, domain=(0.0, 1.0, 0.0, 1.0), sub=8, gamma=GAMMA):
     """Conserved cell averages (4, ny, nx): state inside = (rho, u, v, p) in the disk of centre (xc, yc) and radius r,
     outside elsewhere; the fraction of a cell in the disk is that of its sub x sub sub-cell centres."""
-    x, y, dx, dy = grid(nx, ny, domain)
-    o = (np.arange(sub) + 0.5) / sub - 0.5
-    X = (x[:, None] + dx * o[None, :]).ravel()  # sub-sample abscissae, (nx*sub,)
-    Y = (y[:, None] + dy * o[None, :]).ravel()
+    X, Y = subsamples(nx, ny, domain, sub)
     hit = ((X[None, :] - xc) ** 2 + (Y[:, None] - yc) ** 2 <= r * r)
     f = hit.reshape(ny, sub, nx, sub).mean(axis=(1, 3))
     Qi, Qo = (cons(np.array(s, float), gamma)[:, None, None] for s in (inside, outside))

@@ -33,6 +33,18 @@ def ogive_profile(R, crh, shank, tip=0.0, n=24):
     return pts
 
 
+def inside_polygon(poly, x, y):
+    """Whether the points (x, y) (arrays) lie inside the polygon poly ((n, 2) vertices in order, the last joining the
+    first): the even-odd rule with a ray along +x, as src/scene/outline.c decides -region_<r>_polygon."""
+    poly = np.asarray(poly, float)
+    inside = np.zeros(np.shape(x), bool)
+    for (xa, ya), (xb, yb) in zip(poly, np.roll(poly, -1, axis=0)):
+        cross = (ya > y) != (yb > y)
+        xc = xa + (y - ya) * (xb - xa) / (yb - ya if yb != ya else 1.0)
+        inside ^= cross & (x < xc)
+    return inside
+
+
 def profile_volume(pts):
     """Revolved volume per radian of the polygon (r, z) about r = 0: integral of r dA (shoelace form)."""
     v = 0.0

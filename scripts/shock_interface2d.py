@@ -29,6 +29,7 @@ ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 import fv2d  # noqa: E402
 from blast2d import finish, petmpm, study_args  # noqa: E402
+from outline import inside_polygon  # noqa: E402
 from petmpmlib import option_value  # noqa: E402
 from riemann2d import binned  # noqa: E402
 
@@ -38,34 +39,22 @@ DOMAIN = (0.0, 2.0, 0.0, 1.0)
 
 def scene_state(x, y):
     """The scene's regions at the points (x, y), in its order (the first region that holds a point has it): the
-    driver box, the dense gas's polygon, the ambient gas. Returns rho, u, v, p (p = rho T: gamma - 1 = 0.4, cv = 2.5)."""
+    driver box, the dense gas's polygon, the ambient gas. Returns rho, u, v, p (p = (gamma - 1) cv rho T)."""
     get = lambda r, k: float(option_value(SCENE, f"-region_{r}_{k}"))  # noqa: E731
-    lo = [float(v) for v in option_value(SCENE, "-region_driver_lo").split(",")]
-    hi = [float(v) for v in option_value(SCENE, "-region_driver_hi").split(",")]
-    poly = np.array([float(v) for v in option_value(SCENE, "-region_heavy_polygon").split(",")]).reshape(-1, 2)
-    inside = np.zeros(x.shape, bool)  # even-odd rule, a ray along +x (src/scene/outline.c)
-    for (xa, ya), (xb, yb) in zip(poly, np.roll(poly, -1, axis=0)):
-        cross = (ya > y) != (yb > y)
-        xc = xa + (y - ya) * (xb - xa) / np.where(yb != ya, yb - ya, 1.0)
-        inside ^= cross & (x < xc)
+    vec = lambda k: np.array([float(v) for v in option_value(SCENE, k).split(",")])  # noqa: E731
+    lo, hi = vec("-region_driver_lo"), vec("-region_driver_hi")
     driver = (x >= lo[0]) & (x <= hi[0]) & (y >= lo[1]) & (y <= hi[1])
-    region = np.where(driver, 0, np.where(inside, 1, 2))
+    heavy = inside_polygon(vec("-region_heavy_polygon").reshape(-1, 2), x, y)
+    region = np.where(driver, 0, np.where(heavy, 1, 2))
     rho = np.choose(region, [get(r, "density") for r in ("driver", "heavy", "ambient")])
     T = np.choose(region, [get(r, "temperature") for r in ("driver", "heavy", "ambient")])
     cv, g = float(option_value(SCENE, "-mat_gas_eos_idealgas_cv")), float(option_value(SCENE, "-mat_gas_eos_idealgas_gamma"))
     return rho, np.zeros_like(rho), np.zeros_like(rho), (g - 1.0) * cv * rho * T
 
 
-def initial(N, sub=8):
-    """The conserved cell averages on 2N x N cells, each the mean over sub x sub points of the cell."""
-    nx, ny = 2 * N, N
-    dx, dy = (DOMAIN[1] - DOMAIN[0]) / nx, (DOMAIN[3] - DOMAIN[2]) / ny
-    s = (np.arange(sub) + 0.5) / sub
-    xs = DOMAIN[0] + (np.arange(nx)[:, None] + s[None, :]).ravel() * dx
-    ys = DOMAIN[2] + (np.arange(ny)[:, None] + s[None, :]).ravel() * dy
-    X, Y = np.meshgrid(xs, ys)
-    U = fv2d.cons(np.stack(scene_state(X, Y)))
-    return U.reshape(4, ny, sub, nx, sub).mean(axis=(2, 4))
+def initial(N):
+    """The conserved cell averages on 2N x N cells, each the mean over 8 x 8 sub-cell centres."""
+    return fv2d.sampled(scene_state, 2 * N, N, DOMAIN)
 
 
 def main():
@@ -75,7 +64,8 @@ def main():
     for N in (int(v) for v in a.cells.split(",")):
         ref = fv2d.solve(initial(a.ref_factor * N), DOMAIN, tf, order=2, bc="reflective")["rho"]
         ref = ref.reshape(N, a.ref_factor, 2 * N, a.ref_factor).mean(axis=(1, 3))
-        fv = {k: fv2d.solve(initial(N), DOMAIN, tf, order=k, bc="reflective")["rho"] for k in (1, 2)}
+        U0 = initial(N)
+        fv = {k: fv2d.solve(U0, DOMAIN, tf, order=k, bc="reflective")["rho"] for k in (1, 2)}
         with tempfile.TemporaryDirectory() as d:
             R, wall = petmpm(a.build, [*SCENE, "-mpm_cells", f"{2 * N},{N}", *a.extra], d)
             rho, empty, rmin = binned(os.path.join(d, "petmpm.h5"), N, DOMAIN)

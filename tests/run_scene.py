@@ -52,11 +52,10 @@ def run_case(case, out, extra=()):
     extra_args = [os.path.join(SRC, a) if i and extra_args[i - 1] == "-options_file" and not os.path.isabs(a) else a for i, a in enumerate(extra_args)]
     args = ["-options_file", lib.scene_path(case["scene"]), *extra_args, *extra]
     rep, p = lib.run(EXE, args, case.get("ranks", 1), out)
-    if rep is not None:
-        print(f"case {case['name']}: {rep.get('wall_seconds', 0.0):.1f} s", flush=True)
     if rep is None:
         print(p.stdout[-3000:], p.stderr[-3000:])
         raise SystemExit(f"FAILED: case {case['name']}: petmpm {' '.join(args)} exited {p.returncode}")
+    print(f"case {case['name']}: {rep.get('wall_seconds', 0.0):.1f} s", flush=True)
     return rep
 
 
