@@ -298,11 +298,12 @@ PetscErrorCode MPMConstitutiveInitialize(MPM mpm)
     const MPMEOS E = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].eos;
     PetscReal    c2;
     MPMEOSEnergyKernel(E, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_TEMPERATURE][p], &pts.f[MPM_FIELD_ENERGY][p]);
-    const MPMStrength S   = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].strength;
-    PetscReal         cs2 = 0.0;
+    const MPMStrength S                             = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].strength;
+    PetscReal         cs2                           = 0.0;
+    const PetscReal   L0[MPM_MAX_DIM * MPM_MAX_DIM] = {0}; /* at rest */
     MPMEOSPressureKernel(E, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_ENERGY][p], &pts.f[MPM_FIELD_PRESSURE][p], &c2);
     if (S)
-      S->ops.stress(S->data, d, 0.0, &pts.f[MPM_FIELD_GRADV][p * d * d], pts.f[MPM_FIELD_DEFGRAD] ? &pts.f[MPM_FIELD_DEFGRAD][p * d * d] : NULL, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_TEMPERATURE][p], &pts.f[MPM_FIELD_STRESS][p * d * d],
+      S->ops.stress(S->data, d, 0.0, L0, pts.f[MPM_FIELD_DEFGRAD] ? &pts.f[MPM_FIELD_DEFGRAD][p * d * d] : NULL, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_TEMPERATURE][p], &pts.f[MPM_FIELD_STRESS][p * d * d],
                     S->nfields ? &pts.f[S->fid[0]][p] : NULL, &cs2);
     pts.f[MPM_FIELD_SOUNDSPEED][p] = PetscSqrtReal(PetscMax(c2, 0.0) + cs2);
   }

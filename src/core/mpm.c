@@ -352,6 +352,7 @@ PetscErrorCode MPMDestroy(MPM *mpm)
   PetscCall(MPMDestroyGrid(m));
   PetscCall(MPMCrackDestroy(m));
   PetscCall(PetscFree3(m->widx, m->work, m->wL));
+  PetscCall(PetscFree(m->gradv_work));
   if (m->swarm) PetscCall(MPMPointsRelease(m));
   PetscCall(DMDestroy(&m->swarm));
   for (PetscInt i = 0; i < m->nmat; i++) {

@@ -160,6 +160,9 @@ struct _p_MPM {
   PetscInt    *widx;                                     /* the local points of each material, material by material  */
   PetscReal   *wL;                                       /* axisymmetric: L_p - L_tt,p I, what the strength models see */
   PetscReal   *work;                                     /* 8 values per point of a chunk of MPM_CHUNK points        */
+  PetscReal   *gradv_work;                               /* L_p of the points the step's point phases hold (a window)  */
+  PetscInt     gradv_cap;                                /* its capacity [points]                                    */
+  PetscBool    gradv_live;                               /* inside MPMStepPoints: MPMPointsGetArrays shows gradv_work */
   PetscInt     box_lo[MPM_MAX_DIM], box_hi[MPM_MAX_DIM]; /* owned nodes the node loops sweep, owned-box indices (MPMGridZeroForScatter) */
   PetscInt     body;                                     /* the body whose nodes lnodes, box, lbox and xcell are now (MPMBodySelect) */
   MPMBodyNodes bnodes[MPM_MAX_BODIES];                   /* several bodies: the others' nodes, swapped in by MPMBodySelect */
@@ -244,20 +247,18 @@ static inline void MPMNodalMeanStencilOf(MPM mpm, const MPMPoints *pts, PetscInt
   MPMShapeWeights(mpm->shape, &mpm->grid, &pts->f[MPM_FIELD_POSITION][p * d], MPMPointDomain(d, pts->f[MPM_FIELD_DEFGRAD], pts->f[MPM_FIELD_DOMAINSCALE], p, Fs), st);
 }
 
-/* div v_p = tr L_p, plus the hoop rate v_r / r on an axisymmetric grid. */
-static inline PetscReal MPMPointDivergence(const MPMPoints *pts, PetscInt d, PetscInt p)
+/* div v_p = tr L_p, plus the hoop rate v_r / r on an axisymmetric grid, of the point's last step (kept by MPMStepPoints:
+   L_p itself is not kept). */
+static inline PetscReal MPMPointDivergence(const MPMPoints *pts, PetscInt p)
 {
-  PetscReal div = pts->f[MPM_FIELD_HOOPRATE] ? pts->f[MPM_FIELD_HOOPRATE][p] : 0.0;
-
-  for (PetscInt k = 0; k < d; k++) div += pts->f[MPM_FIELD_GRADV][p * d * d + k * d + k];
-  return div;
+  return pts->f[MPM_FIELD_DIVERGENCE][p];
 }
 
 /* Whether point p is in a shock or a fast expansion: its velocity jump across a cell |div v| h_min exceeds the fraction
    mach of its sound speed sqrt(c2) (the modules that act only in a quiescent flow). */
 static inline PetscBool MPMPointInShock(MPM mpm, const MPMPoints *pts, PetscInt p, PetscReal c2, PetscReal mach)
 {
-  return (PetscBool)(PetscAbsReal(MPMPointDivergence(pts, mpm->grid.dim, p)) * mpm->grid.hmin > mach * PetscSqrtReal(c2));
+  return (PetscBool)(PetscAbsReal(MPMPointDivergence(pts, p)) * mpm->grid.hmin > mach * PetscSqrtReal(c2));
 }
 
 /* Loops c over the owned nodes of the box the step's node loops sweep, as indices into the ghosted local nodal vector

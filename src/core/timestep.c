@@ -8,18 +8,17 @@
    fails every comparison and takes the full evaluation. (The points' maxima evaluate every term, in vector lanes.) */
 #define MPM_DT_SCREEN (1.0 - 1e-9)
 
-/* The signal speed of point p (c_p + |v_p| and the diffusive terms of MPMComputeTimeStep), with the dimension D, whether
-   a material may be viscous (VISC: mu, the materials' viscosities) and whether the hoop rate enters div v (HOOP)
-   compile-time constants where the loops call it, so that the loops vectorize (MPMPointDivergence's test for the hoop
-   rate per point keeps a loop scalar: docs/performance.md). The viscosity's term is taken wherever q_p > 0 and div v_p != 0 (the
+/* The signal speed of point p (c_p + |v_p| and the diffusive terms of MPMComputeTimeStep), with the dimension D and
+   whether a material may be viscous (VISC: mu, the materials' viscosities) compile-time constants where the loops call
+   it, so that the loops vectorize. The viscosity's term is taken wherever q_p > 0 and div v_p != 0 (the
    screened loop of earlier versions skipped it only where it could not raise the maximum: the same bits). */
-static inline __attribute__((always_inline)) PetscReal MPMSignalSpeed(const MPMPoints *pts, PetscInt p, const PetscInt D, const PetscBool VISC, const PetscBool HOOP, const PetscReal mu[], PetscReal h, PetscReal *divv)
+static inline __attribute__((always_inline)) PetscReal MPMSignalSpeed(const MPMPoints *pts, PetscInt p, const PetscInt D, const PetscBool VISC, const PetscReal mu[], PetscReal h, PetscReal *divv)
 {
-  const PetscReal *v = &pts->f[MPM_FIELD_VELOCITY][p * D], *L = &pts->f[MPM_FIELD_GRADV][p * D * D], q = pts->f[MPM_FIELD_VISCOSITY][p], rho = pts->f[MPM_FIELD_DENSITY][p];
-  PetscReal        v2 = 0.0, div = HOOP ? pts->f[MPM_FIELD_HOOPRATE][p] : 0.0, s;
+  const PetscReal *v = &pts->f[MPM_FIELD_VELOCITY][p * D], q = pts->f[MPM_FIELD_VISCOSITY][p], rho = pts->f[MPM_FIELD_DENSITY][p];
+  const PetscReal  div = pts->f[MPM_FIELD_DIVERGENCE][p]; /* v_r / r + tr L_p of the last step (MPMStepPoints) */
+  PetscReal        v2  = 0.0, s;
 
   for (PetscInt k = 0; k < D; k++) v2 += v[k] * v[k];
-  for (PetscInt k = 0; k < D; k++) div += L[k * D + k];
   s = pts->f[MPM_FIELD_SOUNDSPEED][p] + PetscSqrtReal(v2);
   if (VISC) { /* a viscous material's diffusion limit dt <= h^2 / (2 d nu) */
     const PetscReal m = mu[(PetscInt)pts->f[MPM_FIELD_MATERIAL][p]];
@@ -37,7 +36,7 @@ static inline __attribute__((always_inline)) PetscReal MPMSignalSpeed(const MPMP
    a loop that vectorizes (the square root and the division in vector lanes), then the maxima in four independent
    chains. A NaN speed makes the maximum NaN. */
 #define MPM_DT_CHUNK 256
-static inline __attribute__((always_inline)) void MPMSignalMaxima(const MPMPoints *pts, const PetscInt D, const PetscBool VISC, const PetscBool HOOP, const PetscReal mu[], PetscReal h, PetscReal mx[])
+static inline __attribute__((always_inline)) void MPMSignalMaxima(const MPMPoints *pts, const PetscInt D, const PetscBool VISC, const PetscReal mu[], PetscReal h, PetscReal mx[])
 {
   PetscReal m0[4] = {0.0, 0.0, 0.0, 0.0}, m1[4] = {0.0, 0.0, 0.0, 0.0};
   int       nan = 0;
@@ -47,7 +46,7 @@ static inline __attribute__((always_inline)) void MPMSignalMaxima(const MPMPoint
     PetscReal      s[MPM_DT_CHUNK], div[MPM_DT_CHUNK];
     PetscInt       i;
 
-    for (i = 0; i < n; i++) s[i] = MPMSignalSpeed(pts, c0 + i, D, VISC, HOOP, mu, h, &div[i]);
+    for (i = 0; i < n; i++) s[i] = MPMSignalSpeed(pts, c0 + i, D, VISC, mu, h, &div[i]);
     for (i = 0; i < n; i++) nan |= s[i] != s[i];
     for (i = 0; i + 4 <= n; i += 4)
       for (PetscInt l = 0; l < 4; l++) {
@@ -63,17 +62,13 @@ static inline __attribute__((always_inline)) void MPMSignalMaxima(const MPMPoint
   mx[1] = PetscMax(PetscMax(m1[0], m1[1]), PetscMax(m1[2], m1[3]));
 }
 
-/* MPMSignalMaxima with the dimension D and the run's visc and hoop as constants. */
-#define MPM_SIGNAL_MAXIMA(D)                                         \
-  do {                                                               \
-    if (visc && hoop)                                                \
-      MPMSignalMaxima(&pts, D, PETSC_TRUE, PETSC_TRUE, mu, h, mx);   \
-    else if (visc)                                                   \
-      MPMSignalMaxima(&pts, D, PETSC_TRUE, PETSC_FALSE, mu, h, mx);  \
-    else if (hoop)                                                   \
-      MPMSignalMaxima(&pts, D, PETSC_FALSE, PETSC_TRUE, mu, h, mx);  \
-    else                                                             \
-      MPMSignalMaxima(&pts, D, PETSC_FALSE, PETSC_FALSE, mu, h, mx); \
+/* MPMSignalMaxima with the dimension D and the run's visc as constants. */
+#define MPM_SIGNAL_MAXIMA(D)                            \
+  do {                                                  \
+    if (visc)                                           \
+      MPMSignalMaxima(&pts, D, PETSC_TRUE, mu, h, mx);  \
+    else                                                \
+      MPMSignalMaxima(&pts, D, PETSC_FALSE, mu, h, mx); \
   } while (0)
 
 /* dt = min of
@@ -98,7 +93,7 @@ PetscErrorCode MPMComputeTimeStep(MPM mpm, PetscBool diagnose, PetscReal *dt)
   const PetscInt  d     = g->dim;
   const PetscReal h     = g->hmin;
   PetscReal       mx[4] = {0.0, 0.0, 0.0, 0.0}, lmax, dts[MPM_NUM_DT_LIMITS], mu[MPM_MAX_MATERIALS]; /* max signal speed, max |div v|, max wbar |a|, a NaN speed */
-  PetscBool       visc  = PETSC_FALSE, hoop;
+  PetscBool       visc  = PETSC_FALSE;
   PetscInt        pmax  = -1;
   MPMPoints       pts;
 
@@ -110,7 +105,6 @@ PetscErrorCode MPMComputeTimeStep(MPM mpm, PetscBool diagnose, PetscReal *dt)
     mu[i]                 = str ? str->mu : 0.0;
     visc                  = (PetscBool)(visc || mu[i] > 0.0);
   }
-  hoop = (PetscBool)(pts.f[MPM_FIELD_HOOPRATE] != NULL);
   if (d == 1)
     MPM_SIGNAL_MAXIMA(1);
   else if (d == 2)
@@ -120,7 +114,7 @@ PetscErrorCode MPMComputeTimeStep(MPM mpm, PetscBool diagnose, PetscReal *dt)
   if (diagnose) /* the point that sets the maximum: the first whose speed equals it (or is NaN) */
     for (PetscInt p = 0; p < pts.n && pmax < 0; p++) {
       PetscReal       div;
-      const PetscReal s = MPMSignalSpeed(&pts, p, d, PETSC_TRUE, hoop, mu, h, &div);
+      const PetscReal s = MPMSignalSpeed(&pts, p, d, PETSC_TRUE, mu, h, &div);
       if (s == mx[0] || s != s) pmax = p;
     }
   for (PetscInt i = 0; i < MPMFieldsCount(mpm); i++) { /* every body's nodes, and the crack fields' */

@@ -53,7 +53,7 @@ static PetscErrorCode MPMCkptRead(hid_t file, const char name[], hsize_t offset,
   hsize_t len;
 
   PetscFunctionBegin;
-  PetscCheck(dset >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "-mpm_restart: the checkpoint has no %s: it is not a petmpm checkpoint of this scene", name);
+  PetscCheck(dset >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "-mpm_restart: the checkpoint has no %s: it was written by another version of petmpm (before the field existed) or for another scene", name);
   space = H5Dget_space(dset);
   H5Sget_simple_extent_dims(space, &len, NULL);
   H5Sclose(space);

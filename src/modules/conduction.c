@@ -34,7 +34,6 @@ static PetscErrorCode MPMConductionView(MPMModule mod, MPM mpm, PetscViewer view
 static PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
 {
   const PetscReal C    = ((MPMConduction *)mod->data)->C;
-  const PetscInt  d    = mpm->grid.dim;
   PetscInt        nact = 0;
   PetscReal      *w, *Tbar;
   MPMPoints       pts;
@@ -46,7 +45,7 @@ static PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepCo
     const PetscReal *rho = pts.f[MPM_FIELD_DENSITY], *e = pts.f[MPM_FIELD_ENERGY];
     for (PetscInt p = 0; p < pts.n; p++) { /* beta_p, c_v,p and the weight w_p = beta_p m_p c_v,p */
       const MPMEOS E    = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].eos;
-      PetscReal    beta = PetscMin(1.0, -C * MPMPointDivergence(&pts, d, p) * ctx->dt), de, T0, T1;
+      PetscReal    beta = PetscMin(1.0, -C * MPMPointDivergence(&pts, p) * ctx->dt), de, T0, T1;
       if (beta < 1e-10) continue;                    /* expansion, rest, or too little to matter (and no denormal weights) */
       de = 1e-3 * PetscMax(PetscAbsReal(e[p]), 1.0); /* a central difference wide enough that round-off in e does not reach c_v */
       MPMEOSTemperatureKernel(E, rho[p], e[p] - de, &T0);

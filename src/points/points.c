@@ -15,7 +15,7 @@ const MPMFieldInfo MPMFieldTable[MPM_NUM_FIELDS] = {
   {"temperature", 1, "eV", "temperature T_p", PETSC_TRUE},
   {"soundspeed", 1, "cm/s", "sound speed c_p", PETSC_FALSE},
   {"viscosity", 1, "dyn/cm^2", "artificial viscous pressure q_p", PETSC_TRUE},
-  {"gradv", -1, "1/s", "velocity gradient L_p = dv/dx, row-major", PETSC_FALSE},
+  {"gradv", -1, "1/s", "velocity gradient L_p = dv/dx, row-major: scratch of the step's point phases (MPMStepPoints), not kept", PETSC_FALSE},
   {"defgrad", -1, "-", "deformation gradient F_p = dx/dX, row-major", PETSC_TRUE},
   {"stress", -1, "dyn/cm^2", "stress s_p besides the pressure (strength model), row-major", PETSC_TRUE},
   {"refposition", 0, "cm", "reference (initial lattice) position X_p", PETSC_TRUE},
@@ -24,6 +24,7 @@ const MPMFieldInfo MPMFieldTable[MPM_NUM_FIELDS] = {
   {"domainscale", 0, "-", "domain scale s_p: the point's domain is F_p diag(s_p h / (2 ppc)) [-1, 1]^d (halved along an axis at each split)", PETSC_FALSE},
   {"hooprate", 1, "1/s", "hoop strain rate L_tt = v_r / r (axisymmetric)", PETSC_FALSE},
   {"body", 1, "-", "body index (-region_<r>_body): each body has its own nodal velocity field", PETSC_TRUE},
+  {"divergence", 1, "1/s", "velocity divergence div v_p = tr L_p (+ v_r / r in r-z) of the point's last step", PETSC_FALSE},
 };
 
 /* Block size of a table entry: 0 means d, -1 means d*d. */
@@ -87,10 +88,13 @@ PetscBool MPMPointsFieldRequired(MPM mpm, MPMField f)
 /* The core fields (MPMFieldTable) that every scene carries, and those only some need: F where the shape functions,
    a strength model or the exact solution read it, s where a material has strength, X where an exact solution is
    evaluated at it, s_p where a module asks (MPMPointsRequireField); a type's own state is registered apart
-   (MPMPointsRegisterTypeFields). A fluid scene carries 26 values per point in 3D instead of 47. */
+   (MPMPointsRegisterTypeFields). A fluid scene carries 18 values per point in 3D instead of 39. The
+   velocity gradient L_p is not kept: the step's point phases hold it for a window of points, and the divergence the
+   time step and the end-of-step modules read is kept instead. */
 PetscErrorCode MPMPointsSelectFields(MPM mpm)
 {
   PetscFunctionBegin;
+  mpm->field_on[MPM_FIELD_GRADV]       = PETSC_FALSE; /* scratch of the step's point phases (MPMPointsGetArrays) */
   mpm->field_on[MPM_FIELD_DEFGRAD]     = mpm->track_F;
   mpm->field_on[MPM_FIELD_STRESS]      = mpm->has_stress;
   mpm->field_on[MPM_FIELD_REFPOSITION] = (PetscBool)(mpm->exact != NULL);
@@ -116,6 +120,10 @@ PetscErrorCode MPMPointsGetArrays(MPM mpm, MPMPoints *pts)
     for (PetscInt f = 0; f < mpm->nfields; f++)
       if (pts->f[f]) pts->f[f] += mpm->win_p0 * MPMFieldBlockSize(mpm->field[f].bs, mpm->grid.dim);
     pts->n = mpm->win_n;
+  }
+  if (mpm->gradv_live) { /* L_p: inside the step's point phases only (MPMStepPoints), a window's worth */
+    PetscCheck(pts->n <= mpm->gradv_cap, PETSC_COMM_SELF, PETSC_ERR_PLIB, "The velocity gradient's scratch holds %" PetscInt_FMT " points, not %" PetscInt_FMT, mpm->gradv_cap, pts->n);
+    pts->f[MPM_FIELD_GRADV] = mpm->gradv_work;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -373,8 +381,8 @@ PetscErrorCode MPMCreatePoints(MPM mpm)
         if (pts.f[MPM_FIELD_DOMAINSCALE]) pts.f[MPM_FIELD_DOMAINSCALE][n * d + k] = 1.0;
       }
       if (!reg) MPMEOSTemperatureKernel(mpm->mat[pc[i].material].eos, rho[i], e[i], &T);
+      pts.f[MPM_FIELD_DIVERGENCE][n] = 0.0;
       for (PetscInt k = 0; k < d * d; k++) {
-        pts.f[MPM_FIELD_GRADV][n * d * d + k] = 0.0;
         if (pts.f[MPM_FIELD_STRESS]) pts.f[MPM_FIELD_STRESS][n * d * d + k] = 0.0;
         if (pts.f[MPM_FIELD_DEFGRAD]) pts.f[MPM_FIELD_DEFGRAD][n * d * d + k] = k % (d + 1) == 0 ? 1.0 : 0.0;
       }
