@@ -469,21 +469,14 @@ static PetscErrorCode MPMWritePoints(MPM mpm)
 static PetscErrorCode MPMWriteGrid(MPM mpm)
 {
   const MPMGrid *g = &mpm->grid;
-  const PetscInt d = g->dim, dof = 1 + d, rank = 2 + d;
+  const PetscInt d = g->dim, dof = 1 + d, rank = 2 + d, ks = d - 1; /* ks: the slowest direction */
   hsize_t        dims[5], start[5], count[5], maxdims[5], chunk[5], csize = 1;
   hid_t          file, grp, dset;
   PetscReal     *a;
   const MPMNode *node;
-  PetscInt       nown = MPMNumOwnedNodes(g);
+  PetscInt       plane = 1, nslab, nslab_max, z0;
 
   PetscFunctionBegin;
-  PetscCall(PetscMalloc1(nown * dof + 1, &a));
-  PetscCall(VecGetArrayRead(mpm->nodes, (const PetscScalar **)&node));
-  for (PetscInt c = 0; c < nown; c++) {
-    a[c * dof] = node[c].m;
-    for (PetscInt k = 0; k < d; k++) a[c * dof + 1 + k] = node[c].p[k];
-  }
-  PetscCall(VecRestoreArrayRead(mpm->nodes, (const PetscScalar **)&node));
   dims[0]    = (hsize_t)mpm->noutputs + 1;
   start[0]   = (hsize_t)mpm->noutputs;
   count[0]   = 1;
@@ -502,11 +495,30 @@ static PetscErrorCode MPMWriteGrid(MPM mpm)
     chunk[i] = PetscMin(dims[i], (hsize_t)PetscMax(1, (1 << 18) / (PetscInt)(csize * dof)));
     csize *= chunk[i];
   }
+  for (PetscInt k = 0; k < ks; k++) plane *= g->xm[k];
+  /* Written in slabs of whole chunks along the slowest direction (at most 2^18 values each, a buffer that does not grow
+     with the grid), every rank as many (the write is collective; a rank with fewer writes nothing in the rest). */
+  z0    = (g->xs[ks] / (PetscInt)chunk[1]) * (PetscInt)chunk[1];
+  nslab = g->xm[ks] ? (g->xs[ks] + g->xm[ks] - z0 + (PetscInt)chunk[1] - 1) / (PetscInt)chunk[1] : 0;
+  PetscCall(MPIU_Allreduce(&nslab, &nslab_max, 1, MPIU_INT, MPI_MAX, mpm->comm));
+  PetscCall(PetscMalloc1(PetscMin((PetscInt)chunk[1], g->xm[ks]) * plane * dof + 1, &a));
   PetscCall(PetscViewerHDF5GetFileId(mpm->h5, &file));
   grp = H5Lexists(file, "grid", H5P_DEFAULT) > 0 ? H5Gopen2(file, "grid", H5P_DEFAULT) : H5Gcreate2(file, "grid", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   PetscCheck(grp >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot open /grid in %s/petmpm.h5", mpm->outdir);
   PetscCall(MPMH5Extendable(grp, "nodes", (int)rank, dims, maxdims, chunk, H5T_NATIVE_DOUBLE, PETSC_FALSE, &dset));
-  PetscCall(MPMH5Block(dset, PETSC_TRUE, start, count, a, "/grid/nodes"));
+  PetscCall(VecGetArrayRead(mpm->nodes, (const PetscScalar **)&node));
+  for (PetscInt s = 0; s < nslab_max; s++) {
+    const PetscInt lo = PetscMax(g->xs[ks], z0 + s * (PetscInt)chunk[1]), hi = PetscMin(g->xs[ks] + g->xm[ks], z0 + (s + 1) * (PetscInt)chunk[1]);
+    const PetscInt c0 = (lo - g->xs[ks]) * plane, nc = hi > lo ? (hi - lo) * plane : 0;
+    for (PetscInt c = 0; c < nc; c++) {
+      a[c * dof] = node[c0 + c].m;
+      for (PetscInt k = 0; k < d; k++) a[c * dof + 1 + k] = node[c0 + c].p[k];
+    }
+    start[1] = (hsize_t)(nc ? lo : 0);
+    count[1] = (hsize_t)(nc ? hi - lo : 0);
+    PetscCall(MPMH5Block(dset, PETSC_TRUE, start, count, a, "/grid/nodes"));
+  }
+  PetscCall(VecRestoreArrayRead(mpm->nodes, (const PetscScalar **)&node));
   H5Dclose(dset);
   H5Gclose(grp);
   PetscCall(PetscFree(a));

@@ -33,14 +33,16 @@ static PetscErrorCode MPMConductionView(MPMModule mod, MPM mpm, PetscViewer view
 
 static PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
 {
-  const PetscReal C    = ((MPMConduction *)mod->data)->C;
-  PetscInt        nact = 0;
+  const PetscReal C  = ((MPMConduction *)mod->data)->C;
+  PetscInt        nc = 0, nw = 0, nact;
+  PetscInt       *idx;
   PetscReal      *w, *Tbar;
   MPMPoints       pts;
 
   PetscFunctionBegin;
   PetscCall(MPMPointsGetArrays(mpm, &pts));
-  PetscCall(PetscCalloc2(pts.n + 1, &w, pts.n + 1, &Tbar));
+  for (PetscInt p = 0; p < pts.n; p++) nc += (PetscMin(1.0, -C * MPMPointDivergence(&pts, p) * ctx->dt) >= 1e-10);
+  PetscCall(PetscMalloc3(nc + 1, &idx, nc + 1, &w, nc + 1, &Tbar)); /* the compressed points only (few in most steps) */
   {
     const PetscReal *rho = pts.f[MPM_FIELD_DENSITY], *e = pts.f[MPM_FIELD_ENERGY];
     for (PetscInt p = 0; p < pts.n; p++) { /* beta_p, c_v,p and the weight w_p = beta_p m_p c_v,p */
@@ -50,18 +52,21 @@ static PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepCo
       de = 1e-3 * PetscMax(PetscAbsReal(e[p]), 1.0); /* a central difference wide enough that round-off in e does not reach c_v */
       MPMEOSTemperatureKernel(E, rho[p], e[p] - de, &T0);
       MPMEOSTemperatureKernel(E, rho[p], e[p] + de, &T1);
-      if (!(T1 > T0)) continue;                                        /* an EOS without temperature */
-      w[p] = beta * pts.f[MPM_FIELD_MASS][p] * (2.0 * de / (T1 - T0)); /* c_v = 2 de / (T1 - T0) */
-      nact++;
+      if (!(T1 > T0)) continue; /* an EOS without temperature */
+      idx[nw] = p;
+      w[nw]   = beta * pts.f[MPM_FIELD_MASS][p] * (2.0 * de / (T1 - T0)); /* c_v = 2 de / (T1 - T0) */
+      nw += (w[nw] != 0.0);
     }
   }
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &nact, 1, MPIU_INT, MPI_SUM, mpm->comm));
+  PetscCall(MPIU_Allreduce(&nw, &nact, 1, MPIU_INT, MPI_SUM, mpm->comm));
   if (nact) {
-    PetscCall(MPMPointsNodalMean(mpm, &pts, w, pts.f[MPM_FIELD_TEMPERATURE], Tbar, NULL));
-    for (PetscInt p = 0; p < pts.n; p++) /* the heat w_p (sum N T_I - T_p); then p, T and c from the EOS */
-      if (w[p] != 0.0) MPMPointEOSUpdate(mpm, &pts, p, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_ENERGY][p] + w[p] * (Tbar[p] - pts.f[MPM_FIELD_TEMPERATURE][p]) / pts.f[MPM_FIELD_MASS][p]);
+    PetscCall(MPMPointsNodalMean(mpm, &pts, nw, idx, w, pts.f[MPM_FIELD_TEMPERATURE], Tbar));
+    for (PetscInt i = 0; i < nw; i++) { /* the heat w_p (sum N T_I - T_p); then p, T and c from the EOS */
+      const PetscInt p = idx[i];
+      MPMPointEOSUpdate(mpm, &pts, p, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_ENERGY][p] + w[i] * (Tbar[i] - pts.f[MPM_FIELD_TEMPERATURE][p]) / pts.f[MPM_FIELD_MASS][p]);
+    }
   }
-  PetscCall(PetscFree2(w, Tbar));
+  PetscCall(PetscFree3(idx, w, Tbar));
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -85,6 +85,6 @@ PETSC_INTERN PetscErrorCode MPMCheckpointInts(MPMCheckpoint, const char[], Petsc
 /* The point-exchange modules' nodal sums and the points' state changes they make (src/modules/nodemean.c). */
 PETSC_INTERN PetscErrorCode MPMNodalMeanSetUp(MPM);
 PETSC_INTERN PetscErrorCode MPMNodalMeanSum(MPM, PetscReal **);
-PETSC_INTERN PetscErrorCode MPMPointsNodalMean(MPM, const MPMPoints *, const PetscReal[], const PetscReal[], PetscReal[], PetscReal[]);
+PETSC_INTERN PetscErrorCode MPMPointsNodalMean(MPM, const MPMPoints *, PetscInt, const PetscInt[], const PetscReal[], const PetscReal[], PetscReal[]);
 PETSC_INTERN void           MPMPointEOSUpdate(MPM, MPMPoints *, PetscInt, PetscReal, PetscReal);
 PETSC_INTERN void           MPMPointChangeVolume(MPM, MPMPoints *, PetscInt, PetscReal, PetscReal);

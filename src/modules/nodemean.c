@@ -1,12 +1,21 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
-/* The exchange step of the point-exchange modules (heat conduction; MPMPointEOSUpdate also pressure relaxation): points with weight
-   w_p > 0 carrying a quantity q_p put it on their nodes as the weighted nodal mean
+/* The exchange step of the point-exchange modules (heat conduction; MPMPointEOSUpdate also pressure relaxation): the
+   points idx[i] with weight w_i > 0 (a packed list: few in most steps) carrying a quantity q_p put it on their nodes as
+   the weighted nodal mean
      q_I = sum_q N_I(x_q) w_q q_q / sum_q N_I(x_q) w_q,
-   summed over ranks, and read back qbar_p = sum_I N_I(x_p) q_I and (optionally) q2bar_p = sum_I N_I(x_p) q_I^2.
+   summed over ranks, and read back qbar_i = sum_I N_I(x_p) q_I (packed as the list).
    An exchange w_p sum_I N_I(x_p) (q_p - q_I) X_I then sums to zero over the points for any nodal X_I (partition of
    the nodal sums), which is what makes the modules conservative. It runs after migration, where each point's nodes
    are in its rank's ghosted box. */
 #include "core/petmpmimpl.h"
+
+/* The weighted points' stencils (12 bytes an entry, about 30 entries a CPDI point in 3D) are kept from the scatter for
+   the gather up to this many entries per local point (about 50 bytes a point); the points beyond evaluate theirs again.
+   Kept: one CPDI evaluation instead of two (docs/performance.md); evaluated again: no buffer of the size of every
+   compressed point's stencil (165 bytes a point in the 3D bar with 45% of its points compressing). */
+#ifndef MPM_NODAL_MEAN_KEEP
+#  define MPM_NODAL_MEAN_KEEP 4
+#endif
 
 /* The nodal sums' DMDA (2 values per node) and its vectors, made on first use; the local vector starts zeroed. */
 PetscErrorCode MPMNodalMeanSetUp(MPM mpm)
@@ -29,67 +38,61 @@ PetscErrorCode MPMNodalMeanSum(MPM mpm, PetscReal **W)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode MPMPointsNodalMean(MPM mpm, const MPMPoints *pts, const PetscReal w[], const PetscReal q[], PetscReal qbar[], PetscReal q2bar[])
+PetscErrorCode MPMPointsNodalMean(MPM mpm, const MPMPoints *pts, PetscInt nw, const PetscInt idx[], const PetscReal w[], const PetscReal q[], PetscReal qbar[])
 {
-  const PetscBool one = (PetscBool)(mpm->lnodes == mpm->nodes); /* one rank, no ghosts: the local array is the global one */
-  PetscInt        lo = PETSC_MAX_INT, hi = -1;                  /* the flat range of nodes the scatter touched */
-  PetscReal      *W, *sw                 = NULL;                /* the weighted points' stencils, kept from the scatter for the gather: */
-  PetscInt       *sn = NULL, nw = 0, cap = 0, used = 0, k = 0;  /* entries, nodes sn and weights sw, packed in point order */
+  const PetscBool one    = (PetscBool)(mpm->lnodes == mpm->nodes); /* one rank, no ghosts: the local array is the global one */
+  const PetscInt  budget = (PetscInt)PetscMin((PetscInt64)MPM_NODAL_MEAN_KEEP * pts->n + 64, PETSC_MAX_INT / 2);
+  PetscInt        lo = PETSC_MAX_INT, hi = -1;             /* the flat range of nodes the scatter touched */
+  PetscReal      *W, *sw                 = NULL;           /* the first nkept weighted points' stencils, kept from the scatter for the gather: */
+  PetscInt       *sn = NULL, cap = 0, used = 0, nkept = 0; /* entries, nodes sn and weights sw, packed in point order */
   MPMStencil      st;
 
   PetscFunctionBegin;
   PetscCall(MPMNodalMeanSetUp(mpm));
   if (!one) PetscCall(VecZeroEntries(mpm->mean_l));
   PetscCall(VecGetArray(mpm->mean_l, &W));
-  for (PetscInt p = 0; p < pts->n; p++) nw += (w[p] != 0.0);
-  for (PetscInt p = 0; p < pts->n; p++) { /* sum N w and sum N w q to the nodes */
-    if (w[p] == 0.0) continue;
+  for (PetscInt i = 0; i < nw; i++) { /* sum N w and sum N w q to the nodes */
+    const PetscInt p = idx[i];
     MPMNodalMeanStencilOf(mpm, pts, p, &st);
-    if (used + 1 + st.n > cap) { /* room: every weighted point at this size first, then twice as much */
-      const PetscInt64 want = cap ? 2 * (PetscInt64)cap : (PetscInt64)nw * (1 + st.n), need = PetscMax(want, (PetscInt64)used + 1 + st.n);
-      PetscInt        *sn1;
-      PetscReal       *sw1;
-      PetscCheck(need <= PETSC_MAX_INT, PETSC_COMM_SELF, PETSC_ERR_SUP, "The nodal means' stencils of %" PetscInt_FMT " points need %" PetscInt64_FMT " entries, beyond the index range; run on more ranks", nw, need);
-      PetscCall(PetscMalloc2((size_t)need, &sn1, (size_t)need, &sw1));
-      PetscCall(PetscArraycpy(sn1, sn, used));
-      PetscCall(PetscArraycpy(sw1, sw, used));
-      PetscCall(PetscFree2(sn, sw));
-      sn  = sn1;
-      sw  = sw1;
-      cap = (PetscInt)need;
+    if (!sn) { /* room for every weighted point's stencil at this size and a quarter more, within the budget */
+      cap = (PetscInt)PetscMin((PetscInt64)budget, (PetscInt64)nw * (1 + st.n) * 5 / 4 + 1);
+      PetscCall(PetscMalloc2(cap, &sn, cap, &sw));
     }
-    sn[used++] = st.n;
-    k++;
+    if (nkept == i && used + 1 + st.n <= cap) { /* kept */
+      sn[used++] = st.n;
+      for (PetscInt a = 0; a < st.n; a++) {
+        sn[used + a] = st.node[a];
+        sw[used + a] = st.w[a];
+      }
+      used += st.n;
+      nkept++;
+    }
     for (PetscInt a = 0; a < st.n; a++) {
-      W[2 * st.node[a]] += st.w[a] * w[p];
-      W[2 * st.node[a] + 1] += st.w[a] * w[p] * q[p];
-      lo           = PetscMin(lo, st.node[a]);
-      hi           = PetscMax(hi, st.node[a]);
-      sn[used + a] = st.node[a];
-      sw[used + a] = st.w[a];
+      W[2 * st.node[a]] += st.w[a] * w[i];
+      W[2 * st.node[a] + 1] += st.w[a] * w[i] * q[p];
+      lo = PetscMin(lo, st.node[a]);
+      hi = PetscMax(hi, st.node[a]);
     }
-    used += st.n;
   }
   PetscCall(MPMNodalMeanSum(mpm, &W));
   used = 0;
-  for (PetscInt p = 0; p < pts->n; p++) { /* the interpolants of q_I and q_I^2 at the point, on the stencils kept */
-    PetscReal s1 = 0.0, s2 = 0.0;
-    PetscInt  n;
-    if (w[p] == 0.0) continue;
-    n = sn[used++];
-    for (PetscInt a = 0; a < n; a++)
-      if (W[2 * sn[used + a]] > 0.0) {
-        const PetscReal qI = W[2 * sn[used + a] + 1] / W[2 * sn[used + a]];
-        s1 += sw[used + a] * qI;
-        s2 += sw[used + a] * qI * qI;
-      }
-    used += n;
-    qbar[p] = s1;
-    if (q2bar) q2bar[p] = s2;
+  for (PetscInt i = 0; i < nw; i++) { /* the interpolant of q_I at the point, on the stencils kept, or evaluated again */
+    PetscReal s1 = 0.0;
+    if (i < nkept) {
+      const PetscInt n = sn[used++];
+      for (PetscInt a = 0; a < n; a++)
+        if (W[2 * sn[used + a]] > 0.0) s1 += sw[used + a] * (W[2 * sn[used + a] + 1] / W[2 * sn[used + a]]);
+      used += n;
+    } else {
+      MPMNodalMeanStencilOf(mpm, pts, idx[i], &st);
+      for (PetscInt a = 0; a < st.n; a++)
+        if (W[2 * st.node[a]] > 0.0) s1 += st.w[a] * (W[2 * st.node[a] + 1] / W[2 * st.node[a]]);
+    }
+    qbar[i] = s1;
   }
   if (one && hi >= lo) { /* zero for the next call (one rank: no VecZeroEntries): the nodes the stencils name, or their whole range where smaller */
-    if (used - k < hi - lo + 1)
-      for (PetscInt i = 0, j = 0; i < k; i++) {
+    if (nkept == nw && used - nkept < hi - lo + 1)
+      for (PetscInt i = 0, j = 0; i < nkept; i++) {
         const PetscInt n = sn[j++];
         for (PetscInt a = 0; a < n; a++) W[2 * sn[j + a]] = W[2 * sn[j + a] + 1] = 0.0;
         j += n;
