@@ -1,0 +1,150 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: BSD-2-Clause
+"""Linear stability of an elastic block sliding on a rigid plane with a constant Coulomb friction coefficient: an
+independent check, by finite elements, of the rocking that petmpm's incline shows near the friction limit
+(inputs/incline_2d.opts; docs/contact.md, "Near the threshold").
+
+The block (L x H, plane strain, Hooke's law with E and nu, density rho) slides along x on the plane y = 0 and keeps full
+contact. Bilinear quadrilaterals (2 x 2 Gauss points), lumped mass, the base nodes held at u_y = 0 and free along x.
+Sliding in +x, the friction on base node a is -mu R_a with R_a the node's normal reaction; its perturbation,
+-mu K_(y_a, free) u, makes the stiffness non-symmetric:
+    M u'' + (K + mu B) u = 0,   B[(x_a), :] = K[(y_a), free],
+and a pair of complex eigenvalues omega^2 of M^-1 (K + mu B) is a flutter: a vibration at Re omega that grows as
+exp(|Im omega| t) (mode-coupling instability; Martins, Guimaraes & Faria, J. Vib. Acoust. 117 (1995) 445, for the
+half-space; Brener et al., J. Mech. Phys. Solids 89 (2016) 149, for a body of finite height). The steady sliding state
+the rigid-block answer a = g (sin theta - mu cos theta) assumes is then not what an undamped elastic block does.
+
+usage:
+  block_flutter.py [--cells 32] [--mu 0,0.1,0.55] [--L 1 --H 0.5 --E 2.5e6 --nu 0.3 --rho 1] [--fmax 3000]
+      the lowest unstable mode below fmax [Hz] at each mu (frequency and growth rate), and the smallest mu at which
+      one exists (bisection)
+  block_flutter.py --selftest
+      mu = 0 stable; the lowest modes and the mu = 0.55 flutter converged between 16 x 8 and 32 x 16 elements
+
+numpy only (the dense eigenvalues of a few thousand unknowns).
+"""
+import argparse
+import sys
+
+import numpy as np
+
+
+def assemble(L, H, nx, ny, E, nu, rho):
+    """Q1 plane-strain stiffness K and lumped masses m of an nx x ny mesh of the block; the base nodes' indices."""
+    lam, G = E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))
+    D = np.array([[lam + 2 * G, lam, 0], [lam, lam + 2 * G, 0], [0, 0, G]])
+    dx, dy = L / nx, H / ny
+    ke = np.zeros((8, 8))
+    for xi in (-1 / np.sqrt(3), 1 / np.sqrt(3)):
+        for et in (-1 / np.sqrt(3), 1 / np.sqrt(3)):
+            dN = 0.25 * np.array([[-(1 - et), (1 - et), (1 + et), -(1 + et)], [-(1 - xi), -(1 + xi), (1 + xi), (1 - xi)]])
+            dN[0] *= 2 / dx
+            dN[1] *= 2 / dy
+            Bm = np.zeros((3, 8))
+            Bm[0, 0::2], Bm[1, 1::2], Bm[2, 0::2], Bm[2, 1::2] = dN[0], dN[1], dN[1], dN[0]
+            ke += Bm.T @ D @ Bm * (dx * dy / 4)
+    N = (nx + 1) * (ny + 1)
+    K, m = np.zeros((2 * N, 2 * N)), np.zeros(2 * N)
+    for j in range(ny):
+        for i in range(nx):
+            nodes = [j * (nx + 1) + i, j * (nx + 1) + i + 1, (j + 1) * (nx + 1) + i + 1, (j + 1) * (nx + 1) + i]
+            dofs = np.array([[2 * n, 2 * n + 1] for n in nodes]).ravel()
+            K[np.ix_(dofs, dofs)] += ke
+            m[dofs] += rho * dx * dy / 4
+    return K, m, list(range(nx + 1))
+
+
+def modes(L, H, nx, ny, E, nu, rho, mu):
+    """omega = sqrt(eigenvalues of M^-1/2 (K + mu B) M^-1/2) [rad/s] (complex), base held at u_y = 0."""
+    K, m, base = assemble(L, H, nx, ny, E, nu, rho)
+    cons = [2 * n + 1 for n in base]
+    free = np.setdiff1d(np.arange(K.shape[0]), cons)
+    pos = {d: i for i, d in enumerate(free)}
+    Kff, Kcf = K[np.ix_(free, free)], K[np.ix_(cons, free)]
+    B = np.zeros_like(Kff)
+    for r, n in enumerate(base):
+        B[pos[2 * n], :] = Kcf[r, :]
+    s = 1 / np.sqrt(m[free])
+    w2 = np.linalg.eigvals((s[:, None] * (Kff + mu * B)) * s[None, :])
+    return np.sqrt(w2.astype(complex))
+
+
+def lowest_unstable(om, fmax):
+    """(frequency [Hz], growth rate [1/s]) of the unstable mode below fmax with the largest growth, or None."""
+    f, g = np.abs(om.real) / (2 * np.pi), np.abs(om.imag)
+    sel = (g > 1e-6 * np.abs(om)) & (f > 1.0) & (f < fmax)
+    if not sel.any():
+        return None
+    k = np.argmax(np.where(sel, g, -1.0))
+    return f[k], g[k]
+
+
+def threshold(a, nx, ny, fmax, hi=1.0):
+    """The smallest mu in (0, hi] with an unstable mode below fmax (bisection to 1e-4), or None."""
+    if lowest_unstable(modes(a.L, a.H, nx, ny, a.E, a.nu, a.rho, hi), fmax) is None:
+        return None
+    lo = 0.0
+    while hi - lo > 1e-4:
+        mid = 0.5 * (lo + hi)
+        if lowest_unstable(modes(a.L, a.H, nx, ny, a.E, a.nu, a.rho, mid), fmax) is None:
+            lo = mid
+        else:
+            hi = mid
+    return hi
+
+
+def selftest(a):
+    fails = 0
+
+    def check(ok, what):
+        nonlocal fails
+        fails += not ok
+        print(("PASSED " if ok else "FAILED ") + what)
+
+    res = {}
+    for nx in (16, 32):
+        ny = nx // 2
+        om0 = modes(a.L, a.H, nx, ny, a.E, a.nu, a.rho, 0.0)
+        f0 = np.sort(np.abs(om0.real) / (2 * np.pi))
+        res[nx] = (f0[f0 > 1.0][:2], lowest_unstable(modes(a.L, a.H, nx, ny, a.E, a.nu, a.rho, 0.55), a.fmax))
+        check(np.max(np.abs(om0.imag)) < 1e-6 * np.max(np.abs(om0)), f"{nx} x {ny}, mu = 0: no growing mode (max |Im omega| {np.max(np.abs(om0.imag)):.2e} 1/s)")
+        check(res[nx][1] is not None, f"{nx} x {ny}, mu = 0.55: a mode below {a.fmax:.0f} Hz grows: {res[nx][1]}")
+    (fa, ua), (fb, ub) = res[16], res[32]
+    check(np.all(np.abs(fa / fb - 1) < 0.01), f"lowest modes at mu = 0 converged: {fa[0]:.1f}, {fa[1]:.1f} Hz (16 x 8) against {fb[0]:.1f}, {fb[1]:.1f} (32 x 16), within 1%")
+    if ua and ub:
+        check(abs(ua[0] / ub[0] - 1) < 0.01 and abs(ua[1] / ub[1] - 1) < 0.02, f"mu = 0.55 flutter converged: {ua[0]:.1f} Hz growing at {ua[1]:.1f}/s (16 x 8) against {ub[0]:.1f} Hz, {ub[1]:.1f}/s (32 x 16)")
+        check(min(fb) * 0.9 < ub[0] < max(fb) * 1.1, f"the flutter couples the lowest pair of modes: {ub[0]:.1f} Hz between {min(fb):.1f} and {max(fb):.1f} (+-10%)")
+    mc = threshold(a, 16, 8, a.fmax)
+    check(mc is not None and mc < 0.55, f"flutter threshold below the incline's mu = 0.55: mu_c = {mc}")
+    print(f"block_flutter selftest: {'PASSED' if not fails else 'FAILED'} ({fails} failure(s))")
+    return fails
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--cells", type=int, default=32, help="elements along L (along H: cells * H / L)")
+    ap.add_argument("--mu", default="0,0.1,0.3,0.55,0.6", help="friction coefficients")
+    ap.add_argument("--L", type=float, default=1.0, help="block length [cm]")
+    ap.add_argument("--H", type=float, default=0.5, help="block height [cm]")
+    ap.add_argument("--E", type=float, default=2.5e6, help="Young's modulus [dyn/cm^2]")
+    ap.add_argument("--nu", type=float, default=0.3, help="Poisson's ratio")
+    ap.add_argument("--rho", type=float, default=1.0, help="density [g/cm^3]")
+    ap.add_argument("--fmax", type=float, default=3000.0, help="modes below this frequency [Hz] (grid-scale modes above)")
+    ap.add_argument("--selftest", action="store_true")
+    a = ap.parse_args()
+    if a.selftest:
+        return 1 if selftest(a) else 0
+    nx = a.cells
+    ny = max(1, int(round(nx * a.H / a.L)))
+    print(f"block {a.L} x {a.H} cm, E {a.E:g}, nu {a.nu}, rho {a.rho}; {nx} x {ny} Q1 elements; modes below {a.fmax:g} Hz")
+    print("| mu | frequency [Hz] | growth rate [1/s] | e-folding time [ms] |\n|---|---|---|---|")
+    for mu in [float(s) for s in a.mu.split(",")]:
+        r = lowest_unstable(modes(a.L, a.H, nx, ny, a.E, a.nu, a.rho, mu), a.fmax)
+        print(f"| {mu:g} | {r[0]:.1f} | {r[1]:.1f} | {1e3 / r[1]:.2f} |" if r else f"| {mu:g} | stable | | |")
+    mc = threshold(a, nx, ny, a.fmax)
+    print(f"flutter threshold (modes below {a.fmax:g} Hz): mu_c = {mc:.4f}" if mc else "no flutter up to mu = 1")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
