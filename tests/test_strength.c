@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
-/* The strength models against closed forms: neo-Hookean (simple shear, uniaxial stretch, no stress at F = I, and
-   the stored energy the report's budget reads), Newtonian viscosity (s = 2 mu D'), and the hypoelastic update
+/* The strength models against closed forms: neo-Hookean (simple shear, uniaxial stretch, no stress at F = I, its
+   Kelvin-Voigt viscosity, and the stored energy the report's budget reads), Newtonian viscosity (s = 2 mu D'), and the hypoelastic update
    (elastic, the radial return of vonmises, johnsoncook's flow stress, its batched update), and the vector exp, log and
    pow of src/core/simdmath.h. */
 #include "core/petmpmimpl.h"
@@ -69,6 +69,23 @@ static PetscErrorCode TestNeoHookean(PetscInt *fails)
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s neohookean: stored energy W(I) = 0 and (dW/dF) F^T = J sigma in 2D and 3D, error %.1e of mu (tol 1e-8)\n", ew < 1e-8 ? "PASSED" : "FAILED", (double)ew));
   }
   PetscCall(MPMStrengthDestroy(&nh));
+  { /* the Kelvin-Voigt viscosity adds 2 eta D' (3D trace) to the elastic stress: simple shear rate at F = [[1, g], [0, 1]]
+       adds eta gdot to s_xy; a 2D stretch rate diag(a, 0) at F = I gives s_xx = 4 eta a / 3, s_yy = -2 eta a / 3 */
+    const PetscReal eta = 37.0, gd = 11.0, a = -5.0;
+    PetscReal       Ls[4] = {0, gd, 0, 0}, La[4] = {a, 0, 0, 0}, ev;
+    PetscCall(PetscOptionsSetValue(NULL, "-mat_test_strength_neohookean_viscosity", "37"));
+    PetscCall(StrengthCreate("test", "neohookean", &nh));
+    PetscCall(MPMStrengthStress(nh, 2, 0.0, Ls, F, 1.0, 0.0, s, NULL, &c2));
+    ev = PetscMax(PetscMax(PetscAbsReal(s[0] - mu * g * g), PetscAbsReal(s[1] - mu * g - eta * gd)), PetscMax(PetscAbsReal(s[2] - mu * g - eta * gd), PetscAbsReal(s[3])));
+    PetscCall(MPMStrengthStress(nh, 2, 0.0, La, Id, 1.0, 0.0, s, NULL, &c2));
+    ev = PetscMax(ev, PetscMax(PetscAbsReal(s[0] - 4 * eta * a / 3), PetscAbsReal(s[3] + 2 * eta * a / 3)));
+    ev /= mu;
+    if (!(ev < 1e-14 && nh->mu == eta)) (*fails)++;
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s neohookean with a Kelvin-Voigt viscosity: elastic + 2 eta D' in simple shear and stretch, rel. error %.1e (tol 1e-14); the time step's viscosity %g\n", ev < 1e-14 && nh->mu == eta ? "PASSED" : "FAILED",
+                          (double)ev, (double)nh->mu));
+    PetscCall(PetscOptionsClearValue(NULL, "-mat_test_strength_neohookean_viscosity"));
+    PetscCall(MPMStrengthDestroy(&nh));
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
