@@ -12,7 +12,7 @@
 /* The weighted points' stencils (12 bytes an entry, about 30 entries a CPDI point in 3D) are kept from the scatter for
    the gather up to this many entries per local point (about 50 bytes a point); the points beyond evaluate theirs again.
    Kept: one CPDI evaluation instead of two (docs/performance.md); evaluated again: no buffer of the size of every
-   compressed point's stencil (165 bytes a point in the 3D bar with 45% of its points compressing). */
+   compressed point's stencil (165 bytes a point at 100 steps of the 3D bar). */
 #ifndef MPM_NODAL_MEAN_KEEP
 #  define MPM_NODAL_MEAN_KEEP 4
 #endif
