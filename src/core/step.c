@@ -114,33 +114,14 @@ static PetscErrorCode MPMBodiesRun(MPM mpm, MPMBodyPhase phase, MPMStepContext *
 static PetscErrorCode MPMStepPoints(MPM mpm, const MPMStepContext *ctx, PetscInt *nbad)
 {
   const PetscBool usl = (PetscBool)(mpm->scheme == MPM_SCHEME_USL);
-  const PetscInt  d   = mpm->grid.dim;
-  MPMPoints       pts;
 
   PetscFunctionBegin;
-  PetscCall(MPMPointsGetArrays(mpm, &pts));
-  if (pts.n > mpm->gradv_cap) { /* L_p's scratch: a window's points, or all the local points where the phases are not windowed */
-    PetscCall(PetscFree(mpm->gradv_work));
-    mpm->gradv_cap = mpm->windowed ? PetscMax(pts.n, mpm->point_window) : pts.n + pts.n / 4;
-    PetscCall(PetscMalloc1(mpm->gradv_cap * d * d, &mpm->gradv_work));
-  }
-  mpm->gradv_live = PETSC_TRUE;
+  PetscCall(MPMPointsVelocityGradientBegin(mpm));
   PetscCall(MPMGridToParticles(mpm, ctx, usl, PETSC_TRUE)); /* USL: v_p; x_p, L_p          */
   if (usl) PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_KINEMATICS, ctx));
   PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_STATE, ctx)); /* q_p: artificial viscosity    */
   PetscCall(MPMConstitutivePoints(mpm, ctx->dt, nbad));        /* rho_p, e_p, p_p, c_p, T_p, s_p */
-  PetscCall(MPMPointsGetArrays(mpm, &pts));
-  { /* div v_p = v_r / r + sum_k L_kk, kept for the next step's time step and this step's end modules */
-    const PetscReal *L = pts.f[MPM_FIELD_GRADV], *hoop = pts.f[MPM_FIELD_HOOPRATE];
-    PetscReal       *div = pts.f[MPM_FIELD_DIVERGENCE];
-    for (PetscInt p = 0; p < pts.n; p++) {
-      PetscReal s = hoop ? hoop[p] : 0.0;
-      for (PetscInt k = 0; k < d; k++) s += L[p * d * d + k * d + k];
-      div[p] = s;
-    }
-  }
-  mpm->gradv_live = PETSC_FALSE;
-  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(MPMPointsVelocityGradientEnd(mpm));                /* div v_p kept, L_p dropped      */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -31,6 +31,12 @@ static PetscErrorCode MPMConductionView(MPMModule mod, MPM mpm, PetscViewer view
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The share of the point's heat exchanged this step, beta_p = min(1, -C_h div v_p dt): compressing points only. */
+static inline PetscReal MPMConductionBeta(PetscReal C, const MPMPoints *pts, PetscInt p, PetscReal dt)
+{
+  return PetscMin(1.0, -C * MPMPointDivergence(pts, p) * dt);
+}
+
 static PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
 {
   const PetscReal C  = ((MPMConduction *)mod->data)->C;
@@ -41,13 +47,13 @@ static PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepCo
 
   PetscFunctionBegin;
   PetscCall(MPMPointsGetArrays(mpm, &pts));
-  for (PetscInt p = 0; p < pts.n; p++) nc += (PetscMin(1.0, -C * MPMPointDivergence(&pts, p) * ctx->dt) >= 1e-10);
+  for (PetscInt p = 0; p < pts.n; p++) nc += (MPMConductionBeta(C, &pts, p, ctx->dt) >= 1e-10);
   PetscCall(PetscMalloc3(nc + 1, &idx, nc + 1, &w, nc + 1, &Tbar)); /* the compressed points only (few in most steps) */
   {
     const PetscReal *rho = pts.f[MPM_FIELD_DENSITY], *e = pts.f[MPM_FIELD_ENERGY];
     for (PetscInt p = 0; p < pts.n; p++) { /* beta_p, c_v,p and the weight w_p = beta_p m_p c_v,p */
       const MPMEOS E    = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].eos;
-      PetscReal    beta = PetscMin(1.0, -C * MPMPointDivergence(&pts, p) * ctx->dt), de, T0, T1;
+      PetscReal    beta = MPMConductionBeta(C, &pts, p, ctx->dt), de, T0, T1;
       if (beta < 1e-10) continue;                    /* expansion, rest, or too little to matter (and no denormal weights) */
       de = 1e-3 * PetscMax(PetscAbsReal(e[p]), 1.0); /* a central difference wide enough that round-off in e does not reach c_v */
       MPMEOSTemperatureKernel(E, rho[p], e[p] - de, &T0);

@@ -77,17 +77,23 @@ PetscErrorCode MPMPointsNodalMean(MPM mpm, const MPMPoints *pts, PetscInt nw, co
   PetscCall(MPMNodalMeanSum(mpm, &W));
   used = 0;
   for (PetscInt i = 0; i < nw; i++) { /* the interpolant of q_I at the point, on the stencils kept, or evaluated again */
-    PetscReal s1 = 0.0;
-    if (i < nkept) {
-      const PetscInt n = sn[used++];
-      for (PetscInt a = 0; a < n; a++)
-        if (W[2 * sn[used + a]] > 0.0) s1 += sw[used + a] * (W[2 * sn[used + a] + 1] / W[2 * sn[used + a]]);
-      used += n;
+    const PetscInt  *nd;
+    const PetscReal *wt;
+    PetscInt         n;
+    PetscReal        s1 = 0.0;
+    if (i < nkept) { /* count, then the entries at the same offsets in sn and sw */
+      n  = sn[used];
+      nd = &sn[used + 1];
+      wt = &sw[used + 1];
+      used += 1 + n;
     } else {
       MPMNodalMeanStencilOf(mpm, pts, idx[i], &st);
-      for (PetscInt a = 0; a < st.n; a++)
-        if (W[2 * st.node[a]] > 0.0) s1 += st.w[a] * (W[2 * st.node[a] + 1] / W[2 * st.node[a]]);
+      n  = st.n;
+      nd = st.node;
+      wt = st.w;
     }
+    for (PetscInt a = 0; a < n; a++)
+      if (W[2 * nd[a]] > 0.0) s1 += wt[a] * (W[2 * nd[a] + 1] / W[2 * nd[a]]);
     qbar[i] = s1;
   }
   if (one && hi >= lo) { /* zero for the next call (one rank: no VecZeroEntries): the nodes the stencils name, or their whole range where smaller */

@@ -128,6 +128,47 @@ PetscErrorCode MPMPointsGetArrays(MPM mpm, MPMPoints *pts)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* L_p for the points MPMPointsGetArrays shows (a window, or all the local points where the step's point phases are not
+   windowed), from here to MPMPointsVelocityGradientEnd: a scratch array, not a swarm field. */
+PetscErrorCode MPMPointsVelocityGradientBegin(MPM mpm)
+{
+  const PetscInt d = mpm->grid.dim;
+  MPMPoints      pts = {0};
+
+  PetscFunctionBegin;
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  if (pts.n > mpm->gradv_cap) {
+    PetscCall(PetscFree(mpm->gradv_work));
+    mpm->gradv_cap = mpm->windowed ? PetscMax(pts.n, mpm->point_window) : pts.n + pts.n / 4;
+    PetscCall(PetscMalloc1(mpm->gradv_cap * d * d, &mpm->gradv_work));
+  }
+  mpm->gradv_live = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* What later phases read of L_p, div v_p = v_r / r + sum_k L_kk (the next step's time step, this step's end modules),
+   kept as the point field divergence; L_p is gone after this. */
+PetscErrorCode MPMPointsVelocityGradientEnd(MPM mpm)
+{
+  const PetscInt d = mpm->grid.dim;
+  MPMPoints      pts;
+
+  PetscFunctionBegin;
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  {
+    const PetscReal *L = pts.f[MPM_FIELD_GRADV], *hoop = pts.f[MPM_FIELD_HOOPRATE];
+    PetscReal       *div = pts.f[MPM_FIELD_DIVERGENCE];
+    for (PetscInt p = 0; p < pts.n; p++) {
+      PetscReal s = hoop ? hoop[p] : 0.0;
+      for (PetscInt k = 0; k < d; k++) s += L[p * d * d + k * d + k];
+      div[p] = s;
+    }
+  }
+  mpm->gradv_live = PETSC_FALSE;
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Makes MPMPointsGetArrays show the n points from point p0 on, as if they were all (n < 0: all points again): the step's
    point phases run window by window (MPMStep). Nothing that adds, removes or moves points runs inside a window. */
 PetscErrorCode MPMPointsSetWindow(MPM mpm, PetscInt p0, PetscInt n)

@@ -59,6 +59,8 @@ PETSC_INTERN PetscErrorCode MPMPointsRegisterField(MPM, const char[], PetscInt, 
 PETSC_INTERN PetscErrorCode MPMPointsRestoreArrays(MPM, MPMPoints *);
 PETSC_INTERN PetscErrorCode MPMPointsRelease(MPM);
 PETSC_INTERN PetscErrorCode MPMPointsSetWindow(MPM, PetscInt, PetscInt);
+PETSC_INTERN PetscErrorCode MPMPointsVelocityGradientBegin(MPM);
+PETSC_INTERN PetscErrorCode MPMPointsVelocityGradientEnd(MPM);
 PETSC_INTERN PetscErrorCode MPMMigrate(MPM);
 PETSC_INTERN PetscErrorCode MPMSortPoints(MPM);
 PETSC_INTERN PetscErrorCode MPMPointsSortByBody(MPM);
