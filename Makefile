@@ -38,12 +38,14 @@ methods: build
 	$(PY) scripts/methods.py --exe $(BUILD)/petmpm
 
 # The study definitions of scripts/studies/ into docs/studies/NAME (cases already there are skipped; FRESH=1
-# measures again), then docs/verification.md from their results.
+# measures again), then docs/verification.md from their results; the expectation files of tests/studies/ (the
+# finest resolutions of a test's comparison, too long for make test).
 STUDIES = $(basename $(notdir $(wildcard scripts/studies/*.json)))
 verification: build
 	$(if $(FRESH),rm -rf $(addprefix docs/studies/,$(STUDIES)))
 	for s in $(STUDIES); do $(PY) scripts/study --study scripts/studies/$$s.json --out docs/studies/$$s || exit 1; done
 	$(PY) scripts/study --summary $(addprefix docs/studies/,$(STUDIES)) --markdown docs/verification.md
+	for f in tests/studies/*.json; do $(PY) tests/run_scene.py $(BUILD) . $$f || exit 1; done
 	$(BUILD)/petmpm -options_file inputs/flyer_plate.opts -mpm_output output/flyer_plate >/dev/null
 	$(PY) scripts/plot_profiles.py output/flyer_plate/petmpm.h5 docs/verification_flyer_profiles.png
 	$(PY) scripts/hardcases.py --exe $(BUILD)/petmpm --out docs/hard-cases.md

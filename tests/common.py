@@ -56,17 +56,40 @@ def scene(name, out, extra=(), ranks=1):
         return json.load(f)
 
 
+def study_key(script, cells, extra, args):
+    """A digest of everything a study's rows depend on: the executable, the scripts, the scenes and the arguments."""
+    import hashlib
+    h = hashlib.sha256(json.dumps([script, cells, list(extra), list(args)]).encode())
+    files = [EXE] + sorted(os.path.join(r, f) for top in ("scripts", "inputs") for r, _, fs in os.walk(os.path.join(SRC, top)) for f in fs if f.endswith((".py", ".opts")))
+    for name in files:
+        with open(name, "rb") as f:
+            h.update(name.encode() + f.read())
+    return h.hexdigest()
+
+
 def study(script, cells, extra=(), args=()):
     """The rows (--json "runs") of the study scripts/SCRIPT at the given cells ("64,128") with the script's own
-    options args and petmpm options extra; a study that fails is a failure of the test (SystemExit), not a row."""
-    import tempfile
-    with tempfile.TemporaryDirectory() as d:
-        out = os.path.join(d, "r.json")
-        p = subprocess.run(["/usr/bin/python3", os.path.join(SRC, "scripts", script), "--cells", cells, "--build", BUILD, "--json", out, *args, "--", *extra], capture_output=True, text=True)
-        print(p.stdout, p.stderr)
-        if p.returncode != 0:
-            raise SystemExit(f"FAILED: {script} {' '.join(extra)} exited {p.returncode}")
-        with open(out) as f:
+    options args and petmpm options extra; a study that fails is a failure of the test (SystemExit), not a row.
+    The rows are kept in BUILD/study_cache under a digest of the executable, scripts/, inputs/ and the arguments,
+    so that a test that asserts another figure of the same runs (a known failure split off) does not run them again;
+    a rebuild or any edit of a script or a scene gives a new digest, and each ctest run empties the cache first (the
+    fixture study_cache, tests/CMakeLists.txt); a lock per digest makes a second test wait for the first."""
+    import fcntl
+    cache = os.path.join(BUILD, "study_cache")
+    os.makedirs(cache, exist_ok=True)
+    kept = os.path.join(cache, study_key(script, cells, extra, args) + ".json")
+    with open(kept + ".lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if os.path.exists(kept):
+            print(f"{script} --cells {cells} {' '.join(args)} -- {' '.join(extra)}: the rows of an earlier run of this build ({kept})")
+        else:
+            p = subprocess.run(["/usr/bin/python3", os.path.join(SRC, "scripts", script), "--cells", cells, "--build", BUILD, "--json", kept + ".part", *args, "--", *extra],
+                               capture_output=True, text=True)
+            print(p.stdout, p.stderr)
+            if p.returncode != 0:
+                raise SystemExit(f"FAILED: {script} {' '.join(extra)} exited {p.returncode}")
+            os.replace(kept + ".part", kept)
+        with open(kept) as f:
             return json.load(f)["runs"]
 
 

@@ -4,6 +4,8 @@
 (the report's wall_seconds) and PASSED/FAILED with the measured number beside its bound, exits non-zero on a failure.
 
 usage: run_scene.py BUILD_DIR SOURCE_DIR NAME        (tests/scenes/NAME.json)
+       run_scene.py BUILD_DIR SOURCE_DIR PATH.json   (an expectation file elsewhere: tests/studies/, run by
+                                                     make verification, not by make test)
 
 An expectation file is {"doc": "...", "cases": [CASE, ...]}; a CASE is
   {"name": "weak256", "scene": "sod_weak", "args": ["-mpm_cells", "256"], "ranks": 1, "h": 0.078125,
@@ -73,7 +75,7 @@ def compare(case, rep, label, done):
 
 
 def main():
-    with open(os.path.join(SRC, "tests", "scenes", NAME + ".json")) as f:
+    with open(NAME if NAME.endswith(".json") else os.path.join(SRC, "tests", "scenes", NAME + ".json")) as f:
         spec = json.load(f)
     global METHOD
     METHOD = spec.get("method")
