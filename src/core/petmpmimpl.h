@@ -130,6 +130,7 @@ struct _p_MPM {
   PetscBool                 remap_fused;     /* MUSL with kern: grid to points scatters the remap's momentum into f (g2p_remap) */
   MPMUpdateType             update;          /* -mpm_update_type                                                  */
   PetscReal                 alpha;           /* FLIP fraction: v_p <- alpha (v_p + dv) + (1 - alpha) v_pic [-]     */
+  PetscReal                 blend_expansion; /* -mpm_update_blend_expansion K: PIC share max(1 - alpha, K div v_p dt) [-] */
   PetscInt                  affine;          /* -mpm_update_type apic: the point field of C_p, else -1             */
   PetscInt                  affine_ke;       /* APIC: the point field of its affine kinetic energy per unit mass, else -1 */
   MPMViscosity              viscosity;       /* NULL when the scene asks for none: not in the step */

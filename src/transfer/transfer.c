@@ -488,8 +488,9 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
     if (velocity) {
       const PetscReal dv2 = MPMKSumComponents(d, dv2c), R = MPMKSumComponents(d, Rc);
       PetscReal       share = 0.5 * dv2 + Cdv, gain = 0.0; /* grid kinetic energy gain of the point's share, the point's own [erg/g] */
+      const PetscReal ap = MPMBlendShare(A, p);
       for (PetscInt i = 0; i < d; i++) {
-        const PetscReal vn = alpha * (v[p * d + i] + dv[i]) + (1.0 - alpha) * vpic[i];
+        const PetscReal vn = ap * (v[p * d + i] + dv[i]) + (1.0 - ap) * vpic[i];
         share += v[p * d + i] * dv[i];
         gain += 0.5 * (vn * vn - v[p * d + i] * v[p * d + i]);
         v[p * d + i] = vn;
@@ -661,6 +662,8 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
                                 .ds        = ds,
                                 .pointwork = pointwork,
                                 .alpha     = alpha,
+                                .div       = mpm->blend_expansion > 0.0 ? pts.f[MPM_FIELD_DIVERGENCE] : NULL,
+                                .xk        = mpm->blend_expansion,
                                 .kefix     = kefix,
                                 .stress    = stress,
                                 .dt        = dt,

@@ -55,6 +55,8 @@ typedef struct {
   const PetscReal *F, *ds;                                                /* deformation gradient and domain scale (CPDI's point domains), or NULL */
   const PetscReal *pointwork;                                             /* conservative update with the cell rule: the point's share of its cells' work per unit P_p V_p, else NULL */
   PetscReal        alpha;                                                 /* FLIP fraction                                               */
+  const PetscReal *div;                                                   /* the blend in expansions: the points' last divergence [1/s], or NULL (MPMBlendShare) */
+  PetscReal        xk;                                                    /* its coefficient K [-] (-mpm_update_blend_expansion)          */
   PetscBool        kefix, stress;                                         /* kinetic-energy fix; the stress enters the work               */
   PetscReal        dt, wfac;                                              /* step, half the kick (the work's time factor)                 */
   PetscReal (*expand)(void *, PetscInt, PetscReal, PetscReal, PetscReal); /* (ctx, p, e_p, eps, linear work) -> the pressure's work along the isentrope; NULL: always linear */
@@ -63,6 +65,16 @@ typedef struct {
   PetscBool            runs;      /* points to grid by runs of same-cell points (seeded with several points per cell) */
   const MPMCrackSplit *crack;     /* generic grid to points: the body's crack field, read by each entry's side (src/grid/crack.c), or NULL */
 } MPMTransferArgs;
+
+/* Point p's FLIP fraction in the blend: alpha, or with -mpm_update_blend_expansion K (div set) the PIC share grown to
+   K div v_p dt where the point's last step expanded it by more than (1 - alpha) / K (div v_p from its last kinematics):
+   a point the grid no longer represents (the first points of a light gas at a contact released into a strong
+   expansion, whose FLIP velocity kept their initial motion while the heavy gas's nodes moved them) forgets that
+   memory within a few steps (docs/algorithm.md). */
+static inline PetscReal MPMBlendShare(const MPMTransferArgs *A, PetscInt p)
+{
+  return A->div ? PetscMin(A->alpha, 1.0 - PetscMin(1.0, A->xk * PetscMax(0.0, A->div[p]) * A->dt)) : A->alpha;
+}
 
 /* The point's force matrix -V_p sigma_p = V_p ((p + q) I - s_p) (d x d, row major) in place of its deviatoric stress
    s_p in Sig (P = p + q, or 0 where the cell rule takes the pressure): the internal force of a point with a strength
