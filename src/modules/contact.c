@@ -310,22 +310,49 @@ static PetscInt MPMContactOnWall(MPM mpm, PetscInt c)
    its surface is (|g| h >= m / 10); else the averaged (or own) mass gradient. On a symmetry plane without the component
    across it (the points' mirror images are folded onto the nodes beyond the plane, not summed at the plane's own
    nodes, so g there has a spurious component across it). n = 0 where the gradients cancel. */
+/* Minus the outward normal of rigid body rb at node c into n, where its mass gradient there is resolved (|g| h >= 0.1 of
+   the mass scale: not in its interior, where the gradient vanishes); false elsewhere. */
+static PetscBool MPMContactRigidNormal(const MPMContact *ct, MPM mpm, MPMNode *const *node, MPMNode *const *geo, PetscInt rb, PetscInt c, PetscReal n[])
+{
+  const PetscInt d = mpm->grid.dim, nb = ct->nf;
+  PetscReal      g2 = 0.0;
+
+  for (PetscInt k = 0; k < d; k++) g2 += PetscSqr(geo[rb][c].p[k]);
+  if (!(node[rb][c].m > 0.0) || g2 * PetscSqr(mpm->grid.hmin) < 0.01 * PetscSqr(mpm->grid.axisym ? geo[rb][c].v0[0] : node[rb][c].m) || (mpm->grid.axisym && !(geo[rb][c].v0[0] > 0.0))) return PETSC_FALSE;
+  MPMContactNormalAt(ct, d, nb, rb, geo, c, PETSC_TRUE, n);
+  for (PetscInt k = 0; k < d; k++) n[k] = -n[k];
+  return PETSC_TRUE;
+}
+
+/* The normal of body b at node c: with a rigid body there, minus the rigid body's (its surface is exact); at a node
+   inside the rigid body (a body's points overlap it by a fraction of a cell), minus the rigid body's at the axis
+   neighbour, a shared node, where body b has the most mass (its own normal there, tilted at its corners or by its
+   curvature, made the corrections push along the surface: friction above mu N, docs/contact.md); else the pair's.
+   The position test keeps the body's own normal inside the rigid body: its Hertz patch and rolling disk were measured
+   with it, and the rigid body's there widens the patch to the test's resolution (docs/contact.md). */
 static void MPMContactNormalOf(const MPMContact *ct, MPM mpm, MPMNode *const *node, MPMNode *const *geo, PetscInt b, PetscInt c, PetscReal n[])
 {
-  const PetscInt d = mpm->grid.dim, nb = ct->nf, onwall = MPMContactOnWall(mpm, c);
+  const MPMGrid *g = &mpm->grid;
+  const PetscInt d = g->dim, nb = ct->nf, onwall = MPMContactOnWall(mpm, c), gs[3] = {1, g->gm[0], g->gm[0] * g->gm[1]};
   PetscInt       rb = -1;
-  PetscReal      g2 = 0.0, nn = 0.0;
+  PetscReal      nn = 0.0, mbest = 0.0, nk[3];
+  PetscBool      found = PETSC_FALSE;
 
   for (PetscInt o = 0; o < nb && !ct->rigid[b]; o++)
     if (o != b && ct->rigid[o] && node[o][c].m > 0.0) rb = o;
-  for (PetscInt k = 0; rb >= 0 && k < d; k++) g2 += PetscSqr(geo[rb][c].p[k]);
-  if (ct->rigid[b])
+  if (ct->rigid[b]) {
     MPMContactNormalAt(ct, d, nb, b, geo, c, PETSC_TRUE, n);
-  else if (rb >= 0 && g2 * PetscSqr(mpm->grid.hmin) >= 0.01 * PetscSqr(mpm->grid.axisym ? geo[rb][c].v0[0] : node[rb][c].m) && (!mpm->grid.axisym || geo[rb][c].v0[0] > 0.0)) {
-    MPMContactNormalAt(ct, d, nb, rb, geo, c, PETSC_TRUE, n);
-    for (PetscInt k = 0; k < d; k++) n[k] = -n[k];
-  } else
-    MPMContactNormalAt(ct, d, nb, b, geo, c, PETSC_FALSE, n);
+    found = PETSC_TRUE;
+  } else if (rb >= 0)
+    found = MPMContactRigidNormal(ct, mpm, node, geo, rb, c, n);
+  for (PetscInt k = 0; rb >= 0 && !found && ct->gap != MPM_CONTACT_GAP_POSITION && k < d; k++) /* inside the rigid body; the position test keeps the body's own (below) */
+    for (PetscInt s = -1; s <= 1; s += 2) {
+      const PetscInt ik = (c / gs[k]) % g->gm[k], c2 = c + s * gs[k];
+      if (ik + s < 0 || ik + s >= g->gm[k] || !ct->shared[c2] || !(node[b][c2].m > mbest) || !MPMContactRigidNormal(ct, mpm, node, geo, rb, c2, nk)) continue;
+      mbest = node[b][c2].m;
+      for (PetscInt j = 0; j < d; j++) n[j] = nk[j];
+    }
+  if (!found && !(mbest > 0.0)) MPMContactNormalAt(ct, d, nb, b, geo, c, PETSC_FALSE, n);
   if (!onwall) return;
   for (PetscInt k = 0; k < d; k++) {
     if ((onwall >> k) & 1) n[k] = 0.0;
