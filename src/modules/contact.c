@@ -306,12 +306,8 @@ static PetscInt MPMContactOnWall(MPM mpm, PetscInt c)
   return w;
 }
 
-/* Body b's unit outward normal at node c: a rigid body's own; beside a rigid body, minus the rigid body's own where
-   its surface is (|g| h >= m / 10); else the averaged (or own) mass gradient. On a symmetry plane without the component
-   across it (the points' mirror images are folded onto the nodes beyond the plane, not summed at the plane's own
-   nodes, so g there has a spurious component across it). n = 0 where the gradients cancel. */
-/* Minus the outward normal of rigid body rb at node c into n, where its mass gradient there is resolved (|g| h >= 0.1 of
-   the mass scale: not in its interior, where the gradient vanishes); false elsewhere. */
+/* Minus the outward normal of rigid body rb at node c into n, where its surface is (|g| h >= m / 10: not in its
+   interior, where the gradient vanishes); false elsewhere. */
 static PetscBool MPMContactRigidNormal(const MPMContact *ct, MPM mpm, MPMNode *const *node, MPMNode *const *geo, PetscInt rb, PetscInt c, PetscReal n[])
 {
   const PetscInt d = mpm->grid.dim, nb = ct->nf;
@@ -324,12 +320,15 @@ static PetscBool MPMContactRigidNormal(const MPMContact *ct, MPM mpm, MPMNode *c
   return PETSC_TRUE;
 }
 
-/* The normal of body b at node c: with a rigid body there, minus the rigid body's (its surface is exact); at a node
-   inside the rigid body (a body's points overlap it by a fraction of a cell), minus the rigid body's at the axis
-   neighbour, a shared node, where body b has the most mass (its own normal there, tilted at its corners or by its
-   curvature, made the corrections push along the surface: friction above mu N, docs/contact.md); else the pair's.
-   The position test keeps the body's own normal inside the rigid body: its Hertz patch and rolling disk were measured
-   with it, and the rigid body's there widens the patch to the test's resolution (docs/contact.md). */
+/* Body b's unit outward normal at node c: a rigid body's own; beside a rigid body, minus the rigid body's own where
+   its surface is (its surface is exact); at a node inside the rigid body (a body's points overlap it by a fraction of a
+   cell), minus the rigid body's at the axis neighbour, a shared node, where body b has the most mass (its own normal
+   there, tilted at its corners or by its curvature, made the corrections push along the surface: friction above
+   mu N, docs/contact.md); else the averaged (or own) mass gradient. The position test keeps the body's own normal
+   inside the rigid body: its Hertz patch and rolling disk were measured with it, and the rigid body's there widens the
+   patch to the test's resolution (docs/contact.md). On a symmetry plane without the component across it (the points'
+   mirror images are folded onto the nodes beyond the plane, not summed at the plane's own nodes, so g there has a
+   spurious component across it). n = 0 where the gradients cancel. */
 static void MPMContactNormalOf(const MPMContact *ct, MPM mpm, MPMNode *const *node, MPMNode *const *geo, PetscInt b, PetscInt c, PetscReal n[])
 {
   const MPMGrid *g = &mpm->grid;
