@@ -148,10 +148,10 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
     mpm->alpha = 0.99; /* Zhu & Bridson's */
     PetscCall(PetscOptionsReal("-mpm_update_blend_alpha", "FLIP fraction alpha in v = alpha FLIP + (1 - alpha) PIC [-], in [0, 1]", "", mpm->alpha, &mpm->alpha, NULL));
     PetscCall(MPMOptionsCheckRange("-mpm_update_blend_alpha", mpm->alpha, 0.0, 1.0, PETSC_FALSE, PETSC_FALSE));
-    PetscCall(
-      PetscOptionsReal("-mpm_update_blend_expansion",
-                       "Blend in strong expansions: a point's PIC share is max(1 - alpha, K div v_p dt), div v_p its last velocity divergence [1/s] (the FLIP memory that opens holes at contacts released into strong expansions) [-], >= 0 (0: off)",
-                       "", mpm->blend_expansion, &mpm->blend_expansion, NULL));
+    PetscCall(PetscOptionsReal("-mpm_update_blend_expansion",
+                               "Blend in strong expansions: a point's PIC share is max(1 - alpha, K div v_p dt), div v_p its last velocity divergence [1/s] (the FLIP memory that opens holes at contacts released into strong expansions; momentum then "
+                               "kept to about 1e-5, not round-off) [-], >= 0 (0: off)",
+                               "", mpm->blend_expansion, &mpm->blend_expansion, NULL));
     PetscCall(MPMOptionsCheckRange("-mpm_update_blend_expansion", mpm->blend_expansion, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
   }
   PetscCall(PetscOptionsEnum("-mpm_transfer_kernel", "Point-grid transfer kernels: specialised for the dimension and shape family (where the family has them) or the generic reference", "", MPMTransferKernelTypes, (PetscEnum)mpm->transfer_kernel,
