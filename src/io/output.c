@@ -237,8 +237,11 @@ static PetscErrorCode MPMWriteXDMFGrid(MPM mpm, FILE *fp)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Rewrites DIR/petmpm.xmf for the outputs so far (rank 0), via a temporary file and rename. */
-static PetscErrorCode MPMWriteXDMF(MPM mpm)
+/* Rewrites DIR/petmpm.xmf for the outputs so far (rank 0), via a temporary file and rename. With hold (a new run's
+   first output, before its file replaces the earlier one) the temporary file is left for MPMCommitXDMF and the earlier
+   run's XDMF is removed first: a run killed between the renames leaves no XDMF beside the HDF5 file, never one that
+   names the other run's outputs. */
+static PetscErrorCode MPMWriteXDMF(MPM mpm, PetscBool hold)
 {
   PetscMPIInt rank;
   PetscInt    Nmax = 0, S = mpm->noutputs;
@@ -276,6 +279,24 @@ static PetscErrorCode MPMWriteXDMF(MPM mpm)
   PetscCall(MPMWriteXDMFGrid(mpm, fp));
   fprintf(fp, " </Domain>\n</Xdmf>\n");
   PetscCheck(!fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write %s: %s", tmp, strerror(errno));
+  if (hold)
+    PetscCheck(!unlink(file) || errno == ENOENT, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot remove the earlier run's %s: %s", file, strerror(errno));
+  else
+    PetscCheck(!rename(tmp, file), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot rename %s to %s: %s", tmp, file, strerror(errno));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The XDMF that MPMWriteXDMF held, under its name (rank 0). */
+static PetscErrorCode MPMCommitXDMF(MPM mpm)
+{
+  PetscMPIInt rank;
+  char        file[PETSC_MAX_PATH_LEN + 16], tmp[PETSC_MAX_PATH_LEN + 32];
+
+  PetscFunctionBegin;
+  PetscCallMPI(MPI_Comm_rank(mpm->comm, &rank));
+  if (rank) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscSNPrintf(file, sizeof(file), "%s/petmpm.xmf", mpm->outdir));
+  PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", file));
   PetscCheck(!rename(tmp, file), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot rename %s to %s: %s", tmp, file, strerror(errno));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -581,8 +602,12 @@ PetscErrorCode MPMOutputWrite(MPM mpm, PetscInt step, PetscReal t)
   mpm->output_times[mpm->noutputs++] = t;
   mpm->last_output_step              = step;
   PetscCall(PetscViewerFlush(mpm->h5));
-  if (mpm->h5new) PetscCall(MPMOutputReplace(mpm));
-  PetscCall(MPMWriteXDMF(mpm));
+  if (mpm->h5new) { /* the new XDMF written, the earlier one removed, the new HDF5 file renamed, then the new XDMF */
+    PetscCall(MPMWriteXDMF(mpm, PETSC_TRUE));
+    PetscCall(MPMOutputReplace(mpm));
+    PetscCall(MPMCommitXDMF(mpm));
+  } else
+    PetscCall(MPMWriteXDMF(mpm, PETSC_FALSE));
   PetscCall(PetscLogEventEnd(mpm->log.output, 0, 0, 0, 0));
   mpm->wall_output += MPI_Wtime() - t0;
   PetscFunctionReturn(PETSC_SUCCESS);
