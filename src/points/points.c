@@ -132,7 +132,7 @@ PetscErrorCode MPMPointsGetArrays(MPM mpm, MPMPoints *pts)
    windowed), from here to MPMPointsVelocityGradientEnd: a scratch array, not a swarm field. */
 PetscErrorCode MPMPointsVelocityGradientBegin(MPM mpm)
 {
-  const PetscInt d = mpm->grid.dim;
+  const PetscInt d   = mpm->grid.dim;
   MPMPoints      pts = {0};
 
   PetscFunctionBegin;

@@ -8,6 +8,7 @@ memory of points the heavy gas's nodes move (docs/algorithm.md). -mpm_update_ble
 grid's velocity where they expand: measured 0.29 to 0.44 of the exact density. The total energy is kept to 1e-7 to
 2e-6 of it with or without the option (the light gas's near vacuum: the default's own figure, printed beside).
 """
+import json
 import math
 import os
 import sys
@@ -53,7 +54,6 @@ def first_light(out, rho_r, cells, extra):
     light = X > 0.5
     rho1 = f["density"][light][np.argmin(x[light])]
     exact = star_density_right(1.0, -2e5, (GAMMA - 1.0) * CV * T, rho_r, 2e5, (GAMMA - 1.0) * rho_r * CV * T)
-    import json
     with open(rep) as g:
         return json.load(g), rho1 / exact
 
