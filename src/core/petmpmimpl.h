@@ -171,8 +171,15 @@ struct _p_MPM {
   PetscReal   *xcell;                                    /* the cell rule, per extended cell (grid.xcs, xcm): the volume V_c and V_c P_c its points lend it; in the gather, its work per unit P V */
   DM           mean_da;                                  /* the point-exchange modules' nodal sums sum N w, sum N w q (nodemean.c) */
   Vec          mean_l;                                   /* its ghosted local vector (several ranks: summed by ghost_sf with mean_type) */
-  TS           ts;
-  Vec          tsu; /* the TS state: empty; the MPM state lives in the grid and swarm */
+  struct {                                               /* the heat exchange fused into the step's transfers (MPMHeatScatter, nodemean.c) */
+    PetscReal *w;                                        /* the local points' weights w_p, set at the step's start (0: not exchanging) */
+    PetscInt   cap;                                      /* its capacity [points]                                    */
+    PetscBool  live;                                     /* from MPMHeatExchangeStart to the end of the step's point phases */
+    Vec        Wl;                                       /* the nodal sums W_I, Q_I (mean_da's local vector)          */
+    PetscReal *W;                                        /* its array while live                                      */
+  } heat;
+  TS  ts;
+  Vec tsu; /* the TS state: empty; the MPM state lives in the grid and swarm */
   /* output */
   PetscViewer h5;     /* HDF5 file DIR/petmpm.h5, open for the run                 */
   PetscBool   h5new;  /* it is still DIR/.petmpm-new.h5: its first output is not complete (MPMOutputWrite renames it) */
@@ -246,6 +253,12 @@ static inline void MPMNodalMeanStencilOf(MPM mpm, const MPMPoints *pts, PetscInt
   PetscReal      Fs[MPM_MAX_DIM * MPM_MAX_DIM];
 
   MPMShapeWeights(mpm->shape, &mpm->grid, &pts->f[MPM_FIELD_POSITION][p * d], MPMPointDomain(d, pts->f[MPM_FIELD_DEFGRAD], pts->f[MPM_FIELD_DOMAINSCALE], p, Fs), st);
+}
+
+/* The heat exchange's weights of the points MPMPointsGetArrays shows (all, or a window). */
+static inline const PetscReal *MPMHeatWeights(MPM mpm)
+{
+  return mpm->heat.w + (mpm->win_n >= 0 ? mpm->win_p0 : 0);
 }
 
 /* div v_p = tr L_p, plus the hoop rate v_r / r on an axisymmetric grid, of the point's last step (kept by MPMStepPoints:

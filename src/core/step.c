@@ -139,9 +139,17 @@ PetscErrorCode MPMStep(MPM mpm, PetscReal tn, PetscReal tmax, PetscReal *dt)
   PetscFunctionBegin;
   if (mpm->nbodies > 1) PetscCall(MPMPointsSortByBody(mpm)); /* each body's points together */
   if (mpm->crack) PetscCall(MPMCrackUpdate(mpm));            /* crack fields: the sides of the cracks */
-  PetscCall(MPMBodiesRun(mpm, MPM_BODY_P2G, &ctx, &nbad));   /* m_I, (mv)_I, f_I at t^n; gravity */
-  PetscCall(MPMStepSize(mpm, tn, tmax, dt, &t));             /* dt_n, t^{n+1}                    */
-  if (mpm->failed) PetscFunctionReturn(PETSC_SUCCESS);
+  {
+    const MPMStepContext bctx = {.tn = tn, .dt = mpm->dt};        /* dt: the last step's (0 before the first) */
+    PetscCall(MPMModulesApply(mpm, MPM_PHASE_STEP_BEGIN, &bctx)); /* the heat exchange's weights */
+  }
+  PetscCall(MPMBodiesRun(mpm, MPM_BODY_P2G, &ctx, &nbad)); /* m_I, (mv)_I, f_I at t^n; gravity; W_I, Q_I */
+  PetscCall(MPMHeatExchangeSum(mpm));
+  PetscCall(MPMStepSize(mpm, tn, tmax, dt, &t)); /* dt_n, t^{n+1} */
+  if (mpm->failed) {
+    PetscCall(MPMHeatExchangeEnd(mpm));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   mpm->steps++;
   mpm->time = t;
   mpm->diag.dt_limit[mpm->dt_limit]++;
@@ -160,8 +168,9 @@ PetscErrorCode MPMStep(MPM mpm, PetscReal tn, PetscReal tmax, PetscReal *dt)
     ctx.remap = PETSC_FALSE;
   }
   {
-    PetscReal w = MPI_Wtime(); /* this rank's seconds in the point phases (-mpm_balance_weight work, the report's balance) */
-    PetscCall(MPMBodiesRun(mpm, MPM_BODY_POINTS, &ctx, &nbad));
+    PetscReal w = MPI_Wtime();                                  /* this rank's seconds in the point phases (-mpm_balance_weight work, the report's balance) */
+    PetscCall(MPMBodiesRun(mpm, MPM_BODY_POINTS, &ctx, &nbad)); /* the heat exchange in grid to points */
+    PetscCall(MPMHeatExchangeEnd(mpm));
     w = MPI_Wtime() - w;
     mpm->work_time += w;
     mpm->work_total += w;

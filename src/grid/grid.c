@@ -155,6 +155,9 @@ PetscErrorCode MPMDestroyGrid(MPM mpm)
   PetscCall(PetscFree(mpm->touched));
   mpm->nghost = 0;
   PetscCall(VecDestroy(&mpm->mean_l));
+  PetscCall(VecDestroy(&mpm->heat.Wl));
+  PetscCall(PetscFree(mpm->heat.w));
+  mpm->heat.cap = 0;
   PetscCall(DMDestroy(&mpm->mean_da));
   PetscCall(DMDestroy(&mpm->da));
   PetscCall(PetscFree(mpm->xcell));

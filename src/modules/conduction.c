@@ -1,12 +1,16 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
-/* Artificial heat conduction module (point phase MPM_PHASE_POINT_END, after migration; -mpm_conduction C_h > 0,
-   default 2): a point the step compressed exchanges heat with the points on its nodes, by temperature,
+/* Artificial heat conduction module (phase MPM_PHASE_STEP_BEGIN, its exchange fused into the step's transfers;
+   -mpm_conduction C_h > 0, default 2): a point its last step compressed exchanges heat with the points on its nodes,
+   by temperature,
      m_p de_p = w_p (sum_I N_I(x_p) T_I - T_p),  T_I = sum_q N_I(x_q) w_q T_q / sum_q N_I(x_q) w_q,
      w_p = beta_p m_p c_v,p,  beta_p = min(1, C_h max(0, -tr L_p) dt),
-   with c_v,p = de/dT [erg/(g eV)] at the point's density from its EOS: a diffusion with diffusivity about
-   C_h h^2 |div v| [cm^2/s] where the step compressed (after Noh, J. Comput. Phys. 72 (1987) 78). Internal energy is
-   conserved to round-off, sum_p m_p de_p = 0; a point at rest or in expansion is untouched. The EOS then gives p, T
-   and c for the new e. Why and what it measured: docs/modules.md. */
+   with c_v,p = de/dT [erg/(g eV)] at the point's density from its EOS, div v_p and dt its last step's: a diffusion with
+   diffusivity about C_h h^2 |div v| [cm^2/s] where the step compressed (after Noh, J. Comput. Phys. 72 (1987) 78).
+   The module sets the weights at the step's start; points to grid sums W_I and Q_I with the stencils it evaluates
+   anyway, and grid to points, before it moves the points, changes e_p (MPMHeatScatter, src/transfer/transfer.h), so
+   the exchange costs no stencil of its own. Internal energy is conserved to round-off, sum_p m_p de_p = 0; a point at
+   rest or in expansion is untouched; the constitutive update then gives p, T and c for the new e. Why and what it
+   measured: docs/modules.md. */
 #include "core/petmpmimpl.h"
 
 typedef struct {
@@ -31,48 +35,43 @@ static PetscErrorCode MPMConductionView(MPMModule mod, MPM mpm, PetscViewer view
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The share of the point's heat exchanged this step, beta_p = min(1, -C_h div v_p dt): compressing points only. */
+/* The share of the point's heat exchanged, beta_p = min(1, -C_h div v_p dt), with div v_p and dt its last step's:
+   compressing points only. */
 static inline PetscReal MPMConductionBeta(PetscReal C, const MPMPoints *pts, PetscInt p, PetscReal dt)
 {
   return PetscMin(1.0, -C * MPMPointDivergence(pts, p) * dt);
 }
 
+/* At the step's start: each point's weight w_p = beta_p m_p c_v,p (0 where it does not exchange), for the exchange that
+   this step's transfers make (MPMHeatScatter): its points to grid sums the nodal temperatures, its grid to points
+   changes e_p, and the constitutive update then gives p, T and c for the new e. */
 static PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
 {
   const PetscReal C  = ((MPMConduction *)mod->data)->C;
-  PetscInt        nc = 0, nw = 0, nact;
-  PetscInt       *idx;
-  PetscReal      *w, *Tbar;
+  PetscInt        nw = 0, nact;
+  PetscReal      *w;
   MPMPoints       pts;
 
   PetscFunctionBegin;
   PetscCall(MPMPointsGetArrays(mpm, &pts));
-  for (PetscInt p = 0; p < pts.n; p++) nc += (MPMConductionBeta(C, &pts, p, ctx->dt) >= 1e-10);
-  PetscCall(PetscMalloc3(nc + 1, &idx, nc + 1, &w, nc + 1, &Tbar)); /* the compressed points only (few in most steps) */
+  PetscCall(MPMHeatExchangeWeights(mpm, pts.n, &w));
   {
     const PetscReal *rho = pts.f[MPM_FIELD_DENSITY], *e = pts.f[MPM_FIELD_ENERGY];
     for (PetscInt p = 0; p < pts.n; p++) { /* beta_p, c_v,p and the weight w_p = beta_p m_p c_v,p */
       const MPMEOS E    = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].eos;
       PetscReal    beta = MPMConductionBeta(C, &pts, p, ctx->dt), de, T0, T1;
+      w[p]              = 0.0;
       if (beta < 1e-10) continue;                    /* expansion, rest, or too little to matter (and no denormal weights) */
       de = 1e-3 * PetscMax(PetscAbsReal(e[p]), 1.0); /* a central difference wide enough that round-off in e does not reach c_v */
       MPMEOSTemperatureKernel(E, rho[p], e[p] - de, &T0);
       MPMEOSTemperatureKernel(E, rho[p], e[p] + de, &T1);
-      if (!(T1 > T0)) continue; /* an EOS without temperature */
-      idx[nw] = p;
-      w[nw]   = beta * pts.f[MPM_FIELD_MASS][p] * (2.0 * de / (T1 - T0)); /* c_v = 2 de / (T1 - T0) */
-      nw += (w[nw] != 0.0);
+      if (!(T1 > T0)) continue;                                        /* an EOS without temperature */
+      w[p] = beta * pts.f[MPM_FIELD_MASS][p] * (2.0 * de / (T1 - T0)); /* c_v = 2 de / (T1 - T0) */
+      nw += (w[p] > 0.0);
     }
   }
   PetscCall(MPIU_Allreduce(&nw, &nact, 1, MPIU_INT, MPI_SUM, mpm->comm));
-  if (nact) {
-    PetscCall(MPMPointsNodalMean(mpm, &pts, nw, idx, w, pts.f[MPM_FIELD_TEMPERATURE], Tbar));
-    for (PetscInt i = 0; i < nw; i++) { /* the heat w_p (sum N T_I - T_p); then p, T and c from the EOS */
-      const PetscInt p = idx[i];
-      MPMPointEOSUpdate(mpm, &pts, p, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_ENERGY][p] + w[i] * (Tbar[i] - pts.f[MPM_FIELD_TEMPERATURE][p]) / pts.f[MPM_FIELD_MASS][p]);
-    }
-  }
-  PetscCall(PetscFree3(idx, w, Tbar));
+  if (nact) PetscCall(MPMHeatExchangeStart(mpm));
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -85,7 +84,7 @@ PetscErrorCode MPMModuleCreate_Conduction(MPMModule mod)
   PetscCall(PetscNew(&hc));
   hc->C                   = 2.0;
   mod->data               = hc;
-  mod->phase              = MPM_PHASE_POINT_END;
+  mod->phase              = MPM_PHASE_STEP_BEGIN;
   mod->ops.setfromoptions = MPMConductionSetFromOptions;
   mod->ops.apply          = MPMConductionApply;
   mod->ops.view           = MPMConductionView;

@@ -6,7 +6,9 @@
    E_I = (phi_I - 1 - tol) V_I^0 [cm^d], a fraction theta of it per step, from its fluid points by compliance,
      dV_p = -theta (V_p / K_p) sum_I N_I(x_p) E_I / C_I,  C_I = sum_q N_I(x_q) V_q / K_q,  dV_p >= -V_p / 2,
    K_p = rho_p c_p^2, at fixed specific internal energy (mass, momentum, positions and total energy unchanged). Points
-   in a shock or a fast expansion (|div v| h / c above -mpm_volume_fill_mach) keep their volume; excess is only taken.
+   in a shock or a fast expansion (|div v| h / c above -mpm_volume_fill_mach) keep their volume, their share of E_I
+   not taken (they count in C_I: a stiff point beside them does not take the node's whole excess); excess is only
+   taken.
    Why and what it measured: docs/modules.md. */
 #include "core/petmpmimpl.h"
 
@@ -169,12 +171,13 @@ static PetscErrorCode MPMFillApply(MPMModule mod, MPM mpm, const MPMStepContext 
     PetscReal          pr, c2;
     if (!MPMStrengthIsSolid(mat->strength) && !MPMPointFailed(mat, pts.f, p)) { /* failed material: its pressure is not the EOS's */
       MPMEOSPressureKernel(mat->eos, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_ENERGY][p], &pr, &c2);
-      if (c2 > 0.0 && !MPMPointInShock(mpm, &pts, p, c2, fl->mach)) c[p] = pts.f[MPM_FIELD_VOLUME][p] / (pts.f[MPM_FIELD_DENSITY][p] * c2);
+      if (c2 > 0.0) c[p] = pts.f[MPM_FIELD_VOLUME][p] / (pts.f[MPM_FIELD_DENSITY][p] * c2);
+      if (c2 > 0.0 && MPMPointInShock(mpm, &pts, p, c2, fl->mach)) c[p] = -c[p]; /* counted in C_I, gives nothing */
     }
     MPMNodalMeanStencilOf(mpm, &pts, p, &st);
     for (PetscInt a = 0; a < st.n; a++) {
       W[2 * st.node[a]] += st.w[a] * pts.f[MPM_FIELD_VOLUME][p];
-      W[2 * st.node[a] + 1] += st.w[a] * c[p];
+      W[2 * st.node[a] + 1] += st.w[a] * PetscAbsReal(c[p]);
     }
   }
   PetscCall(MPMNodalMeanSum(mpm, &W));

@@ -8,6 +8,7 @@
 
 /* Where in the step a module runs. Grid phases get the owned nodes of the ghosted local nodal vector. */
 typedef enum {
+  MPM_PHASE_STEP_BEGIN,       /* before points to grid: the heat exchange's weights (conduction, fused into the transfers)        */
   MPM_PHASE_GRID_FORCE,       /* after points to grid: external nodal forces (gravity)                                            */
   MPM_PHASE_GRID_VELOCITY,    /* wherever nodal velocities are formed (advance, MUSL remap), on each body's nodes: walls, damping */
   MPM_PHASE_GRID_CONTACT,     /* after the kick and after the MUSL remap, once on all bodies' nodes (node NULL): contact         */
@@ -85,6 +86,9 @@ PETSC_INTERN PetscErrorCode MPMCheckpointInts(MPMCheckpoint, const char[], Petsc
 /* The point-exchange modules' nodal sums and the points' state changes they make (src/modules/nodemean.c). */
 PETSC_INTERN PetscErrorCode MPMNodalMeanSetUp(MPM);
 PETSC_INTERN PetscErrorCode MPMNodalMeanSum(MPM, PetscReal **);
-PETSC_INTERN PetscErrorCode MPMPointsNodalMean(MPM, const MPMPoints *, PetscInt, const PetscInt[], const PetscReal[], const PetscReal[], PetscReal[]);
+PETSC_INTERN PetscErrorCode MPMHeatExchangeWeights(MPM, PetscInt, PetscReal **);
+PETSC_INTERN PetscErrorCode MPMHeatExchangeStart(MPM);
+PETSC_INTERN PetscErrorCode MPMHeatExchangeSum(MPM);
+PETSC_INTERN PetscErrorCode MPMHeatExchangeEnd(MPM);
 PETSC_INTERN void           MPMPointEOSUpdate(MPM, MPMPoints *, PetscInt, PetscReal, PetscReal);
 PETSC_INTERN void           MPMPointChangeVolume(MPM, MPMPoints *, PetscInt, PetscReal, PetscReal);

@@ -1,21 +1,10 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
-/* The exchange step of the point-exchange modules (heat conduction; MPMPointEOSUpdate also pressure relaxation): the
-   points idx[i] with weight w_i > 0 (a packed list: few in most steps) carrying a quantity q_p put it on their nodes as
-   the weighted nodal mean
-     q_I = sum_q N_I(x_q) w_q q_q / sum_q N_I(x_q) w_q,
-   summed over ranks, and read back qbar_i = sum_I N_I(x_p) q_I (packed as the list).
-   An exchange w_p sum_I N_I(x_p) (q_p - q_I) X_I then sums to zero over the points for any nodal X_I (partition of
-   the nodal sums), which is what makes the modules conservative. It runs after migration, where each point's nodes
-   are in its rank's ghosted box. */
+/* The point-exchange modules' nodal sums and the point state changes they make: the heat exchange of artificial
+   conduction, fused into the step's transfers (MPMHeatExchange*, MPMHeatScatter in src/transfer/transfer.h), the
+   volume consistency's and the popping diagnosis's nodal sums (a DMDA of 2 values per node beside the grid's, summed
+   over the ranks that share a node), and a module's change of a point's energy or volume (MPMPointEOSUpdate,
+   MPMPointChangeVolume). */
 #include "core/petmpmimpl.h"
-
-/* The weighted points' stencils (12 bytes an entry, about 30 entries a CPDI point in 3D) are kept from the scatter for
-   the gather up to this many entries per local point (about 50 bytes a point); the points beyond evaluate theirs again.
-   Kept: one CPDI evaluation instead of two (docs/performance.md); evaluated again: no buffer of the size of every
-   compressed point's stencil (165 bytes a point at 100 steps of the 3D bar). */
-#ifndef MPM_NODAL_MEAN_KEEP
-#  define MPM_NODAL_MEAN_KEEP 4
-#endif
 
 /* The nodal sums' DMDA (2 values per node) and its vectors, made on first use; the local vector starts zeroed. */
 PetscErrorCode MPMNodalMeanSetUp(MPM mpm)
@@ -38,76 +27,48 @@ PetscErrorCode MPMNodalMeanSum(MPM mpm, PetscReal **W)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode MPMPointsNodalMean(MPM mpm, const MPMPoints *pts, PetscInt nw, const PetscInt idx[], const PetscReal w[], const PetscReal q[], PetscReal qbar[])
+/* The heat exchange fused into the step's transfers (MPMHeatScatter, src/transfer/transfer.h): the weights of the n local
+   points, an array that the caller (the conduction module, at the step's start) fills, 0 where a point does not
+   exchange. */
+PetscErrorCode MPMHeatExchangeWeights(MPM mpm, PetscInt n, PetscReal **w)
 {
-  const PetscBool one    = (PetscBool)(mpm->lnodes == mpm->nodes); /* one rank, no ghosts: the local array is the global one */
-  const PetscInt  budget = (PetscInt)PetscMin((PetscInt64)MPM_NODAL_MEAN_KEEP * pts->n + 64, PETSC_MAX_INT / 2);
-  PetscInt        lo = PETSC_MAX_INT, hi = -1;             /* the flat range of nodes the scatter touched */
-  PetscReal      *W, *sw                 = NULL;           /* the first nkept weighted points' stencils, kept from the scatter for the gather: */
-  PetscInt       *sn = NULL, cap = 0, used = 0, nkept = 0; /* entries, nodes sn and weights sw, packed in point order */
-  MPMStencil      st;
+  PetscFunctionBegin;
+  if (n > mpm->heat.cap) {
+    PetscCall(PetscFree(mpm->heat.w));
+    mpm->heat.cap = n + n / 4;
+    PetscCall(PetscMalloc1(mpm->heat.cap, &mpm->heat.w));
+  }
+  *w = mpm->heat.w;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
+/* The weights set: this step's points to grid sums W_I and Q_I, its grid to points exchanges (collective: every rank
+   starts, so that the ghost sums match). */
+PetscErrorCode MPMHeatExchangeStart(MPM mpm)
+{
   PetscFunctionBegin;
   PetscCall(MPMNodalMeanSetUp(mpm));
-  if (!one) PetscCall(VecZeroEntries(mpm->mean_l));
-  PetscCall(VecGetArray(mpm->mean_l, &W));
-  for (PetscInt i = 0; i < nw; i++) { /* sum N w and sum N w q to the nodes */
-    const PetscInt p = idx[i];
-    MPMNodalMeanStencilOf(mpm, pts, p, &st);
-    if (!sn) { /* room for every weighted point's stencil at this size and a quarter more, within the budget */
-      cap = (PetscInt)PetscMin((PetscInt64)budget, (PetscInt64)nw * (1 + st.n) * 5 / 4 + 1);
-      PetscCall(PetscMalloc2(cap, &sn, cap, &sw));
-    }
-    if (nkept == i && used + 1 + st.n <= cap) { /* kept */
-      sn[used++] = st.n;
-      for (PetscInt a = 0; a < st.n; a++) {
-        sn[used + a] = st.node[a];
-        sw[used + a] = st.w[a];
-      }
-      used += st.n;
-      nkept++;
-    }
-    for (PetscInt a = 0; a < st.n; a++) {
-      W[2 * st.node[a]] += st.w[a] * w[i];
-      W[2 * st.node[a] + 1] += st.w[a] * w[i] * q[p];
-      lo = PetscMin(lo, st.node[a]);
-      hi = PetscMax(hi, st.node[a]);
-    }
-  }
-  PetscCall(MPMNodalMeanSum(mpm, &W));
-  used = 0;
-  for (PetscInt i = 0; i < nw; i++) { /* the interpolant of q_I at the point, on the stencils kept, or evaluated again */
-    const PetscInt  *nd;
-    const PetscReal *wt;
-    PetscInt         n;
-    PetscReal        s1 = 0.0;
-    if (i < nkept) { /* count, then the entries at the same offsets in sn and sw */
-      n  = sn[used];
-      nd = &sn[used + 1];
-      wt = &sw[used + 1];
-      used += 1 + n;
-    } else {
-      MPMNodalMeanStencilOf(mpm, pts, idx[i], &st);
-      n  = st.n;
-      nd = st.node;
-      wt = st.w;
-    }
-    for (PetscInt a = 0; a < n; a++)
-      if (W[2 * nd[a]] > 0.0) s1 += wt[a] * (W[2 * nd[a] + 1] / W[2 * nd[a]]);
-    qbar[i] = s1;
-  }
-  if (one && hi >= lo) { /* zero for the next call (one rank: no VecZeroEntries): the nodes the stencils name, or their whole range where smaller */
-    if (nkept == nw && used - nkept < hi - lo + 1)
-      for (PetscInt i = 0, j = 0; i < nkept; i++) {
-        const PetscInt n = sn[j++];
-        for (PetscInt a = 0; a < n; a++) W[2 * sn[j + a]] = W[2 * sn[j + a] + 1] = 0.0;
-        j += n;
-      }
-    else
-      PetscCall(PetscArrayzero(&W[2 * lo], 2 * (hi - lo + 1)));
-  }
-  PetscCall(PetscFree2(sn, sw));
-  PetscCall(VecRestoreArray(mpm->mean_l, &W));
+  if (!mpm->heat.Wl) PetscCall(VecDuplicate(mpm->mean_l, &mpm->heat.Wl));
+  PetscCall(VecZeroEntries(mpm->heat.Wl));
+  PetscCall(VecGetArray(mpm->heat.Wl, &mpm->heat.W));
+  mpm->heat.live = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* After every body's points to grid: W_I and Q_I summed over the ranks that share each node, on owners and ghosts. */
+PetscErrorCode MPMHeatExchangeSum(MPM mpm)
+{
+  PetscFunctionBegin;
+  if (mpm->heat.live) PetscCall(MPMNodalMeanSum(mpm, &mpm->heat.W));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* After the step's point phases (or a step that stopped). */
+PetscErrorCode MPMHeatExchangeEnd(MPM mpm)
+{
+  PetscFunctionBegin;
+  if (mpm->heat.live) PetscCall(VecRestoreArray(mpm->heat.Wl, &mpm->heat.W));
+  mpm->heat.live = PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

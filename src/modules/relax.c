@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
-/* Sub-cell pressure relaxation module (point phase MPM_PHASE_POINT_END, after heat conduction; -mpm_pressure_relax
+/* Sub-cell pressure relaxation module (point phase MPM_PHASE_POINT_END, after migration; -mpm_pressure_relax
    K_r > 0, default 0.25; fluids, the materials without a strength model): the points of a cell exchange volume
    towards the cell's pressure p_c, with the work done at p_c,
      dV_p     = w_p (p_p - p_c),   p_c = sum_{q in c} w_q p_q / sum_{q in c} w_q,   m_p de_p = -p_c dV_p,

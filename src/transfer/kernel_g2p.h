@@ -9,6 +9,7 @@
      work        e_p += MPMWorkIncrement (dt_kick (s : Lbar - (p + q) tr Lbar) / rho, Lbar = Lb / 2)
      kinematics  x_p += dt vpic,  L_p = Lp
      remap       f_I += N_I m_p v_p with the new v_p (MPMKP2GPoint's momentum, kernel_p2g.h)
+   and with the kinematics, where the step makes the heat exchange (A->hw), a weighted point's e_p (MPMHeatGather),
    one point at a time (MPMKG2PPoint) or MPM_KLANES points in vector lanes (MPMKG2PLanes). The operations and their
    order are those of the generic reference (MPMGatherGeneric). */
 
@@ -109,6 +110,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
   }
   MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p, vpicl, dvl, dv2l, Rl, Lpl, Lbl, mode);
   if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p, ns, node, W, NULL, SG, MPM_P2G_REMAP, mirror, 1);
+  if (kinematics && A->hw) MPMHeatGather(A, p, ns, node, W, 1); /* the heat exchange */
 }
 
 #if defined(MPM_KLANES)
@@ -162,6 +164,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
     }
     MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p0 + l, vpicl, dvl, dv2l, Rl, Lpl, Lbl, mode);
     if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p0 + l, MPM_KS, &node[0][l], &W[0][l], NULL, NULL, MPM_P2G_REMAP, 0, MPM_KLANES);
+    if (kinematics && A->hw) MPMHeatGather(A, p0 + l, MPM_KS, &node[0][l], &W[0][l], MPM_KLANES);
   }
 }
 #endif

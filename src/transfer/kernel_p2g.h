@@ -7,7 +7,8 @@
    and by mode (MPM_P2G_*) the internal force [dyn]
      pressure  f_I += s_I V_p (p_p + q_p) grad N_I
      stress    f_I += s_I (-V_p sigma_p) grad N_I,  -V sigma = V ((p + q) I - s)  (MPMStressForceMatrix)
-   point by point (MPMKP2GPoint) or by runs of same-cell points whose node sums stay in registers (MPMKP2GRuns).
+   and, where the step makes the heat exchange (A->hw), a weighted point's W_I and Q_I (MPMHeatScatter), point by point
+   (MPMKP2GPoint) or by runs of same-cell points whose node sums stay in registers (MPMKP2GRuns).
    MPMKP2GPoint with MPM_P2G_REMAP is the momentum product alone into f_I, the MUSL remap's, for grid to points. The
    operations and their order are those of the generic reference (src/transfer/transfer.c, MPMScatterGeneric). */
 
@@ -64,6 +65,7 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
     if (mode & (MPM_P2G_STRESS | MPM_P2G_PRESSURE))
       for (PetscInt k = 0; k < D; k++) nd->f[k] += f[k];
   }
+  if (A->hw && !(mode & MPM_P2G_REMAP)) MPMHeatScatter(A, p, ns, node, W, ls); /* the heat exchange's nodal sums */
 }
 
 /* One point of points to grid: its stencil, then MPMKP2GPoint, with the mirror signs only where the stencil has one. */
@@ -196,6 +198,7 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GRuns, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, c
       else if (mode & MPM_P2G_PRESSURE)
         for (PetscInt k = 0; k < D; k++) af[k] += 1.0 * Vp * P * dw[k];
     }
+    if (A->hw) MPMHeatScatter(A, p, MPM_KS, node, W, 1);
   }
   MPM_KRUN_FLUSH();
 #  undef MPM_KRUN_FLUSH

@@ -237,10 +237,12 @@ MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node,
   const PetscReal *F = mpm->track_F ? pts->f[MPM_FIELD_DEFGRAD] : NULL, *S = pts->f[MPM_FIELD_STRESS], *X = pts->f[MPM_FIELD_REFPOSITION];
   const PetscReal *ds = mpm->shape->needs_F ? pts->f[MPM_FIELD_DOMAINSCALE] : NULL; /* split points' domains */
   const PetscReal *C  = AFFINE ? pts->f[mpm->affine] : NULL;
+  const PetscReal *hw = force && mpm->heat.live ? MPMHeatWeights(mpm) : NULL, *T = pts->f[MPM_FIELD_TEMPERATURE]; /* the heat exchange (MPMHeatScatter) */
   MPMStencil       st;
 
   for (PetscInt p = 0; p < pts->n; p++) {
-    const PetscReal P              = pr[p] + q[p];
+    const PetscReal P   = pr[p] + q[p];
+    const PetscReal hwp = hw ? hw[p] : 0.0, hwT = hwp > 0.0 ? hwp * T[p] : 0.0;
     PetscReal       b[MPM_MAX_DIM] = {0, 0, 0}, Fs[MPM_MAX_DIM * MPM_MAX_DIM], hoop = 0.0, Sig[MPM_MAX_DIM * MPM_MAX_DIM] = {0};
     if (stress) { /* -V sigma = V ((p + q) I - s), formed once (MPMStressForceMatrix; p + q = 0 where the cell rule takes it) */
       for (PetscInt k = 0; k < d * d; k++) Sig[k] = S[p * d * d + k];
@@ -278,6 +280,7 @@ MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node,
       if (BODY)
         for (PetscInt k = 0; k < d; k++) nd->f[k] += st.s[a][k] * wm * b[k];
       if (HOOP && hoop != 0.0) nd->f[0] += st.s[a][0] * hoop * st.w[a];
+      if (hwp > 0.0) MPMHeatScatterEntry(mpm->heat.W, st.node[a], st.w[a], hwp, hwT);
     }
     if (cellrule) MPMCellRuleAdd(mpm, &x[p * d], V[p], P);
   }
@@ -362,6 +365,9 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
 
     if (mpm->kern && !body && !crack) { /* the specialised kernel, then the cell sums of the cell rule */
       const MPMTransferArgs A = {.n    = pts.n,
+                                 .hw   = force && mpm->heat.live ? MPMHeatWeights(mpm) : NULL,
+                                 .hT   = pts.f[MPM_FIELD_TEMPERATURE],
+                                 .hW   = mpm->heat.W,
                                  .x    = (PetscReal *)x,
                                  .v    = (PetscReal *)v,
                                  .m    = m,
@@ -524,6 +530,7 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
       if (HOOP) pts->f[MPM_FIELD_HOOPRATE][p] = vpic[0] / x[p * d]; /* L_tt = v_r / r at x^n, as L_p */
       for (PetscInt i = 0; i < d; i++) x[p * d + i] += dt * vpic[i];
       for (PetscInt i = 0; i < d * d; i++) L[p * d * d + i] = Lp[i];
+      if (A->hw) MPMHeatGather(A, p, st.n, st.node, st.w, 1); /* the heat exchange */
     }
   }
 }
@@ -671,7 +678,10 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
                                 .expand    = MPMExpansionWork,
                                 .ectx      = &ex,
                                 .threshold = mpm->isentrope_threshold,
-                                .crack     = crack ? &cs : NULL};
+                                .crack     = crack ? &cs : NULL,
+                                .hw        = kinematics && mpm->heat.live ? MPMHeatWeights(mpm) : NULL,
+                                .hT        = pts.f[MPM_FIELD_TEMPERATURE],
+                                .hW        = mpm->heat.W};
     if (remap) { /* f_I, zeroed by the kick (MPMGridAdvance, and the ghosts from their owners), takes the remap's momenta (MPMRemapApply) */
       mpm->kern->g2p_remap[work ? MPM_G2P_MODE_VELOCITY_WORK : MPM_G2P_MODE_VELOCITY](g, mpm->shape->data, &A, node);
     } else if (mpm->kern && !crack) {

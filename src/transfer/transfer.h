@@ -64,7 +64,45 @@ typedef struct {
   PetscReal            threshold; /* relative expansion over the kick above which expand takes the pressure's work [-] */
   PetscBool            runs;      /* points to grid by runs of same-cell points (seeded with several points per cell) */
   const MPMCrackSplit *crack;     /* generic grid to points: the body's crack field, read by each entry's side (src/grid/crack.c), or NULL */
+  const PetscReal     *hw, *hT;   /* the heat exchange (MPMHeatScatter): the points' weights w_p [erg/eV] and temperatures [eV], or NULL */
+  PetscReal           *hW;        /* its nodal sums, 2 per node of the ghosted local grid                                           */
 } MPMTransferArgs;
+
+/* The heat exchange of artificial conduction (src/modules/conduction.c), fused into the step's transfers: a point with
+   weight w_p > 0 adds to its nodes, in points to grid,
+     W_I += N_I(x_p) w_p,   Q_I += N_I(x_p) w_p T_p   (hW[2 I], hW[2 I + 1]),
+   and in grid to points (the pass with the kinematics, before x_p moves: the same stencil) takes
+     e_p += w_p (sum_I N_I(x_p) T_I - T_p) / m_p,   T_I = Q_I / W_I,
+   which sums to zero over the points (sum_I N_I = 1), so internal energy is kept to round-off. The generic and the
+   specialised transfers share these, so that the two give the same bits. */
+static inline void MPMHeatScatterEntry(PetscReal *hW, PetscInt node, PetscReal N, PetscReal w, PetscReal wT)
+{
+  hW[2 * node] += N * w;
+  hW[2 * node + 1] += N * wT;
+}
+
+/* Point p's scatter over its ns entries (entry a's node and weight node[a ls], W[a ls]). */
+static inline void MPMHeatScatter(const MPMTransferArgs *A, PetscInt p, PetscInt ns, const PetscInt *node, const PetscReal *W, PetscInt ls)
+{
+  const PetscReal w = A->hw[p], wT = w * A->hT[p];
+
+  if (!(w > 0.0)) return;
+  for (PetscInt a = 0; a < ns; a++) MPMHeatScatterEntry(A->hW, node[a * ls], W[a * ls], w, wT);
+}
+
+/* Point p's gather and its energy change. */
+static inline void MPMHeatGather(const MPMTransferArgs *A, PetscInt p, PetscInt ns, const PetscInt *node, const PetscReal *W, PetscInt ls)
+{
+  const PetscReal w    = A->hw[p];
+  PetscReal       Tbar = 0.0;
+
+  if (!(w > 0.0)) return;
+  for (PetscInt a = 0; a < ns; a++) {
+    const PetscReal *WQ = &A->hW[2 * node[a * ls]];
+    if (WQ[0] > 0.0) Tbar += W[a * ls] * (WQ[1] / WQ[0]);
+  }
+  A->e[p] += w * (Tbar - A->hT[p]) / A->m[p];
+}
 
 /* Point p's FLIP fraction in the blend: alpha, or with -mpm_update_blend_expansion K (div set) the PIC share grown to
    K div v_p dt where the point's last step expanded it by more than (1 - alpha) / K (div v_p from its last kinematics):
