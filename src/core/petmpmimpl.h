@@ -172,11 +172,10 @@ struct _p_MPM {
   DM           mean_da;                                  /* the point-exchange modules' nodal sums sum N w, sum N w q (nodemean.c) */
   Vec          mean_l;                                   /* its ghosted local vector (several ranks: summed by ghost_sf with mean_type) */
   struct {                                               /* the heat exchange fused into the step's transfers (MPMHeatScatter, nodemean.c) */
-    PetscReal *w;                                        /* the local points' weights w_p, set at the step's start (0: not exchanging) */
-    PetscInt   cap;                                      /* its capacity [points]                                    */
+    float     *w;                                        /* the local points' weights w_p [erg/eV], set at the step's start (0: not exchanging) */
+    PetscInt   cap;                                      /* its capacity [points] */
     PetscBool  live;                                     /* from MPMHeatExchangeStart to the end of the step's point phases */
-    Vec        Wl;                                       /* the nodal sums W_I, Q_I (mean_da's local vector)          */
-    PetscReal *W;                                        /* its array while live                                      */
+    PetscReal *W;                                        /* while live: the nodal sums W_I, Q_I, the array of mean_l */
   } heat;
   TS  ts;
   Vec tsu; /* the TS state: empty; the MPM state lives in the grid and swarm */
@@ -256,7 +255,7 @@ static inline void MPMNodalMeanStencilOf(MPM mpm, const MPMPoints *pts, PetscInt
 }
 
 /* The heat exchange's weights of the points MPMPointsGetArrays shows (all, or a window). */
-static inline const PetscReal *MPMHeatWeights(MPM mpm)
+static inline const float *MPMHeatWeights(MPM mpm)
 {
   return mpm->heat.w + (mpm->win_n >= 0 ? mpm->win_p0 : 0);
 }

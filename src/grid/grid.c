@@ -155,7 +155,6 @@ PetscErrorCode MPMDestroyGrid(MPM mpm)
   PetscCall(PetscFree(mpm->touched));
   mpm->nghost = 0;
   PetscCall(VecDestroy(&mpm->mean_l));
-  PetscCall(VecDestroy(&mpm->heat.Wl));
   PetscCall(PetscFree(mpm->heat.w));
   mpm->heat.cap = 0;
   PetscCall(DMDestroy(&mpm->mean_da));

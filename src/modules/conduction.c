@@ -49,7 +49,7 @@ static PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepCo
 {
   const PetscReal C  = ((MPMConduction *)mod->data)->C;
   PetscInt        nw = 0, nact;
-  PetscReal      *w;
+  float          *w;
   MPMPoints       pts;
 
   PetscFunctionBegin;
@@ -65,8 +65,8 @@ static PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepCo
       de = 1e-3 * PetscMax(PetscAbsReal(e[p]), 1.0); /* a central difference wide enough that round-off in e does not reach c_v */
       MPMEOSTemperatureKernel(E, rho[p], e[p] - de, &T0);
       MPMEOSTemperatureKernel(E, rho[p], e[p] + de, &T1);
-      if (!(T1 > T0)) continue;                                        /* an EOS without temperature */
-      w[p] = beta * pts.f[MPM_FIELD_MASS][p] * (2.0 * de / (T1 - T0)); /* c_v = 2 de / (T1 - T0) */
+      if (!(T1 > T0)) continue;                                                 /* an EOS without temperature */
+      w[p] = (float)(beta * pts.f[MPM_FIELD_MASS][p] * (2.0 * de / (T1 - T0))); /* c_v = 2 de / (T1 - T0); single precision */
       nw += (w[p] > 0.0);
     }
   }

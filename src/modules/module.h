@@ -86,7 +86,7 @@ PETSC_INTERN PetscErrorCode MPMCheckpointInts(MPMCheckpoint, const char[], Petsc
 /* The point-exchange modules' nodal sums and the points' state changes they make (src/modules/nodemean.c). */
 PETSC_INTERN PetscErrorCode MPMNodalMeanSetUp(MPM);
 PETSC_INTERN PetscErrorCode MPMNodalMeanSum(MPM, PetscReal **);
-PETSC_INTERN PetscErrorCode MPMHeatExchangeWeights(MPM, PetscInt, PetscReal **);
+PETSC_INTERN PetscErrorCode MPMHeatExchangeWeights(MPM, PetscInt, float **);
 PETSC_INTERN PetscErrorCode MPMHeatExchangeStart(MPM);
 PETSC_INTERN PetscErrorCode MPMHeatExchangeSum(MPM);
 PETSC_INTERN PetscErrorCode MPMHeatExchangeEnd(MPM);

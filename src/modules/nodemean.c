@@ -30,27 +30,27 @@ PetscErrorCode MPMNodalMeanSum(MPM mpm, PetscReal **W)
 /* The heat exchange fused into the step's transfers (MPMHeatScatter, src/transfer/transfer.h): the weights of the n local
    points, an array that the caller (the conduction module, at the step's start) fills, 0 where a point does not
    exchange. */
-PetscErrorCode MPMHeatExchangeWeights(MPM mpm, PetscInt n, PetscReal **w)
+PetscErrorCode MPMHeatExchangeWeights(MPM mpm, PetscInt n, float **w)
 {
   PetscFunctionBegin;
   if (n > mpm->heat.cap) {
     PetscCall(PetscFree(mpm->heat.w));
-    mpm->heat.cap = n + n / 4;
+    mpm->heat.cap = n + n / 8;
     PetscCall(PetscMalloc1(mpm->heat.cap, &mpm->heat.w));
   }
   *w = mpm->heat.w;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The weights set: this step's points to grid sums W_I and Q_I, its grid to points exchanges (collective: every rank
+/* The weights set: this step's points to grid sums W_I and Q_I in mean_l (the nodal sums of the point-exchange modules,
+   which the others zero before they use it, at the step's end), its grid to points exchanges (collective: every rank
    starts, so that the ghost sums match). */
 PetscErrorCode MPMHeatExchangeStart(MPM mpm)
 {
   PetscFunctionBegin;
   PetscCall(MPMNodalMeanSetUp(mpm));
-  if (!mpm->heat.Wl) PetscCall(VecDuplicate(mpm->mean_l, &mpm->heat.Wl));
-  PetscCall(VecZeroEntries(mpm->heat.Wl));
-  PetscCall(VecGetArray(mpm->heat.Wl, &mpm->heat.W));
+  PetscCall(VecZeroEntries(mpm->mean_l));
+  PetscCall(VecGetArray(mpm->mean_l, &mpm->heat.W));
   mpm->heat.live = PETSC_TRUE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -67,7 +67,7 @@ PetscErrorCode MPMHeatExchangeSum(MPM mpm)
 PetscErrorCode MPMHeatExchangeEnd(MPM mpm)
 {
   PetscFunctionBegin;
-  if (mpm->heat.live) PetscCall(VecRestoreArray(mpm->heat.Wl, &mpm->heat.W));
+  if (mpm->heat.live) PetscCall(VecRestoreArray(mpm->mean_l, &mpm->heat.W));
   mpm->heat.live = PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -8,7 +8,10 @@
    kinetic and internal energy, volume and the first moment sum_p m_p x_p are conserved exactly, and the children's
    domains tile the parent's. On an axisymmetric grid (x = r) a volume is per radian, r dA, so the half at r_c takes
    the share r_c / (2 r_p) of the mass and volume instead of 1/2 (the density stays the parent's; the axial first
-   moment is conserved, the radial one gains m a_r^2 / r_p); a point whose child would reach r <= 0 does not split. So a stretching region keeps points at most -mpm_split_length cells apart (a near-vacuum
+   moment is conserved, the radial one gains m a_r^2 / r_p); a point whose child would reach r <= 0 does not split
+   along that axis but halves its domain scale there (its domain then covers less than its volume, as a point's on
+   the axis of a near-vacuum may: without it the domain of such a point, the centre of an r-z blast, stretched past
+   the CPDI reach and the run stopped). So a stretching region keeps points at most -mpm_split_length cells apart (a near-vacuum
    rarefaction keeps at least one point per cell), and a CPDI domain is split before its corners leave the reach of
    the ghost layer. One child keeps the parent's id; the other takes the next unused id, given in the order of the
    parents' (id, material) over all ranks, so that the ids do not depend on the number of ranks. Cf.
@@ -21,6 +24,7 @@ typedef struct {
   PetscReal length;         /* -mpm_split_length: a domain longer than this along an axis splits [cells] */
   PetscReal min_scale;      /* smallest domain scale a split may leave: 2^-(max_level - 1) [-] */
   PetscInt  split, refused; /* points this rank split; point-steps whose split the level limit refused */
+  PetscInt  shrunk;         /* point-steps whose domain the axis r = 0 shrank instead of a split (r-z) */
 } MPMSplit;
 
 static PetscErrorCode MPMSplitSetFromOptions(MPMModule mod, MPM mpm, PetscOptionItems *PetscOptionsObject)
@@ -52,17 +56,22 @@ static PetscErrorCode MPMSplitView(MPMModule mod, MPM mpm, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* robustness.points_split and robustness.split_refused, and a line of the printed summary when the module ran. */
+/* robustness.points_split, split_refused and split_axis_shrunk, and a line of the printed summary when the module ran. */
 static PetscErrorCode MPMSplitReport(MPMModule mod, MPM mpm, MPMReport rep)
 {
   MPMSplit *sp   = (MPMSplit *)mod->data;
-  PetscReal s[2] = {(PetscReal)sp->split, (PetscReal)sp->refused};
+  PetscReal s[3] = {(PetscReal)sp->split, (PetscReal)sp->refused, (PetscReal)sp->shrunk};
 
   PetscFunctionBegin;
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 2, MPIU_REAL, MPIU_SUM, mpm->comm));
-  if (mod->active) PetscCall(MPMReportPrintf(rep, "  point splitting: %.0f points split (%" PetscInt_FMT " points at start); %.0f splits refused at -mpm_split_max_level\n", (double)s[0], mpm->npoints0, (double)s[1]));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s, 3, MPIU_REAL, MPIU_SUM, mpm->comm));
+  if (mod->active) {
+    PetscCall(MPMReportPrintf(rep, "  point splitting: %.0f points split (%" PetscInt_FMT " points at start); %.0f splits refused at -mpm_split_max_level", (double)s[0], mpm->npoints0, (double)s[1]));
+    if (s[2] > 0.0) PetscCall(MPMReportPrintf(rep, "; %.0f domains shrunk at the axis instead", (double)s[2]));
+    PetscCall(MPMReportPrintf(rep, "\n"));
+  }
   PetscCall(MPMReportAdd(rep, "robustness", "points_split", "%.0f", (double)s[0]));
   PetscCall(MPMReportAdd(rep, "robustness", "split_refused", "%.0f", (double)s[1]));
+  PetscCall(MPMReportAdd(rep, "robustness", "split_axis_shrunk", "%.0f", (double)s[2]));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -73,6 +82,7 @@ static PetscErrorCode MPMSplitCheckpoint(MPMModule mod, MPM mpm, MPMCheckpoint c
   PetscFunctionBegin;
   PetscCall(MPMCheckpointInts(ck, "points_split", 1, &sp->split, MPM_CKPT_RANK_SUM));
   PetscCall(MPMCheckpointInts(ck, "split_refused", 1, &sp->refused, MPM_CKPT_RANK_SUM));
+  PetscCall(MPMCheckpointInts(ck, "split_axis_shrunk", 1, &sp->shrunk, MPM_CKPT_RANK_SUM));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -81,7 +91,7 @@ static PetscErrorCode MPMSplitCheckpoint(MPMModule mod, MPM mpm, MPMCheckpoint c
    -mpm_split_length, and with it every axis as long to a relative 1e-9 (a tie), so that no axis is preferred where
    none is longer: a point stretched alike along x and y, as on the diagonal of a scene symmetric about it, splits
    into four, not first along x (which made such scenes' answers asymmetric, more so with refinement). */
-static inline PetscInt MPMSplitAxes(const MPM mpm, const MPMSplit *sp, const PetscReal *x, const PetscReal *F, const PetscReal *s, PetscBool *refused)
+static inline PetscInt MPMSplitAxes(const MPM mpm, const MPMSplit *sp, const PetscReal *x, const PetscReal *F, const PetscReal *s, PetscBool *refused, PetscInt *shrink)
 {
   const MPMGrid *g = &mpm->grid;
   const PetscInt d = g->dim;
@@ -101,7 +111,10 @@ static inline PetscInt MPMSplitAxes(const MPM mpm, const MPMSplit *sp, const Pet
       *refused = PETSC_TRUE;
       continue;
     }
-    if (g->axisym && x[0] <= PetscAbsReal(F[k]) * 0.5 * s[k] * MPMLatticeHalfWidth(mpm, k)) continue; /* a child would sit on or beyond the axis r = 0 */
+    if (g->axisym && x[0] <= PetscAbsReal(F[k]) * 0.5 * s[k] * MPMLatticeHalfWidth(mpm, k)) { /* a child would sit on or beyond the axis r = 0: the domain shrinks instead */
+      *shrink |= 1 << k;
+      continue;
+    }
     axes |= 1 << k;
   }
   return axes;
@@ -168,7 +181,11 @@ static PetscErrorCode MPMSplitApply(MPMModule mod, MPM mpm, const MPMStepContext
   PetscCall(PetscMalloc2(n + 1, &axes, n + 1, &place));
   for (PetscInt p = 0; p < n; p++) {
     PetscBool refused = PETSC_FALSE;
-    axes[p]           = MPMSplitAxes(mpm, sp, &pts.f[MPM_FIELD_POSITION][p * d], &pts.f[MPM_FIELD_DEFGRAD][p * d * d], &pts.f[MPM_FIELD_DOMAINSCALE][p * d], &refused);
+    PetscInt  shrink  = 0;
+    axes[p]           = MPMSplitAxes(mpm, sp, &pts.f[MPM_FIELD_POSITION][p * d], &pts.f[MPM_FIELD_DEFGRAD][p * d * d], &pts.f[MPM_FIELD_DOMAINSCALE][p * d], &refused, &shrink);
+    for (PetscInt k = 0; k < d; k++)
+      if ((shrink >> k) & 1) pts.f[MPM_FIELD_DOMAINSCALE][p * d + k] *= 0.5;
+    sp->shrunk += shrink != 0;
     nsplit += axes[p] != 0;
     nnew += MPMSplitChildren(axes[p]);
     nrefused += refused;

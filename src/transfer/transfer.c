@@ -209,6 +209,26 @@ static inline void MPMStencilOffsets(const MPMGrid *g, const PetscReal xp[], con
     for (PetscInt k = 0; k < g->dim; k++) dx[a][k] -= mean[k];
 }
 
+/* Axisymmetric: the radius the hoop terms divide by (the hoop force -sigma_tt V_p / r, the hoop rate v_r / r and its
+   work), max(r_p, w_p / 2), w_p the half-extent of the point's domain along r (F diag(s) times the lattice half-width
+   h / (2 ppc); the lattice's without F). A ring whose cross-section [r_p - w_p, r_p + w_p] reaches across the axis has
+   the mean radius (r_p^2 + w_p^2) / (2 w_p) >= w_p / 2, not r_p: a point that came within a small fraction of its
+   extent of the axis had a hoop rate v_r / r_p that grew without bound (r_p = 1e-9 cm in an r-z blast's centre: a
+   viscosity of 1e15 dyn/cm^2 and a step collapse). A point farther out than w_p / 2 (every seeded point: r_p >= w_p)
+   keeps r_p. */
+static inline PetscReal MPMHoopRadius(const MPMGrid *g, PetscInt ppc, const PetscReal *F, const PetscReal *ds, PetscInt p, PetscReal r)
+{
+  PetscReal w = 0.5 * g->h[0] / ppc;
+
+  if (F) {
+    PetscReal        Fs[MPM_MAX_DIM * MPM_MAX_DIM];
+    const PetscReal *R = MPMPointDomain(2, F, ds, p, Fs);
+    w                  = 0.0;
+    for (PetscInt j = 0; j < 2; j++) w += 0.5 * PetscAbsReal(R[j]) * (g->h[j] / ppc);
+  }
+  return PetscMax(r, 0.5 * w);
+}
+
 /* The generic loops' variants (MPMGenericVariant): the reference, which computes what the specialised kernels compute
    (they reproduce it bit for bit, tests/scenes/kernels.json), and the terms that only some runs have, each a
    compile-time flag of the same loop body, so that the reference carries no branch for them:
@@ -237,18 +257,19 @@ MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node,
   const PetscReal *F = mpm->track_F ? pts->f[MPM_FIELD_DEFGRAD] : NULL, *S = pts->f[MPM_FIELD_STRESS], *X = pts->f[MPM_FIELD_REFPOSITION];
   const PetscReal *ds = mpm->shape->needs_F ? pts->f[MPM_FIELD_DOMAINSCALE] : NULL; /* split points' domains */
   const PetscReal *C  = AFFINE ? pts->f[mpm->affine] : NULL;
-  const PetscReal *hw = force && mpm->heat.live ? MPMHeatWeights(mpm) : NULL, *T = pts->f[MPM_FIELD_TEMPERATURE]; /* the heat exchange (MPMHeatScatter) */
+  const float     *hw = force && mpm->heat.live ? MPMHeatWeights(mpm) : NULL; /* the heat exchange (MPMHeatScatter) */
+  const PetscReal *T  = pts->f[MPM_FIELD_TEMPERATURE];
   MPMStencil       st;
 
   for (PetscInt p = 0; p < pts->n; p++) {
     const PetscReal P   = pr[p] + q[p];
-    const PetscReal hwp = hw ? hw[p] : 0.0, hwT = hwp > 0.0 ? hwp * T[p] : 0.0;
+    const PetscReal hwp = hw ? (PetscReal)hw[p] : 0.0, hwT = hwp > 0.0 ? hwp * T[p] : 0.0;
     PetscReal       b[MPM_MAX_DIM] = {0, 0, 0}, Fs[MPM_MAX_DIM * MPM_MAX_DIM], hoop = 0.0, Sig[MPM_MAX_DIM * MPM_MAX_DIM] = {0};
     if (stress) { /* -V sigma = V ((p + q) I - s), formed once (MPMStressForceMatrix; p + q = 0 where the cell rule takes it) */
       for (PetscInt k = 0; k < d * d; k++) Sig[k] = S[p * d * d + k];
       MPMStressForceMatrix(d, V[p], cellrule ? 0.0 : P, Sig);
     }
-    if (HOOP && force) hoop = V[p] * (P + (stress ? S[p * d * d] + S[p * d * d + d + 1] : 0.0)) / x[p * d]; /* -sigma_tt V / r, sigma_tt = -P - (s_rr + s_zz) */
+    if (HOOP && force) hoop = V[p] * (P + (stress ? S[p * d * d] + S[p * d * d + d + 1] : 0.0)) / MPMHoopRadius(g, mpm->ppc, F, ds, p, x[p * d]); /* -sigma_tt V / r, sigma_tt = -P - (s_rr + s_zz) */
     if (BODY) mpm->exact->ops.bodyforce(mpm->exact->data, tn, &X[p * d], F ? &F[p * d * d] : NULL, b);
     PetscReal dx[MPM_MAX_STENCIL][MPM_MAX_DIM], gc[MPM_MAX_DIM];
     if (CRACK && cs->keep && !cs->near[MPMGridCellNode(g, &x[p * d])]) continue; /* far from failed material: every entry is the body's */
@@ -460,11 +481,12 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
   MPMStencil       st;
 
   for (PetscInt p = 0; p < pts->n; p++) {
-    PetscReal vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Lb[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, dv2c[MPM_MAX_DIM] = {0}, Rc[MPM_MAX_DIM] = {0}, Fs[MPM_MAX_DIM * MPM_MAX_DIM];
-    PetscReal Lbtt                          = 0.0;                                      /* axisymmetric: the hoop rate of vbar, sum N (2 v_I - dv_I)_r / r_p */
-    PetscReal Bm[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Dm[MPM_MAX_DIM * MPM_MAX_DIM] = {0}; /* APIC's moments */
-    PetscReal Cdv = 0.0;                                                                /* APIC: sum N (C_p (x_I - x_p)) . dv_I */
-    PetscReal dx[MPM_MAX_STENCIL][MPM_MAX_DIM], gc[MPM_MAX_DIM];
+    PetscReal       vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Lb[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, dv2c[MPM_MAX_DIM] = {0}, Rc[MPM_MAX_DIM] = {0}, Fs[MPM_MAX_DIM * MPM_MAX_DIM];
+    PetscReal       Lbtt                          = 0.0;                                      /* axisymmetric: the hoop rate of vbar, sum N (2 v_I - dv_I)_r / r_p */
+    PetscReal       Bm[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Dm[MPM_MAX_DIM * MPM_MAX_DIM] = {0}; /* APIC's moments */
+    PetscReal       Cdv = 0.0;                                                                /* APIC: sum N (C_p (x_I - x_p)) . dv_I */
+    PetscReal       dx[MPM_MAX_STENCIL][MPM_MAX_DIM], gc[MPM_MAX_DIM];
+    const PetscReal rh = HOOP ? MPMHoopRadius(g, mpm->ppc, A->F, A->ds, p, x[p * d]) : 1.0; /* the hoop terms' radius */
     MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, A->F, A->ds, p, Fs), &st);
     if (AFFINE && velocity) MPMStencilOffsets(g, &x[p * d], &st, dx);
     if (CRACK) MPMCrackPointGradient(A->crack->D, d, &st, A->crack->g2min, gc);
@@ -488,7 +510,7 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
         for (PetscInt j = 0; j < d; j++) Lp[i * d + j] += vI * st.dw[a][j];
         if (work)
           for (PetscInt j = 0; j < d; j++) Lb[i * d + j] += (2.0 * vI - dvI) * st.dw[a][j];
-        if (HOOP && work && i == 0) Lbtt += st.w[a] * (2.0 * vI - dvI) / x[p * d];
+        if (HOOP && work && i == 0) Lbtt += st.w[a] * (2.0 * vI - dvI) / rh;
       }
     }
     if (velocity) {
@@ -527,7 +549,7 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
       }
     }
     if (kinematics) {
-      if (HOOP) pts->f[MPM_FIELD_HOOPRATE][p] = vpic[0] / x[p * d]; /* L_tt = v_r / r at x^n, as L_p */
+      if (HOOP) pts->f[MPM_FIELD_HOOPRATE][p] = vpic[0] / rh; /* L_tt = v_r / r at x^n, as L_p */
       for (PetscInt i = 0; i < d; i++) x[p * d + i] += dt * vpic[i];
       for (PetscInt i = 0; i < d * d; i++) L[p * d * d + i] = Lp[i];
       if (A->hw) MPMHeatGather(A, p, st.n, st.node, st.w, 1); /* the heat exchange */

@@ -64,7 +64,8 @@ typedef struct {
   PetscReal            threshold; /* relative expansion over the kick above which expand takes the pressure's work [-] */
   PetscBool            runs;      /* points to grid by runs of same-cell points (seeded with several points per cell) */
   const MPMCrackSplit *crack;     /* generic grid to points: the body's crack field, read by each entry's side (src/grid/crack.c), or NULL */
-  const PetscReal     *hw, *hT;   /* the heat exchange (MPMHeatScatter): the points' weights w_p [erg/eV] and temperatures [eV], or NULL */
+  const float         *hw;        /* the heat exchange (MPMHeatScatter): the points' weights w_p [erg/eV] (single precision), or NULL */
+  const PetscReal     *hT;        /* their temperatures [eV]                                                                   */
   PetscReal           *hW;        /* its nodal sums, 2 per node of the ghosted local grid                                           */
 } MPMTransferArgs;
 
@@ -73,7 +74,8 @@ typedef struct {
      W_I += N_I(x_p) w_p,   Q_I += N_I(x_p) w_p T_p   (hW[2 I], hW[2 I + 1]),
    and in grid to points (the pass with the kinematics, before x_p moves: the same stencil) takes
      e_p += w_p (sum_I N_I(x_p) T_I - T_p) / m_p,   T_I = Q_I / W_I,
-   which sums to zero over the points (sum_I N_I = 1), so internal energy is kept to round-off. The generic and the
+   which sums to zero over the points (sum_I N_I = 1) whatever the weights, so internal energy is kept to round-off
+   with w_p stored in single precision (4 bytes a point: the weight of an artificial diffusion needs no more). The generic and the
    specialised transfers share these, so that the two give the same bits. */
 static inline void MPMHeatScatterEntry(PetscReal *hW, PetscInt node, PetscReal N, PetscReal w, PetscReal wT)
 {
