@@ -175,7 +175,8 @@ struct _p_MPM {
     float     *w;                                        /* the local points' weights w_p [erg/eV], set at the step's start (0: not exchanging) */
     PetscInt   cap;                                      /* its capacity [points] */
     PetscBool  live;                                     /* from MPMHeatExchangeStart to the end of the step's point phases */
-    PetscReal *W;                                        /* while live: the nodal sums W_I, Q_I, the array of mean_l */
+    PetscReal *W;                                        /* while live: the nodal sums W_I, Q_I (after their ghost sum: W_I, T_I = Q_I / W_I), the array of mean_l */
+    PetscInt   lo, hi;                                   /* one rank: the local nodes [lo, hi] (flat) the last exchange wrote; mean_l is zero outside them */
   } heat;
   TS  ts;
   Vec tsu; /* the TS state: empty; the MPM state lives in the grid and swarm */

@@ -157,6 +157,8 @@ PetscErrorCode MPMDestroyGrid(MPM mpm)
   PetscCall(VecDestroy(&mpm->mean_l));
   PetscCall(PetscFree(mpm->heat.w));
   mpm->heat.cap = 0;
+  mpm->heat.lo  = 0;
+  mpm->heat.hi  = -1;
   PetscCall(DMDestroy(&mpm->mean_da));
   PetscCall(DMDestroy(&mpm->da));
   PetscCall(PetscFree(mpm->xcell));

@@ -48,7 +48,7 @@ static inline PetscReal MPMConductionBeta(PetscReal C, const MPMPoints *pts, Pet
 static PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
 {
   const PetscReal C  = ((MPMConduction *)mod->data)->C;
-  PetscInt        nw = 0, nact;
+  PetscInt        nw = 0, nact, cmin = PETSC_MAX_INT, cmax = -1; /* the weighted points' cells (their first local nodes) */
   float          *w;
   MPMPoints       pts;
 
@@ -67,11 +67,16 @@ static PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepCo
       MPMEOSTemperatureKernel(E, rho[p], e[p] + de, &T1);
       if (!(T1 > T0)) continue;                                                 /* an EOS without temperature */
       w[p] = (float)(beta * pts.f[MPM_FIELD_MASS][p] * (2.0 * de / (T1 - T0))); /* c_v = 2 de / (T1 - T0); single precision */
-      nw += (w[p] > 0.0);
+      if (w[p] > 0.0) {
+        const PetscInt c = MPMGridCellNode(&mpm->grid, &pts.f[MPM_FIELD_POSITION][p * mpm->grid.dim]);
+        cmin             = PetscMin(cmin, c);
+        cmax             = PetscMax(cmax, c);
+        nw++;
+      }
     }
   }
   PetscCall(MPIU_Allreduce(&nw, &nact, 1, MPIU_INT, MPI_SUM, mpm->comm));
-  if (nact) PetscCall(MPMHeatExchangeStart(mpm));
+  if (nact) PetscCall(MPMHeatExchangeStart(mpm, cmin, cmax));
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

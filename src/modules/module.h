@@ -87,7 +87,7 @@ PETSC_INTERN PetscErrorCode MPMCheckpointInts(MPMCheckpoint, const char[], Petsc
 PETSC_INTERN PetscErrorCode MPMNodalMeanSetUp(MPM);
 PETSC_INTERN PetscErrorCode MPMNodalMeanSum(MPM, PetscReal **);
 PETSC_INTERN PetscErrorCode MPMHeatExchangeWeights(MPM, PetscInt, float **);
-PETSC_INTERN PetscErrorCode MPMHeatExchangeStart(MPM);
+PETSC_INTERN PetscErrorCode MPMHeatExchangeStart(MPM, PetscInt, PetscInt);
 PETSC_INTERN PetscErrorCode MPMHeatExchangeSum(MPM);
 PETSC_INTERN PetscErrorCode MPMHeatExchangeEnd(MPM);
 PETSC_INTERN void           MPMPointEOSUpdate(MPM, MPMPoints *, PetscInt, PetscReal, PetscReal);

@@ -42,24 +42,48 @@ PetscErrorCode MPMHeatExchangeWeights(MPM mpm, PetscInt n, float **w)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The weights set: this step's points to grid sums W_I and Q_I in mean_l (the nodal sums of the point-exchange modules,
-   which the others zero before they use it, at the step's end), its grid to points exchanges (collective: every rank
-   starts, so that the ghost sums match). */
-PetscErrorCode MPMHeatExchangeStart(MPM mpm)
+/* The weights set, the weighted points in the cells whose first local nodes (flat) are cmin .. cmax: this step's points
+   to grid sums W_I and Q_I in mean_l (the nodal sums of the point-exchange modules, which the others leave zeroed), its
+   grid to points exchanges (collective: every rank starts, so that the ghost sums match). On one rank only the nodes the
+   last exchange wrote are zeroed, and this one's are those within the ghost width of the weighted points' cells: on the
+   3D anvil the whole vector's zeroing was 1.5% of the run. */
+PetscErrorCode MPMHeatExchangeStart(MPM mpm, PetscInt cmin, PetscInt cmax)
 {
+  const MPMGrid *g = &mpm->grid;
+
   PetscFunctionBegin;
   PetscCall(MPMNodalMeanSetUp(mpm));
-  PetscCall(VecZeroEntries(mpm->mean_l));
-  PetscCall(VecGetArray(mpm->mean_l, &mpm->heat.W));
+  if (!mpm->ghost_sf) {
+    const PetscInt nloc = g->gm[0] * g->gm[1] * g->gm[2], pad = (g->sw + 2) * (1 + (g->dim > 1 ? g->gm[0] : 0) + (g->dim > 2 ? g->gm[0] * g->gm[1] : 0));
+    PetscCall(VecGetArray(mpm->mean_l, &mpm->heat.W));
+    if (mpm->heat.hi >= mpm->heat.lo) PetscCall(PetscArrayzero(&mpm->heat.W[2 * mpm->heat.lo], 2 * (mpm->heat.hi - mpm->heat.lo + 1)));
+    mpm->heat.lo = PetscMax(0, cmin - pad);
+    mpm->heat.hi = PetscMin(nloc - 1, cmax + pad);
+  } else {
+    PetscCall(VecZeroEntries(mpm->mean_l));
+    PetscCall(VecGetArray(mpm->mean_l, &mpm->heat.W));
+  }
   mpm->heat.live = PETSC_TRUE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* After every body's points to grid: W_I and Q_I summed over the ranks that share each node, on owners and ghosts. */
+/* After every body's points to grid: W_I and Q_I summed over the ranks that share each node, on owners and ghosts; then
+   T_I = Q_I / W_I in place of Q_I (0 where W_I = 0), once per node for the gathers (MPMHeatGather). */
 PetscErrorCode MPMHeatExchangeSum(MPM mpm)
 {
+  const MPMGrid *g  = &mpm->grid;
+  PetscInt       lo = 0, hi = g->gm[0] * g->gm[1] * g->gm[2] - 1;
+  PetscReal     *W;
+
   PetscFunctionBegin;
-  if (mpm->heat.live) PetscCall(MPMNodalMeanSum(mpm, &mpm->heat.W));
+  if (!mpm->heat.live) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MPMNodalMeanSum(mpm, &mpm->heat.W));
+  W = mpm->heat.W;
+  if (!mpm->ghost_sf) {
+    lo = mpm->heat.lo;
+    hi = mpm->heat.hi;
+  }
+  for (PetscInt i = lo; i <= hi; i++) W[2 * i + 1] = W[2 * i] > 0.0 ? W[2 * i + 1] / W[2 * i] : 0.0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -92,17 +92,15 @@ static inline void MPMHeatScatter(const MPMTransferArgs *A, PetscInt p, PetscInt
   for (PetscInt a = 0; a < ns; a++) MPMHeatScatterEntry(A->hW, node[a * ls], W[a * ls], w, wT);
 }
 
-/* Point p's gather and its energy change. */
+/* Point p's gather and its energy change; hW holds W_I and T_I = Q_I / W_I by then (MPMHeatExchangeSum; 0 where no
+   weighted point reaches). */
 static inline void MPMHeatGather(const MPMTransferArgs *A, PetscInt p, PetscInt ns, const PetscInt *node, const PetscReal *W, PetscInt ls)
 {
   const PetscReal w    = A->hw[p];
   PetscReal       Tbar = 0.0;
 
   if (!(w > 0.0)) return;
-  for (PetscInt a = 0; a < ns; a++) {
-    const PetscReal *WQ = &A->hW[2 * node[a * ls]];
-    if (WQ[0] > 0.0) Tbar += W[a * ls] * (WQ[1] / WQ[0]);
-  }
+  for (PetscInt a = 0; a < ns; a++) Tbar += W[a * ls] * A->hW[2 * node[a * ls] + 1];
   A->e[p] += w * (Tbar - A->hT[p]) / A->m[p];
 }
 
