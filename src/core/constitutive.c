@@ -63,8 +63,9 @@ static inline __attribute__((always_inline)) PetscErrorCode MPMConstitutiveChunk
 
   PetscFunctionBegin;
   if (Lsh) { /* kinematics: rho^{n+1} = rho^n / J, d(1/rho) (loops free of branches per point); axisymmetric: J has the hoop factor
-                |1 + dt L_tt| = |r^{n+1}| / r^n (L_tt = v_r / r^n): a ring that crosses the axis in a step is the ring at |r^{n+1}|,
-                where the reflection at the axis puts its point (MPMReflectAtWalls), not one of negative volume */
+                |1 + dt L_tt| (= |r^{n+1}| / r^n where L_tt = v_r / r^n, away from the axis: MPMHoopRadius): a ring that crosses the
+                axis in a step is the ring at |r^{n+1}|, where the reflection at the axis puts its point (MPMReflectAtWalls), not
+                one of negative volume */
     const PetscReal *hoop = pts->f[MPM_FIELD_HOOPRATE];
     for (PetscInt i = 0; i < n; i++) rho1[i] = rho[MPM_CP(i)] / (MPMDetIPlusDtL(d, dt, &L[MPM_CP(i) * d * d]) * PetscAbsReal(1.0 + dt * hoop[MPM_CP(i)]));
   } else

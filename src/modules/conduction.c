@@ -65,8 +65,8 @@ static PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepCo
       de = 1e-3 * PetscMax(PetscAbsReal(e[p]), 1.0); /* a central difference wide enough that round-off in e does not reach c_v */
       MPMEOSTemperatureKernel(E, rho[p], e[p] - de, &T0);
       MPMEOSTemperatureKernel(E, rho[p], e[p] + de, &T1);
-      if (!(T1 > T0)) continue;                                                 /* an EOS without temperature */
-      w[p] = (float)(beta * pts.f[MPM_FIELD_MASS][p] * (2.0 * de / (T1 - T0))); /* c_v = 2 de / (T1 - T0); single precision */
+      if (!(T1 > T0)) continue;                                                               /* an EOS without temperature */
+      w[p] = (float)PetscMin(beta * pts.f[MPM_FIELD_MASS][p] * (2.0 * de / (T1 - T0)), 1e38); /* c_v = 2 de / (T1 - T0); single precision (a flat T(e) not inf) */
       if (w[p] > 0.0) {
         const PetscInt c = MPMGridCellNode(&mpm->grid, &pts.f[MPM_FIELD_POSITION][p * mpm->grid.dim]);
         cmin             = PetscMin(cmin, c);
