@@ -210,23 +210,17 @@ static inline void MPMStencilOffsets(const MPMGrid *g, const PetscReal xp[], con
 }
 
 /* Axisymmetric: the radius the hoop terms divide by (the hoop force -sigma_tt V_p / r, the hoop rate v_r / r and its
-   work), max(r_p, w_p / 2), w_p the half-extent of the point's domain along r (F diag(s) times the lattice half-width
-   h / (2 ppc), F the shape's own domain (CPDI); the lattice's for a shape family that does not read F, whose points may
-   carry F for splitting without their halvings). A ring whose cross-section [r_p - w_p, r_p + w_p] reaches across the axis has
-   the mean radius (r_p^2 + w_p^2) / (2 w_p) >= w_p / 2, not r_p: a point that came within a small fraction of its
-   extent of the axis had a hoop rate v_r / r_p that grew without bound (r_p = 1e-9 cm in an r-z blast's centre: a
-   viscosity of 1e15 dyn/cm^2 and a step collapse). A point farther out than w_p / 2 (every seeded point: r_p >= w_p)
-   keeps r_p. */
-static inline PetscReal MPMHoopRadius(const MPMGrid *g, PetscInt ppc, const PetscReal *F, const PetscReal *ds, PetscInt p, PetscReal r)
+   work), max(r_p, w_p / 2), w_p the half-extent of the point's domain along r (MPMPointHalfExtent, for a shape family
+   that reads F: CPDI; the lattice half-spacing h / (2 ppc) for the others, whose points may carry F for splitting
+   without their halvings). A ring whose cross-section [r_p - w_p, r_p + w_p] reaches across the axis has the mean
+   radius (r_p^2 + w_p^2) / (2 w_p) >= w_p / 2, not r_p: a point that came within a small fraction of its extent of
+   the axis had a hoop rate v_r / r_p that grew without bound (r_p = 1e-9 cm in an r-z blast's centre: a viscosity of
+   1e15 dyn/cm^2 and a step collapse). A point farther out than w_p / 2 (every seeded point: r_p >= w_p) keeps r_p. */
+static inline PetscReal MPMHoopRadius(MPM mpm, const MPMPoints *pts, PetscInt p)
 {
-  PetscReal w = 0.5 * g->h[0] / ppc;
+  const PetscReal er[MPM_MAX_DIM] = {1.0, 0.0, 0.0}, r = pts->f[MPM_FIELD_POSITION][2 * p];
+  const PetscReal w = mpm->shape->needs_F ? MPMPointHalfExtent(mpm, pts, p, er) : 0.5 * mpm->grid.h[0] / mpm->ppc;
 
-  if (F) {
-    PetscReal        Fs[MPM_MAX_DIM * MPM_MAX_DIM];
-    const PetscReal *R = MPMPointDomain(2, F, ds, p, Fs);
-    w                  = 0.0;
-    for (PetscInt j = 0; j < 2; j++) w += 0.5 * PetscAbsReal(R[j]) * (g->h[j] / ppc);
-  }
   return PetscMax(r, 0.5 * w);
 }
 
@@ -270,7 +264,7 @@ MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node,
       for (PetscInt k = 0; k < d * d; k++) Sig[k] = S[p * d * d + k];
       MPMStressForceMatrix(d, V[p], cellrule ? 0.0 : P, Sig);
     }
-    if (HOOP && force) hoop = V[p] * (P + (stress ? S[p * d * d] + S[p * d * d + d + 1] : 0.0)) / MPMHoopRadius(g, mpm->ppc, mpm->shape->needs_F ? F : NULL, ds, p, x[p * d]); /* -sigma_tt V / r, sigma_tt = -P - (s_rr + s_zz) */
+    if (HOOP && force) hoop = V[p] * (P + (stress ? S[p * d * d] + S[p * d * d + d + 1] : 0.0)) / MPMHoopRadius(mpm, pts, p); /* -sigma_tt V / r, sigma_tt = -P - (s_rr + s_zz) */
     if (BODY) mpm->exact->ops.bodyforce(mpm->exact->data, tn, &X[p * d], F ? &F[p * d * d] : NULL, b);
     PetscReal dx[MPM_MAX_STENCIL][MPM_MAX_DIM], gc[MPM_MAX_DIM];
     if (CRACK && cs->keep && !cs->near[MPMGridCellNode(g, &x[p * d])]) continue; /* far from failed material: every entry is the body's */
@@ -487,7 +481,7 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
     PetscReal       Bm[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Dm[MPM_MAX_DIM * MPM_MAX_DIM] = {0}; /* APIC's moments */
     PetscReal       Cdv = 0.0;                                                                /* APIC: sum N (C_p (x_I - x_p)) . dv_I */
     PetscReal       dx[MPM_MAX_STENCIL][MPM_MAX_DIM], gc[MPM_MAX_DIM];
-    const PetscReal rh = HOOP ? MPMHoopRadius(g, mpm->ppc, mpm->shape->needs_F ? A->F : NULL, A->ds, p, x[p * d]) : 1.0; /* the hoop terms' radius */
+    const PetscReal rh = HOOP ? MPMHoopRadius(mpm, pts, p) : 1.0; /* the hoop terms' radius */
     MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, A->F, A->ds, p, Fs), &st);
     if (AFFINE && velocity) MPMStencilOffsets(g, &x[p * d], &st, dx);
     if (CRACK) MPMCrackPointGradient(A->crack->D, d, &st, A->crack->g2min, gc);
