@@ -40,7 +40,7 @@ static PetscErrorCode MPMGridAdvance(MPM mpm, const MPMStepContext *ctx)
 
 /* The step's phases that run once per body, on its nodes and points (MPMBodyWindow): points to grid with the nodal
    force modules; the kick; MUSL's velocity gather and remap; then the phases of every point. One body: no window. */
-typedef enum { MPM_BODY_P2G, MPM_BODY_ADVANCE, MPM_BODY_REMAP, MPM_BODY_POINTS } MPMBodyPhase;
+typedef enum { MPM_BODY_P2G, MPM_BODY_ADVANCE, MPM_BODY_BLEND, MPM_BODY_REMAP, MPM_BODY_POINTS } MPMBodyPhase;
 
 static PetscErrorCode MPMStepPoints(MPM, const MPMStepContext *, PetscInt *);
 
@@ -54,6 +54,9 @@ static PetscErrorCode MPMBodyPhaseRun(MPM mpm, MPMBodyPhase phase, MPMStepContex
     break;
   case MPM_BODY_ADVANCE:
     PetscCall(MPMGridAdvance(mpm, ctx)); /* (mv)_I += dt_kick f_I; walls */
+    break;
+  case MPM_BODY_BLEND:
+    PetscCall(MPMBlendScatter(mpm)); /* sum N V_p s_p of the points that ask for a PIC share */
     break;
   case MPM_BODY_REMAP:
     PetscCall(MPMGridToParticles(mpm, ctx, PETSC_TRUE, PETSC_FALSE)); /* v_p (and the remap's momenta, MPM::remap_fused) */
@@ -95,7 +98,7 @@ static PetscErrorCode MPMBodiesRun(MPM mpm, MPMBodyPhase phase, MPMStepContext *
       PetscCall(MPMCrackBodyWindow(mpm, body));
       PetscCall(MPMBodySelect(mpm, body));
     } else { /* a crack field */
-      if (phase == MPM_BODY_REMAP || phase == MPM_BODY_POINTS) continue;
+      if (phase == MPM_BODY_BLEND || phase == MPM_BODY_REMAP || phase == MPM_BODY_POINTS) continue;
       PetscCall(MPMBodySelect(mpm, s));
       if (phase == MPM_BODY_P2G)
         PetscCall(MPMCrackBodyWindow(mpm, body));
@@ -161,6 +164,9 @@ PetscErrorCode MPMStep(MPM mpm, PetscReal tn, PetscReal tmax, PetscReal *dt)
   PetscCall(PetscLogEventEnd(mpm->log.advance, 0, 0, 0, 0));
   PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_CONTACT, &ctx)); /* bodies that meet */
   PetscCall(MPMModulesSettle(mpm, &ctx));                        /* the kick's velocity changes' work, with v^{n+1/2} */
+  PetscCall(MPMBlendSharesBegin(mpm));                           /* the blend's PIC shares per node, b_I (-mpm_update_blend_expansion) */
+  if (mpm->blend.live) PetscCall(MPMBodiesRun(mpm, MPM_BODY_BLEND, &ctx, &nbad));
+  PetscCall(MPMBlendSharesSum(mpm));
   if (mpm->scheme == MPM_SCHEME_MUSL) {
     PetscCall(MPMBodiesRun(mpm, MPM_BODY_REMAP, &ctx, &nbad));
     ctx.remap = PETSC_TRUE;
@@ -171,6 +177,7 @@ PetscErrorCode MPMStep(MPM mpm, PetscReal tn, PetscReal tmax, PetscReal *dt)
     PetscReal w = MPI_Wtime();                                  /* this rank's seconds in the point phases (-mpm_balance_weight work, the report's balance) */
     PetscCall(MPMBodiesRun(mpm, MPM_BODY_POINTS, &ctx, &nbad)); /* the heat exchange in grid to points */
     PetscCall(MPMHeatExchangeEnd(mpm));
+    PetscCall(MPMBlendSharesEnd(mpm));
     w = MPI_Wtime() - w;
     mpm->work_time += w;
     mpm->work_total += w;

@@ -155,6 +155,7 @@ PetscErrorCode MPMDestroyGrid(MPM mpm)
   PetscCall(PetscFree(mpm->touched));
   mpm->nghost = 0;
   PetscCall(VecDestroy(&mpm->mean_l));
+  PetscCall(VecDestroy(&mpm->blend.l));
   PetscCall(PetscFree(mpm->heat.w));
   mpm->heat.cap = 0;
   mpm->heat.lo  = 0;

@@ -27,9 +27,8 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(const MPMTransfer
   if (velocity) {
     const PetscReal dv2 = MPMKSumComponents(MPM_KD, dv2c), R = (mode & MPM_G2P_FLIP) ? 0.0 : MPMKSumComponents(MPM_KD, Rc);
     PetscReal       share = 0.5 * dv2, gain = 0.0;
-    const PetscReal ap = MPMBlendShare(A, p);
     for (PetscInt i = 0; i < D; i++) {
-      const PetscReal vn = ap * (v[p * D + i] + dv[i]) + (1.0 - ap) * vpic[i];
+      const PetscReal vn = alpha * (v[p * D + i] + dv[i]) + (1.0 - alpha) * vpic[i];
       share += v[p * D + i] * dv[i];
       gain += 0.5 * (vn * vn - v[p * D + i] * v[p * D + i]);
       v[p * D + i] = vn;

@@ -480,6 +480,8 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
     PetscReal       Lbtt                          = 0.0;                                      /* axisymmetric: the hoop rate of vbar, sum N (2 v_I - dv_I)_r / r_p */
     PetscReal       Bm[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Dm[MPM_MAX_DIM * MPM_MAX_DIM] = {0}; /* APIC's moments */
     PetscReal       Cdv = 0.0;                                                                /* APIC: sum N (C_p (x_I - x_p)) . dv_I */
+    PetscReal       nb = 0.0, bv0[MPM_MAX_DIM] = {0, 0, 0}, Rbc[MPM_MAX_DIM] = {0, 0, 0};     /* nodal PIC shares: sum N b_I, sum N b_I v_I^n, sum N b_I (v_I^n - v_p) . v_I */
+    PetscBool       nodal = PETSC_FALSE;                                                      /* a node of the stencil asks for more than 1 - alpha */
     PetscReal       dx[MPM_MAX_STENCIL][MPM_MAX_DIM], gc[MPM_MAX_DIM];
     const PetscReal rh = HOOP ? MPMHoopRadius(mpm, pts, p) : 1.0; /* the hoop terms' radius */
     MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, A->F, A->ds, p, Fs), &st);
@@ -502,6 +504,15 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
         dv2c[i] += st.w[a] * dvI * dvI;                            /* |dv_I|^2 and R per component (MPMKSumComponents) */
         Rc[i] += st.w[a] * (vI - dvI - v[p * d + i] - Cx[i]) * vI; /* (v_I^n - v_p - C_p (x_I - x_p)) . v_I */
         Cdv += st.w[a] * Cx[i] * dvI;
+        if (A->bn) {
+          const PetscReal b = A->bn[2 * st.node[a] + 1];
+          if (i == 0) {
+            nb += st.w[a] * b;
+            nodal = (PetscBool)(nodal || b > 1.0 - alpha);
+          }
+          bv0[i] += st.w[a] * b * (vI - dvI);
+          Rbc[i] += st.w[a] * b * (vI - dvI - v[p * d + i]) * vI;
+        }
         for (PetscInt j = 0; j < d; j++) Lp[i * d + j] += vI * st.dw[a][j];
         if (work)
           for (PetscInt j = 0; j < d; j++) Lb[i * d + j] += (2.0 * vI - dvI) * st.dw[a][j];
@@ -511,14 +522,13 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
     if (velocity) {
       const PetscReal dv2 = MPMKSumComponents(d, dv2c), R = MPMKSumComponents(d, Rc);
       PetscReal       share = 0.5 * dv2 + Cdv, gain = 0.0; /* grid kinetic energy gain of the point's share, the point's own [erg/g] */
-      const PetscReal ap = MPMBlendShare(A, p);
-      for (PetscInt i = 0; i < d; i++) {
-        const PetscReal vn = ap * (v[p * d + i] + dv[i]) + (1.0 - ap) * vpic[i];
+      for (PetscInt i = 0; i < d; i++) {                   /* with nodal shares v_p + dv - sum N b_I (v_p - v_I^n) (src/transfer/blend.c), else the blend */
+        const PetscReal vn = nodal ? v[p * d + i] + dv[i] - (nb * v[p * d + i] - bv0[i]) : alpha * (v[p * d + i] + dv[i]) + (1.0 - alpha) * vpic[i];
         share += v[p * d + i] * dv[i];
         gain += 0.5 * (vn * vn - v[p * d + i] * v[p * d + i]);
         v[p * d + i] = vn;
       }
-      if (kefix) e[p] += share - gain + (1.0 - alpha) * R;
+      if (kefix) e[p] += share - gain + (nodal ? MPMKSumComponents(d, Rbc) : (1.0 - alpha) * R);
       if (AFFINE) {
         PetscReal *ake = &pts->f[mpm->affine_ke][p], knew = 0.0;
         MPMAffineFromMoments(g, Bm, Dm, &C[p * d * d]);
@@ -686,8 +696,7 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
                                 .ds        = ds,
                                 .pointwork = pointwork,
                                 .alpha     = alpha,
-                                .div       = mpm->blend_expansion > 0.0 ? pts.f[MPM_FIELD_DIVERGENCE] : NULL,
-                                .xk        = mpm->blend_expansion,
+                                .bn        = velocity && mpm->blend.nodal ? mpm->blend.B : NULL,
                                 .kefix     = kefix,
                                 .stress    = stress,
                                 .dt        = dt,
@@ -701,7 +710,7 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
                                 .hW        = mpm->heat.W};
     if (remap) { /* f_I, zeroed by the kick (MPMGridAdvance, and the ghosts from their owners), takes the remap's momenta (MPMRemapApply) */
       mpm->kern->g2p_remap[work ? MPM_G2P_MODE_VELOCITY_WORK : MPM_G2P_MODE_VELOCITY](g, mpm->shape->data, &A, node);
-    } else if (mpm->kern && !crack) {
+    } else if (mpm->kern && !crack && !A.bn) {
       mpm->kern->g2p[(velocity ? MPM_G2P_VELOCITY : 0) | (kinematics ? MPM_G2P_KINEMATICS : 0) | (work ? MPM_G2P_WORK : 0)](g, mpm->shape->data, &A, node);
     } else
       MPMGatherVariant(mpm, &A, &pts, node, velocity, kinematics, work, MPMGenericVariantOf(mpm, PETSC_FALSE) | (crack ? MPM_GENERIC_CRACK : 0));

@@ -55,8 +55,7 @@ typedef struct {
   const PetscReal *F, *ds;                                                /* deformation gradient and domain scale (CPDI's point domains), or NULL */
   const PetscReal *pointwork;                                             /* conservative update with the cell rule: the point's share of its cells' work per unit P_p V_p, else NULL */
   PetscReal        alpha;                                                 /* FLIP fraction                                               */
-  const PetscReal *div;                                                   /* the blend in expansions: the points' last divergence [1/s], or NULL (MPMBlendShare) */
-  PetscReal        xk;                                                    /* its coefficient K [-] (-mpm_update_blend_expansion)          */
+  const PetscReal *bn;                                                    /* the blend's PIC share per node b_I (2 per node, the second), or NULL (src/transfer/blend.c) */
   PetscBool        kefix, stress;                                         /* kinetic-energy fix; the stress enters the work               */
   PetscReal        dt, wfac;                                              /* step, half the kick (the work's time factor)                 */
   PetscReal (*expand)(void *, PetscInt, PetscReal, PetscReal, PetscReal); /* (ctx, p, e_p, eps, linear work) -> the pressure's work along the isentrope; NULL: always linear */
@@ -102,16 +101,6 @@ static inline void MPMHeatGather(const MPMTransferArgs *A, PetscInt p, PetscInt 
   if (!(w > 0.0)) return;
   for (PetscInt a = 0; a < ns; a++) Tbar += W[a * ls] * A->hW[2 * node[a * ls] + 1];
   A->e[p] += w * (Tbar - A->hT[p]) / A->m[p];
-}
-
-/* Point p's FLIP fraction in the blend: alpha, or with -mpm_update_blend_expansion K (div set) the PIC share grown to
-   K div v_p dt where the point's last step expanded it by more than (1 - alpha) / K (div v_p from its last kinematics):
-   a point the grid no longer represents (the first points of a light gas at a contact released into a strong
-   expansion, whose FLIP velocity kept their initial motion while the heavy gas's nodes moved them) forgets that
-   memory within a few steps (docs/algorithm.md). */
-static inline PetscReal MPMBlendShare(const MPMTransferArgs *A, PetscInt p)
-{
-  return A->div ? PetscMin(A->alpha, 1.0 - PetscMin(1.0, A->xk * PetscMax(0.0, A->div[p]) * A->dt)) : A->alpha;
 }
 
 /* The point's force matrix -V_p sigma_p = V_p ((p + q) I - s_p) (d x d, row major) in place of its deviatoric stress
