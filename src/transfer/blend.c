@@ -20,10 +20,9 @@ PetscErrorCode MPMBlendSharesBegin(MPM mpm)
 {
   PetscFunctionBegin;
   if (!(mpm->blend_expansion > 0.0) || mpm->update != MPM_UPDATE_BLEND) PetscFunctionReturn(PETSC_SUCCESS);
-  mpm->blend.live        = PETSC_TRUE;
-  mpm->blend.asked       = PETSC_FALSE;
-  mpm->blend.nodal       = PETSC_FALSE;
-  mpm->blend.remap_fused = mpm->remap_fused;
+  mpm->blend.live  = PETSC_TRUE;
+  mpm->blend.asked = PETSC_FALSE;
+  mpm->blend.nodal = PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -103,8 +102,8 @@ PetscErrorCode MPMBlendScatter(MPM mpm)
    sums to zero over the points for the same reason, and leaves each point a heating of at least
    sum N_I b_I (2 - b_I) |v_I^n - v_p|^2 / 2 >= 0. A share per point instead gives up sum_p m_p (alpha - a_p)(v_p^FLIP - v_pic).
    Only where a point asks on some rank (an allreduce) are the sums exchanged and the shares formed; the step's velocity
-   gather is then the generic one (the specialised kernels carry the one-share blend, and the MUSL remap is not fused
-   into it). */
+   gather then reads b_I at every stencil entry, point by point (the generic gather, or the specialised kernels'
+   MPMKG2PPoint, the same bits) instead of in vector lanes. */
 PetscErrorCode MPMBlendSharesSum(MPM mpm)
 {
   const MPMGrid  *g    = &mpm->grid;
@@ -121,7 +120,6 @@ PetscErrorCode MPMBlendSharesSum(MPM mpm)
   PetscCall(MPMGhostExchange(mpm, mpm->mean_type, B, PETSC_TRUE, PETSC_TRUE));
   for (PetscInt i = 0; i < nloc; i++) B[2 * i + 1] = B[2 * i + 1] > 0.0 ? PetscMax(pic, PetscMin(1.0, B[2 * i + 1] / MPMBlendNodeVolume(g, i))) : pic;
   mpm->blend.dirty = PETSC_TRUE;
-  mpm->remap_fused = PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -133,6 +131,5 @@ PetscErrorCode MPMBlendSharesEnd(MPM mpm)
   if (mpm->blend.B) PetscCall(VecRestoreArray(mpm->blend.l, &mpm->blend.B));
   mpm->blend.live  = PETSC_FALSE;
   mpm->blend.nodal = PETSC_FALSE;
-  mpm->remap_fused = mpm->blend.remap_fused;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

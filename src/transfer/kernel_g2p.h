@@ -17,7 +17,7 @@
    (vpic = sum N v_I, dv = sum N dv_I, dv2_k = sum N dv_Ik^2, R_k, Lp = sum v_I (x) grad N, Lb = sum (2 v_I - dv_I) (x) grad N;
    |dv|^2 and R summed over the components here, MPMKSumComponents). */
 MPM_KINLINE void MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, PetscInt p, const PetscReal vpic[MPM_KD], const PetscReal dv[MPM_KD], const PetscReal dv2c[MPM_KD], const PetscReal Rc[MPM_KD],
-                                                               const PetscReal Lp[MPM_KD * MPM_KD], const PetscReal Lb[MPM_KD * MPM_KD], const int mode)
+                                                               const PetscReal Lp[MPM_KD * MPM_KD], const PetscReal Lb[MPM_KD * MPM_KD], const PetscReal *nod, const int mode)
 {
   const PetscInt   D        = MPM_KD;
   const PetscBool  velocity = (PetscBool)(mode & MPM_G2P_VELOCITY), kinematics = (PetscBool)(mode & MPM_G2P_KINEMATICS), work = (PetscBool)(mode & MPM_G2P_WORK);
@@ -27,13 +27,13 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(const MPMTransfer
   if (velocity) {
     const PetscReal dv2 = MPMKSumComponents(MPM_KD, dv2c), R = (mode & MPM_G2P_FLIP) ? 0.0 : MPMKSumComponents(MPM_KD, Rc);
     PetscReal       share = 0.5 * dv2, gain = 0.0;
-    for (PetscInt i = 0; i < D; i++) {
-      const PetscReal vn = alpha * (v[p * D + i] + dv[i]) + (1.0 - alpha) * vpic[i];
+    for (PetscInt i = 0; i < D; i++) { /* nod: the nodal PIC shares' sums sum N b_I, sum N b_I v_I^n, sum N b_I (v_I^n - v_p) . v_I (src/transfer/blend.c) */
+      const PetscReal vn = nod ? v[p * D + i] + dv[i] - (nod[0] * v[p * D + i] - nod[1 + i]) : alpha * (v[p * D + i] + dv[i]) + (1.0 - alpha) * vpic[i];
       share += v[p * D + i] * dv[i];
       gain += 0.5 * (vn * vn - v[p * D + i] * v[p * D + i]);
       v[p * D + i] = vn;
     }
-    if (A->kefix) e[p] += share - gain + ((mode & MPM_G2P_FLIP) ? 0.0 : (1.0 - alpha) * R); /* pure FLIP: 0 R = 0, R not summed */
+    if (A->kefix) e[p] += share - gain + (nod ? MPMKSumComponents(MPM_KD, &nod[1 + MPM_KD]) : (mode & MPM_G2P_FLIP) ? 0.0 : (1.0 - alpha) * R); /* pure FLIP: 0 R = 0, R not summed */
     if (work) {
       PetscReal sL = 0.0, div = 0.0;
       if (A->pointwork)
@@ -61,8 +61,10 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
   const PetscInt  D        = MPM_KD;
   const PetscBool velocity = (PetscBool)(mode & MPM_G2P_VELOCITY), kinematics = (PetscBool)(mode & MPM_G2P_KINEMATICS), work = (PetscBool)(mode & MPM_G2P_WORK);
   const v4        zero = {0.0, 0.0, 0.0, 0.0};
-  v4              vpic = zero, dv = zero, dv2 = zero, R = zero, Lp[MPM_KD], Lb[MPM_KD], vp = zero;
-  PetscReal       vpicl[MPM_KD], dvl[MPM_KD], dv2l[MPM_KD], Rl[MPM_KD], Lpl[MPM_KD * MPM_KD], Lbl[MPM_KD * MPM_KD];
+  v4              vpic = zero, dv = zero, dv2 = zero, R = zero, Lp[MPM_KD], Lb[MPM_KD], vp = zero, bv0 = zero, Rb = zero;
+  PetscReal       vpicl[MPM_KD], dvl[MPM_KD], dv2l[MPM_KD], Rl[MPM_KD], Lpl[MPM_KD * MPM_KD], Lbl[MPM_KD * MPM_KD], nod[1 + 2 * MPM_KD], nb = 0.0;
+  const PetscBool shares = (PetscBool)(velocity && A->bn); /* the nodal PIC shares of a step where a point asked (src/transfer/blend.c) */
+  PetscBool       nodal  = PETSC_FALSE;                    /* a node of the stencil has b_I > 1 - alpha */
 
   for (PetscInt i = 0; i < D; i++) {
     vp[i] = A->v[p * D + i];
@@ -89,6 +91,14 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
       dv += wd;
       dv2 += wd * dvI;
       if (!(mode & MPM_G2P_FLIP)) R += w * (vI - dvI - vp) * vI;
+      if (shares) { /* as MPMGatherGeneric: sum N b_I, sum N b_I v_I^n, sum N b_I (v_I^n - v_p) v_I */
+        const PetscReal b  = A->bn[2 * node[a] + 1];
+        const v4        wb = zero + W[a] * b;
+        nb += W[a] * b;
+        nodal = (PetscBool)(nodal || b > 1.0 - A->alpha);
+        bv0 += wb * (vI - dvI);
+        Rb += wb * (vI - dvI - vp) * vI;
+      }
     }
     if (work) {
       const v4 b = 2.0 * vI - dvI;
@@ -106,8 +116,11 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
       Lpl[i * D + j] = Lp[i][j];
       Lbl[i * D + j] = Lb[i][j];
     }
+    nod[1 + i]     = bv0[i];
+    nod[1 + D + i] = Rb[i];
   }
-  MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p, vpicl, dvl, dv2l, Rl, Lpl, Lbl, mode);
+  nod[0] = nb;
+  MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p, vpicl, dvl, dv2l, Rl, Lpl, Lbl, nodal ? nod : NULL, mode);
   if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p, ns, node, W, NULL, SG, MPM_P2G_REMAP, mirror, 1);
   if (kinematics && A->hw) MPMHeatGather(A, p, ns, node, W, 1); /* the heat exchange */
 }
@@ -161,7 +174,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
       Lpl[i] = Lp[i][l];
       Lbl[i] = Lb[i][l];
     }
-    MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p0 + l, vpicl, dvl, dv2l, Rl, Lpl, Lbl, mode);
+    MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p0 + l, vpicl, dvl, dv2l, Rl, Lpl, Lbl, NULL, mode);
     if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p0 + l, MPM_KS, &node[0][l], &W[0][l], NULL, NULL, MPM_P2G_REMAP, 0, MPM_KLANES);
     if (kinematics && A->hw) MPMHeatGather(A, p0 + l, MPM_KS, &node[0][l], &W[0][l], MPM_KLANES);
   }
@@ -192,8 +205,8 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
   PetscInt              p = 0;
 
 #if defined(MPM_KLANES)
-  for (; p + MPM_KLANES <= A->n; p += MPM_KLANES) {
-    PetscInt  node[MPM_KS][MPM_KLANES]; /* each entry's lanes side by side (MPMKStencilStrided) */
+  for (; !(A->bn && (mode & MPM_G2P_VELOCITY)) && p + MPM_KLANES <= A->n; p += MPM_KLANES) { /* a step with nodal PIC shares: point by point */
+    PetscInt  node[MPM_KS][MPM_KLANES];                                                      /* each entry's lanes side by side (MPMKStencilStrided) */
     PetscReal W[MPM_KS][MPM_KLANES], DW[MPM_KS][MPM_KD][MPM_KLANES], SG[MPM_KLANES][MPM_KS][MPM_KD];
     PetscBool mirror[MPM_KLANES], any = PETSC_FALSE;
 #  if defined(MPM_KTENT)

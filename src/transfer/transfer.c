@@ -710,7 +710,7 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
                                 .hW        = mpm->heat.W};
     if (remap) { /* f_I, zeroed by the kick (MPMGridAdvance, and the ghosts from their owners), takes the remap's momenta (MPMRemapApply) */
       mpm->kern->g2p_remap[work ? MPM_G2P_MODE_VELOCITY_WORK : MPM_G2P_MODE_VELOCITY](g, mpm->shape->data, &A, node);
-    } else if (mpm->kern && !crack && !A.bn) {
+    } else if (mpm->kern && !crack) {
       mpm->kern->g2p[(velocity ? MPM_G2P_VELOCITY : 0) | (kinematics ? MPM_G2P_KINEMATICS : 0) | (work ? MPM_G2P_WORK : 0)](g, mpm->shape->data, &A, node);
     } else
       MPMGatherVariant(mpm, &A, &pts, node, velocity, kinematics, work, MPMGenericVariantOf(mpm, PETSC_FALSE) | (crack ? MPM_GENERIC_CRACK : 0));
