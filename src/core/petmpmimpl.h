@@ -130,7 +130,7 @@ struct _p_MPM {
   PetscBool                 remap_fused;     /* MUSL with kern: grid to points scatters the remap's momentum into f (g2p_remap) */
   MPMUpdateType             update;          /* -mpm_update_type                                                  */
   PetscReal                 alpha;           /* FLIP fraction: v_p <- alpha (v_p + dv) + (1 - alpha) v_pic [-]     */
-  PetscReal                 blend_expansion; /* -mpm_update_blend_expansion K: PIC share max(1 - alpha, K div v_p dt) [-] */
+  PetscReal                 blend_expansion; /* -mpm_update_blend_expansion K: an asking point's PIC share min(1, K div v_p dt) (src/transfer/blend.c) [-] */
   PetscInt                  affine;          /* -mpm_update_type apic: the point field of C_p, else -1             */
   PetscInt                  affine_ke;       /* APIC: the point field of its affine kinetic energy per unit mass, else -1 */
   MPMViscosity              viscosity;       /* NULL when the scene asks for none: not in the step */
@@ -184,8 +184,8 @@ struct _p_MPM {
     PetscReal *B;     /* while live: its array                                                                   */
     PetscBool  live;  /* from MPMBlendSharesBegin to the end of the step's point phases                          */
     PetscBool  asked; /* a local point asked for a share this step                                               */
-    PetscBool  nodal; /* after MPMBlendSharesSum: a point asked on some rank, B holds b_I (the generic gather)     */
-    PetscBool  dirty; /* B holds sums of an earlier step (zeroed at the next MPMBlendSharesBegin)                  */
+    PetscBool  nodal; /* after MPMBlendSharesSum: a point asked on some rank, B holds b_I (the gathers read it)     */
+    PetscBool  dirty; /* l holds an earlier step's shares (zeroed when the next step needs it)                    */
   } blend;
   TS  ts;
   Vec tsu; /* the TS state: empty; the MPM state lives in the grid and swarm */

@@ -6,6 +6,8 @@
      Lp   = sum v_I (x) grad N_I [1/s],   Lb = sum (2 v_I - dv_I) (x) grad N_I = sum (v_I + v_I^n) (x) grad N_I
    then by mode (MPM_G2P_*; MPMKG2PFinish, the formulas at MPMGather in src/transfer/transfer.c)
      velocity    v_p <- alpha (v_p + dv) + (1 - alpha) vpic, and the kinetic-energy fix into e_p [erg/g]
+                 (in a step with PIC shares per node b_I, src/transfer/blend.c: v_p + dv - sum N b_I (v_p - v_I^n),
+                 point by point)
      work        e_p += MPMWorkIncrement (dt_kick (s : Lbar - (p + q) tr Lbar) / rho, Lbar = Lb / 2)
      kinematics  x_p += dt vpic,  L_p = Lp
      remap       f_I += N_I m_p v_p with the new v_p (MPMKP2GPoint's momentum, kernel_p2g.h)

@@ -606,6 +606,8 @@ static void MPMGatherVariant(MPM mpm, const MPMTransferArgs *A, const MPMPoints 
 
 /* Gathers the grid velocity (stored in MPMNode::p after the advance) to the points:
    velocity:   v_p <- alpha (v_p + sum N_I (v_I - v_I^n)) + (1 - alpha) sum N_I v_I,
+               or, in a step where points asked for PIC shares per node b_I (src/transfer/blend.c), v_p + sum N_I (v_I - v_I^n)
+               - sum N_I b_I (v_p - v_I^n), whose fix takes sum N_I b_I (v_I^n - v_p) . v_I for (1 - alpha) R_p,
    kinematics: x_p += dt sum N_I v_I,  L_p = sum v_I (x) grad N_I.
    remap (MUSL, with velocity, a specialised kernel): f_I = sum_p N_I m_p v_p with the new v_p, the remap's momentum
    (MPMRemapApply), in the same pass.
