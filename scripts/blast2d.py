@@ -14,6 +14,10 @@ Reported per run, as a table and as JSON (--json):
             (sum m / sum V, a cell with no point takes its neighbours' mean), and both grid codes;
   interior  the median over r < R/2 of p / p_exact: petmpm's points, the grid codes' cells (the hot, near-vacuum
             centre whose pressure issue 41 found at 0.36 and 0.18 of the similarity solution);
+  energy    the interior's internal energy per area over the exact pressure's, (gamma - 1) int rho e dA / int p_exact dA
+            over r < R/2: petmpm's sum m e (no volume enters), the grid codes' cells; the pressure that the
+            interior's mass and energy exert, whatever volumes the points carry (for an ideal gas with point
+            integration V_p p_p = (gamma - 1) m_p e_p: the nodal forces do not read the points' volumes);
   fill      the sum of petmpm's point volumes inside r < R over the area pi R^2 (1: the points tile it);
   emptied   cells inside r < R holding no point;
   shock     petmpm's shock radius error in cells (its report's check);
@@ -135,21 +139,30 @@ def main():
         l1 = lambda q: float(np.abs(q - rho_ex).sum() / rho_ex.sum())  # noqa: E731
         inner, cin = rp < 0.5 * Rs, rc < 0.5 * Rs
         occ = occupied(P["position"], N)
+        ring = np.linspace(0.0, 0.5 * Rs, 2001)  # int p_exact dA over r < R/2 (trapezoid in r)
+        q = 2.0 * np.pi * ring * prof(ring, "pressure", p_amb)
+        pin = float(np.sum(0.5 * (q[1:] + q[:-1]) * np.diff(ring)))
+        energy = lambda p: float(np.sum(p[cin]) * dx * dy / pin)  # noqa: E731
         row = {"cells": N, "energy": E, "L1": l1(rho_b), "L1_fv1": l1(fv[1]["rho"]), "L1_fv2": l1(fv[2]["rho"]),
                "interior": float(np.median(P["pressure"][inner] / P["exact_pressure"][inner])),
                "interior_fv1": float(np.median(fv[1]["p"][cin] / p_ex[cin])),
                "interior_fv2": float(np.median(fv[2]["p"][cin] / p_ex[cin])),
+               "interior_energy": float((GAMMA - 1.0) * np.sum(P["mass"][inner] * P["energy"][inner]) / pin),
+               "interior_energy_fv1": energy(fv[1]["p"]), "interior_energy_fv2": energy(fv[2]["p"]),
                "fill": float(P["volume"][rp < Rs].sum() / (np.pi * Rs * Rs)),
                "emptied": int(np.sum(~occ & (rc < Rs))), "shock_cells": check["shock_position"]["rel_error"] * Rs * N,
                "report_L1_density": R["errors"]["density"]["L1"], "report_L1_pressure": R["errors"]["pressure"]["L1"],
                "wall_s": wall, "points": R["particles"]}
         rows.append(row)
         print(f"N {N:4d}: L1 density petmpm {row['L1']:.4f}  first order {row['L1_fv1']:.4f}  second order {row['L1_fv2']:.4f};"
-              f"  interior p/p_exact {row['interior']:.2f} / {row['interior_fv1']:.2f} / {row['interior_fv2']:.2f};  fill {row['fill']:.2f}"
+              f"  interior p/p_exact {row['interior']:.2f} / {row['interior_fv1']:.2f} / {row['interior_fv2']:.2f};"
+              f"  energy {row['interior_energy']:.2f} / {row['interior_energy_fv1']:.2f} / {row['interior_energy_fv2']:.2f};  fill {row['fill']:.2f}"
               f"  emptied {row['emptied']}  shock {row['shock_cells']:+.2f} cells  {wall:.1f} s  {row['points']} points", flush=True)
     finish(a, rows, [("N", lambda w: f"{w['cells']}"), ("petmpm L1", lambda w: f"{100 * w['L1']:.2f}%"), ("first order", lambda w: f"{100 * w['L1_fv1']:.2f}%"),
                      ("second order", lambda w: f"{100 * w['L1_fv2']:.2f}%"), ("interior p / exact: petmpm", lambda w: f"{w['interior']:.2f}"),
-                     ("first order", lambda w: f"{w['interior_fv1']:.2f}"), ("second order", lambda w: f"{w['interior_fv2']:.2f}"), ("fill", lambda w: f"{w['fill']:.2f}"),
+                     ("first order", lambda w: f"{w['interior_fv1']:.2f}"), ("second order", lambda w: f"{w['interior_fv2']:.2f}"),
+                     ("interior energy / exact: petmpm", lambda w: f"{w['interior_energy']:.2f}"), ("first order", lambda w: f"{w['interior_energy_fv1']:.2f}"),
+                     ("second order", lambda w: f"{w['interior_energy_fv2']:.2f}"), ("fill", lambda w: f"{w['fill']:.2f}"),
                      ("emptied cells", lambda w: f"{w['emptied']}"), ("shock [cells]", lambda w: f"{w['shock_cells']:+.2f}")])
 
 if __name__ == "__main__":
