@@ -71,11 +71,12 @@ def petmpm(build, args, d):
 
 
 def occupied(x, N):
-    """The unit square's N x N cells ([j, i]) that hold one of the points x."""
-    i, j = np.floor(x[:, 0] * N).astype(int), np.floor(x[:, 1] * N).astype(int)
-    ok = (i >= 0) & (i < N) & (j >= 0) & (j < N)
-    occ = np.zeros((N, N), bool)
-    occ[j[ok], i[ok]] = True
+    """The unit square's N x N cells ([j, i]), or the unit cube's N^3 ([k, j, i]), that hold one of the points x."""
+    d = x.shape[1]
+    idx = np.floor(x * N).astype(int)
+    ok = np.all((idx >= 0) & (idx < N), axis=1)
+    occ = np.zeros((N,) * d, bool)
+    occ[tuple(idx[ok, a] for a in reversed(range(d)))] = True
     return occ
 
 

@@ -210,27 +210,43 @@ def solve(U, domain, tfinal, order=2, cfl=0.4, bc="transmissive", limiter="mc", 
     bc = sides(bc)
     ny, nx = U.shape[1:]
     x, y, dx, dy = grid(nx, ny, domain)
-    t, steps, out = 0.0, 0, np.zeros(4)
-    while t < tfinal:
-        if steps >= max_steps:
-            raise RuntimeError(f"max_steps {max_steps} reached at t = {t}")
-        W = prim(U, gamma)
-        if not (np.all(W[0] > 0) and np.all(W[3] > 0)):
-            raise RuntimeError(f"non-positive density or pressure at step {steps}, t = {t}")
+
+    def dt_of(W):
         c = np.sqrt(gamma * W[3] / W[0])
-        dt = cfl * min(dx, dy) / max(np.max(np.abs(W[1]) + c), np.max(np.abs(W[2]) + c))
-        last = t + dt >= tfinal
-        if last:
-            dt = tfinal - t
+        return cfl * min(dx, dy) / max(np.max(np.abs(W[1]) + c), np.max(np.abs(W[2]) + c))
+
+    def update(U, W, dt):
         F, G = fluxes(W, bc, dt, dx, dy, order, limiter, gamma)
         # U^{n+1} = U^n - [dt/dx (F_{i+1/2} - F_{i-1/2}) + dt/dy (G_{j+1/2} - G_{j-1/2})] (the sum in brackets is
         # commutative in floating point, so the update is exactly symmetric under x <-> y)
-        U = U - (dt / dx * (F[:, :, 1:] - F[:, :, :-1]) + dt / dy * (G[:, 1:, :] - G[:, :-1, :]))
-        out += dt * (dy * (F[:, :, -1].sum(1) - F[:, :, 0].sum(1)) + dx * (G[:, -1, :].sum(1) - G[:, 0, :].sum(1)))
-        t = tfinal if last else t + dt
-        steps += 1
+        return (U - (dt / dx * (F[:, :, 1:] - F[:, :, :-1]) + dt / dy * (G[:, 1:, :] - G[:, :-1, :])),
+                dt * (dy * (F[:, :, -1].sum(1) - F[:, :, 0].sum(1)) + dx * (G[:, -1, :].sum(1) - G[:, 0, :].sum(1))))
+
+    U, t, steps, out = march(U, tfinal, lambda U: prim(U, gamma), dt_of, update, max_steps)
     W = prim(U, gamma)
     return dict(x=x, y=y, rho=W[0], u=W[1], v=W[2], p=W[3], U=U, t=t, steps=steps, boundary_flux=out)
+
+
+def march(U, tfinal, prim_of, dt_of, update, max_steps):
+    """The time loop of the grid codes (this one's and fv3d's): from t = 0 to tfinal, each step W = prim_of(U) (density
+    first, pressure last, both checked positive), dt = dt_of(W) cut to land on tfinal, then (U, flux out) =
+    update(U, W, dt). Returns U, t, the steps and the summed boundary flux."""
+    t, steps, out = 0.0, 0, np.zeros(U.shape[0])
+    while t < tfinal:
+        if steps >= max_steps:
+            raise RuntimeError(f"max_steps {max_steps} reached at t = {t}")
+        W = prim_of(U)
+        if not (np.all(W[0] > 0) and np.all(W[-1] > 0)):
+            raise RuntimeError(f"non-positive density or pressure at step {steps}, t = {t}")
+        dt = dt_of(W)
+        last = t + dt >= tfinal
+        if last:
+            dt = tfinal - t
+        U, flux = update(U, W, dt)
+        out += flux
+        t = tfinal if last else t + dt
+        steps += 1
+    return U, t, steps, out
 
 
 # ---------------------------------------------------------------- initial data
@@ -342,16 +358,22 @@ def asymmetry(r):
     return max(np.max(np.abs(r[a] - r[b].T)) for a, b in (("rho", "rho"), ("u", "v"), ("p", "p")))
 
 
+def checker():
+    """A selftest's check(name, ok, detail), which prints the result, and the list of the failed checks' names."""
+    fails = []
+
+    def check(name, ok, detail):
+        print(f"  [{'PASSED' if ok else 'FAILED'}] {name}: {detail}", flush=True)
+        if not ok:
+            fails.append(name)
+    return check, fails
+
+
 def selftest():
     """Sod along x and y (errors against the exact solution, x/y agreement), a stationary contact, the Lax & Liu
     table's elementary waves, symmetry about x = y (configuration 3, a blast), conservation in a closed box and
     convergence on a smooth wave. Prints each check; returns the number of failures."""
-    fails = []
-
-    def check(name, ok, detail):
-        print(f"  [{'ok' if ok else 'FAIL'}] {name}: {detail}", flush=True)
-        if not ok:
-            fails.append(name)
+    check, fails = checker()
 
     t0 = time.time()
     # (a) Sod (rho, u, p) = (1, 0, 1) | (0.125, 0, 0.1) at x = 0.5, t = 0.2, as a 2D run of N x 4 square cells

@@ -55,23 +55,26 @@ def scene(config, cells):
 
 
 def binned(h5, N, domain=(0.0, 1.0, 0.0, 1.0)):
-    """Density on the cells of side 1 / N over the domain (x0, x1, y0, y1), the unit square's N x N cells unless
-    said, from the final points (index [j, i]), the emptied-cell count and the smallest point density in the domain."""
+    """Density on the cells of side 1 / N over the domain (x0, x1, y0, y1[, z0, z1]), the unit square's N x N cells
+    unless said, from the final points (index [j, i], or [k, j, i] in 3D), the emptied-cell count and the smallest
+    point density in the domain."""
     import h5py
     with h5py.File(h5, "r") as f:
         n = int(f["particle_count"][-1])
         x, m, rho = (f["particle_fields/" + k][-1][:n] for k in ("position", "mass", "density"))
-    nx, ny = round((domain[1] - domain[0]) * N), round((domain[3] - domain[2]) * N)
-    i, j = np.floor((x[:, 0] - domain[0]) * N).astype(int), np.floor((x[:, 1] - domain[2]) * N).astype(int)
-    ok = (i >= 0) & (i < nx) & (j >= 0) & (j < ny)
-    M, V = np.zeros((ny, nx)), np.zeros((ny, nx))
-    np.add.at(M, (j[ok], i[ok]), m[ok])
-    np.add.at(V, (j[ok], i[ok]), (m / rho)[ok])
+    d = len(domain) // 2
+    shape = tuple(round((domain[2 * a + 1] - domain[2 * a]) * N) for a in reversed(range(d)))
+    idx = [np.floor((x[:, a] - domain[2 * a]) * N).astype(int) for a in reversed(range(d))]
+    ok = np.all([(i >= 0) & (i < s) for i, s in zip(idx, shape)], axis=0)
+    M, V = np.zeros(shape), np.zeros(shape)
+    np.add.at(M, tuple(i[ok] for i in idx), m[ok])
+    np.add.at(V, tuple(i[ok] for i in idx), (m / rho)[ok])
     r = np.where(V > 0, M / np.where(V > 0, V, 1.0), np.nan)
     empty = np.isnan(r)
+    inner = (slice(1, -1),) * d
     while np.isnan(r).any():  # the mean of the occupied neighbours, repeated for clusters of emptied cells
         p = np.pad(r, 1, constant_values=np.nan)
-        nb = np.stack([p[:-2, 1:-1], p[2:, 1:-1], p[1:-1, :-2], p[1:-1, 2:]])
+        nb = np.stack([p[inner[:a] + (s,) + inner[a + 1:]] for a in range(d) for s in (slice(None, -2), slice(2, None))])
         cnt = np.sum(~np.isnan(nb), axis=0)
         r = np.where(np.isnan(r) & (cnt > 0), np.nansum(nb, axis=0) / np.maximum(cnt, 1), r)
     return r, int(empty.sum()), float(rho[ok].min())

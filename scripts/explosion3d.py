@@ -1,0 +1,112 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-2-Clause
+"""petmpm on Toro's spherical explosion test in 3D (inputs/explosion_3d.opts: one octant, the sphere of radius 0.4
+about the origin at rho 1, p 1 in gas at rho 0.125, p 0.1, t = 0.25) against the 1D radial solution and against a
+first-order 3D grid code on the same cells (scripts/fv3d.py: HLLC fluxes, dimensionally unsplit Godunov).
+
+The reference is the radial Euler equations with their geometric source (fv3d.radial, second order, --ref-cells
+cells over [0, 1.8]); its density, averaged over each of petmpm's N^3 cells by 4^3 sub-samples of the radius, is the
+reference on the cells. Reported per resolution N, as a table and as JSON (--json):
+  L1        sum |rho - rho_ref| / sum rho_ref over the octant's N^3 cells: petmpm's points binned on the cells
+            (sum m / sum V, a cell with no point takes its neighbours' mean), and the first-order grid code;
+  asym      the largest density difference between a cell and its mirror images across x = y, y = z and x = z (the
+            data are symmetric under every permutation of the axes), over the reference's density range;
+  bands     the mean density over the cells of two bands over the reference's there: between the inward-facing
+            second shock and the contact (0.50 < r < 0.58, density 0.24 to 0.29) and between the contact and the
+            main shock (0.64 < r < 0.76, 0.19 to 0.20); at t = 0.25 the second shock is at r = 0.46, the contact at
+            0.61, the main shock at 0.79, and the rarefaction's head has not reached the centre yet (r = 0.1);
+  shock     the shock radius less the reference's, in cells, for petmpm and the first-order code: where the mean
+            density over shells of the cells (width h / 2 in r) last crosses the middle of the jump, (0.125 + 0.204) / 2;
+  emptied   cells behind the reference's shock holding no point; min rho: the least point density over the reference's
+            least density behind the shock;
+  cost      petmpm's wall time and final point count.
+
+usage: scripts/explosion3d.py [--cells 32,48] [--ref-cells 3200] [--json out.json] [--markdown rows.md] [-- petmpm options]
+"""
+import os
+import sys
+import tempfile
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import fv3d  # noqa: E402
+from blast2d import finish, occupied, petmpm, points, study_args  # noqa: E402
+from riemann2d import binned  # noqa: E402
+
+SCENE = ["-options_file", os.path.join(os.path.dirname(HERE), "inputs", "explosion_3d.opts")]
+R0, INSIDE, OUTSIDE, TFINAL, RMAX = 0.4, (1.0, 1.0), (0.125, 0.1), 0.25, 1.8
+
+
+def cell_average(prof, N, sub=4):
+    """The radial profile prof(r) averaged over each of the octant's N^3 cells ([k, j, i]) by sub^3 samples."""
+    s = (np.arange(N * sub) + 0.5) / (N * sub)
+    out = np.zeros((N, N, N))
+    for a in range(sub):  # one z sub-layer at a time: (N sub)^2 N samples in memory, not (N sub)^3
+        z = s[a::sub][:, None, None]
+        r = np.sqrt(z * z + s[None, :, None] ** 2 + s[None, None, :] ** 2)
+        out += prof(r).reshape(N, N, sub, N, sub).mean(axis=(2, 4))
+    return out / sub
+
+
+def asymmetry(rho, span):
+    """The largest difference between rho[k, j, i] and its images under the swaps of two axes, over span."""
+    return float(max(np.abs(rho - np.swapaxes(rho, a, b)).max() for a, b in ((0, 1), (1, 2), (0, 2))) / span)
+
+
+def shock_radius(rho, rc, h):
+    """The outermost radius at which the density of the cells rho, averaged over shells of width h / 2 in their
+    centres' radius rc, falls through the middle of the main shock's jump (linear between the shells' mean radii)."""
+    edges = np.arange(0.0, rc.max() + h, 0.5 * h)
+    k = np.digitize(rc.ravel(), edges)
+    cnt = np.bincount(k, minlength=len(edges) + 1)
+    ok = cnt > 0
+    r = (np.bincount(k, rc.ravel(), minlength=len(edges) + 1)[ok] / cnt[ok])
+    q = (np.bincount(k, rho.ravel(), minlength=len(edges) + 1)[ok] / cnt[ok]) - 0.5 * (OUTSIDE[0] + 0.204)
+    i = np.nonzero((q[:-1] > 0) & (q[1:] <= 0))[0][-1]
+    return float(r[i] + (r[i + 1] - r[i]) * q[i] / (q[i] - q[i + 1]))
+
+
+def main():
+    a = study_args(__doc__, "32,48")
+    ref = fv3d.radial(*INSIDE, *OUTSIDE, R0, RMAX, TFINAL, 3200)
+    prof = lambda r: np.interp(r, ref["r"], ref["rho"])  # noqa: E731
+    Rs = float(ref["r"][np.nonzero(ref["rho"] > 1.01 * OUTSIDE[0])[0][-1]])  # the reference's shock radius (its last shocked cell)
+    rows = []
+    for N in (int(v) for v in a.cells.split(",")):
+        h = 1.0 / N
+        with tempfile.TemporaryDirectory() as d:
+            R, wall = petmpm(a.build, [*SCENE, "-mpm_cells", f"{N},{N},{N}", *a.extra], d)
+            rho_b, _, _ = binned(os.path.join(d, "petmpm.h5"), N, (0.0, 1.0, 0.0, 1.0, 0.0, 1.0))
+            P = points(os.path.join(d, "petmpm.h5"), -1, exact=False)
+        fv1 = fv3d.solve3d(fv3d.explosion3d(N, R0, INSIDE, OUTSIDE), (0, 1, 0, 1, 0, 1), TFINAL, order=1, bc=fv3d.OCTANT)
+        rho_ref = cell_average(prof, N)
+        c = (np.arange(N) + 0.5) * h
+        rc = np.sqrt(c[:, None, None] ** 2 + c[None, :, None] ** 2 + c[None, None, :] ** 2)
+        l1 = lambda q: float(np.abs(q - rho_ref).sum() / rho_ref.sum())  # noqa: E731
+        span = float(rho_ref.max() - rho_ref.min())
+        bands = ((rc > 0.50) & (rc < 0.58), (rc > 0.64) & (rc < 0.76))
+        rp = np.linalg.norm(P["position"], axis=1)
+        behind = ref["r"] < Rs
+        Rref = shock_radius(rho_ref, rc, h)
+        row = {"cells": N, "L1": l1(rho_b), "L1_fv1": l1(fv1["rho"]), "asym": asymmetry(rho_b, span), "asym_fv1": asymmetry(fv1["rho"], span),
+               "inner": float(rho_b[bands[0]].mean() / rho_ref[bands[0]].mean()), "inner_fv1": float(fv1["rho"][bands[0]].mean() / rho_ref[bands[0]].mean()),
+               "outer": float(rho_b[bands[1]].mean() / rho_ref[bands[1]].mean()), "outer_fv1": float(fv1["rho"][bands[1]].mean() / rho_ref[bands[1]].mean()),
+               "shock_cells": (shock_radius(rho_b, rc, h) - Rref) / h, "shock_cells_fv1": (shock_radius(fv1["rho"], rc, h) - Rref) / h,
+               "emptied": int(np.sum(~occupied(P["position"], N) & (rc < Rs))),
+               "min_density": float(P["density"][rp < Rs].min() / ref["rho"][behind].min()),
+               "wall_s": wall, "points": R["particles"]}
+        rows.append(row)
+        print(f"N {N:3d}: L1 density petmpm {row['L1']:.4f}  first order {row['L1_fv1']:.4f};  asym {row['asym']:.2e} / {row['asym_fv1']:.2e};"
+              f"  bands {row['inner']:.3f}, {row['outer']:.3f} / {row['inner_fv1']:.3f}, {row['outer_fv1']:.3f};  shock {row['shock_cells']:+.2f} / {row['shock_cells_fv1']:+.2f} cells;  emptied {row['emptied']};"
+              f"  min rho {row['min_density']:.2f};  {wall:.1f} s  {row['points']} points", flush=True)
+    finish(a, rows, [("N", lambda w: f"{w['cells']}^3"), ("petmpm L1", lambda w: f"{100 * w['L1']:.2f}%"), ("first order", lambda w: f"{100 * w['L1_fv1']:.2f}%"),
+                     ("asym: petmpm", lambda w: f"{w['asym']:.1e}"), ("first order", lambda w: f"{w['asym_fv1']:.1e}"),
+                     ("bands / reference: petmpm", lambda w: f"{w['inner']:.3f}, {w['outer']:.3f}"), ("first order", lambda w: f"{w['inner_fv1']:.3f}, {w['outer_fv1']:.3f}"),
+                     ("shock [cells]: petmpm", lambda w: f"{w['shock_cells']:+.2f}"), ("first order", lambda w: f"{w['shock_cells_fv1']:+.2f}"), ("emptied cells", lambda w: f"{w['emptied']}"),
+                     ("min rho / reference's", lambda w: f"{w['min_density']:.2f}"), ("points", lambda w: f"{w['points']}"), ("wall [s]", lambda w: f"{w['wall_s']:.1f}")])
+
+
+if __name__ == "__main__":
+    main()
