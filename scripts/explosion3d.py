@@ -4,8 +4,8 @@
 about the origin at rho 1, p 1 in gas at rho 0.125, p 0.1, t = 0.25) against the 1D radial solution and against a
 first-order 3D grid code on the same cells (scripts/fv3d.py: HLLC fluxes, dimensionally unsplit Godunov).
 
-The reference is the radial Euler equations with their geometric source (fv3d.radial, second order, --ref-cells
-cells over [0, 1.8]); its density, averaged over each of petmpm's N^3 cells by 4^3 sub-samples of the radius, is the
+The reference is the radial Euler equations with their geometric source (fv3d.radial, second order, 3200 cells
+over [0, 1.8]); its density, averaged over each of petmpm's N^3 cells by 4^3 sub-samples of the radius, is the
 reference on the cells. Reported per resolution N, as a table and as JSON (--json):
   L1        sum |rho - rho_ref| / sum rho_ref over the octant's N^3 cells: petmpm's points binned on the cells
             (sum m / sum V, a cell with no point takes its neighbours' mean), and the first-order grid code;
@@ -21,7 +21,7 @@ reference on the cells. Reported per resolution N, as a table and as JSON (--jso
             least density behind the shock;
   cost      petmpm's wall time and final point count.
 
-usage: scripts/explosion3d.py [--cells 32,48] [--ref-cells 3200] [--json out.json] [--markdown rows.md] [-- petmpm options]
+usage: scripts/explosion3d.py [--cells 32,48] [--json out.json] [--markdown rows.md] [-- petmpm options]
 """
 import os
 import sys
