@@ -14,10 +14,11 @@ Reported per run, as a table and as JSON (--json):
             (sum m / sum V, a cell with no point takes its neighbours' mean), and both grid codes;
   interior  the median over r < R/2 of p / p_exact: petmpm's points, the grid codes' cells (the hot, near-vacuum
             centre whose pressure issue 41 found at 0.36 and 0.18 of the similarity solution);
-  energy    the interior's internal energy per area over the exact pressure's, (gamma - 1) int rho e dA / int p_exact dA
+  interior energy
+            the interior's internal energy per area over the exact pressure's, (gamma - 1) int rho e dA / int p_exact dA
             over r < R/2: petmpm's sum m e (no volume enters), the grid codes' cells; the pressure that the
             interior's mass and energy exert, whatever volumes the points carry (for an ideal gas with point
-            integration V_p p_p = (gamma - 1) m_p e_p: the nodal forces do not read the points' volumes);
+            integration V_p p_p = (gamma - 1) m_p e_p: the sizes of the nodal forces do not read the points' volumes);
   fill      the sum of petmpm's point volumes inside r < R over the area pi R^2 (1: the points tile it);
   emptied   cells inside r < R holding no point;
   shock     petmpm's shock radius error in cells (its report's check);

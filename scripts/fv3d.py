@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: BSD-2-Clause
 """Reference grid codes of the compressible Euler equations of an ideal gas (numpy only) for Toro's spherical
-explosion test (Toro, Riemann Solvers and Numerical Methods for Fluid Dynamics, 3rd ed. 2009, sec. 17.1: the sphere
+explosion test (Toro, Riemann Solvers and Numerical Methods for Fluid Dynamics, 3rd ed. 2009, chapter 17: the sphere
 of radius 0.4 at rho 1, p 1 in gas at rho 0.125, p 0.1, all at rest, gamma 1.4, t = 0.25), the references against
 which petmpm is compared in 3D (scripts/explosion3d.py). The HLLC flux, the limiters, the state conversions and the
 exact Riemann solver are those of scripts/fv2d.py.
@@ -10,7 +10,7 @@ radial: the 1D radially symmetric Euler equations, U_t + F(U)_r = -(alpha/r) (F(
   1 cylindrical, 0 planar, on n cells over [0, rmax] (reflective at r = 0, transmissive at rmax), in the finite-volume
   form of shells: V_i U_i is updated by the face fluxes times the face areas A_{i+1/2} = r_{i+1/2}^alpha, and the
   momentum by the pressure source p_i (A_{i+1/2} - A_{i-1/2}), V_i = (r_{i+1/2}^(alpha+1) - r_{i-1/2}^(alpha+1))/(alpha+1)
-  (Toro sec. 17.2 with the geometry in the cell volumes, so that mass and energy are conserved to round-off).
+  (Toro chapter 17's radial form, with the geometry in the cell volumes, so that mass and energy are conserved to round-off).
   order 1: Godunov; order 2: MUSCL-Hancock (Toro sec. 14.4) with a limiter on the primitive variables, the half-step
   predictor taking the physical fluxes of the edge states and the geometric source of the cell, the pressure source
   the predicted (half-step) cell pressure. Cells cut by the initial discontinuity take its volume-weighted average.
@@ -20,12 +20,14 @@ solve3d: the 3D equations on a uniform nx x ny x nz grid, cell averages of U = (
   HLLC mass flux, which is what the HLLC star states make of them, Toro sec. 10.4), order 1 (Godunov) or 2 (unsplit
   MUSCL-Hancock as in fv2d). Boundaries per face (x-, x+, y-, y+, z-, z+): transmissive, reflective or periodic.
   The three directional increments are summed in an order-independent way (smallest, median, largest), so that data
-  symmetric under a permutation of the axes on a cube stay so to the last bit. dt = cfl min(dx, dy, dz) / max(|u_d|+c).
+  symmetric under a permutation of the axes on a cube stay so to the last bit. dt = cfl min(dx, dy, dz) / max(|u_d|+c)
+  with cfl 0.3 by default: the unsplit update is stable where sum_d (|u_d|+c) dt / h_d <= 1, so cfl <= 1/3 (at 0.4 a
+  checkerboard in gas at rest grows by 1 - 2 * 3 * 0.4 = -1.4 a step; the selftest checks that it decays).
 explosion3d: the octant [0,1]^3 of the explosion (sub-sampled cell averages of the sphere), for solve3d with
   reflective faces at x, y, z = 0 and transmissive (or reflective) ones at 1.
 
 usage: scripts/fv3d.py --selftest
-       scripts/fv3d.py --radial N --out f.npz [--rmax 1] [--order 2] [--alpha 2] [--tfinal 0.25]
+       scripts/fv3d.py --radial N [--out f.npz] [--rmax 1] [--order 2] [--alpha 2] [--tfinal 0.25] [--cfl 0.4]
 The npz holds r (cell centres), rho, u, p, t, steps, V (cell volumes over the solid angle), and the run's parameters.
 From Python (sys.path.insert(0, <repository>/scripts)):
   from fv3d import radial, solve3d, explosion3d
@@ -142,10 +144,12 @@ def pad(W, axis, ng, lo, hi):
 
 # ---------------------------------------------------------------- the 3D scheme
 def _hllc_d(WL, WR, d, g):
+    """hllc3 across a face normal to axis d (0 x, 1 y, 2 z) of unrotated states (rho, u, v, w, p)."""
     return hllc3(WL[ROT[d]], WR[ROT[d]], g)[INV[d]]
 
 
 def _flux_d(W, d, g):
+    """flux3 along axis d (0 x, 1 y, 2 z) of unrotated states (rho, u, v, w, p)."""
     return flux3(W[ROT[d]], g)[INV[d]]
 
 
@@ -199,7 +203,7 @@ def grid3(shape, domain):
     return c[0], c[1], c[2], h
 
 
-def solve3d(U, domain, tfinal, order=1, cfl=0.4, bc="transmissive", limiter="mc", gamma=GAMMA, max_steps=10 ** 7):
+def solve3d(U, domain, tfinal, order=1, cfl=0.3, bc="transmissive", limiter="mc", gamma=GAMMA, max_steps=10 ** 7):
     """Advances the conserved cell averages U (5, nz, ny, nx) ([k, j, i]: z first) over the domain
     (x0, x1, y0, y1, z0, z1) from t = 0 to tfinal. bc: one name or (x-, x+, y-, y+, z-, z+). Returns a dict: x, y, z
     (cell centres), rho, u, v, w, p (nz, ny, nx), U, t, steps, and boundary_flux: the time integral of U's components
@@ -247,7 +251,7 @@ def ball(inside, outside, centre, r0, shape, domain, sub=4, gamma=GAMMA):
 
 
 def explosion3d(n, r0=0.4, inside=SOD[0], outside=SOD[1], gamma=GAMMA, sub=4):
-    """Toro's explosion test (sec. 17.1) on the octant [0,1]^3 of n^3 cells: the sphere of radius r0 about the origin
+    """Toro's explosion test (chapter 17) on the octant [0,1]^3 of n^3 cells: the sphere of radius r0 about the origin
     at (rho, p) = inside, outside beyond, at rest, sub^3 sub-samples per cell. Returns U (5, n, n, n) for solve3d
     (domain (0, 1, 0, 1, 0, 1), bc OCTANT)."""
     return ball(inside, outside, (0.0, 0.0, 0.0), r0, (n, n, n), (0.0, 1.0) * 3, sub, gamma)
@@ -391,11 +395,19 @@ def selftest():
         check(f"order {order}: mass, energy; momentum = wall impulse", rel.max() < 1e-13 and bal < 1e-13,
               f"relative changes {rel[0]:.1e} {rel[1]:.1e}, momentum unbalanced {bal:.1e}, {res['steps']} steps")
 
+    print("(d2) solve3d: stability at the default cfl: gas at rest in a periodic 8^3 box, pressure perturbed by 1e-8 cell by cell")
+    rng = np.random.default_rng(1)
+    W0 = np.stack([np.ones((8, 8, 8)), *np.zeros((3, 8, 8, 8)), 1.0 + 1e-8 * rng.standard_normal((8, 8, 8))])
+    for order in (1, 2):
+        res = solve3d(cons3(W0), (0.0, 1.0) * 3, 2.0, order=order, bc="periodic")
+        amp = np.abs(res["p"] - res["p"].mean()).max()
+        check(f"order {order}: the perturbation decays", amp < 1e-8, f"largest |p - mean| {amp:.1e} after {res['steps']} steps (from up to 3e-8)")
+
     print("(e) solve3d: Sod along x (ny = nz = 2), y and z against fv2d.solve order 1 on the same cells, t = 0.2")
     nx = 200
     xc = (np.arange(nx) + 0.5) / nx
     W1 = np.stack([np.where(xc < 0.5, ri, ro), 0 * xc, 0 * xc, np.where(xc < 0.5, pi, po)])
-    r2 = fv2d.solve(fv2d.cons(W1)[:, None, :].repeat(2, axis=1), (0.0, 1.0, 0.0, 2.0 / nx), 0.2, order=1)
+    r2 = fv2d.solve(fv2d.cons(W1)[:, None, :].repeat(2, axis=1), (0.0, 1.0, 0.0, 2.0 / nx), 0.2, order=1, cfl=0.3)
     W3 = np.stack([W1[0], W1[1], W1[2], W1[2], W1[3]])[:, None, None, :].repeat(2, 1).repeat(2, 2)  # (5, 2, 2, nx)
     for d, name in enumerate("xyz"):
         # the x problem with the array axes x (2 of (z, y, x)) and 2 - d swapped (the gas is at rest: no velocity
@@ -435,10 +447,10 @@ def main():
     ap.add_argument("--selftest", action="store_true", help="run the tests and exit")
     ap.add_argument("--radial", type=int, metavar="N", help="the radial explosion reference on N cells")
     ap.add_argument("--rmax", type=float, default=1.0, help="outer radius (default 1)")
-    ap.add_argument("--tfinal", type=float, default=0.25)
+    ap.add_argument("--tfinal", type=float, default=0.25, help="final time (default 0.25)")
     ap.add_argument("--order", type=int, choices=(1, 2), default=2)
     ap.add_argument("--alpha", type=int, choices=(0, 1, 2), default=2, help="2 spherical, 1 cylindrical, 0 planar")
-    ap.add_argument("--cfl", type=float, default=0.4)
+    ap.add_argument("--cfl", type=float, default=0.4, help="the radial solver's Courant number (default 0.4)")
     ap.add_argument("--out", help="npz file to write")
     a = ap.parse_args()
     if a.selftest:
