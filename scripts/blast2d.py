@@ -48,13 +48,16 @@ SCENE = ["-options_file", os.path.join(ROOT, "inputs", "sedov_offcentre_2d.opts"
 GAMMA, CV, T_AMB = (float(option_value(SCENE, k)) for k in ("-mat_gas_eos_idealgas_gamma", "-mat_gas_eos_idealgas_cv", "-region_ambient_temperature"))
 
 
-def study_args(doc, cells, ref_factor=None):
-    """The command line of a study script (this one, implosion2d.py, shock_interface2d.py): --cells, --build, --json,
-    --markdown, the petmpm options after -- and, given its default, --ref-factor (a finer reference's cells over N)."""
+def study_args(doc, cells, ref_factor=None, flags=()):
+    """The command line of a study script (this one, implosion2d.py, shock_interface2d.py, explosion3d.py): --cells,
+    --build, --json, --markdown, the petmpm options after --, given its default --ref-factor (a finer reference's cells
+    over N), and the switches flags ((name, help) pairs)."""
     ap = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--cells", default=cells)
     if ref_factor:
         ap.add_argument("--ref-factor", type=int, default=ref_factor, help="the reference's cells over N (second order)")
+    for name, text in flags:
+        ap.add_argument(f"--{name}", action="store_true", help=text)
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
     ap.add_argument("--json")
     ap.add_argument("--markdown", help="write the rows of docs/verification_2d.md's table")

@@ -37,12 +37,17 @@ from blast2d import finish, occupied, petmpm, points, study_args  # noqa: E402
 from riemann2d import binned  # noqa: E402
 
 SCENE = ["-options_file", os.path.join(os.path.dirname(HERE), "inputs", "explosion_3d.opts")]
+SCENE_RZ = ["-options_file", os.path.join(os.path.dirname(HERE), "inputs", "explosion_rz.opts")]
 R0, INSIDE, OUTSIDE, TFINAL, RMAX = 0.4, (1.0, 1.0), (0.125, 0.1), 0.25, 1.8
 
 
-def cell_average(prof, N, sub=4):
-    """The radial profile prof(r) averaged over each of the octant's N^3 cells ([k, j, i]) by sub^3 samples."""
+def cell_average(prof, N, d=3, sub=4):
+    """The radial profile prof(r) averaged over each of the octant's N^3 cells ([k, j, i]) by sub^3 samples, or (d = 2)
+    over each of the (r, z) quarter's N^2 cells ([j, i] = [z, r]) by sub^2 samples weighted by r (a ring's volume)."""
     s = (np.arange(N * sub) + 0.5) / (N * sub)
+    if d == 2:
+        R, w = np.hypot(s[:, None], s[None, :]), np.broadcast_to(s[None, :], (N * sub, N * sub))
+        return (prof(R) * w).reshape(N, sub, N, sub).sum(axis=(1, 3)) / w.reshape(N, sub, N, sub).sum(axis=(1, 3))
     out = np.zeros((N, N, N))
     for a in range(sub):  # one z sub-layer at a time: (N sub)^2 N samples in memory, not (N sub)^3
         z = s[a::sub][:, None, None]
@@ -51,22 +56,44 @@ def cell_average(prof, N, sub=4):
     return out / sub
 
 
-def shock_radius(rho, rc, h, behind):
-    """The outermost radius at which the density of the cells rho, averaged over shells of width h / 2 in their
-    centres' radius rc, falls through the middle of the main shock's jump from behind to the ambient density (linear
-    between the shells' mean radii)."""
+def cells(N, d):
+    """The cells' centre radius |x| and volume weight: the octant's N^3 (weight 1) or the (r, z) quarter's N^2 (weight
+    r, the ring's volume per radian over dr dz)."""
+    c = (np.arange(N) + 0.5) / N
+    if d == 2:
+        return np.hypot(c[:, None], c[None, :]), np.broadcast_to(c[None, :], (N, N))
+    return np.sqrt(c[:, None, None] ** 2 + c[None, :, None] ** 2 + c[None, None, :] ** 2), np.ones((N, N, N))
+
+
+def shock_radius(rho, rc, w, h, behind):
+    """The outermost radius at which the density of the cells rho, averaged (weights w) over shells of width h / 2 in
+    their centres' radius rc, falls through the middle of the main shock's jump from behind to the ambient density
+    (linear between the shells' mean radii)."""
     edges = np.arange(0.0, rc.max() + h, 0.5 * h)
     k = np.digitize(rc.ravel(), edges)
-    cnt = np.bincount(k, minlength=len(edges) + 1)
+    cnt = np.bincount(k, w.ravel(), minlength=len(edges) + 1)
     ok = cnt > 0
-    r = (np.bincount(k, rc.ravel(), minlength=len(edges) + 1)[ok] / cnt[ok])
-    q = (np.bincount(k, rho.ravel(), minlength=len(edges) + 1)[ok] / cnt[ok]) - 0.5 * (OUTSIDE[0] + behind)
+    r = (np.bincount(k, (rc * w).ravel(), minlength=len(edges) + 1)[ok] / cnt[ok])
+    q = (np.bincount(k, (rho * w).ravel(), minlength=len(edges) + 1)[ok] / cnt[ok]) - 0.5 * (OUTSIDE[0] + behind)
     i = np.nonzero((q[:-1] > 0) & (q[1:] <= 0))[0][-1]
     return float(r[i] + (r[i + 1] - r[i]) * q[i] / (q[i] - q[i + 1]))
 
 
+def measures(rho, prof, N, d, rho_s):
+    """L1 of the cells' density rho against the reference prof's cell averages (volume-weighted), the two bands' mean
+    densities over the reference's, and the shock radius less the reference's in cells; with the reference's cells."""
+    rc, w = cells(N, d)
+    ref = cell_average(prof, N, d)
+    bands = ((rc > 0.50) & (rc < 0.58), (rc > 0.64) & (rc < 0.76))
+    mean = lambda q, b: float((q * w)[b].sum() / w[b].sum())  # noqa: E731
+    return {"L1": float((np.abs(rho - ref) * w).sum() / (ref * w).sum()), "inner": mean(rho, bands[0]) / mean(ref, bands[0]),
+            "outer": mean(rho, bands[1]) / mean(ref, bands[1]),
+            "shock_cells": (shock_radius(rho, rc, w, 1.0 / N, rho_s) - shock_radius(ref, rc, w, 1.0 / N, rho_s)) * N}, ref
+
+
 def main():
-    a = study_args(__doc__, "32,48")
+    a = study_args(__doc__, "32,48", flags=(("rz", "the r-z scene (inputs/explosion_rz.opts) against the 3D octant's first-order code at the same cell size"),))
+    d = 2 if a.rz else 3
     ref = fv3d.radial(*INSIDE, *OUTSIDE, R0, RMAX, TFINAL, 3200)
     prof = lambda r: np.interp(r, ref["r"], ref["rho"])  # noqa: E731
     Rs = float(ref["r"][np.nonzero(ref["rho"] > 1.01 * OUTSIDE[0])[0][-1]])  # the reference's shock radius (its last shocked cell)
@@ -74,24 +101,18 @@ def main():
     rho_s = float(ref["rho"][inside][-1])  # the density just behind the main shock
     rows = []
     for N in (int(v) for v in a.cells.split(",")):
-        h = 1.0 / N
-        with tempfile.TemporaryDirectory() as d:
-            R, wall = petmpm(a.build, [*SCENE, "-mpm_cells", f"{N},{N},{N}", *a.extra], d)
-            rho_b, _, _ = binned(os.path.join(d, "petmpm.h5"), N, (0.0, 1.0, 0.0, 1.0, 0.0, 1.0))
-            P = points(os.path.join(d, "petmpm.h5"), -1, exact=False)
+        with tempfile.TemporaryDirectory() as tmp:
+            R, wall = petmpm(a.build, [*(SCENE_RZ if a.rz else SCENE), "-mpm_cells", ",".join([str(N)] * d), *a.extra], tmp)
+            rho_b, _, _ = binned(os.path.join(tmp, "petmpm.h5"), N, (0.0, 1.0) * d)
+            P = points(os.path.join(tmp, "petmpm.h5"), -1, exact=False)
         fv1 = fv3d.solve3d(fv3d.explosion3d(N, R0, INSIDE, OUTSIDE), (0, 1, 0, 1, 0, 1), TFINAL, order=1, bc=fv3d.OCTANT)
-        rho_ref = cell_average(prof, N)
-        c = (np.arange(N) + 0.5) * h
-        rc = np.sqrt(c[:, None, None] ** 2 + c[None, :, None] ** 2 + c[None, None, :] ** 2)
-        l1 = lambda q: float(np.abs(q - rho_ref).sum() / rho_ref.sum())  # noqa: E731
-        span = float(rho_ref.max() - rho_ref.min())
-        bands = ((rc > 0.50) & (rc < 0.58), (rc > 0.64) & (rc < 0.76))
+        m, rho_ref = measures(rho_b, prof, N, d, rho_s)
+        m1, ref3 = measures(fv1["rho"], prof, N, 3, rho_s)
+        rc, _ = cells(N, d)
+        span = float(ref3.max() - ref3.min())
         rp = np.linalg.norm(P["position"], axis=1)
-        Rref = shock_radius(rho_ref, rc, h, rho_s)
-        row = {"cells": N, "L1": l1(rho_b), "L1_fv1": l1(fv1["rho"]), "asym": float(fv3d.asymmetry3(rho_b)) / span, "asym_fv1": float(fv3d.asymmetry3(fv1["rho"])) / span,
-               "inner": float(rho_b[bands[0]].mean() / rho_ref[bands[0]].mean()), "inner_fv1": float(fv1["rho"][bands[0]].mean() / rho_ref[bands[0]].mean()),
-               "outer": float(rho_b[bands[1]].mean() / rho_ref[bands[1]].mean()), "outer_fv1": float(fv1["rho"][bands[1]].mean() / rho_ref[bands[1]].mean()),
-               "shock_cells": (shock_radius(rho_b, rc, h, rho_s) - Rref) / h, "shock_cells_fv1": (shock_radius(fv1["rho"], rc, h, rho_s) - Rref) / h,
+        row = {"cells": N, **m, **{k + "_fv1": v for k, v in m1.items()},
+               "asym": float(fv3d.asymmetry3(rho_b)) / span if d == 3 else float("nan"), "asym_fv1": float(fv3d.asymmetry3(fv1["rho"])) / span,
                "emptied": int(np.sum(~occupied(P["position"], N) & (rc < Rs))),
                "min_density": float(P["density"][rp < Rs].min() / ref["rho"][inside].min()),
                "wall_s": wall, "points": R["particles"]}
@@ -99,7 +120,7 @@ def main():
         print(f"N {N:3d}: L1 density petmpm {row['L1']:.4f}  first order {row['L1_fv1']:.4f};  asym {row['asym']:.2e} / {row['asym_fv1']:.2e};"
               f"  bands {row['inner']:.3f}, {row['outer']:.3f} / {row['inner_fv1']:.3f}, {row['outer_fv1']:.3f};  shock {row['shock_cells']:+.2f} / {row['shock_cells_fv1']:+.2f} cells;  emptied {row['emptied']};"
               f"  min rho {row['min_density']:.2f};  {wall:.1f} s  {row['points']} points", flush=True)
-    finish(a, rows, [("N", lambda w: f"{w['cells']}^3"), ("petmpm L1", lambda w: f"{100 * w['L1']:.2f}%"), ("first order", lambda w: f"{100 * w['L1_fv1']:.2f}%"),
+    finish(a, rows, [("N", lambda w: f"{w['cells']}^{d}"), ("petmpm L1", lambda w: f"{100 * w['L1']:.2f}%"), ("first order", lambda w: f"{100 * w['L1_fv1']:.2f}%"),
                      ("asym: petmpm", lambda w: f"{w['asym']:.1e}"), ("first order", lambda w: f"{w['asym_fv1']:.1e}"),
                      ("bands / reference: petmpm", lambda w: f"{w['inner']:.3f}, {w['outer']:.3f}"), ("first order", lambda w: f"{w['inner_fv1']:.3f}, {w['outer_fv1']:.3f}"),
                      ("shock [cells]: petmpm", lambda w: f"{w['shock_cells']:+.2f}"), ("first order", lambda w: f"{w['shock_cells_fv1']:+.2f}"), ("emptied cells", lambda w: f"{w['emptied']}"),
