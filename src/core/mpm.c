@@ -52,8 +52,6 @@ PetscErrorCode MPMCreate(MPI_Comm comm, MPM *mpm)
   m->energy_update           = MPM_ENERGY_COMPATIBLE; /* with the cell rule; point integration sets conservative */
   m->cell_volume             = MPM_CELL_VOLUME_POINTS;
   m->ke_fix                  = PETSC_TRUE;
-  m->blend_expansion         = 2.0; /* the blend in strong expansions (src/transfer/blend.c) */
-  m->blend.M0                = 0.5;
   m->point_window            = 2048;
   m->win_n                   = -1;
   m->update                  = MPM_UPDATE_BLEND;
@@ -150,14 +148,7 @@ PetscErrorCode MPMSetFromOptions(MPM mpm)
     mpm->alpha = 0.99; /* Zhu & Bridson's */
     PetscCall(PetscOptionsReal("-mpm_update_blend_alpha", "FLIP fraction alpha in v = alpha FLIP + (1 - alpha) PIC [-], in [0, 1]", "", mpm->alpha, &mpm->alpha, NULL));
     PetscCall(MPMOptionsCheckRange("-mpm_update_blend_alpha", mpm->alpha, 0.0, 1.0, PETSC_FALSE, PETSC_FALSE));
-    PetscCall(PetscOptionsReal("-mpm_update_blend_expansion",
-                               "Blend in strong expansions: a point that grows by more than (1 - alpha) / K of its volume in a step while its velocity leaves the grid's by more than -mpm_update_blend_slip sound speeds asks for the PIC share "
-                               "min(1, K div v_p dt); each node takes the share its asking points fill (momentum and energy kept to round-off) [-], >= 0 (0: off)",
-                               "", mpm->blend_expansion, &mpm->blend_expansion, NULL));
-    PetscCall(MPMOptionsCheckRange("-mpm_update_blend_expansion", mpm->blend_expansion, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
-    PetscCall(
-      PetscOptionsReal("-mpm_update_blend_slip", "Blend in strong expansions: the slip |v_p - sum N_I v_I^n| over the point's sound speed above which an expanding point asks for a PIC share [-], >= 0", "", mpm->blend.M0, &mpm->blend.M0, NULL));
-    PetscCall(MPMOptionsCheckRange("-mpm_update_blend_slip", mpm->blend.M0, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+    PetscCall(MPMBlendSetFromOptions(mpm, PetscOptionsObject)); /* the blend in strong expansions (src/transfer/blend.c) */
   }
   PetscCall(PetscOptionsEnum("-mpm_transfer_kernel", "Point-grid transfer kernels: specialised for the dimension and shape family (where the family has them) or the generic reference", "", MPMTransferKernelTypes, (PetscEnum)mpm->transfer_kernel,
                              (PetscEnum *)&mpm->transfer_kernel, NULL));

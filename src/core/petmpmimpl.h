@@ -130,7 +130,6 @@ struct _p_MPM {
   PetscBool                 remap_fused;     /* MUSL with kern: grid to points scatters the remap's momentum into f (g2p_remap) */
   MPMUpdateType             update;          /* -mpm_update_type                                                  */
   PetscReal                 alpha;           /* FLIP fraction: v_p <- alpha (v_p + dv) + (1 - alpha) v_pic [-]     */
-  PetscReal                 blend_expansion; /* -mpm_update_blend_expansion K: an asking point's PIC share min(1, K div v_p dt) (src/transfer/blend.c) [-] */
   PetscInt                  affine;          /* -mpm_update_type apic: the point field of C_p, else -1             */
   PetscInt                  affine_ke;       /* APIC: the point field of its affine kinetic energy per unit mass, else -1 */
   MPMViscosity              viscosity;       /* NULL when the scene asks for none: not in the step */
@@ -179,6 +178,7 @@ struct _p_MPM {
     PetscInt   lo, hi;                                   /* one rank: the local nodes [lo, hi] (flat) the last exchange wrote; mean_l is zero outside them */
   } heat;
   struct {            /* the blend's PIC share per node in strong expansions (-mpm_update_blend_expansion, src/transfer/blend.c) */
+    PetscReal  K;     /* -mpm_update_blend_expansion: an asking point's PIC share min(1, K div v_p dt) [-] (0: off) */
     PetscReal  M0;    /* -mpm_update_blend_slip: the slip over the sound speed above which a point asks [-]         */
     Vec        l;     /* ghosted local vector of mean_da: sum N V_p s_p, then b_I (the second of 2 per node)         */
     PetscReal *B;     /* while live: its array                                                                   */
@@ -311,6 +311,7 @@ PETSC_INTERN PetscErrorCode MPMSignalsRestore(void);
 /* The transfers of the MPM object (src/transfer/transfer.c). */
 PETSC_INTERN PetscErrorCode MPMScatter(MPM, PetscBool, PetscReal);
 PETSC_INTERN PetscErrorCode MPMGather(MPM, PetscReal, PetscReal, PetscBool, PetscBool, PetscBool);
+PETSC_INTERN PetscErrorCode MPMBlendSetFromOptions(MPM, PetscOptionItems *);
 PETSC_INTERN PetscErrorCode MPMBlendSharesBegin(MPM);
 PETSC_INTERN PetscErrorCode MPMBlendScatter(MPM);
 PETSC_INTERN PetscErrorCode MPMBlendSharesSum(MPM);

@@ -7,6 +7,23 @@
    docs/algorithm.md, "The blend in strong expansions"). */
 #include "core/petmpmimpl.h"
 
+/* The blend's options in strong expansions (with -mpm_update_type blend): K (-mpm_update_blend_expansion, 2) and M0
+   (-mpm_update_blend_slip, 0.5). */
+PetscErrorCode MPMBlendSetFromOptions(MPM mpm, PetscOptionItems *PetscOptionsObject)
+{
+  PetscFunctionBegin;
+  mpm->blend.K  = 2.0;
+  mpm->blend.M0 = 0.5;
+  PetscCall(PetscOptionsReal("-mpm_update_blend_expansion",
+                             "Blend in strong expansions: a point that grows by more than (1 - alpha) / K of its volume in a step while its velocity leaves the grid's by more than -mpm_update_blend_slip sound speeds asks for the PIC share "
+                             "min(1, K div v_p dt); each node takes the share its asking points fill (momentum and energy kept to round-off) [-], >= 0 (0: off)",
+                             "", mpm->blend.K, &mpm->blend.K, NULL));
+  PetscCall(MPMOptionsCheckRange("-mpm_update_blend_expansion", mpm->blend.K, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+  PetscCall(PetscOptionsReal("-mpm_update_blend_slip", "Blend in strong expansions: the slip |v_p - sum N_I v_I^n| over the point's sound speed above which an expanding point asks for a PIC share [-], >= 0", "", mpm->blend.M0, &mpm->blend.M0, NULL));
+  PetscCall(MPMOptionsCheckRange("-mpm_update_blend_slip", mpm->blend.M0, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* V_I = int N_I dV of local node nI [cm^d]: h^d; in r-z per radian h_r h_z max(r_I, h_r / 3) (on the axis h_r^2 h_z / 3,
    its folded image included). */
 static inline PetscReal MPMBlendNodeVolume(const MPMGrid *g, PetscInt nI)
@@ -19,7 +36,7 @@ static inline PetscReal MPMBlendNodeVolume(const MPMGrid *g, PetscInt nI)
 PetscErrorCode MPMBlendSharesBegin(MPM mpm)
 {
   PetscFunctionBegin;
-  if (!(mpm->blend_expansion > 0.0) || mpm->update != MPM_UPDATE_BLEND) PetscFunctionReturn(PETSC_SUCCESS);
+  if (mpm->update != MPM_UPDATE_BLEND || !(mpm->blend.K > 0.0)) PetscFunctionReturn(PETSC_SUCCESS);
   mpm->blend.live  = PETSC_TRUE;
   mpm->blend.asked = PETSC_FALSE;
   mpm->blend.nodal = PETSC_FALSE;
@@ -58,7 +75,7 @@ PetscErrorCode MPMBlendScatter(MPM mpm)
 {
   const MPMGrid  *g   = &mpm->grid;
   const PetscInt  d   = g->dim;
-  const PetscReal pic = 1.0 - mpm->alpha, K = mpm->blend_expansion, M0 = mpm->blend.M0, dt = mpm->dt;
+  const PetscReal pic = 1.0 - mpm->alpha, K = mpm->blend.K, M0 = mpm->blend.M0, dt = mpm->dt;
   MPMPoints       pts;
   const MPMNode  *node;
   MPMStencil      st;
