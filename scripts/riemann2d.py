@@ -4,8 +4,9 @@
 
 For each configuration and unit-square resolution N, petmpm runs the four-quadrant problem (the states of
 fv2d.LAX_LIU, gamma = 1.4, cv = 2.5 so that T = p / rho) in its default method, or with the given options, on
-[-0.5, 1.5]^2 at 2N x 2N cells with outflow faces (the grid codes' faces are transmissive; petmpm's gas leaves
-vacuum behind at an inflow face, whose rarefaction stays outside the unit square until the final time). Its final
+[-m, 1 + m]^2 at the same cell size with outflow faces (the grid codes' faces are transmissive; petmpm's gas leaves
+vacuum behind at an inflow face, and the margin m, 0.75 for configurations 3, 4, 6 and 12, keeps the rarefaction from
+it outside the unit square until the final time: margin()). Its final
 points are binned on the unit square's N x N cells, rho_c = sum m / sum V over the points in the cell (a cell with
 no point takes the mean of its neighbours' and is counted as emptied). The grid codes run on the unit square at N:
 first-order Godunov and second-order MUSCL-Hancock, HLLC fluxes; the reference is the second-order code at
@@ -18,7 +19,7 @@ first-order Godunov and second-order MUSCL-Hancock, HLLC fluxes; the reference i
   cost       petmpm's wall time and its final point count.
 
 usage: scripts/riemann2d.py [--configs 3,4,6,12] [--cells 100,200] [--ref-factor 4] [--json out.json] [--markdown rows.md]
-                            [-- petmpm options]
+                            [--figure out.png] [-- petmpm options]
 """
 import argparse
 import json
@@ -37,12 +38,26 @@ import fv2d  # noqa: E402
 SYMMETRIC = {3, 4, 12}  # configurations whose data are symmetric about x = y
 
 
-def scene(config, cells):
-    """petmpm options of the four-quadrant problem on [-0.5, 1.5]^2 at 2N cells (quadrant q: rho, u, v, p)."""
+def margin(config):
+    """The width of petmpm's margin about the unit square: where gas flows in at an outflow face, petmpm's points leave
+    vacuum behind, and the rarefaction from it runs inwards at most at |u| + c of the quadrant's state (the piston
+    withdrawn at u); the margin keeps its head outside the unit square until the final time, with 0.05 to spare
+    (configuration 3: 2.094 x 0.3 = 0.63, so 0.75), in steps of 0.25, at least 0.5."""
     tf, states = fv2d.LAX_LIU[config]
-    boxes = {1: ((0.5, 0.5), (1.5, 1.5)), 2: ((-0.5, 0.5), (0.5, 1.5)), 3: ((-0.5, -0.5), (0.5, 0.5)), 4: ((0.5, -0.5), (1.5, 0.5))}
-    o = ["-mpm_scene_name", f"lax_liu{config}_2d", "-mpm_dim", "2", "-mpm_lo", "-0.5,-0.5", "-mpm_hi", "1.5,1.5",
-         "-mpm_cells", f"{2 * cells},{2 * cells}", "-mpm_bc_lo", "outflow,outflow", "-mpm_bc_hi", "outflow,outflow",
+    reach = max(max(abs(u), abs(v)) + np.sqrt(1.4 * p / rho) for rho, u, v, p in states) * tf
+    return max(0.5, np.ceil((reach + 0.05) * 4.0) / 4.0)
+
+
+def scene(config, cells):
+    """petmpm options of the four-quadrant problem on [-m, 1 + m]^2 at (1 + 2 m) N cells, m = margin(config)
+    (quadrant q: rho, u, v, p)."""
+    tf, states = fv2d.LAX_LIU[config]
+    m = margin(config)
+    lo, hi = -m, 1.0 + m
+    boxes = {1: ((0.5, 0.5), (hi, hi)), 2: ((lo, 0.5), (0.5, hi)), 3: ((lo, lo), (0.5, 0.5)), 4: ((0.5, lo), (hi, 0.5))}
+    n = round((1.0 + 2.0 * m) * cells)
+    o = ["-mpm_scene_name", f"lax_liu{config}_2d", "-mpm_dim", "2", "-mpm_lo", f"{lo!r},{lo!r}", "-mpm_hi", f"{hi!r},{hi!r}",
+         "-mpm_cells", f"{n},{n}", "-mpm_bc_lo", "outflow,outflow", "-mpm_bc_hi", "outflow,outflow",
          "-ts_max_time", repr(tf), "-mpm_materials", "gas", "-mat_gas_eos_type", "idealgas",
          "-mat_gas_eos_idealgas_gamma", "1.4", "-mat_gas_eos_idealgas_cv", "2.5", "-mpm_regions", "q1,q2,q3,q4"]
     for q in (1, 2, 3, 4):
@@ -85,6 +100,23 @@ def average_down(a, k):
     return a.reshape(ny // k, k, nx // k, k).mean(axis=(1, 3))
 
 
+def figure(path, ref, r, config, N, rf):
+    """The reference, petmpm's binned density and their difference on the unit square, side by side."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(1, 3, figsize=(15, 5))
+    lo, hi = min(ref.min(), r.min()), max(ref.max(), r.max())
+    for a, q, t, kw in ((ax[0], ref, f"configuration {config}: second-order grid code, {rf * N}^2 averaged to {N}^2", dict(cmap="jet", vmin=lo, vmax=hi)),
+                        (ax[1], r, f"petmpm, {N}^2", dict(cmap="jet", vmin=lo, vmax=hi)),
+                        (ax[2], r - ref, "petmpm - reference", dict(cmap="bwr", vmin=-0.3, vmax=0.3))):
+        im = a.imshow(q, origin="lower", extent=(0, 1, 0, 1), **kw)
+        a.set_title(t, fontsize=10)
+        plt.colorbar(im, ax=a)
+    plt.tight_layout()
+    plt.savefig(path, dpi=72)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--configs", default="3,4,6,12")
@@ -93,6 +125,7 @@ def main():
     ap.add_argument("--build", default=os.path.join(os.path.dirname(HERE), "build"))
     ap.add_argument("--json")
     ap.add_argument("--markdown", help="write the rows of docs/verification_2d.md's table")
+    ap.add_argument("--figure", help="draw the reference, petmpm and their difference of the first run to this PNG (docs/verification_2d_lax_liu4.png)")
     ap.add_argument("extra", nargs="*", help="petmpm options after --")
     a = ap.parse_args()
     rows = []
@@ -110,6 +143,8 @@ def main():
                 r, empty, rmin = binned(os.path.join(d, "petmpm.h5"), N)
                 with open(rep) as f:
                     R = json.load(f)
+            if a.figure and not rows:
+                figure(a.figure, ref, r, c, N, a.ref_factor)
             l1 = lambda q: float(np.abs(q - ref).sum() / ref.sum())  # noqa: E731
             rng = float(ref.max() - ref.min())
             row = {"config": c, "cells": N, "L1": l1(r), "L1_fv1": l1(fv[1]), "L1_fv2": l1(fv[2]), "emptied": empty,
