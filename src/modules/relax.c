@@ -6,14 +6,19 @@
      w_p      = theta_p V_p / K_p,  K_p = max(rho_p c_p^2, Kbar_c),  theta_p = min(1/2, K_r dt sqrt(K_p / rho_p) / h),
    with Kbar_c the volume-weighted mean bulk modulus of the cell [dyn/cm^2] (after Caramana & Shashkov, J. Comput.
    Phys. 142 (1998) 521). Within a cell volume and total energy are conserved to round-off; the heat
-   w_p (p_p - p_c)^2 >= 0 is the entropy of the equilibration. Only points in a quiescent flow relax
-   (|div v| h / c below -mpm_pressure_relax_mach), and not points made by splitting (domain scale below 1).
-   Why and what it measured: docs/modules.md. */
+   w_p (p_p - p_c)^2 >= 0 is the entropy of the equilibration. Only points in a quiescent flow relax: |div v_p| h / c
+   below M = -mpm_pressure_relax_mach, either this step's or its time average
+     a_p <- a_p + beta_p (div v_p - a_p),   beta_p = min(1, dt c_p / (tau h)),   tau = -mpm_pressure_relax_memory,
+   over about tau acoustic cell times (a point field of this module, relax_divavg [1/s]), so that a plateau that rings
+   (div v alternating in sign over a few cell times) relaxes while a shock and a sustained expansion do not; and not
+   points made by splitting (domain scale below 1). Why and what it measured: docs/modules.md. */
 #include "core/petmpmimpl.h"
 
 typedef struct {
   PetscReal  K;             /* -mpm_pressure_relax: the rate K_r [-]                                   */
   PetscReal  mach;          /* -mpm_pressure_relax_mach: points with |div v| h / c above it do not relax [-] */
+  PetscReal  tau;           /* -mpm_pressure_relax_memory: the span of div v's time average in acoustic cell times h / c [-] (0: this step's alone) */
+  PetscInt   favg;          /* the point field relax_divavg: the time average a_p of div v_p [1/s] */
   PetscReal *cellV, *cellS; /* per owned cell of the grid numbered grid_id: the cell sums (zero between uses) */
   PetscInt   grid_id;
 } MPMRelax;
@@ -32,7 +37,22 @@ static PetscErrorCode MPMRelaxSetFromOptions(MPMModule mod, MPM mpm, PetscOption
     mod->active = fluid;
     PetscCall(PetscOptionsReal("-mpm_pressure_relax_mach", "A point whose velocity jump across a cell |div v| h exceeds this fraction of its sound speed (a shock, a fast expansion) does not relax [-], > 0", "", rx->mach, &rx->mach, NULL));
     PetscCall(MPMOptionsCheckRange("-mpm_pressure_relax_mach", rx->mach, 0.0, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
+    PetscCall(PetscOptionsReal("-mpm_pressure_relax_memory",
+                               "A point also relaxes where the time average of its |div v| h / c, over this many acoustic cell times h / c, is below -mpm_pressure_relax_mach (a ringing plateau; a shock or a sustained expansion keeps it out) [-], >= "
+                               "0 (0: this step's divergence alone)",
+                               "", rx->tau, &rx->tau, NULL));
+    PetscCall(MPMOptionsCheckRange("-mpm_pressure_relax_memory", rx->tau, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The time average of div v is a point field of this module (before the points are seeded: zero at the start). */
+static PetscErrorCode MPMRelaxSetUp(MPMModule mod, MPM mpm)
+{
+  MPMRelax *rx = (MPMRelax *)mod->data;
+
+  PetscFunctionBegin;
+  if (rx->tau > 0.0) PetscCall(MPMPointsRegisterField(mpm, "relax_divavg", 1, "1/s", "pressure relaxation: the time average of div v_p over -mpm_pressure_relax_memory acoustic cell times", PETSC_FALSE, &rx->favg));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -41,7 +61,7 @@ static PetscErrorCode MPMRelaxView(MPMModule mod, MPM mpm, PetscViewer viewer)
   MPMRelax *rx = (MPMRelax *)mod->data;
 
   PetscFunctionBegin;
-  PetscCall(PetscViewerASCIIPrintf(viewer, "sub-cell pressure relaxation: K_r %g, quiescent below |div v| h / c = %g\n", (double)rx->K, (double)rx->mach));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "sub-cell pressure relaxation: K_r %g, quiescent below |div v| h / c = %g (now, or averaged over %g h / c)\n", (double)rx->K, (double)rx->mach, (double)rx->tau));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -89,7 +109,12 @@ static PetscErrorCode MPMRelaxApply(MPMModule mod, MPM mpm, const MPMStepContext
     if (MPMStrengthIsSolid(mat->strength) || cell[p] < 0 || MPMPointFailed(mat, pts.f, p)) continue; /* solids keep their pressure pattern: a viscous liquid relaxes; failed material has no EOS tension */
     MPMEOSPressureKernel(mat->eos, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_ENERGY][p], &pr, &c2);
     if (!(c2 > 0.0)) continue;
-    if (MPMPointInShock(mpm, &pts, p, c2, rx->mach)) continue;
+    if (rx->tau > 0.0) { /* the time average a_p first (every fluid point, each step), then the gate on either */
+      PetscReal *a = &pts.f[rx->favg][p];
+      *a += PetscMin(1.0, ctx->dt * PetscSqrtReal(c2) / (rx->tau * mpm->grid.hmin)) * (MPMPointDivergence(&pts, p) - *a);
+      if (MPMPointInShock(mpm, &pts, p, c2, rx->mach) && PetscAbsReal(*a) * mpm->grid.hmin > rx->mach * PetscSqrtReal(c2)) continue;
+    } else if (MPMPointInShock(mpm, &pts, p, c2, rx->mach))
+      continue;
     if (pts.f[MPM_FIELD_DOMAINSCALE]) { /* a point made by splitting: the material expanded towards vacuum here */
       PetscBool split = PETSC_FALSE;
       for (PetscInt k = 0; k < d; k++) split = (PetscBool)(split || pts.f[MPM_FIELD_DOMAINSCALE][p * d + k] < 1.0);
@@ -134,9 +159,11 @@ PetscErrorCode MPMModuleCreate_Relax(MPMModule mod)
   PetscCall(PetscNew(&rx));
   rx->K                   = 0.25;
   rx->mach                = 0.005;
+  rx->tau                 = 2.0;
   mod->data               = rx;
   mod->phase              = MPM_PHASE_POINT_END;
   mod->ops.setfromoptions = MPMRelaxSetFromOptions;
+  mod->ops.setup          = MPMRelaxSetUp;
   mod->ops.apply          = MPMRelaxApply;
   mod->ops.view           = MPMRelaxView;
   mod->ops.destroy        = MPMRelaxDestroy;
