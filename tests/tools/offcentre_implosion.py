@@ -17,7 +17,7 @@ from common import check, main, study  # noqa: E402
 
 
 def test_offcentre_implosion():
-    """Measured (2026-11-27): default L1 43.6% and 23.3%, plateau 10.77 and 13.18; limited viscosity L1 20.3% and
+    """Measured (2026-11-29): default L1 43.6% and 23.3%, plateau 10.84 and 13.43; limited viscosity L1 20.3% and
     14.3% against first order 28.1% and 19.4%, plateau 17.30 and 17.45, shock +0.66 and +0.73 cells."""
     rows = study("implosion2d.py", "100,200")
     check(rows[1]["L1"] < rows[0]["L1"], f"default: L1 density falls with refinement ({rows[0]['L1']:.4f} -> {rows[1]['L1']:.4f})")

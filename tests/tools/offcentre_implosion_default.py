@@ -2,8 +2,8 @@
 # SPDX-License-Identifier: BSD-2-Clause
 """ctest scene_offcentre_implosion_default (a known failure, WILL_FAIL): Noh's cylindrical implosion on a full plane
 (inputs/noh_offcentre_2d.opts, scripts/implosion2d.py) in the default method: the plateau within 10% of 16 at 200^2
-cells and the L1 density error not above first-order Godunov's there (issue 41's goals). Measured (2026-11-27): plateau
-10.77 and 13.18 at 100^2 and 200^2 (VNR's heating of the converging inflow; first-order Godunov 12.72 and 13.33,
+cells and the L1 density error not above first-order Godunov's there (issue 41's goals). Measured (2026-11-29): plateau
+10.84 and 13.43 at 100^2 and 200^2 (VNR's heating of the converging inflow; first-order Godunov 12.72 and 13.33,
 second order 15.53 and 15.81), L1 23.3% against first order's 19.4% at 200^2, the shock 1.9 cells ahead. What passes in
 the same runs is asserted by scene_offcentre_implosion.
 
