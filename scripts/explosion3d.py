@@ -12,7 +12,7 @@ reference on the cells. Reported per resolution N, as a table and as JSON (--jso
             --rz, the (r, z) quarter's N^2 cells weighted by r, and the grid code's over the same region of space: the
             cylinder sqrt(x^2 + y^2) <= 1 that the quarter sweeps, each octant cell by its share of it (the octant's
             cube holds more ambient gas, which lowers an L1 over the whole cube: the first-order code's is 4.89% over
-            the cube and 5.90% over the cylinder at 32);
+            the cube and 5.92% over the cylinder at 32);
   asym      the largest density difference between a cell and its mirror images across x = y, y = z and x = z (the
             data are symmetric under every permutation of the axes), over the reference's density range;
   bands     the mean density over the cells of two bands over the reference's there: between the inward-facing

@@ -45,7 +45,7 @@ def margin(config):
     (configuration 3: 2.094 x 0.3 = 0.63, so 0.75), in steps of 0.25, at least 0.5."""
     tf, states = fv2d.LAX_LIU[config]
     reach = max(max(abs(u), abs(v)) + np.sqrt(1.4 * p / rho) for rho, u, v, p in states) * tf
-    return max(0.5, np.ceil((reach + 0.05) * 4.0) / 4.0)
+    return float(max(0.5, np.ceil((reach + 0.05) * 4.0) / 4.0))
 
 
 def scene(config, cells):
@@ -56,6 +56,8 @@ def scene(config, cells):
     lo, hi = -m, 1.0 + m
     boxes = {1: ((0.5, 0.5), (hi, hi)), 2: ((lo, 0.5), (0.5, hi)), 3: ((lo, lo), (0.5, 0.5)), 4: ((0.5, lo), (hi, 0.5))}
     n = round((1.0 + 2.0 * m) * cells)
+    if abs(m * cells - round(m * cells)) > 1e-9:  # the unit square's faces and the quadrants' lines on cell faces
+        raise SystemExit(f"riemann2d: {cells} cells on the unit square put its faces mid-cell in the margin {m}: take a multiple of {round(1 / (m - int(m))) if m != int(m) else 1}")
     o = ["-mpm_scene_name", f"lax_liu{config}_2d", "-mpm_dim", "2", "-mpm_lo", f"{lo!r},{lo!r}", "-mpm_hi", f"{hi!r},{hi!r}",
          "-mpm_cells", f"{n},{n}", "-mpm_bc_lo", "outflow,outflow", "-mpm_bc_hi", "outflow,outflow",
          "-ts_max_time", repr(tf), "-mpm_materials", "gas", "-mat_gas_eos_type", "idealgas",
@@ -120,7 +122,7 @@ def figure(path, ref, r, config, N, rf):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--configs", default="3,4,6,12")
-    ap.add_argument("--cells", default="100,200", help="unit-square cells N per direction")
+    ap.add_argument("--cells", default="100,200", help="unit-square cells N per direction (a multiple of 4: the margin is 0.75)")
     ap.add_argument("--ref-factor", type=int, default=4, help="the reference's cells over N (second order)")
     ap.add_argument("--build", default=os.path.join(os.path.dirname(HERE), "build"))
     ap.add_argument("--json")

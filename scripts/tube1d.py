@@ -12,7 +12,8 @@ ends where the lab frame's does. petmpm solves on [-m, 1 + m] with outflow faces
 scripts/riemann2d.py's margin, and its final points are binned on the N cells of [0, 1] (sum m / sum V); the grid
 code runs on [0, 1] with transmissive faces. Reported per frame and resolution: L1 of density over [0, 1] against the exact solution's cell
 averages (16 samples a cell), for petmpm and the grid code, and petmpm's error in four zones: the shock (its exact
-position +-8 cells), the shocked gas between it and the initial interface, the interface (+-7 cells) and the rest.
+position +-8 cells), the shocked gas between it and the material interface, the interface (where it ends, +-7 cells) and
+the rest.
 
 usage: scripts/tube1d.py [--interface 3:2,1] [--cells 100,200] [--frames 0,-1.206] [--json out.json] [--markdown rows.md]
                          [-- petmpm options]
@@ -68,8 +69,11 @@ def main():
     for shift in (float(s) for s in a.frames.split(",")):
         WL, WR = (WL0[0], WL0[1] + shift, WL0[2]), (WR0[0], WR0[1] + shift, WR0[2])
         reach = max(abs(W[1]) + np.sqrt(1.4 * W[2] / W[0]) for W in (WL, WR)) * tf
-        m = max(0.5, np.ceil((reach + abs(shift) * tf + 0.05) * 4.0) / 4.0)
+        m = float(max(0.5, np.ceil((reach + abs(shift) * tf + 0.05) * 4.0) / 4.0))
+        ustar = float(fv2d.star(np.array(WL), np.array(WR))[1])  # the contact's velocity
         for N in (int(s) for s in a.cells.split(",")):
+            if abs(m * N - round(m * N)) > 1e-9:
+                raise SystemExit(f"tube1d: {N} cells put [0, 1]'s faces mid-cell in the margin {m}: take a multiple of 4")
             sub, x0 = 16, round((0.5 - shift * tf) * N) / N
             xs = (np.arange(N * sub) + 0.5) / (N * sub)
             ex = np.asarray(fv2d.exact_riemann(np.array(WL), np.array(WR), (xs - x0) / tf)[0]).reshape(N, sub).mean(axis=1)
@@ -86,7 +90,7 @@ def main():
             fv = fv2d.solve(fv2d.quadrants(W, N, 4, (0.0, 1.0, 0.0, 4.0 / N), xm=x0), (0.0, 1.0, 0.0, 4.0 / N), tf, order=1)["rho"][1]
             tot = ex.sum()
             jump = np.abs(np.diff(ex))  # the shock: the largest jump of the exact averages away from the interface
-            k0 = round(x0 * N)  # the interface's first cell on the right
+            k0 = round((x0 + ustar * tf) * N)  # the material interface at the end (it moves at u*)
             jump[max(0, k0 - 8):k0 + 8] = 0.0
             ks = int(np.argmax(jump))
             cell = np.arange(N)

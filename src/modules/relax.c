@@ -109,7 +109,7 @@ static PetscErrorCode MPMRelaxApply(MPMModule mod, MPM mpm, const MPMStepContext
     if (MPMStrengthIsSolid(mat->strength) || cell[p] < 0 || MPMPointFailed(mat, pts.f, p)) continue; /* solids keep their pressure pattern: a viscous liquid relaxes; failed material has no EOS tension */
     MPMEOSPressureKernel(mat->eos, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_ENERGY][p], &pr, &c2);
     if (!(c2 > 0.0)) continue;
-    if (rx->tau > 0.0) { /* the time average a_p first (every fluid point, each step), then the gate on either */
+    if (rx->tau > 0.0) { /* the time average a_p first (each step, every fluid point that has reached here), then the gate on either */
       PetscReal *a = &pts.f[rx->favg][p];
       *a += PetscMin(1.0, ctx->dt * PetscSqrtReal(c2) / (rx->tau * mpm->grid.hmin)) * (MPMPointDivergence(&pts, p) - *a);
       if (MPMPointInShock(mpm, &pts, p, c2, rx->mach) && PetscAbsReal(*a) * mpm->grid.hmin > rx->mach * PetscSqrtReal(c2)) continue;

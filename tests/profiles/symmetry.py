@@ -14,8 +14,8 @@ import riemann2d  # noqa: E402  (scripts/, on the path through common)
 
 
 def test_symmetry():
-    """Lax & Liu's configuration 3 (inputs/lax_liu3_2d.opts, symmetric about x = y) in the default method at 125^2
-    and 200^2 cells (50^2 and 80^2 on the unit square): the final points are their own mirror image, every point (x, y) with a partner at (y, x) of
+    """Lax & Liu's configuration 3 (inputs/lax_liu3_2d.opts, symmetric about x = y) in the default method at 150^2
+    and 200^2 cells (60^2 and 80^2 on the unit square): the final points are their own mirror image, every point (x, y) with a partner at (y, x) of
     the same mass and density to 1e-9 (the partner of a point on the diagonal is itself), and the density binned on
     the unit square's cells is symmetric to 1e-9 of its range. Point splitting used to split a point stretched
     alike along x and y along x first: the largest density difference across the diagonal was 21% of the range at
@@ -23,7 +23,7 @@ def test_symmetry():
     import h5py
     import numpy as np
     with tempfile.TemporaryDirectory() as d:
-        for cells in (125, 200):
+        for cells in (150, 200):
             out = os.path.join(d, f"ll{cells}")
             run(["-options_file", os.path.join(SRC, "inputs", "lax_liu3_2d.opts"), "-mpm_cells", f"{cells},{cells}", "-mpm_output", out])
             with h5py.File(os.path.join(out, "petmpm.h5"), "r") as f:

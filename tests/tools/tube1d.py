@@ -17,7 +17,7 @@ from common import check, main, study  # noqa: E402
 
 
 def test_tube1d():
-    """Measured (2026-11-29): petmpm 1.27% and 0.78% in the lab frame, 1.26% and 0.61% in the other; the first-order
+    """Measured (2026-11-29): petmpm 1.28% and 0.78% in the lab frame, 1.26% and 0.61% in the other; the first-order
     code 0.57% and 0.25%, 1.66% and 0.79%."""
     rows = study("tube1d.py", "100,200", args=("--frames", "0,-1.206"))
     by = {(r["frame"], r["cells"]): r for r in rows}
