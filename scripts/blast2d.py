@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 # SPDX-License-Identifier: BSD-2-Clause
 """petmpm on the off-centre cylindrical Sedov blast (inputs/sedov_offcentre_2d.opts: a full plane, the centre off the
 grid's lines and off the diagonal) against the similarity solution and against grid codes on the same grid

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 # SPDX-License-Identifier: BSD-2-Clause
 """The breaking-dam tables of docs/validation-dambreak.md: inputs/dam_break_2d.opts at 10, 20 and 40 cells per a
 in the default method, the 3D slab (inputs/dam_break_3d.opts) at 10 and 20, and quadratic B-splines at 20, against

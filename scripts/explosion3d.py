@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 # SPDX-License-Identifier: BSD-2-Clause
 """petmpm on Toro's spherical explosion test in 3D (inputs/explosion_3d.opts: one octant, the sphere of radius 0.4
 about the origin at rho 1, p 1 in gas at rho 0.125, p 0.1, t = 0.25) against the 1D radial solution and against a

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 # SPDX-License-Identifier: BSD-2-Clause
 """petmpm on Noh's cylindrical implosion on a full plane (inputs/noh_offcentre_2d.opts: the centre off the grid's
 lines and off the diagonal) against the exact solution and against grid codes on the same grid (scripts/fv2d.py:

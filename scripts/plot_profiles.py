@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 # SPDX-License-Identifier: BSD-2-Clause
 """Plot the final particle profiles of a petmpm run against the exact solution stored in the same file.
 

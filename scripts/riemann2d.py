@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 # SPDX-License-Identifier: BSD-2-Clause
 """petmpm on Lax & Liu's 2D Riemann problems against grid codes on the same grid (scripts/fv2d.py).
 

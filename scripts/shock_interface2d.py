@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 # SPDX-License-Identifier: BSD-2-Clause
 """petmpm on a planar shock crossing a density interface at an angle (inputs/shock_interface_2d.opts: a Mach 1.62
 shock into gas at rest whose right part, beyond the line x = 0.5 + y / 2, is three times as dense; a box [0, 2] x

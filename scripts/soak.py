@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 # SPDX-License-Identifier: BSD-2-Clause
 """Soak test: kill runs at random moments, many times, and check that no result is lost (docs/robustness.md).
 

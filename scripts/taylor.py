@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 # SPDX-License-Identifier: BSD-2-Clause
 """The Taylor anvil tables of docs/validation-taylor.md: the 190 m/s rod in 3D (inputs/taylor_anvil_3d.opts) and
 axisymmetric (inputs/taylor_anvil_rz.opts) at R0/6, R0/9 and R0/12 cells, every shot of

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 # SPDX-License-Identifier: BSD-2-Clause
 """Plot the final profile of Taylor anvil runs (the rod axis along the last coordinate, the anvil at its lower end)
 against a shot's final length and footprint: the points' radius r = |(x, y)| about the axis through the origin
