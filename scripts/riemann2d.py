@@ -28,6 +28,7 @@ import subprocess
 import sys
 import tempfile
 import time
+from fractions import Fraction
 
 import numpy as np
 
@@ -44,8 +45,18 @@ def margin(config):
     withdrawn at u); the margin keeps its head outside the unit square until the final time, with 0.05 to spare
     (configuration 3: 2.094 x 0.3 = 0.63, so 0.75), in steps of 0.25, at least 0.5."""
     tf, states = fv2d.LAX_LIU[config]
-    reach = max(max(abs(u), abs(v)) + np.sqrt(1.4 * p / rho) for rho, u, v, p in states) * tf
+    return margin_for(max(max(abs(u), abs(v)) + np.sqrt(1.4 * p / rho) for rho, u, v, p in states) * tf)
+
+
+def margin_for(reach):
+    """margin()'s rule for a disturbance that runs reach cm in from a face: reach + 0.05 in steps of 0.25, at least 0.5."""
     return float(max(0.5, np.ceil((reach + 0.05) * 4.0) / 4.0))
+
+
+def check_cells(cells, m, who):
+    """Refuses a cell count that puts the unit interval's faces mid-cell in the margin m."""
+    if abs(m * cells - round(m * cells)) > 1e-9:
+        raise SystemExit(f"{who}: {cells} cells on the unit square put its faces mid-cell in the margin {m}: take a multiple of {Fraction(m).limit_denominator(64).denominator}")
 
 
 def scene(config, cells):
@@ -56,8 +67,7 @@ def scene(config, cells):
     lo, hi = -m, 1.0 + m
     boxes = {1: ((0.5, 0.5), (hi, hi)), 2: ((lo, 0.5), (0.5, hi)), 3: ((lo, lo), (0.5, 0.5)), 4: ((0.5, lo), (hi, 0.5))}
     n = round((1.0 + 2.0 * m) * cells)
-    if abs(m * cells - round(m * cells)) > 1e-9:  # the unit square's faces and the quadrants' lines on cell faces
-        raise SystemExit(f"riemann2d: {cells} cells on the unit square put its faces mid-cell in the margin {m}: take a multiple of {round(1 / (m - int(m))) if m != int(m) else 1}")
+    check_cells(cells, m, "riemann2d")  # the unit square's faces and the quadrants' lines on cell faces
     o = ["-mpm_scene_name", f"lax_liu{config}_2d", "-mpm_dim", "2", "-mpm_lo", f"{lo!r},{lo!r}", "-mpm_hi", f"{hi!r},{hi!r}",
          "-mpm_cells", f"{n},{n}", "-mpm_bc_lo", "outflow,outflow", "-mpm_bc_hi", "outflow,outflow",
          "-ts_max_time", repr(tf), "-mpm_materials", "gas", "-mat_gas_eos_type", "idealgas",
@@ -72,7 +82,7 @@ def scene(config, cells):
 
 
 def binned(h5, N, domain=(0.0, 1.0, 0.0, 1.0)):
-    """Density on the cells of side 1 / N over the domain (x0, x1, y0, y1[, z0, z1]), the unit square's N x N cells
+    """Density on the cells of side 1 / N over the domain (x0, x1[, y0, y1[, z0, z1]]), the unit square's N x N cells
     unless said, from the final points (index [j, i], or [k, j, i] in 3D), the emptied-cell count and the smallest
     point density in the domain."""
     import h5py
@@ -80,6 +90,7 @@ def binned(h5, N, domain=(0.0, 1.0, 0.0, 1.0)):
         n = int(f["particle_count"][-1])
         x, m, rho = (f["particle_fields/" + k][-1][:n] for k in ("position", "mass", "density"))
     d = len(domain) // 2
+    x = x.reshape(n, d)  # 1D positions are stored flat
     shape = tuple(round((domain[2 * a + 1] - domain[2 * a]) * N) for a in reversed(range(d)))
     idx = [np.floor((x[:, a] - domain[2 * a]) * N).astype(int) for a in reversed(range(d))]
     ok = np.all([(i >= 0) & (i < s) for i, s in zip(idx, shape)], axis=0)

@@ -30,6 +30,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import fv2d  # noqa: E402
 from blast2d import petmpm  # noqa: E402
+from riemann2d import binned, check_cells, margin_for  # noqa: E402
 
 
 def states(config, a, b):
@@ -68,24 +69,16 @@ def main():
     rows = []
     for shift in (float(s) for s in a.frames.split(",")):
         WL, WR = (WL0[0], WL0[1] + shift, WL0[2]), (WR0[0], WR0[1] + shift, WR0[2])
-        reach = max(abs(W[1]) + np.sqrt(1.4 * W[2] / W[0]) for W in (WL, WR)) * tf
-        m = float(max(0.5, np.ceil((reach + abs(shift) * tf + 0.05) * 4.0) / 4.0))
+        m = margin_for((max(abs(W[1]) + np.sqrt(1.4 * W[2] / W[0]) for W in (WL, WR)) + abs(shift)) * tf)
         ustar = float(fv2d.star(np.array(WL), np.array(WR))[1])  # the contact's velocity
         for N in (int(s) for s in a.cells.split(",")):
-            if abs(m * N - round(m * N)) > 1e-9:
-                raise SystemExit(f"tube1d: {N} cells put [0, 1]'s faces mid-cell in the margin {m}: take a multiple of 4")
+            check_cells(N, m, "tube1d")
             sub, x0 = 16, round((0.5 - shift * tf) * N) / N
             xs = (np.arange(N * sub) + 0.5) / (N * sub)
             ex = np.asarray(fv2d.exact_riemann(np.array(WL), np.array(WR), (xs - x0) / tf)[0]).reshape(N, sub).mean(axis=1)
             with tempfile.TemporaryDirectory() as d:
                 R, wall = petmpm(a.build, [*options(WL, WR, tf, N, m, x0), *a.extra], d)
-                import h5py
-                with h5py.File(os.path.join(d, "petmpm.h5"), "r") as f:
-                    n = int(f["particle_count"][-1])
-                    x, mass, rho = (f["particle_fields/" + k][-1][:n] for k in ("position", "mass", "density"))
-            i = np.floor(x * N).astype(int)
-            ok = (i >= 0) & (i < N)
-            pm = np.bincount(i[ok], mass[ok], N) / np.bincount(i[ok], (mass / rho)[ok], N)
+                pm = binned(os.path.join(d, "petmpm.h5"), N, (0.0, 1.0))[0]
             W = [(WR[0], WR[1], 0.0, WR[2]), (WL[0], WL[1], 0.0, WL[2]), (WL[0], WL[1], 0.0, WL[2]), (WR[0], WR[1], 0.0, WR[2])]  # quadrants 1 to 4
             fv = fv2d.solve(fv2d.quadrants(W, N, 4, (0.0, 1.0, 0.0, 4.0 / N), xm=x0), (0.0, 1.0, 0.0, 4.0 / N), tf, order=1)["rho"][1]
             tot = ex.sum()
