@@ -38,7 +38,7 @@ CONFIGS = [
     ("gimp, cell", ["-mpm_shape_type", "gimp", "-mpm_stress_integration", "cell"], 1),
     ("bspline2, cell", ["-mpm_shape_type", "bspline2", "-mpm_stress_integration", "cell"], 1),
     ("2 ppc", ["-mpm_ppc", "2"], 1),
-    ("volume fill", ["-mpm_volume_fill", "0.5"], 1),
+    ("no volume fill", ["-mpm_volume_fill", "0"], 1),
     ("cth", ["-options_file", os.path.join(lib.SRC, "inputs", "methods", "cth.opts")], 1),
     ("2 ranks", [], 2),
 ]
@@ -108,7 +108,7 @@ def main():
     lines = ["# Method matrix", "",
              f"Made by `scripts/methods.py --coarsen {a.coarsen}`: every scene of `inputs/` at its cells divided by {a.coarsen} (at least 4), run "
              "with one method option changed at a time on top of the scene's own method (`default`: the scene as it "
-             "stands; `apic`: `-mpm_update_type apic`, which has no kinetic-energy fix, so its `E` is the energy it filters; `volume fill`: the volume consistency module, `-mpm_volume_fill 0.5`; `cth`: `inputs/methods/cth.opts`; `2 ranks`: the scene on 2 ranks). `ok`: finished (`E`: the total "
+             "stands; `apic`: `-mpm_update_type apic`, which has no kinetic-energy fix, so its `E` is the energy it filters; `no volume fill`: without the volume consistency module (on by default for fluids with CPDI), `-mpm_volume_fill 0`; `cth`: `inputs/methods/cth.opts`; `2 ranks`: the scene on 2 ranks). `ok`: finished (`E`: the total "
              "energy's relative change less the isentropic expansion's share, where above 1e-6: the compatible and "
              "midpoint energy updates and a manufactured solution's body force change it by design; `spall`: points spalled, `robustness.spalled`; `isentrope`: the "
              "energy the isentropic expansion update (`-mpm_isentrope_threshold`) changed, relative, where above "

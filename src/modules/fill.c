@@ -14,6 +14,7 @@
 
 typedef struct {
   PetscReal  rate, tol, mach; /* -mpm_volume_fill theta, -mpm_volume_fill_tol, -mpm_volume_fill_mach [-] */
+  PetscBool  set;             /* -mpm_volume_fill given: the module runs with any shape type, not only CPDI's */
   PetscReal *ref;             /* the reference nodal volumes V_I^0 on the ghosted local nodes of the grid numbered grid_id [cm^d] */
   PetscInt   grid_id;
   PetscReal  volume, point_steps; /* volume taken back [cm^d] and the point-steps it acted on, this rank's */
@@ -25,8 +26,9 @@ static PetscErrorCode MPMFillSetFromOptions(MPMModule mod, MPM mpm, PetscOptionI
 
   PetscFunctionBegin;
   PetscCall(PetscOptionsReal("-mpm_volume_fill",
-                             "Volume consistency theta: fluid points on a node whose points' volumes exceed (1 + -mpm_volume_fill_tol) of its undeformed fill give back this fraction of the excess each step [-], in [0, 1] (0: off)", "", fl->rate,
-                             &fl->rate, NULL));
+                             "Volume consistency theta: fluid points on a node whose points' volumes exceed (1 + -mpm_volume_fill_tol) of its undeformed fill give back this fraction of the excess each step [-], in [0, 1] (0: off; "
+                             "by default on where a material is a fluid and the shape type carries point domains, CPDI)",
+                             "", fl->rate, &fl->rate, &fl->set));
   PetscCall(MPMOptionsCheckRange("-mpm_volume_fill", fl->rate, 0.0, 1.0, PETSC_FALSE, PETSC_FALSE));
   mod->active = (PetscBool)(fl->rate > 0.0);
   if (mod->active) {
@@ -35,6 +37,19 @@ static PetscErrorCode MPMFillSetFromOptions(MPMModule mod, MPM mpm, PetscOptionI
     PetscCall(PetscOptionsReal("-mpm_volume_fill_mach", "A point whose velocity jump across a cell |div v| h exceeds this fraction of its sound speed (a shock, a fast expansion) keeps its volume [-], > 0", "", fl->mach, &fl->mach, NULL));
     PetscCall(MPMOptionsCheckRange("-mpm_volume_fill_mach", fl->mach, 0.0, PETSC_MAX_REAL, PETSC_TRUE, PETSC_FALSE));
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Out of the step where no material is a fluid, and by default where the points carry no domains (a shape type other than
+   CPDI: their boxes would be the lattice's, scaled, which do not follow the flow). */
+static PetscErrorCode MPMFillSetUp(MPMModule mod, MPM mpm)
+{
+  MPMFill  *fl    = (MPMFill *)mod->data;
+  PetscBool fluid = PETSC_FALSE;
+
+  PetscFunctionBegin;
+  for (PetscInt i = 0; i < mpm->nmat; i++) fluid = (PetscBool)(fluid || !MPMStrengthIsSolid(mpm->mat[i].strength));
+  mod->active = (PetscBool)(fluid && (fl->set || mpm->shape->needs_F));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -78,6 +93,72 @@ static PetscErrorCode MPMFillDestroy(MPMModule mod)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* int_{-inf}^{t} max(0, 1 - |s|) ds: the integral of the tent [cells]. */
+static inline PetscReal MPMTentIntegral(PetscReal t)
+{
+  if (t <= -1.0) return 0.0;
+  if (t <= 0.0) return 0.5 * (1.0 + t) * (1.0 + t);
+  if (t <= 1.0) return 1.0 - 0.5 * (1.0 - t) * (1.0 - t);
+  return 1.0;
+}
+
+/* The nodes and weights of the box x +- e (half-widths e_k [cm]; r-z: per radian, the box of area V / r) per direction:
+   the tent N_I averaged over the box is a product over the directions of (T(xi - i + l) - T(xi - i - l)) / (2 l), T the
+   tent's integral, xi = (x - lo) / h, l = e / h [cells], at most the ghost width less a cell (the nodes are local) and 2
+   (6 nodes a direction); a larger box, far beyond the split length, is clipped and reads less fill. Node (a0, a1, a2)
+   is the local node (i[2][a2] gm_1 + i[1][a1]) gm_0 + i[0][a0] (folded at the faces as the shape functions are). */
+typedef struct {
+  PetscInt  n[3], i[3][MPM_MAX_1D];
+  PetscReal w[3][MPM_MAX_1D];
+} MPMFillAxes;
+
+static inline void MPMFillAxesOf(const MPMGrid *g, const PetscReal x[], const PetscReal e[], MPMFillAxes *ax)
+{
+  PetscReal sg[MPM_MAX_1D];
+
+  for (PetscInt k = 0; k < 3; k++) {
+    if (k >= g->dim) {
+      ax->n[k]    = 1;
+      ax->i[k][0] = 0;
+      ax->w[k][0] = 1.0;
+      continue;
+    }
+    const PetscReal xi = (x[k] - g->lo[k]) * g->hinv[k], l = PetscMax(PetscMin(e[k] * g->hinv[k], PetscMin(g->sw - 1.0, 2.0)), 1e-3);
+    const PetscInt  f = (PetscInt)PetscFloorReal(xi - 1.0 - l) + 1, last = (PetscInt)PetscCeilReal(xi + 1.0 + l) - 1;
+    ax->n[k] = last - f + 1;
+    for (PetscInt a = 0; a < ax->n[k]; a++) {
+      ax->w[k][a] = (MPMTentIntegral(xi - (f + a) + l) - MPMTentIntegral(xi - (f + a) - l)) / (2.0 * l);
+      ax->i[k][a] = f + a;
+    }
+    MPMShapeFold1d(g, k, ax->n[k], ax->i[k], sg);
+  }
+}
+
+/* Loops node (its local index) and w (its weight) over the box's nodes (the innermost loops run once each). */
+#define MPM_FILL_FOR_NODES(g, ax, node, w)                                                                                              \
+  for (PetscInt a2_ = 0; a2_ < (ax).n[2]; a2_++)                                                                                        \
+    for (PetscInt a1_ = 0; a1_ < (ax).n[1]; a1_++)                                                                                      \
+      for (PetscInt a0_ = 0; a0_ < (ax).n[0]; a0_++)                                                                                    \
+        for (PetscInt node = ((ax).i[2][a2_] * (g)->gm[1] + (ax).i[1][a1_]) * (g)->gm[0] + (ax).i[0][a0_], once_ = 1; once_; once_ = 0) \
+          for (PetscReal w = (ax).w[2][a2_] * (ax).w[1][a1_] * (ax).w[0][a0_]; once_; once_ = 0)
+
+/* The box of a point at x of volume V with the domain F diag(l0) [-1, 1]^d (F NULL: the lattice's box): the domain's
+   half-extents along the axes, e_k = sum_j |F_kj| l0_j, scaled so that the box holds V (r-z: V / r). */
+static void MPMFillBox(MPM mpm, const PetscReal x[], const PetscReal *F, PetscReal V, PetscReal e[])
+{
+  const PetscInt d  = mpm->grid.dim;
+  PetscReal      vb = 1.0, s;
+
+  for (PetscInt k = 0; k < d; k++) {
+    e[k] = 0.0;
+    for (PetscInt j = 0; j < d; j++) e[k] += PetscAbsReal(F ? F[k * d + j] : (PetscReal)(j == k)) * MPMLatticeHalfWidth(mpm, j);
+    vb *= 2.0 * e[k];
+  }
+  s = (mpm->grid.axisym ? V / PetscMax(x[0], PETSC_SMALL * mpm->grid.h[0]) : V) / vb;
+  s = d == 1 ? s : (d == 2 ? PetscSqrtReal(s) : PetscCbrtReal(s));
+  for (PetscInt k = 0; k < d; k++) e[k] *= s;
+}
+
 /* The reference nodal volumes V_I^0 (ghosted local nodes): every owned cell's ppc^d lattice sites with their
    undeformed domains, summed over the ranks. */
 static PetscErrorCode MPMFillReference(MPM mpm, MPMFill *fl)
@@ -85,25 +166,23 @@ static PetscErrorCode MPMFillReference(MPM mpm, MPMFill *fl)
   const MPMGrid *g = &mpm->grid;
   const PetscInt d = g->dim, nloc = g->gm[0] * g->gm[1] * g->gm[2];
   PetscInt       npd = 1;
-  PetscReal     *W, Ide[MPM_MAX_DIM * MPM_MAX_DIM] = {0};
-  MPMStencil     st;
+  PetscReal     *W;
+  MPMFillAxes    ax;
 
   PetscFunctionBegin;
-  for (PetscInt k = 0; k < d; k++) {
-    npd *= mpm->ppc;
-    Ide[k * d + k] = 1.0;
-  }
+  for (PetscInt k = 0; k < d; k++) npd *= mpm->ppc;
   PetscCall(PetscFree(fl->ref));
   PetscCall(PetscMalloc1(nloc, &fl->ref));
   fl->grid_id = g->id;
   PetscCall(VecZeroEntries(mpm->mean_l));
   PetscCall(VecGetArray(mpm->mean_l, &W));
   for (PetscInt s = 0; s < g->ncells * npd; s++) { /* the seeding's lattice sites (MPMSiteAt) */
-    PetscReal x[MPM_MAX_DIM], id, V = g->vcell / npd;
+    PetscReal x[MPM_MAX_DIM], e[MPM_MAX_DIM], id, V = g->vcell / npd;
     MPMSiteAt(g, mpm->ppc, s, x, &id);
     if (g->axisym) V *= x[0]; /* per radian */
-    MPMShapeEvaluate(mpm->shape, g, x, mpm->track_F ? Ide : NULL, &st);
-    for (PetscInt a = 0; a < st.n; a++) W[2 * st.node[a]] += st.w[a] * V;
+    MPMFillBox(mpm, x, NULL, V, e);
+    MPMFillAxesOf(g, x, e, &ax);
+    MPM_FILL_FOR_NODES(g, ax, node, w) W[2 * node] += w * V;
   }
   PetscCall(MPMNodalMeanSum(mpm, &W));
   for (PetscInt i = 0; i < nloc; i++) fl->ref[i] = W[2 * i];
@@ -153,43 +232,64 @@ static PetscErrorCode MPMFillExcess(MPM mpm, const MPMFill *fl, PetscReal **W)
 
 static PetscErrorCode MPMFillApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
 {
-  MPMFill   *fl = (MPMFill *)mod->data;
-  PetscReal *W, *c, over = 0.0;
-  PetscInt   nact = 0;
-  MPMPoints  pts;
-  MPMStencil st;
+  MPMFill       *fl = (MPMFill *)mod->data;
+  const MPMGrid *g  = &mpm->grid;
+  const PetscInt d = g->dim, nloc = g->gm[0] * g->gm[1] * g->gm[2];
+  PetscReal     *W, *c, *e, over = 0.0;
+  PetscInt       nact   = 0;
+  PetscBool      excess = PETSC_FALSE;
+  char          *near = NULL, *tmp = NULL;
+  MPMPoints      pts;
+  MPMFillAxes    ax;
 
   PetscFunctionBegin;
   PetscCall(MPMNodalMeanSetUp(mpm));
-  if (fl->grid_id != mpm->grid.id) PetscCall(MPMFillReference(mpm, fl));
+  if (fl->grid_id != g->id) PetscCall(MPMFillReference(mpm, fl));
   PetscCall(MPMPointsGetArrays(mpm, &pts));
-  PetscCall(PetscCalloc1(pts.n + 1, &c));
+  PetscCall(PetscCalloc2(pts.n + 1, &c, d * (pts.n + 1), &e));
   PetscCall(VecZeroEntries(mpm->mean_l));
   PetscCall(VecGetArray(mpm->mean_l, &W));
   for (PetscInt p = 0; p < pts.n; p++) { /* V_I and C_I */
     const MPMMaterial *mat = &mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]];
-    PetscReal          pr, c2;
-    if (!MPMStrengthIsSolid(mat->strength) && !MPMPointFailed(mat, pts.f, p)) { /* failed material: its pressure is not the EOS's */
-      MPMEOSPressureKernel(mat->eos, pts.f[MPM_FIELD_DENSITY][p], pts.f[MPM_FIELD_ENERGY][p], &pr, &c2);
-      if (c2 > 0.0) c[p] = pts.f[MPM_FIELD_VOLUME][p] / (pts.f[MPM_FIELD_DENSITY][p] * c2);
-      if (c2 > 0.0 && MPMPointInShock(mpm, &pts, p, c2, fl->mach)) c[p] = -c[p]; /* counted in C_I, gives nothing */
+    const PetscReal    V = pts.f[MPM_FIELD_VOLUME][p], cs = pts.f[MPM_FIELD_SOUNDSPEED][p], c2 = cs * cs;
+    PetscReal          Fs[MPM_MAX_DIM * MPM_MAX_DIM];
+    if (MPMPointFailed(mat, pts.f, p)) continue;          /* a crack's point: its volume holds the opening void, not material */
+    if (!MPMStrengthIsSolid(mat->strength) && c2 > 0.0) { /* a fluid's compliance V / (rho c^2) (its c is the EOS's) */
+      c[p] = V / (pts.f[MPM_FIELD_DENSITY][p] * c2);
+      if (MPMPointInShock(mpm, &pts, p, c2, fl->mach)) c[p] = -c[p]; /* counted in C_I, gives nothing */
     }
-    MPMNodalMeanStencilOf(mpm, &pts, p, &st);
-    for (PetscInt a = 0; a < st.n; a++) {
-      W[2 * st.node[a]] += st.w[a] * pts.f[MPM_FIELD_VOLUME][p];
-      W[2 * st.node[a] + 1] += st.w[a] * PetscAbsReal(c[p]);
+    MPMFillBox(mpm, &pts.f[MPM_FIELD_POSITION][p * d], MPMPointDomain(d, pts.f[MPM_FIELD_DEFGRAD], pts.f[MPM_FIELD_DOMAINSCALE], p, Fs), V, &e[p * d]);
+    MPMFillAxesOf(g, &pts.f[MPM_FIELD_POSITION][p * d], &e[p * d], &ax);
+    MPM_FILL_FOR_NODES(g, ax, node, w)
+    {
+      W[2 * node] += w * V;
+      W[2 * node + 1] += w * PetscAbsReal(c[p]);
     }
   }
   PetscCall(MPMNodalMeanSum(mpm, &W));
   PetscCall(MPMFillExcess(mpm, fl, &W));
-  for (PetscInt p = 0; p < pts.n; p++) {
-    PetscReal x = 0.0, dV;
-    if (c[p] <= 0.0) continue;
-    MPMNodalMeanStencilOf(mpm, &pts, p, &st);
-    for (PetscInt a = 0; a < st.n; a++) {
-      const PetscInt nI = st.node[a];
-      if (W[2 * nI] > 0.0 && W[2 * nI + 1] > 0.0) x += st.w[a] * W[2 * nI] / W[2 * nI + 1];
+  for (PetscInt i = 0; i < nloc && !excess; i++) excess = (PetscBool)(W[2 * i] > 0.0);
+  if (excess) { /* near[I]: a node with an excess lies within 3 nodes of I along every axis (a box reaches 2 cells beyond its point's cell) */
+    PetscCall(PetscMalloc2(nloc, &near, nloc, &tmp));
+    for (PetscInt i = 0; i < nloc; i++) near[i] = (char)(W[2 * i] > 0.0);
+    for (PetscInt k = 0, stride = 1; k < d; stride *= g->gm[k], k++) {
+      for (PetscInt i = 0; i < nloc; i++) {
+        const PetscInt ik = (i / stride) % g->gm[k];
+        char           v  = 0;
+        for (PetscInt o = PetscMax(-3, -ik); o <= PetscMin(3, g->gm[k] - 1 - ik); o++) v |= near[i + o * stride];
+        tmp[i] = v;
+      }
+      PetscCall(PetscArraycpy(near, tmp, nloc));
     }
+  }
+  for (PetscInt p = 0; excess && p < pts.n; p++) { /* the points' shares of the excess (only where a node near theirs has one) */
+    PetscReal x    = 0.0, dV;
+    PetscInt  base = 0;
+    if (c[p] <= 0.0) continue;
+    for (PetscInt k = d - 1; k >= 0; k--) base = base * g->gm[k] + MPMCellIndex(g, k, pts.f[MPM_FIELD_POSITION][p * d + k]) - g->gs[k];
+    if (!near[base]) continue;
+    MPMFillAxesOf(g, &pts.f[MPM_FIELD_POSITION][p * d], &e[p * d], &ax);
+    MPM_FILL_FOR_NODES(g, ax, node, w) if (W[2 * node] > 0.0 && W[2 * node + 1] > 0.0) x += w * W[2 * node] / W[2 * node + 1];
     if (x <= 0.0) continue;
     dV = PetscMax(-fl->rate * c[p] * x, -0.5 * pts.f[MPM_FIELD_VOLUME][p]);
     MPMPointChangeVolume(mpm, &pts, p, dV, pts.f[MPM_FIELD_ENERGY][p]);
@@ -198,7 +298,8 @@ static PetscErrorCode MPMFillApply(MPMModule mod, MPM mpm, const MPMStepContext 
   }
   PetscCall(VecRestoreArray(mpm->mean_l, &W));
   PetscCall(VecZeroEntries(mpm->mean_l)); /* the point-exchange modules find it zeroed */
-  PetscCall(PetscFree(c));
+  PetscCall(PetscFree2(c, e));
+  PetscCall(PetscFree2(near, tmp));
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   fl->volume += over; /* this rank's; summed for the report */
   fl->point_steps += nact;
@@ -211,11 +312,13 @@ PetscErrorCode MPMModuleCreate_Fill(MPMModule mod)
 
   PetscFunctionBegin;
   PetscCall(PetscNew(&fl));
-  fl->tol                 = 0.05;
+  fl->rate                = 0.5;
+  fl->tol                 = 0.02;
   fl->mach                = 0.05;
   mod->data               = fl;
   mod->phase              = MPM_PHASE_POINT_END;
   mod->ops.setfromoptions = MPMFillSetFromOptions;
+  mod->ops.setup          = MPMFillSetUp;
   mod->ops.apply          = MPMFillApply;
   mod->ops.view           = MPMFillView;
   mod->ops.report         = MPMFillReport;
