@@ -1,14 +1,16 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
-/* Volume consistency module (point phase MPM_PHASE_POINT_END, after the pressure relaxation; -mpm_volume_fill theta > 0,
-   off by default; fluids): the points' volumes on the nodes, V_I = sum_p N_I(x_p) V_p, against a complete undeformed
-   fill V_I^0 (the seeding lattice, once per grid), smoothed over the node's 3^d block with weights (1, 2, 1) per
-   direction, phi_I = sum_J w_J V_J / sum_J w_J V_J^0; where phi_I > 1 + tol (-mpm_volume_fill_tol) the node gives back
-   E_I = (phi_I - 1 - tol) V_I^0 [cm^d], a fraction theta of it per step, from its fluid points by compliance,
-     dV_p = -theta (V_p / K_p) sum_I N_I(x_p) E_I / C_I,  C_I = sum_q N_I(x_q) V_q / K_q,  dV_p >= -V_p / 2,
+/* Volume consistency module (point phase MPM_PHASE_POINT_END, after the pressure relaxation; -mpm_volume_fill theta,
+   0.5 by default where a material is a fluid and the shapes are CPDI's; fluids): the points' volumes on the nodes,
+   V_I = sum_p S_I(x_p) V_p with S_I the tent averaged exactly over the point's box (its domain's extents along the
+   axes, scaled to hold V_p), against a complete undeformed fill V_I^0 (the seeding lattice, once per grid), smoothed
+   over the node's 3^d block with weights (1, 2, 1) per direction, phi_I = sum_J w_J V_J / sum_J w_J V_J^0; where
+   phi_I > 1 + tol (-mpm_volume_fill_tol) the node gives back E_I = (phi_I - 1 - tol) V_I^0 [cm^d], a fraction theta of
+   it per step, from its fluid points by compliance,
+     dV_p = -theta (V_p / K_p) sum_I S_I(x_p) E_I / C_I,  C_I = sum_q S_I(x_q) V_q / K_q,  dV_p >= -V_p / 2,
    K_p = rho_p c_p^2, at fixed specific internal energy (mass, momentum, positions and total energy unchanged). Points
    in a shock or a fast expansion (|div v| h / c above -mpm_volume_fill_mach) keep their volume, their share of E_I
    not taken (they count in C_I: a stiff point beside them does not take the node's whole excess); excess is only
-   taken.
+   taken; failed points do not count.
    Why and what it measured: docs/modules.md. */
 #include "core/petmpmimpl.h"
 
@@ -31,7 +33,7 @@ static PetscErrorCode MPMFillSetFromOptions(MPMModule mod, MPM mpm, PetscOptionI
                              "", fl->rate, &fl->rate, &fl->set));
   PetscCall(MPMOptionsCheckRange("-mpm_volume_fill", fl->rate, 0.0, 1.0, PETSC_FALSE, PETSC_FALSE));
   mod->active = (PetscBool)(fl->rate > 0.0);
-  if (mod->active) {
+  { /* read whether or not the module runs: a study may switch it off on top of a file that sets these */
     PetscCall(PetscOptionsReal("-mpm_volume_fill_tol", "Overfill of a node's volume the volume consistency leaves alone [-], >= 0", "", fl->tol, &fl->tol, NULL));
     PetscCall(MPMOptionsCheckRange("-mpm_volume_fill_tol", fl->tol, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
     PetscCall(PetscOptionsReal("-mpm_volume_fill_mach", "A point whose velocity jump across a cell |div v| h exceeds this fraction of its sound speed (a shock, a fast expansion) keeps its volume [-], > 0", "", fl->mach, &fl->mach, NULL));
@@ -123,12 +125,22 @@ static inline void MPMFillAxesOf(const MPMGrid *g, const PetscReal x[], const Pe
       ax->w[k][0] = 1.0;
       continue;
     }
-    const PetscReal xi = (x[k] - g->lo[k]) * g->hinv[k], l = PetscMax(PetscMin(e[k] * g->hinv[k], PetscMin(g->sw - 1.0, 2.0)), 1e-3);
-    const PetscInt  f = (PetscInt)PetscFloorReal(xi - 1.0 - l) + 1, last = (PetscInt)PetscCeilReal(xi + 1.0 + l) - 1;
-    ax->n[k] = last - f + 1;
-    for (PetscInt a = 0; a < ax->n[k]; a++) {
-      ax->w[k][a] = (MPMTentIntegral(xi - (f + a) + l) - MPMTentIntegral(xi - (f + a) - l)) / (2.0 * l);
-      ax->i[k][a] = f + a;
+    const PetscReal xi = (x[k] - g->lo[k]) * g->hinv[k], lb = PetscMax(e[k] * g->hinv[k], 1e-3), cap = PetscMin(g->sw - 1.0 - 1e-6, 2.0);
+    if (cap < 1e-3) { /* a ghost width of one cell (linear shapes): the tent itself, N_I(x_p) */
+      const PetscInt f = (PetscInt)PetscFloorReal(xi);
+      ax->n[k]         = 2;
+      ax->i[k][0]      = f;
+      ax->i[k][1]      = f + 1;
+      ax->w[k][0]      = 1.0 - (xi - f);
+      ax->w[k][1]      = xi - f;
+    } else {
+      const PetscReal l = PetscMin(lb, cap), i2l = 0.5 / lb; /* weights summing to l / lb: a clipped box counts only the share of V it holds */
+      const PetscInt  f = (PetscInt)PetscFloorReal(xi - 1.0 - l) + 1, last = (PetscInt)PetscCeilReal(xi + 1.0 + l) - 1;
+      ax->n[k] = last - f + 1;
+      for (PetscInt a = 0; a < ax->n[k]; a++) {
+        ax->w[k][a] = (MPMTentIntegral(xi - (f + a) + l) - MPMTentIntegral(xi - (f + a) - l)) * i2l;
+        ax->i[k][a] = f + a;
+      }
     }
     MPMShapeFold1d(g, k, ax->n[k], ax->i[k], sg);
   }
@@ -149,9 +161,12 @@ static void MPMFillBox(MPM mpm, const PetscReal x[], const PetscReal *F, PetscRe
   const PetscInt d  = mpm->grid.dim;
   PetscReal      vb = 1.0, s;
 
+  PetscReal l0[MPM_MAX_DIM];
+
+  for (PetscInt j = 0; j < d; j++) l0[j] = MPMLatticeHalfWidth(mpm, j);
   for (PetscInt k = 0; k < d; k++) {
     e[k] = 0.0;
-    for (PetscInt j = 0; j < d; j++) e[k] += PetscAbsReal(F ? F[k * d + j] : (PetscReal)(j == k)) * MPMLatticeHalfWidth(mpm, j);
+    for (PetscInt j = 0; j < d; j++) e[k] += PetscAbsReal(F ? F[k * d + j] : (PetscReal)(j == k)) * l0[j];
     vb *= 2.0 * e[k];
   }
   s = (mpm->grid.axisym ? V / PetscMax(x[0], PETSC_SMALL * mpm->grid.h[0]) : V) / vb;

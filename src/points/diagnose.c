@@ -114,11 +114,11 @@ PetscErrorCode MPMDiagnoseVacuum(MPM mpm, PetscInt *nvacuum, PetscInt *nempty)
     mpm->diag.volume_fill_max = PetscMax(mpm->diag.volume_fill_max, mpm->diag.volume_fill);
     if (mpm->diag.volume_fill > 1.0 + MPM_VOLUME_FILL_TOL && mpm->diag.first_overlap_step < 0) {
       mpm->diag.first_overlap_step = mpm->steps;
-      PetscCall(
-        PetscPrintf(mpm->comm,
-                    "warning: step %" PetscInt_FMT ", t = %g s: the points' volumes fill %.3f of the cells they occupy inside the material: their domains overlap (each point's volume follows its own velocity gradient; "
-                    "with point integration at one point per cell, where a shock crosses a density jump in 2D or 3D, the volume consistency module (-mpm_volume_fill 0.5), -mpm_stress_integration cell or more points per cell keep them consistent)\n",
-                    mpm->steps, (double)mpm->time, (double)mpm->diag.volume_fill));
+      PetscCall(PetscPrintf(mpm->comm,
+                            "warning: step %" PetscInt_FMT ", t = %g s: the points' volumes fill %.3f of the cells they occupy inside the material: their domains overlap (each point's volume follows its own velocity gradient; "
+                            "with point integration at one point per cell, where a shock crosses a density jump in 2D or 3D, the volume consistency module (-mpm_volume_fill, on by default for fluids with CPDI shapes), -mpm_stress_integration cell "
+                            "or more points per cell keep them consistent)\n",
+                            mpm->steps, (double)mpm->time, (double)mpm->diag.volume_fill));
     }
   }
   if (n[0] && mpm->diag.first_vacuum_step < 0) mpm->diag.first_vacuum_step = mpm->steps;
