@@ -20,6 +20,9 @@ typedef struct {
   PetscReal *ref;             /* the reference nodal volumes V_I^0 on the ghosted local nodes of the grid numbered grid_id [cm^d] */
   PetscInt   grid_id;
   PetscReal  volume, point_steps; /* volume taken back [cm^d] and the point-steps it acted on, this rank's */
+  PetscInt   np, nn;              /* the sizes of the work arrays: points, ghosted local nodes */
+  PetscReal *c, *e, *E;           /* per point: the compliance (negative: in a shock) and the box's half-widths; per node: the excess */
+  char      *near, *tmp;          /* per node: an excess within 3 nodes (the second pass's filter) */
 } MPMFill;
 
 static PetscErrorCode MPMFillSetFromOptions(MPMModule mod, MPM mpm, PetscOptionItems *PetscOptionsObject)
@@ -89,8 +92,12 @@ static PetscErrorCode MPMFillCheckpoint(MPMModule mod, MPM mpm, MPMCheckpoint ck
 
 static PetscErrorCode MPMFillDestroy(MPMModule mod)
 {
+  MPMFill *fl = (MPMFill *)mod->data;
+
   PetscFunctionBegin;
-  PetscCall(PetscFree(((MPMFill *)mod->data)->ref));
+  PetscCall(PetscFree(fl->ref));
+  PetscCall(PetscFree2(fl->c, fl->e));
+  PetscCall(PetscFree3(fl->E, fl->near, fl->tmp));
   PetscCall(PetscFree(mod->data));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -107,7 +114,8 @@ static inline PetscReal MPMTentIntegral(PetscReal t)
 /* The nodes and weights of the box x +- e (half-widths e_k [cm]; r-z: per radian, the box of area V / r) per direction:
    the tent N_I averaged over the box is a product over the directions of (T(xi - i + l) - T(xi - i - l)) / (2 l), T the
    tent's integral, xi = (x - lo) / h, l = e / h [cells], at most the ghost width less a cell (the nodes are local) and 2
-   (6 nodes a direction); a larger box, far beyond the split length, is clipped and reads less fill. Node (a0, a1, a2)
+   (6 nodes a direction); a larger box, far beyond the split length, is clipped and counts only the share of V it
+   holds; with a ghost width of one cell (linear shapes) the weights are the tent's, N_I(x_p). Node (a0, a1, a2)
    is the local node (i[2][a2] gm_1 + i[1][a1]) gm_0 + i[0][a0] (folded at the faces as the shape functions are). */
 typedef struct {
   PetscInt  n[3], i[3][MPM_MAX_1D];
@@ -146,22 +154,26 @@ static inline void MPMFillAxesOf(const MPMGrid *g, const PetscReal x[], const Pe
   }
 }
 
-/* Loops node (its local index) and w (its weight) over the box's nodes (the innermost loops run once each). */
-#define MPM_FILL_FOR_NODES(g, ax, node, w)                                                                                              \
-  for (PetscInt a2_ = 0; a2_ < (ax).n[2]; a2_++)                                                                                        \
-    for (PetscInt a1_ = 0; a1_ < (ax).n[1]; a1_++)                                                                                      \
-      for (PetscInt a0_ = 0; a0_ < (ax).n[0]; a0_++)                                                                                    \
-        for (PetscInt node = ((ax).i[2][a2_] * (g)->gm[1] + (ax).i[1][a1_]) * (g)->gm[0] + (ax).i[0][a0_], once_ = 1; once_; once_ = 0) \
-          for (PetscReal w = (ax).w[2][a2_] * (ax).w[1][a1_] * (ax).w[0][a0_]; once_; once_ = 0)
+/* The box's nodes (local indices) and weights, the product of the directions' in the order (a2, a1, a0); their count. */
+static inline PetscInt MPMFillNodes(const MPMGrid *g, const MPMFillAxes *ax, PetscInt node[], PetscReal w[])
+{
+  PetscInt n = 0;
+
+  for (PetscInt a2 = 0; a2 < ax->n[2]; a2++)
+    for (PetscInt a1 = 0; a1 < ax->n[1]; a1++)
+      for (PetscInt a0 = 0; a0 < ax->n[0]; a0++, n++) {
+        node[n] = (ax->i[2][a2] * g->gm[1] + ax->i[1][a1]) * g->gm[0] + ax->i[0][a0];
+        w[n]    = ax->w[2][a2] * ax->w[1][a1] * ax->w[0][a0];
+      }
+  return n;
+}
 
 /* The box of a point at x of volume V with the domain F diag(l0) [-1, 1]^d (F NULL: the lattice's box): the domain's
    half-extents along the axes, e_k = sum_j |F_kj| l0_j, scaled so that the box holds V (r-z: V / r). */
 static void MPMFillBox(MPM mpm, const PetscReal x[], const PetscReal *F, PetscReal V, PetscReal e[])
 {
   const PetscInt d  = mpm->grid.dim;
-  PetscReal      vb = 1.0, s;
-
-  PetscReal l0[MPM_MAX_DIM];
+  PetscReal      vb = 1.0, s, l0[MPM_MAX_DIM];
 
   for (PetscInt j = 0; j < d; j++) l0[j] = MPMLatticeHalfWidth(mpm, j);
   for (PetscInt k = 0; k < d; k++) {
@@ -181,7 +193,8 @@ static PetscErrorCode MPMFillReference(MPM mpm, MPMFill *fl)
   const MPMGrid *g = &mpm->grid;
   const PetscInt d = g->dim, nloc = g->gm[0] * g->gm[1] * g->gm[2];
   PetscInt       npd = 1;
-  PetscReal     *W;
+  PetscReal     *W, w[MPM_MAX_STENCIL];
+  PetscInt       node[MPM_MAX_STENCIL];
   MPMFillAxes    ax;
 
   PetscFunctionBegin;
@@ -197,7 +210,7 @@ static PetscErrorCode MPMFillReference(MPM mpm, MPMFill *fl)
     if (g->axisym) V *= x[0]; /* per radian */
     MPMFillBox(mpm, x, NULL, V, e);
     MPMFillAxesOf(g, x, e, &ax);
-    MPM_FILL_FOR_NODES(g, ax, node, w) W[2 * node] += w * V;
+    for (PetscInt a = 0, n = MPMFillNodes(g, &ax, node, w); a < n; a++) W[2 * node[a]] += w[a] * V;
   }
   PetscCall(MPMNodalMeanSum(mpm, &W));
   for (PetscInt i = 0; i < nloc; i++) fl->ref[i] = W[2 * i];
@@ -216,10 +229,10 @@ static PetscErrorCode MPMFillExcess(MPM mpm, const MPMFill *fl, PetscReal **W)
 {
   const MPMGrid *g = &mpm->grid;
   const PetscInt d = g->dim, nloc = g->gm[0] * g->gm[1] * g->gm[2];
-  PetscReal     *E;
+  PetscReal     *E = fl->E;
 
   PetscFunctionBegin;
-  PetscCall(PetscCalloc1(nloc, &E));
+  PetscCall(PetscArrayzero(E, nloc));
   for (PetscInt k2 = g->xs[2]; k2 < g->xs[2] + g->xm[2]; k2++)
     for (PetscInt k1 = g->xs[1]; k1 < g->xs[1] + g->xm[1]; k1++)
       for (PetscInt k0 = g->xs[0]; k0 < g->xs[0] + g->xm[0]; k0++) {
@@ -240,7 +253,6 @@ static PetscErrorCode MPMFillExcess(MPM mpm, const MPMFill *fl, PetscReal **W)
         if (S0 > 0.0 && (*W)[2 * nI] > 0.0) E[nI] = PetscMax(0.0, S / S0 - (1.0 + fl->tol)) * fl->ref[nI];
       }
   for (PetscInt i = 0; i < nloc; i++) (*W)[2 * i] = E[i];
-  PetscCall(PetscFree(E));
   PetscCall(MPMGhostExchange(mpm, mpm->mean_type, *W, PETSC_FALSE, PETSC_TRUE)); /* the owned nodes' excess to the other ranks' ghosts */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -250,10 +262,10 @@ static PetscErrorCode MPMFillApply(MPMModule mod, MPM mpm, const MPMStepContext 
   MPMFill       *fl = (MPMFill *)mod->data;
   const MPMGrid *g  = &mpm->grid;
   const PetscInt d = g->dim, nloc = g->gm[0] * g->gm[1] * g->gm[2];
-  PetscReal     *W, *c, *e, over = 0.0;
-  PetscInt       nact   = 0;
+  PetscReal     *W, *c, *e, over = 0.0, w[MPM_MAX_STENCIL];
+  PetscInt       nact   = 0, node[MPM_MAX_STENCIL];
   PetscBool      excess = PETSC_FALSE;
-  char          *near = NULL, *tmp = NULL;
+  char          *near, *tmp;
   MPMPoints      pts;
   MPMFillAxes    ax;
 
@@ -261,7 +273,18 @@ static PetscErrorCode MPMFillApply(MPMModule mod, MPM mpm, const MPMStepContext 
   PetscCall(MPMNodalMeanSetUp(mpm));
   if (fl->grid_id != g->id) PetscCall(MPMFillReference(mpm, fl));
   PetscCall(MPMPointsGetArrays(mpm, &pts));
-  PetscCall(PetscCalloc2(pts.n + 1, &c, d * (pts.n + 1), &e));
+  if (pts.n > fl->np) { /* the work arrays grow with the points and the grid, and are kept between steps */
+    PetscCall(PetscFree2(fl->c, fl->e));
+    fl->np = pts.n + pts.n / 4;
+    PetscCall(PetscMalloc2(fl->np, &fl->c, d * fl->np, &fl->e));
+  }
+  if (nloc > fl->nn) {
+    PetscCall(PetscFree3(fl->E, fl->near, fl->tmp));
+    fl->nn = nloc;
+    PetscCall(PetscMalloc3(nloc, &fl->E, nloc, &fl->near, nloc, &fl->tmp));
+  }
+  c = fl->c, e = fl->e, near = fl->near, tmp = fl->tmp;
+  PetscCall(PetscArrayzero(c, pts.n));
   PetscCall(VecZeroEntries(mpm->mean_l));
   PetscCall(VecGetArray(mpm->mean_l, &W));
   for (PetscInt p = 0; p < pts.n; p++) { /* V_I and C_I */
@@ -275,17 +298,15 @@ static PetscErrorCode MPMFillApply(MPMModule mod, MPM mpm, const MPMStepContext 
     }
     MPMFillBox(mpm, &pts.f[MPM_FIELD_POSITION][p * d], MPMPointDomain(d, pts.f[MPM_FIELD_DEFGRAD], pts.f[MPM_FIELD_DOMAINSCALE], p, Fs), V, &e[p * d]);
     MPMFillAxesOf(g, &pts.f[MPM_FIELD_POSITION][p * d], &e[p * d], &ax);
-    MPM_FILL_FOR_NODES(g, ax, node, w)
-    {
-      W[2 * node] += w * V;
-      W[2 * node + 1] += w * PetscAbsReal(c[p]);
+    for (PetscInt a = 0, n = MPMFillNodes(g, &ax, node, w); a < n; a++) {
+      W[2 * node[a]] += w[a] * V;
+      W[2 * node[a] + 1] += w[a] * PetscAbsReal(c[p]);
     }
   }
   PetscCall(MPMNodalMeanSum(mpm, &W));
   PetscCall(MPMFillExcess(mpm, fl, &W));
   for (PetscInt i = 0; i < nloc && !excess; i++) excess = (PetscBool)(W[2 * i] > 0.0);
   if (excess) { /* near[I]: a node with an excess lies within 3 nodes of I along every axis (a box reaches 2 cells beyond its point's cell) */
-    PetscCall(PetscMalloc2(nloc, &near, nloc, &tmp));
     for (PetscInt i = 0; i < nloc; i++) near[i] = (char)(W[2 * i] > 0.0);
     for (PetscInt k = 0, stride = 1; k < d; stride *= g->gm[k], k++) {
       for (PetscInt i = 0; i < nloc; i++) {
@@ -304,7 +325,8 @@ static PetscErrorCode MPMFillApply(MPMModule mod, MPM mpm, const MPMStepContext 
     for (PetscInt k = d - 1; k >= 0; k--) base = base * g->gm[k] + MPMCellIndex(g, k, pts.f[MPM_FIELD_POSITION][p * d + k]) - g->gs[k];
     if (!near[base]) continue;
     MPMFillAxesOf(g, &pts.f[MPM_FIELD_POSITION][p * d], &e[p * d], &ax);
-    MPM_FILL_FOR_NODES(g, ax, node, w) if (W[2 * node] > 0.0 && W[2 * node + 1] > 0.0) x += w * W[2 * node] / W[2 * node + 1];
+    for (PetscInt a = 0, n = MPMFillNodes(g, &ax, node, w); a < n; a++)
+      if (W[2 * node[a]] > 0.0 && W[2 * node[a] + 1] > 0.0) x += w[a] * W[2 * node[a]] / W[2 * node[a] + 1];
     if (x <= 0.0) continue;
     dV = PetscMax(-fl->rate * c[p] * x, -0.5 * pts.f[MPM_FIELD_VOLUME][p]);
     MPMPointChangeVolume(mpm, &pts, p, dV, pts.f[MPM_FIELD_ENERGY][p]);
@@ -313,8 +335,6 @@ static PetscErrorCode MPMFillApply(MPMModule mod, MPM mpm, const MPMStepContext 
   }
   PetscCall(VecRestoreArray(mpm->mean_l, &W));
   PetscCall(VecZeroEntries(mpm->mean_l)); /* the point-exchange modules find it zeroed */
-  PetscCall(PetscFree2(c, e));
-  PetscCall(PetscFree2(near, tmp));
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   fl->volume += over; /* this rank's; summed for the report */
   fl->point_steps += nact;
