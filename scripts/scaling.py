@@ -18,7 +18,9 @@ project gives no speed-up past 2 ranks.
        scripts/scaling.py --from RUNS.jsonl [--markdown FILE]
 tabulates the runs of scripts/scaling_runs.sh (1 to 16 ranks on a machine without Python, issue 43 item 4): per case
 and method, the median point-steps per second of the runs at each rank count and the efficiency against one rank's
-median; the -log_view runs are left out.
+median; the -log_view runs are left out. solo3d's copies (independent one-rank jobs at once) count as one run whose
+rate is their sum. A second table sets each rank's seconds in the point phases (the report's
+balance.work_seconds_per_rank) against the one-rank runs': what sharing the machine and its slowest core cost.
 """
 import argparse
 import json
@@ -53,16 +55,28 @@ NAMES = {"def": "default", "defw": "default, balance by work", "lin": "linear MU
 
 def tabulate(path, say, largest=False):
     """The tables of scripts/scaling_runs.sh's JSONL runs (see the module's doc); largest: only each case's largest rank count."""
-    rates, machine, pts = {}, None, {}
+    rates, machine, pts, copies, work = {}, None, {}, {}, {}
     with open(path) as f:
         for line in f:
             d = json.loads(line)
             if "machine" in d:
                 machine = d["machine"]
+            elif "copy" in d:  # solo3d: independent one-rank jobs at once; a run's rate is the sum of its copies'
+                key = (d["case"], d["method"], d["ranks"])
+                c = copies.setdefault((key, d["rep"]), [])
+                c.append(float("nan") if d.get("failed") else d["report"]["particle_steps_per_second"])
+                if not d.get("failed") and "work_seconds_per_rank" in d["report"].get("balance", {}):
+                    work.setdefault((key, d["rep"]), []).extend(d["report"]["balance"]["work_seconds_per_rank"])
+                if not d.get("failed"):
+                    pts[key] = (d["report"]["particles"] * d["ranks"], 1.0)
             elif not d.get("failed") and not d.get("log_view"):
                 key = (d["case"], d["method"], d["ranks"])
                 rates.setdefault(key, []).append(d["report"]["particle_steps_per_second"])
                 pts[key] = (d["report"]["particles"], get(d["report"], "balance.imbalance"))
+                if "work_seconds_per_rank" in d["report"].get("balance", {}):
+                    work[(key, d["rep"])] = d["report"]["balance"]["work_seconds_per_rank"]
+    for (key, _), c in copies.items():
+        rates.setdefault(key, []).append(sum(c))
     if machine:
         say(f"{machine['cores']} cores ({machine['cpu']}), mpiexec {machine['bind']}; medians of the runs at each rank count.")
         say()
@@ -75,7 +89,25 @@ def tabulate(path, say, largest=False):
             v = rates[(case, method, r)]
             med = statistics.median(v)
             say(f"| {case} | {NAMES.get(method, method)} | {r} | {pts[(case, method, r)][0]} | {len(v)} | {med:.3g} | {med / r:.3g} | {med / (r * one):.2f} | {pts[(case, method, r)][1]:.2f} |")
-
+    if not work:
+        return
+    # Each rank's (copy's) seconds in the point phases (the report's balance.work_seconds_per_rank: no communication
+    # inside) against the ideal share of the one-rank runs' (their median, times this rank's share of the one-rank
+    # points): the mean says what running beside the other cores costs each one, the slowest what a run that waits
+    # for it at every step pays; ideal / slowest bounds the efficiency that any exchange could reach on this machine.
+    say()
+    say("Seconds in the point phases per rank (per copy for solo3d), against the ideal: the one-rank runs' median times the rank's share of their points.")
+    say()
+    say("| case | method | ranks | run | mean / ideal | slowest / ideal | slowest / mean | ideal / slowest |")
+    say("|---|---|---|---|---|---|---|---|")
+    for (key, rep) in sorted(work, key=lambda k: (k[0][0], list(NAMES).index(k[0][1]) if k[0][1] in NAMES else 9, k[0][2], k[1])):
+        lone = [w[0] for (k, _), w in work.items() if k == (key[0], key[1], 1)]
+        if key[2] == 1 or not lone:
+            continue
+        w = work[(key, rep)]
+        ideal = statistics.median(lone) * (pts[key][0] / key[2]) / pts[(key[0], key[1], 1)][0]
+        mean = sum(w) / len(w)
+        say(f"| {key[0]} | {NAMES.get(key[1], key[1])} | {key[2]} | {rep} | {mean / ideal:.2f} | {max(w) / ideal:.2f} | {max(w) / mean:.2f} | {ideal / max(w):.2f} |")
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0], formatter_class=argparse.RawDescriptionHelpFormatter, epilog=__doc__)

@@ -8,6 +8,10 @@
 #   strong3d  the 3D copper bar of inputs/bar_impact_3d.opts at 84 x 84 x 364 cells: 1,053,696 points
 #   weak3d    bench.py's bar1 per rank (36 x 36 x 156 cells, 82,944 points), the box and the bar stretched along z
 #   strong2d  the 2D bar of inputs/bar_impact_2d.opts at 600 x 2600 cells: 960,000 points
+#   solo3d    weak3d's one-rank bar run as RANKS independent one-rank jobs at once (no communication): what sharing
+#             the machine (memory bandwidth, the all-core clock) costs, apart from the exchanges. One line per copy
+#             ("copy": i); scaling.py sums the copies' rates. Copy i is bound to core i where the machine binds
+#             (as rank i of the other cases is, --map-by core), so that a slow core shows in both.
 # each in linear MUSL ("lin", the scene's own method) and in the program's default method ("def",
 # inputs/methods/cpdi1.opts), on every rank count of RANKS, REPEAT times interleaved (repeat-major, so that a drift of
 # the machine's speed touches every rank count alike), after one -log_view run of each method on 1 rank and on the
@@ -15,7 +19,7 @@
 # Runs stop being started once BUDGET seconds have passed (what is done is kept).
 #
 # METHODS="def defw lin" adds the default method with -mpm_balance_weight work ("defw").
-# usage: [CASES="strong3d weak3d strong2d"] [METHODS="def lin"] [LOGVIEW=1] scripts/scaling_runs.sh RESULTS
+# usage: [CASES="strong3d weak3d strong2d solo3d"] [METHODS="def lin"] [LOGVIEW=1] scripts/scaling_runs.sh RESULTS
 #        ["RANKS" (default "1 2 4 8 16")] [REPEAT (3)] [STEPS (20)] [BUDGET seconds (480)]
 # (positional after RESULTS; LOGVIEW=0 or empty skips the -log_view runs)
 # On the lent machine (../shared/devkit/README.md): pack with this script as an extra file, bind $OUT into the root
@@ -42,7 +46,8 @@ one() { # one CASE METHOD RANKS REP [LOGVIEW]: run and append {"case", "method",
     weak3d) args=(-options_file inputs/bar_impact_3d.opts -mpm_cells 36,36,$((156 * r)) -mpm_hi 0.6,0.6,$((26 * r / 10)).$((26 * r % 10))
       -region_bar_hi 0.4,0.4,$((24 * r / 10)).$((24 * r % 10))) ;;
     strong2d) args=(-options_file inputs/bar_impact_2d.opts -mpm_cells 600,2600) ;;
-    *) echo "scaling_runs.sh: unknown case $c (strong3d, weak3d, strong2d)" >&2; return 1 ;;
+    solo3d) solo "$@"; return ;;
+    *) echo "scaling_runs.sh: unknown case $c (strong3d, weak3d, strong2d, solo3d)" >&2; return 1 ;;
   esac
   [[ $m == def* ]] && args+=(-options_file inputs/methods/cpdi1.opts)
   [[ $m == defw ]] && args+=(-mpm_balance_weight work)
@@ -61,6 +66,28 @@ one() { # one CASE METHOD RANKS REP [LOGVIEW]: run and append {"case", "method",
   fi
   [[ -n $lv ]] && { echo "== log_view $c $m $r"; sed -n '/Summary of Stages/,$p' "$tmp/log"; } >> "$res.log_view"
   echo "$c $m $r rep $k: $(( $(date +%s) - t0 )) s"
+}
+
+solo() { # solo CASE METHOD COPIES REP: COPIES one-rank runs of weak3d's bar at once, one line each
+  local c=$1 m=$2 n=$3 k=$4 i args=(-options_file inputs/bar_impact_3d.opts -mpm_cells 36,36,156) b=(--bind-to none)
+  [[ $m == def* ]] && args+=(-options_file inputs/methods/cpdi1.opts)
+  for ((i = 0; i < n; i++)); do
+    rm -rf "$tmp/o$i" "$tmp/r$i.json"
+    [[ $bind == *core* ]] && b=(--cpu-set "$i" --bind-to core)
+    mpiexec -n 1 "${b[@]}" $exe "${args[@]}" -ts_max_steps "$steps" -mpm_progress 0 -mpm_output "$tmp/o$i" \
+      -mpm_report "$tmp/r$i.json" > "$tmp/log$i" 2>&1 &
+  done
+  wait
+  for ((i = 0; i < n; i++)); do
+    if [[ -s $tmp/r$i.json ]]; then
+      printf '{"case": "%s", "method": "%s", "ranks": %s, "rep": %s, "copy": %s, "report": %s}\n' "$c" "$m" "$n" "$k" "$i" \
+        "$(tr -d '\n' < "$tmp/r$i.json")" >> "$res"
+    else
+      printf '{"case": "%s", "method": "%s", "ranks": %s, "rep": %s, "copy": %s, "failed": true}\n' "$c" "$m" "$n" "$k" "$i" >> "$res"
+      tail -5 "$tmp/log$i"
+    fi
+  done
+  echo "$c $m $n copies rep $k: $(( $(date +%s) - t0 )) s"
 }
 
 late() { (( $(date +%s) - t0 > budget )); }
