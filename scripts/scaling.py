@@ -102,7 +102,7 @@ def tabulate(path, say, largest=False):
     say("|---|---|---|---|---|---|---|---|")
     for (key, rep) in sorted(work, key=lambda k: (k[0][0], list(NAMES).index(k[0][1]) if k[0][1] in NAMES else 9, k[0][2], k[1])):
         lone = [w[0] for (k, _), w in work.items() if k == (key[0], key[1], 1)]
-        if key[2] == 1 or not lone:
+        if key[2] == 1 or not lone or (largest and key[2] != max(k[2] for (k, _) in work if k[:2] == key[:2])):
             continue
         w = work[(key, rep)]
         ideal = statistics.median(lone) * (pts[key][0] / key[2]) / pts[(key[0], key[1], 1)][0]
