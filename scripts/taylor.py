@@ -5,7 +5,8 @@ axisymmetric (inputs/taylor_anvil_rz.opts) at R0/6, R0/9 and R0/12 cells, every 
 ../shared/reference/taylor_ofhc_copper.csv on the rz rod at R0/12, and the rz rod at R0/9 with each shape family at
 1, 2 and 3 points per cell per direction, and the anvil's friction (-mpm_wall_friction_lo: mu 0 to 0.1 at the three
 resolutions, and every shot with mu = 0.05), and the shots of two other materials (4340 steel and 6061-T6
-aluminium, ../shared/reference/taylor_other_materials.csv) at R0/6 and R0/12. Writes a markdown file (default
+aluminium, ../shared/reference/taylor_other_materials.csv) at R0/6 and R0/12, the steel's also with anvil friction mu = 0
+to 0.3. Writes a markdown file (default
 docs/validation-taylor-runs.md) and the final-profile plot of the three 3D runs (docs/taylor_profile.png, scripts/taylor_profile.py).
 
 usage: scripts/taylor.py [--exe build/petmpm] [--out docs/validation-taylor-runs.md] [--quick]
@@ -23,6 +24,7 @@ SHOTS = [("Johnson & Cook 1983", 1.3e4, 2.54, 1.956, 0.991), ("Johnson & Cook 19
          ("Johnson & Cook 1983", 1.9e4, 2.54, 1.621, 1.356), ("Wilkins & Guinan 1973", 2.1e4, 2.347, 1.509, 1.658)]
 RES = {6: ("16,16,42", "16,42"), 9: ("24,24,63", "24,63"), 12: ("32,32,84", "32,84")}
 FRICTION = (0.0, 0.02, 0.05, 0.1)  # the anvil's Coulomb friction coefficients tried (3D: 0 and 0.05)
+STEEL_FRICTION = (0.0, 0.02, 0.05, 0.1, 0.2, 0.3)  # the same for the 4340 steel's three shots
 # Other materials (../shared/reference/taylor_other_materials.csv), each scene with its own published constants: (scene,
 # shot, V [cm/s], L0, Lf, Dmax, width at 0.2 L0 [cm] (0: not measured), box height [cm] and cells along the rod at R0/6)
 MATERIALS = [("taylor_steel_rz", "4340 steel, Johnson & Cook 1983", 2.08e4, 2.54, 2.248, 1.110, 0.832, 2.667, 42),
@@ -117,6 +119,20 @@ def main():
                     return f"{10 * ref:.2f} / {10 * val:.2f} | {100 * (val / ref - 1):+.1f}%" if ref > 0 else f"- / {10 * val:.2f} | not measured"
 
                 md.append(f"| {src} | {v / 100:.0f} | {10 * L0:.1f} | {n} | {cell('final_length', lf)} | {cell('footprint', dm)} | {cell('width_0.2L0', w)} |")
+        md += ["", "## 4340 steel with anvil friction (-mpm_wall_friction_lo 0,mu), rz rod: Lf / Dmax errors against the shots", "",
+               "| shot | V [m/s] | L0 | cells a radius | " + " | ".join(f"mu = {mu}" for mu in STEEL_FRICTION) + " |", "|---|---|---|---|" + "---|" * len(STEEL_FRICTION)]
+        for scene, src, v, L0, lf, dm, w, zhi, nz in MATERIALS:
+            if not scene.startswith("taylor_steel"):
+                continue
+            for n in (6, 12):
+                row = []
+                for mu in STEEL_FRICTION:
+                    rep, err = run(a.exe, scene, ["-mpm_hi", f"1.016,{zhi}", "-mpm_cells", f"{16 * n // 6},{nz * n // 6}", "-region_rod_hi", f"0.381,{L0}", "-region_rod_velocity", f"0,-{v}",
+                                                  "-mpm_exact_anvil_speed", str(v), "-mpm_exact_anvil_length", str(lf), "-mpm_exact_anvil_diameter", str(dm), "-mpm_exact_anvil_width", str(w),
+                                                  "-mpm_wall_friction_lo", f"0,{mu}"], os.path.join(tmp, "steelmu"))
+                    row.append(f"{100 * (check(rep, 'final_length') / lf - 1):+.1f}% / {100 * (check(rep, 'footprint') / dm - 1):+.1f}% ({10 * check(rep, 'footprint'):.2f})" if rep else err[0][:40])
+                md.append(f"| {src} | {v / 100:.0f} | {10 * L0:.1f} | {n} | " + " | ".join(row) + " |")
+        md += ["", "(in brackets: the computed footprint [mm]; measured 11.10, 10.40 and 12.00 at 208, 282 and 343 m/s)"]
         md += ["", "## Shape families and points per cell, axisymmetric rod at R0/9", "", "| shape | ppc | Lf | Dmax | wall |", "|---|---|---|---|---|"]
         for shape in ("cpdi", "bspline2", "gimp", "linear"):
             for ppc in (1, 2, 3):
