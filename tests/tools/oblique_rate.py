@@ -6,9 +6,10 @@ fast as along it.
 usage: oblique_rate.py BUILD_DIR SOURCE_DIR
 
 The density L1 error of inputs/sod_oblique_2d.opts at 0 and 30 degrees, 80^2 and 160^2 cells: along the grid it
-falls at order 0.88 (4.78% to 2.60%), at 30 degrees at 0.63 (4.77% to 3.07%); at 100^2 / 200^2 / 400^2 the orders
-are 0.84 and 0.92 against 0.59 and 0.43, and at 400^2 the 30-degree error is 1.77 times the aligned one (1.96% and
-1.11%). Measured where it comes from (400^2): the star state left of the contact and the contact itself hold 1.06% of
+falls at order 0.88 (4.77% to 2.58%), at 30 degrees at 0.71 (4.75% to 2.90%; 0.63 before the volume consistency
+module became the default, 2026-11-29). At 100^2 / 200^2 / 400^2 the orders are 0.86 and 0.91
+against 0.71 and 0.70, and at 400^2 the 30-degree error is 1.34 times the aligned one (1.47% and 1.10%). Before the
+module: orders 0.59 and 0.43 at 30 degrees, 1.77 times the aligned error at 400^2 (1.96% and 1.11%). Measured where it comes from (400^2): the star state left of the contact and the contact itself hold 1.06% of
 the 1.96% against 0.24% of 1.11% aligned. Not the interface's cut sites, the conduction or the relaxation; without
 splitting it is worse, with quadratic B-splines instead of CPDI it no longer depends on the angle: CPDI's domains
 stretched off the grid's axes (docs/verification_2d.md). The assertion: order >= 0.75 at 30 degrees.
