@@ -10,8 +10,8 @@
 #   strong2d  the 2D bar of inputs/bar_impact_2d.opts at 600 x 2600 cells: 960,000 points
 #   solo3d    weak3d's one-rank bar run as RANKS independent one-rank jobs at once (no communication): what sharing
 #             the machine (memory bandwidth, the all-core clock) costs, apart from the exchanges. One line per copy
-#             ("copy": i); scaling.py sums the copies' rates. Copy i is bound to core i where the machine binds
-#             (as rank i of the other cases is, --map-by core), so that a slow core shows in both.
+#             ("copy": i); scaling.py sums the copies' rates. Copy i asks for core i (--cpu-set i --bind-to core) where
+#             the machine binds; inside ../shared/devkit's root Open MPI reported no binding for it.
 # each in linear MUSL ("lin", the scene's own method) and in the program's default method ("def",
 # inputs/methods/cpdi1.opts), on every rank count of RANKS, REPEAT times interleaved (repeat-major, so that a drift of
 # the machine's speed touches every rank count alike), after one -log_view run of each method on 1 rank and on the
