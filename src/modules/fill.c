@@ -105,10 +105,9 @@ static PetscErrorCode MPMFillDestroy(MPMModule mod)
 /* int_{-inf}^{t} max(0, 1 - |s|) ds: the integral of the tent [cells]. */
 static inline PetscReal MPMTentIntegral(PetscReal t)
 {
-  if (t <= -1.0) return 0.0;
-  if (t <= 0.0) return 0.5 * (1.0 + t) * (1.0 + t);
-  if (t <= 1.0) return 1.0 - 0.5 * (1.0 - t) * (1.0 - t);
-  return 1.0;
+  const PetscReal a = 0.5 * (1.0 + t) * (1.0 + t), b = 1.0 - 0.5 * (1.0 - t) * (1.0 - t); /* both formed, one selected: no branch */
+
+  return t <= -1.0 ? 0.0 : t <= 0.0 ? a : t <= 1.0 ? b : 1.0;
 }
 
 /* The nodes and weights of the box x +- e (half-widths e_k [cm]; r-z: per radian, the box of area V / r) per direction:
@@ -168,14 +167,14 @@ static inline PetscInt MPMFillNodes(const MPMGrid *g, const MPMFillAxes *ax, Pet
   return n;
 }
 
-/* The box of a point at x of volume V with the domain F diag(l0) [-1, 1]^d (F NULL: the lattice's box): the domain's
-   half-extents along the axes, e_k = sum_j |F_kj| l0_j, scaled so that the box holds V (r-z: V / r). */
-static void MPMFillBox(MPM mpm, const PetscReal x[], const PetscReal *F, PetscReal V, PetscReal e[])
+/* The box of a point at x of volume V with the domain F diag(l0) [-1, 1]^d (F NULL: the lattice's box), l0 the lattice
+   half-widths (MPMFillHalfWidths): the domain's half-extents along the axes, e_k = sum_j |F_kj| l0_j, scaled so that the
+   box holds V (r-z: V / r). */
+static inline void MPMFillBox(MPM mpm, const PetscReal l0[], const PetscReal x[], const PetscReal *F, PetscReal V, PetscReal e[])
 {
   const PetscInt d  = mpm->grid.dim;
-  PetscReal      vb = 1.0, s, l0[MPM_MAX_DIM];
+  PetscReal      vb = 1.0, s;
 
-  for (PetscInt j = 0; j < d; j++) l0[j] = MPMLatticeHalfWidth(mpm, j);
   for (PetscInt k = 0; k < d; k++) {
     e[k] = 0.0;
     for (PetscInt j = 0; j < d; j++) e[k] += PetscAbsReal(F ? F[k * d + j] : (PetscReal)(j == k)) * l0[j];
@@ -186,6 +185,12 @@ static void MPMFillBox(MPM mpm, const PetscReal x[], const PetscReal *F, PetscRe
   for (PetscInt k = 0; k < d; k++) e[k] *= s;
 }
 
+/* l0_k, the lattice half-widths MPMFillBox takes [cm]. */
+static inline void MPMFillHalfWidths(MPM mpm, PetscReal l0[])
+{
+  for (PetscInt j = 0; j < mpm->grid.dim; j++) l0[j] = MPMLatticeHalfWidth(mpm, j);
+}
+
 /* The reference nodal volumes V_I^0 (ghosted local nodes): every owned cell's ppc^d lattice sites with their
    undeformed domains, summed over the ranks. */
 static PetscErrorCode MPMFillReference(MPM mpm, MPMFill *fl)
@@ -193,12 +198,13 @@ static PetscErrorCode MPMFillReference(MPM mpm, MPMFill *fl)
   const MPMGrid *g = &mpm->grid;
   const PetscInt d = g->dim, nloc = g->gm[0] * g->gm[1] * g->gm[2];
   PetscInt       npd = 1;
-  PetscReal     *W, w[MPM_MAX_STENCIL];
+  PetscReal     *W, w[MPM_MAX_STENCIL], l0[MPM_MAX_DIM];
   PetscInt       node[MPM_MAX_STENCIL];
   MPMFillAxes    ax;
 
   PetscFunctionBegin;
   for (PetscInt k = 0; k < d; k++) npd *= mpm->ppc;
+  MPMFillHalfWidths(mpm, l0);
   PetscCall(PetscFree(fl->ref));
   PetscCall(PetscMalloc1(nloc, &fl->ref));
   fl->grid_id = g->id;
@@ -208,7 +214,7 @@ static PetscErrorCode MPMFillReference(MPM mpm, MPMFill *fl)
     PetscReal x[MPM_MAX_DIM], e[MPM_MAX_DIM], id, V = g->vcell / npd;
     MPMSiteAt(g, mpm->ppc, s, x, &id);
     if (g->axisym) V *= x[0]; /* per radian */
-    MPMFillBox(mpm, x, NULL, V, e);
+    MPMFillBox(mpm, l0, x, NULL, V, e);
     MPMFillAxesOf(g, x, e, &ax);
     for (PetscInt a = 0, n = MPMFillNodes(g, &ax, node, w); a < n; a++) W[2 * node[a]] += w[a] * V;
   }
@@ -231,25 +237,43 @@ static PetscErrorCode MPMFillExcess(MPM mpm, const MPMFill *fl, PetscReal **W)
   const PetscInt d = g->dim, nloc = g->gm[0] * g->gm[1] * g->gm[2];
   PetscReal     *E = fl->E;
 
+  const PetscInt nb = d == 1 ? 3 : d == 2 ? 9 : 27;
+  PetscInt       off[27];
+  PetscReal      wo[27];
+
   PetscFunctionBegin;
+  for (PetscInt o = 0; o < nb; o++) { /* block entry o's offset and weight, for the nodes whose block is all on the grid */
+    const PetscInt b[3] = {o % 3 - 1, d > 1 ? (o / 3) % 3 - 1 : 0, d > 2 ? o / 9 - 1 : 0};
+    wo[o]               = 1.0;
+    for (PetscInt k = 0; k < d; k++) wo[o] *= b[k] == 0 ? 2.0 : 1.0;
+    off[o] = (b[2] * g->gm[1] + b[1]) * g->gm[0] + b[0];
+  }
   PetscCall(PetscArrayzero(E, nloc));
   for (PetscInt k2 = g->xs[2]; k2 < g->xs[2] + g->xm[2]; k2++)
     for (PetscInt k1 = g->xs[1]; k1 < g->xs[1] + g->xm[1]; k1++)
       for (PetscInt k0 = g->xs[0]; k0 < g->xs[0] + g->xm[0]; k0++) {
         const PetscInt ijk[3] = {k0 - g->gs[0], k1 - g->gs[1], k2 - g->gs[2]}, nI = (ijk[2] * g->gm[1] + ijk[1]) * g->gm[0] + ijk[0];
         PetscReal      S = 0.0, S0 = 0.0;
-        for (PetscInt o = 0; o < (d == 1 ? 3 : d == 2 ? 9 : 27); o++) {
-          const PetscInt a[3] = {ijk[0] + o % 3 - 1, ijk[1] + (d > 1 ? (o / 3) % 3 - 1 : 0), ijk[2] + (d > 2 ? o / 9 - 1 : 0)};
-          PetscBool      in   = PETSC_TRUE;
-          PetscReal      w    = 1.0;
-          PetscInt       nJ;
-          for (PetscInt k = 0; k < 3; k++) in = (PetscBool)(in && a[k] >= 0 && a[k] < g->gm[k]);
-          if (!in) continue;
-          for (PetscInt k = 0; k < d; k++) w *= a[k] == ijk[k] ? 2.0 : 1.0; /* the weights (1, 2, 1) per direction */
-          nJ = (a[2] * g->gm[1] + a[1]) * g->gm[0] + a[0];
-          S += w * (*W)[2 * nJ];
-          S0 += w * fl->ref[nJ];
-        }
+        PetscBool      inner = PETSC_TRUE;
+        for (PetscInt k = 0; k < d; k++) inner = (PetscBool)(inner && ijk[k] >= 1 && ijk[k] <= g->gm[k] - 2);
+        if (inner) { /* the same terms in the same order as the loop below */
+          for (PetscInt o = 0; o < nb; o++) {
+            S += wo[o] * (*W)[2 * (nI + off[o])];
+            S0 += wo[o] * fl->ref[nI + off[o]];
+          }
+        } else
+          for (PetscInt o = 0; o < nb; o++) {
+            const PetscInt a[3] = {ijk[0] + o % 3 - 1, ijk[1] + (d > 1 ? (o / 3) % 3 - 1 : 0), ijk[2] + (d > 2 ? o / 9 - 1 : 0)};
+            PetscBool      in   = PETSC_TRUE;
+            PetscReal      w    = 1.0;
+            PetscInt       nJ;
+            for (PetscInt k = 0; k < 3; k++) in = (PetscBool)(in && a[k] >= 0 && a[k] < g->gm[k]);
+            if (!in) continue;
+            for (PetscInt k = 0; k < d; k++) w *= a[k] == ijk[k] ? 2.0 : 1.0; /* the weights (1, 2, 1) per direction */
+            nJ = (a[2] * g->gm[1] + a[1]) * g->gm[0] + a[0];
+            S += w * (*W)[2 * nJ];
+            S0 += w * fl->ref[nJ];
+          }
         if (S0 > 0.0 && (*W)[2 * nI] > 0.0) E[nI] = PetscMax(0.0, S / S0 - (1.0 + fl->tol)) * fl->ref[nI];
       }
   for (PetscInt i = 0; i < nloc; i++) (*W)[2 * i] = E[i];
@@ -262,7 +286,7 @@ static PetscErrorCode MPMFillApply(MPMModule mod, MPM mpm, const MPMStepContext 
   MPMFill       *fl = (MPMFill *)mod->data;
   const MPMGrid *g  = &mpm->grid;
   const PetscInt d = g->dim, nloc = g->gm[0] * g->gm[1] * g->gm[2];
-  PetscReal     *W, *c, *e, over = 0.0, w[MPM_MAX_STENCIL];
+  PetscReal     *W, *c, *e, over = 0.0, w[MPM_MAX_STENCIL], l0[MPM_MAX_DIM];
   PetscInt       nact   = 0, node[MPM_MAX_STENCIL];
   PetscBool      excess = PETSC_FALSE;
   char          *near, *tmp;
@@ -284,6 +308,7 @@ static PetscErrorCode MPMFillApply(MPMModule mod, MPM mpm, const MPMStepContext 
     PetscCall(PetscMalloc3(nloc, &fl->E, nloc, &fl->near, nloc, &fl->tmp));
   }
   c = fl->c, e = fl->e, near = fl->near, tmp = fl->tmp;
+  MPMFillHalfWidths(mpm, l0);
   PetscCall(PetscArrayzero(c, pts.n));
   PetscCall(VecZeroEntries(mpm->mean_l));
   PetscCall(VecGetArray(mpm->mean_l, &W));
@@ -296,7 +321,7 @@ static PetscErrorCode MPMFillApply(MPMModule mod, MPM mpm, const MPMStepContext 
       c[p] = V / (pts.f[MPM_FIELD_DENSITY][p] * c2);
       if (MPMPointInShock(mpm, &pts, p, c2, fl->mach)) c[p] = -c[p]; /* counted in C_I, gives nothing */
     }
-    MPMFillBox(mpm, &pts.f[MPM_FIELD_POSITION][p * d], MPMPointDomain(d, pts.f[MPM_FIELD_DEFGRAD], pts.f[MPM_FIELD_DOMAINSCALE], p, Fs), V, &e[p * d]);
+    MPMFillBox(mpm, l0, &pts.f[MPM_FIELD_POSITION][p * d], MPMPointDomain(d, pts.f[MPM_FIELD_DEFGRAD], pts.f[MPM_FIELD_DOMAINSCALE], p, Fs), V, &e[p * d]);
     MPMFillAxesOf(g, &pts.f[MPM_FIELD_POSITION][p * d], &e[p * d], &ax);
     for (PetscInt a = 0, n = MPMFillNodes(g, &ax, node, w); a < n; a++) {
       W[2 * node[a]] += w[a] * V;
@@ -308,12 +333,17 @@ static PetscErrorCode MPMFillApply(MPMModule mod, MPM mpm, const MPMStepContext 
   for (PetscInt i = 0; i < nloc && !excess; i++) excess = (PetscBool)(W[2 * i] > 0.0);
   if (excess) { /* near[I]: a node with an excess lies within 3 nodes of I along every axis (a box reaches 2 cells beyond its point's cell) */
     for (PetscInt i = 0; i < nloc; i++) near[i] = (char)(W[2 * i] > 0.0);
-    for (PetscInt k = 0, stride = 1; k < d; stride *= g->gm[k], k++) {
-      for (PetscInt i = 0; i < nloc; i++) {
-        const PetscInt ik = (i / stride) % g->gm[k];
-        char           v  = 0;
-        for (PetscInt o = PetscMax(-3, -ik); o <= PetscMin(3, g->gm[k] - 1 - ik); o++) v |= near[i + o * stride];
-        tmp[i] = v;
+    for (PetscInt k = 0, stride = 1; k < d; stride *= g->gm[k], k++) { /* along each line of axis k, any excess within 3 nodes: a window sum */
+      const PetscInt n = g->gm[k];
+      for (PetscInt l = 0; l < nloc / n; l++) {
+        const PetscInt i0  = (l / stride) * stride * n + l % stride; /* the first node of line l along k */
+        PetscInt       cnt = 0;
+        for (PetscInt j = 0; j < PetscMin(3, n); j++) cnt += near[i0 + j * stride];
+        for (PetscInt j = 0; j < n; j++) { /* cnt: the excess nodes of the line within [j - 3, j + 3] */
+          if (j + 3 < n) cnt += near[i0 + (j + 3) * stride];
+          tmp[i0 + j * stride] = (char)(cnt > 0);
+          if (j - 3 >= 0) cnt -= near[i0 + (j - 3) * stride];
+        }
       }
       PetscCall(PetscArraycpy(near, tmp, nloc));
     }
