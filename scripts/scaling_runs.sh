@@ -39,6 +39,15 @@ mpiexec -n 2 $bind $exe -help > /dev/null 2>&1 || bind="--bind-to none --oversub
 } >> "$res"
 tmp=$(mktemp -d)
 
+record() { # record REPORT LOG KEYS EXTRA: append {KEYS, EXTRA"report": REPORT} to RESULTS, or {KEYS, "failed": true} and LOG's tail
+  if [[ -s $1 ]]; then
+    printf '{%s, %s"report": %s}\n' "$3" "$4" "$(tr -d '\n' < "$1")" >> "$res"
+  else
+    printf '{%s, "failed": true}\n' "$3" >> "$res"
+    tail -5 "$2"
+  fi
+}
+
 one() { # one CASE METHOD RANKS REP [LOGVIEW]: run and append {"case", "method", "ranks", "rep", "seconds", "report"}
   local c=$1 m=$2 r=$3 k=$4 lv=${5:-} args=() s e
   case $c in
@@ -57,13 +66,8 @@ one() { # one CASE METHOD RANKS REP [LOGVIEW]: run and append {"case", "method",
   mpiexec -n "$r" $bind $exe "${args[@]}" -ts_max_steps "$steps" -mpm_progress 0 -mpm_output "$tmp/o" \
     -mpm_report "$tmp/r.json" > "$tmp/log" 2>&1
   e=$(date +%s%N)
-  if [[ -s $tmp/r.json ]]; then
-    printf '{"case": "%s", "method": "%s", "ranks": %s, "rep": %s, "log_view": %s, "seconds": %s, "report": %s}\n' "$c" "$m" "$r" "$k" \
-      "$([[ -n $lv ]] && echo true || echo false)" "$(( (e - s) / 1000000000 )).$(printf %03d $(( (e - s) / 1000000 % 1000 )))" "$(tr -d '\n' < "$tmp/r.json")" >> "$res"
-  else
-    printf '{"case": "%s", "method": "%s", "ranks": %s, "rep": %s, "failed": true}\n' "$c" "$m" "$r" "$k" >> "$res"
-    tail -5 "$tmp/log"
-  fi
+  record "$tmp/r.json" "$tmp/log" "$(printf '"case": "%s", "method": "%s", "ranks": %s, "rep": %s' "$c" "$m" "$r" "$k")" \
+    "$(printf '"log_view": %s, "seconds": %s, ' "$([[ -n $lv ]] && echo true || echo false)" "$(( (e - s) / 1000000000 )).$(printf %03d $(( (e - s) / 1000000 % 1000 )))")"
   [[ -n $lv ]] && { echo "== log_view $c $m $r"; sed -n '/Summary of Stages/,$p' "$tmp/log"; } >> "$res.log_view"
   echo "$c $m $r rep $k: $(( $(date +%s) - t0 )) s"
 }
@@ -79,13 +83,7 @@ solo() { # solo CASE METHOD COPIES REP: COPIES one-rank runs of weak3d's bar at 
   done
   wait
   for ((i = 0; i < n; i++)); do
-    if [[ -s $tmp/r$i.json ]]; then
-      printf '{"case": "%s", "method": "%s", "ranks": %s, "rep": %s, "copy": %s, "report": %s}\n' "$c" "$m" "$n" "$k" "$i" \
-        "$(tr -d '\n' < "$tmp/r$i.json")" >> "$res"
-    else
-      printf '{"case": "%s", "method": "%s", "ranks": %s, "rep": %s, "copy": %s, "failed": true}\n' "$c" "$m" "$n" "$k" "$i" >> "$res"
-      tail -5 "$tmp/log$i"
-    fi
+    record "$tmp/r$i.json" "$tmp/log$i" "$(printf '"case": "%s", "method": "%s", "ranks": %s, "rep": %s, "copy": %s' "$c" "$m" "$n" "$k" "$i")" ""
   done
   echo "$c $m $n copies rep $k: $(( $(date +%s) - t0 )) s"
 }

@@ -43,6 +43,12 @@ def run(exe, scene, args, out):
     return rep, None
 
 
+def shot_args(v, L0, lf, dm, w, zhi, nz, n):
+    """The options of one MATERIALS shot on the rz rod at R0/n: the box and rod, the speed and the shot's measures."""
+    return ["-mpm_hi", f"1.016,{zhi}", "-mpm_cells", f"{16 * n // 6},{nz * n // 6}", "-region_rod_hi", f"0.381,{L0}", "-region_rod_velocity", f"0,-{v}",
+            "-mpm_exact_anvil_speed", str(v), "-mpm_exact_anvil_length", str(lf), "-mpm_exact_anvil_diameter", str(dm), "-mpm_exact_anvil_width", str(w)]
+
+
 def check(rep, name, what="value"):
     return next(c[what] for c in rep["checks"] if c["name"] == name)
 
@@ -107,9 +113,7 @@ def main():
                "|---|---|---|---|---|---|---|---|---|---|"]
         for scene, src, v, L0, lf, dm, w, zhi, nz in MATERIALS:
             for n in (6, 12):
-                rep, err = run(a.exe, scene, ["-mpm_hi", f"1.016,{zhi}", "-mpm_cells", f"{16 * n // 6},{nz * n // 6}", "-region_rod_hi", f"0.381,{L0}", "-region_rod_velocity", f"0,-{v}",
-                                              "-mpm_exact_anvil_speed", str(v), "-mpm_exact_anvil_length", str(lf), "-mpm_exact_anvil_diameter", str(dm), "-mpm_exact_anvil_width", str(w)],
-                               os.path.join(tmp, "material"))
+                rep, err = run(a.exe, scene, shot_args(v, L0, lf, dm, w, zhi, nz, n), os.path.join(tmp, "material"))
                 if rep is None:
                     md.append(f"| {src} | {v / 100:.0f} | {10 * L0:.1f} | {n} | failed: {err} |")
                     continue
@@ -127,9 +131,7 @@ def main():
             for n in (6, 12):
                 row = []
                 for mu in STEEL_FRICTION:
-                    rep, err = run(a.exe, scene, ["-mpm_hi", f"1.016,{zhi}", "-mpm_cells", f"{16 * n // 6},{nz * n // 6}", "-region_rod_hi", f"0.381,{L0}", "-region_rod_velocity", f"0,-{v}",
-                                                  "-mpm_exact_anvil_speed", str(v), "-mpm_exact_anvil_length", str(lf), "-mpm_exact_anvil_diameter", str(dm), "-mpm_exact_anvil_width", str(w),
-                                                  "-mpm_wall_friction_lo", f"0,{mu}"], os.path.join(tmp, "steelmu"))
+                    rep, err = run(a.exe, scene, shot_args(v, L0, lf, dm, w, zhi, nz, n) + ["-mpm_wall_friction_lo", f"0,{mu}"], os.path.join(tmp, "steelmu"))
                     row.append(f"{100 * (check(rep, 'final_length') / lf - 1):+.1f}% / {100 * (check(rep, 'footprint') / dm - 1):+.1f}% ({10 * check(rep, 'footprint'):.2f})" if rep else err[0][:40])
                 md.append(f"| {src} | {v / 100:.0f} | {10 * L0:.1f} | {n} | " + " | ".join(row) + " |")
         md += ["", "(in brackets: the computed footprint [mm]; measured 11.10, 10.40 and 12.00 at 208, 282 and 343 m/s)"]
