@@ -36,6 +36,7 @@ static PetscErrorCode MPMShapeReset(void *obj)
   shape->edge_gradient = PETSC_FALSE;
   shape->tent_mass     = PETSC_FALSE;
   shape->kernels       = NULL;
+  shape->keeps         = PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -67,6 +68,16 @@ PetscErrorCode MPMShapeSetUp(MPMShape shape, const MPMGrid *g, PetscInt ppc)
 {
   PetscFunctionBegin;
   if (shape->ops.setup) PetscCall(shape->ops.setup(shape, g, ppc));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Before the step's points to grid of the n points from local point p0 on (of nlocal), where the type keeps stencils
+   (shape->keeps): room for nlocal points' stencils; with fresh, the specialised kernel stores them (MPM_KEEP_STORE), else
+   (the generic scatter) their kept stencils are dropped, so that grid to points evaluates them again. */
+PetscErrorCode MPMShapeKeep(MPMShape shape, PetscInt nlocal, PetscInt p0, PetscInt n, PetscBool fresh)
+{
+  PetscFunctionBegin;
+  if (shape->keeps) PetscCall(shape->ops.keep(shape, nlocal, p0, n, fresh));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

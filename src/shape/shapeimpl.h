@@ -13,6 +13,7 @@ typedef struct {
   void (*weights)(void *, const MPMGrid *, const PetscReal[], const PetscReal[], MPMStencil *);  /* (x, F) -> the stencil's nodes and weights alone (MPMShapeWeights), NULL: evaluate */
   PetscBool (*admissible)(void *, const MPMGrid *, const PetscReal[]);                           /* can the type evaluate a point with deformation gradient F? */
   PetscErrorCode (*setup)(MPMShape, const MPMGrid *, PetscInt);                                  /* grid and points per cell per direction */
+  PetscErrorCode (*keep)(MPMShape, PetscInt, PetscInt, PetscInt, PetscBool);                     /* MPMShapeKeep, where the type keeps stencils */
 } MPMShapeOps;
 struct _p_MPMShape {
   MPM_CLASS_HEADER(MPMShapeOps);
@@ -24,6 +25,8 @@ struct _p_MPMShape {
                                         the tent N over it (linear, GIMP, CPDI): the contact module's position gap test
                                         reads a body's extent from two nodal masses */
   const MPMTransferKernels *kernels; /* specialised transfer kernels for d = 1, 2, 3 (kernels.h), NULL: generic only */
+  PetscBool                 keeps;   /* the specialised kernels keep each point's stencil from the step's points to grid
+                                        for its grid to points (set up for the grid's dimension; MPMShapeKeep) */
 };
 
 /* N_I(x_p) and grad N_I(x_p) at a point with deformation gradient F (read only by types that follow the
@@ -53,6 +56,7 @@ static inline void MPMShapeEvaluate(MPMShape shape, const MPMGrid *g, const Pets
 }
 
 PETSC_INTERN PetscErrorCode MPMShapeSetUp(MPMShape, const MPMGrid *, PetscInt);
+PETSC_INTERN PetscErrorCode MPMShapeKeep(MPMShape, PetscInt, PetscInt, PetscInt, PetscBool);
 
 /* The nodes and weights N_I(x_p) of MPMShapeEvaluate alone (st->n, node, w; the same bits), for the point-exchange
    modules' nodal means: a type with a cheaper way (CPDI, without its gradients) gives it, the others evaluate. */

@@ -188,8 +188,20 @@ MPM_KINLINE void MPM_KCAT(MPMKG2POne, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, co
 {
   PetscInt  node[MPM_KS], ns = MPM_KS;
   PetscReal W[MPM_KS], DW[MPM_KS][MPM_KD], SG[MPM_KS][MPM_KD];
-  const int mirror = MPM_KEVAL(g, ctx, A, p, node, W, DW, SG, ns);
+  int       mirror;
 
+#if defined(MPM_KKEPT)
+  if (A->keep == MPM_KEEP_LOAD) { /* the stencil points to grid kept, where it is valid (never one with a mirror sign) */
+    const PetscInt  *knode;
+    const PetscReal *kW, *kDW;
+    const PetscInt   kns = MPM_KKEPT(ctx, A, p, &knode, &kW, &kDW, MPM_KD);
+    if (kns) {
+      MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, kns, knode, kW, (const PetscReal(*)[MPM_KD])kDW, SG, mode, 0);
+      return;
+    }
+  }
+#endif
+  mirror = MPM_KEVAL(g, ctx, A, p, node, W, DW, SG, ns);
   if (mirror)
     MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 1);
   else

@@ -75,6 +75,9 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GOne, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, co
   PetscReal W[MPM_KS], DW[MPM_KS][MPM_KD], SG[MPM_KS][MPM_KD];
   const int mirror = MPM_KEVAL(g, ctx, A, p, node, W, DW, SG, ns);
 
+#if defined(MPM_KKEEP)
+  if (A->keep == MPM_KEEP_STORE) MPM_KKEEP(ctx, A, p, ns, node, W, &DW[0][0], mirror, MPM_KD);
+#endif
   if (mirror)
     MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 1, 1);
   else

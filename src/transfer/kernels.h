@@ -9,7 +9,12 @@
      MPM_KSIZE(d)       the most stencil entries a point has in dimension d (a constant)
      MPM_KSTENCIL(ctx, g, A, p, node, W, DW, SG, ns, d)
                         an always-inline function that fills point p's *ns entries (node[], W[], DW and SG flat, d
-                        per entry) and returns whether a mirror sign is -1 (then SG is filled, else left alone). */
+                        per entry) and returns whether a mirror sign is -1 (then SG is filled, else left alone)
+   and, to keep each point's stencil from the step's points to grid for its grid to points (MPMShapeKeep), both of
+     MPM_KKEEP(ctx, A, p, ns, node, W, DW, mirror, d)
+                        keeps point p's stencil (A->keep == MPM_KEEP_STORE)
+     MPM_KKEPT(ctx, A, p, &node, &W, &DW, d)
+                        its kept stencil, the number of entries, 0 where none is valid (A->keep == MPM_KEEP_LOAD). */
 #include "transfer.h"
 
 #if !defined(__GNUC__)

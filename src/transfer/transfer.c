@@ -379,8 +379,13 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
     const PetscReal *V = pts.f[MPM_FIELD_VOLUME], *pr = pts.f[MPM_FIELD_PRESSURE], *q = pts.f[MPM_FIELD_VISCOSITY];
     const PetscReal *S = pts.f[MPM_FIELD_STRESS];
 
-    if (mpm->kern && !body && !crack) { /* the specialised kernel, then the cell sums of the cell rule */
+    const PetscBool kernel = (PetscBool)(mpm->kern && !body && !crack);
+    const PetscInt  kp0    = mpm->win_n >= 0 ? mpm->win_p0 : 0;
+    if (force) PetscCall(MPMShapeKeep(mpm->shape, mpm->pts.n, kp0, pts.n, kernel)); /* the stencils kept for grid to points */
+    if (kernel) {                                                                   /* the specialised kernel, then the cell sums of the cell rule */
       const MPMTransferArgs A = {.n    = pts.n,
+                                 .kp0  = kp0,
+                                 .keep = force && mpm->shape->keeps ? MPM_KEEP_STORE : MPM_KEEP_NONE,
                                  .hw   = force && mpm->heat.live ? MPMHeatWeights(mpm) : NULL,
                                  .hT   = pts.f[MPM_FIELD_TEMPERATURE],
                                  .hW   = mpm->heat.W,
@@ -709,7 +714,9 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
                                 .crack     = crack ? &cs : NULL,
                                 .hw        = kinematics && mpm->heat.live ? MPMHeatWeights(mpm) : NULL,
                                 .hT        = pts.f[MPM_FIELD_TEMPERATURE],
-                                .hW        = mpm->heat.W};
+                                .hW        = mpm->heat.W,
+                                .kp0       = mpm->win_n >= 0 ? mpm->win_p0 : 0,
+                                .keep      = mpm->shape->keeps && !crack ? MPM_KEEP_LOAD : MPM_KEEP_NONE};
     if (remap) { /* f_I, zeroed by the kick (MPMGridAdvance, and the ghosts from their owners), takes the remap's momenta (MPMRemapApply) */
       mpm->kern->g2p_remap[work ? MPM_G2P_MODE_VELOCITY_WORK : MPM_G2P_MODE_VELOCITY](g, mpm->shape->data, &A, node);
     } else if (mpm->kern && !crack) {

@@ -46,6 +46,13 @@ typedef enum {
   MPM_G2P_MODE_VELOCITY_WORK_REMAP      = MPM_G2P_VELOCITY | MPM_G2P_WORK | MPM_G2P_REMAP
 } MPMG2PMode;
 
+/* What a kernel does with the kept stencils of a type that keeps them (MPMShapeKeep, MPMShape::keeps). */
+typedef enum {
+  MPM_KEEP_NONE,  /* evaluate each stencil                                                                 */
+  MPM_KEEP_STORE, /* the step's points to grid: evaluate each stencil and keep it                          */
+  MPM_KEEP_LOAD   /* the step's grid to points, before any point moves: the kept stencil where it is valid */
+} MPMKeep;
+
 /* The point arrays a kernel reads and writes; entries a mode does not use may be NULL. */
 typedef struct {
   PetscInt         n;                                                     /* number of points                                            */
@@ -66,6 +73,8 @@ typedef struct {
   const float         *hw;        /* the heat exchange (MPMHeatScatter): the points' weights w_p [erg/eV] (single precision), or NULL */
   const PetscReal     *hT;        /* their temperatures [eV]                                                                   */
   PetscReal           *hW;        /* its nodal sums, 2 per node of the ghosted local grid                                           */
+  PetscInt             kp0;       /* the first point's index among the rank's points (a window's offset), for the kept stencils       */
+  MPMKeep              keep;      /* the kept stencils (MPMShapeKeep): stored by the step's points to grid, read by its grid to points */
 } MPMTransferArgs;
 
 /* The heat exchange of artificial conduction (src/modules/conduction.c), fused into the step's transfers: a point with

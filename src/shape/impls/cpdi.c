@@ -10,9 +10,21 @@
 #include "../shapeimpl.h"
 #include "../../transfer/transfer.h"
 
+/* A point's stencil in 2D as the step's points to grid evaluated it, for its grid to points (CPDIKeep, CPDIKept): the
+   position it was evaluated at and its ns <= 9 entries (a domain within a cell of its point in each direction, the
+   3 x 3 merged box or less); ns = 0: none kept. 272 bytes with 4-byte indices. */
+#define CPDI_KEPT 9
 typedef struct {
-  PetscReal l0[MPM_MAX_DIM]; /* undeformed half-width of the domain [cm] */
-  PetscInt  reach;           /* how far the corners may reach beyond the point's cell [cells] */
+  PetscReal x[2], W[CPDI_KEPT], DW[CPDI_KEPT][2];
+  PetscInt  node[CPDI_KEPT], ns;
+} CPDIKept2;
+
+typedef struct {
+  PetscReal  l0[MPM_MAX_DIM]; /* undeformed half-width of the domain [cm] */
+  PetscInt   reach;           /* how far the corners may reach beyond the point's cell [cells] */
+  PetscBool  keep;            /* -mpm_shape_cpdi_keep: keep the stencils in 2D */
+  CPDIKept2 *kept;            /* the rank's points' stencils, kn of them valid to index, kinit set, room for kcap */
+  PetscInt   kn, kinit, kcap;
 } Shape_CPDI;
 
 static PetscInt MPMShapeSupport_CPDI(void *ctx)
@@ -235,9 +247,51 @@ MPM_CPDI_INLINE PetscBool CPDIKernelStencil(const void *ctx, const MPMGrid *g, c
   return mirror;
 }
 
+/* The step's points to grid keeps point p's stencil in 2D (MPMShapeKeep), unless it has a mirror sign or more than
+   CPDI_KEPT entries; grid to points evaluates those again. */
+MPM_CPDI_INLINE void CPDIKeep(const void *ctx, const MPMTransferArgs *A, PetscInt p, PetscInt ns, const PetscInt node[], const PetscReal W[], const PetscReal DW[], PetscBool mirror, const PetscInt d)
+{
+  CPDIKept2 *r;
+
+  if (d != 2) return;
+  r = &((const Shape_CPDI *)ctx)->kept[A->kp0 + p];
+  if (mirror || ns > CPDI_KEPT) {
+    r->ns = 0;
+    return;
+  }
+  r->x[0] = A->x[2 * p];
+  r->x[1] = A->x[2 * p + 1];
+  for (PetscInt e = 0; e < ns; e++) {
+    r->W[e]     = W[e];
+    r->DW[e][0] = DW[2 * e];
+    r->DW[e][1] = DW[2 * e + 1];
+    r->node[e]  = node[e];
+  }
+  r->ns = ns;
+}
+
+/* The step's grid to points: point p's kept stencil (its entries' count; the nodes, weights and gradients in *node, *W,
+   *DW), or 0 where none is kept for it at its present position. Nothing changes x_p, F_p or the domain's scale between
+   the step's points to grid and its grid to points (MPMStep), and the position is checked. */
+MPM_CPDI_INLINE PetscInt CPDIKept(const void *ctx, const MPMTransferArgs *A, PetscInt p, const PetscInt **node, const PetscReal **W, const PetscReal **DW, const PetscInt d)
+{
+  const Shape_CPDI *cp = (const Shape_CPDI *)ctx;
+  const CPDIKept2  *r;
+
+  if (d != 2 || A->kp0 + p >= cp->kn) return 0;
+  r = &cp->kept[A->kp0 + p];
+  if (!r->ns || r->x[0] != A->x[2 * p] || r->x[1] != A->x[2 * p + 1]) return 0;
+  *node = r->node;
+  *W    = r->W;
+  *DW   = &r->DW[0][0];
+  return r->ns;
+}
+
 #define MPM_KNAME CPDI
 #define MPM_KSIZE(d) (1 << (2 * (d)))
 #define MPM_KSTENCIL CPDIKernelStencil
+#define MPM_KKEEP CPDIKeep
+#define MPM_KKEPT CPDIKept
 #include "../../transfer/kernels.h"
 
 static void MPMShapeEvaluate_CPDI(void *ctx, const MPMGrid *g, const PetscReal x[], const PetscReal F[], MPMStencil *st)
@@ -295,6 +349,37 @@ static PetscErrorCode MPMShapeSetUp_CPDI(MPMShape shape, const MPMGrid *g, Petsc
 
   PetscFunctionBegin;
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) cp->l0[k] = 0.5 * g->h[k] / ppc;
+  shape->keeps = (PetscBool)(cp->keep && g->dim == 2);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* MPMShapeKeep: room for nlocal points' stencils (new room holds none: set as it is first used, so that the room
+   beyond the points is not touched); without fresh, points p0 to p0 + n - 1 keep none this step. */
+static PetscErrorCode MPMShapeKeep_CPDI(MPMShape shape, PetscInt nlocal, PetscInt p0, PetscInt n, PetscBool fresh)
+{
+  Shape_CPDI *cp = (Shape_CPDI *)shape->data;
+
+  PetscFunctionBegin;
+  if (nlocal > cp->kcap) {
+    PetscCall(PetscFree(cp->kept));
+    cp->kcap  = nlocal + nlocal / 4;
+    cp->kinit = 0;
+    PetscCall(PetscMalloc1(cp->kcap, &cp->kept));
+  }
+  for (; cp->kinit < nlocal; cp->kinit++) cp->kept[cp->kinit].ns = 0;
+  cp->kn = nlocal;
+  if (!fresh)
+    for (PetscInt q = p0; q < p0 + n; q++) cp->kept[q].ns = 0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMShapeDestroy_CPDI(MPMShape shape)
+{
+  Shape_CPDI *cp = (Shape_CPDI *)shape->data;
+
+  PetscFunctionBegin;
+  PetscCall(PetscFree(cp->kept));
+  cp->kn = cp->kinit = cp->kcap = 0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -305,6 +390,7 @@ static PetscErrorCode MPMShapeSetFromOptions_CPDI(MPMShape shape, PetscOptionIte
   PetscFunctionBegin;
   PetscOptionsHeadBegin(PetscOptionsObject, "CPDI shape functions");
   PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-shape_cpdi_reach", "How far a point domain's corners may reach beyond its cell [cells], 1 to 4 (ghost width = reach + 1)", &cp->reach, 1, 4));
+  PetscCall(PetscOptionsBool("-shape_cpdi_keep", "2D: keep each point's stencil from points to grid for grid to points (272 bytes a point; the same results)", "", cp->keep, &cp->keep, NULL));
   PetscOptionsHeadEnd();
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -314,7 +400,7 @@ static PetscErrorCode MPMShapeView_CPDI(MPMShape shape, PetscViewer viewer)
   Shape_CPDI *cp = (Shape_CPDI *)shape->data;
 
   PetscFunctionBegin;
-  PetscCall(PetscViewerASCIIPrintf(viewer, "  undeformed domain half-width %g cm, corners reach %" PetscInt_FMT " cell(s)\n", (double)cp->l0[0], cp->reach));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "  undeformed domain half-width %g cm, corners reach %" PetscInt_FMT " cell(s)%s\n", (double)cp->l0[0], cp->reach, shape->keeps ? "; stencils kept from points to grid for grid to points" : ""));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -325,6 +411,7 @@ PetscErrorCode MPMShapeCreate_CPDI(MPMShape shape)
   PetscFunctionBegin;
   PetscCall(PetscNew(&cp));
   cp->reach = 3;
+  cp->keep  = PETSC_TRUE;
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) cp->l0[k] = 0.25; /* until MPMShapeSetUp */
   shape->data               = cp;
   shape->needs_F            = PETSC_TRUE;
@@ -338,5 +425,7 @@ PetscErrorCode MPMShapeCreate_CPDI(MPMShape shape)
   shape->ops.setup          = MPMShapeSetUp_CPDI;
   shape->ops.setfromoptions = MPMShapeSetFromOptions_CPDI;
   shape->ops.view           = MPMShapeView_CPDI;
+  shape->ops.keep           = MPMShapeKeep_CPDI;
+  shape->ops.destroy        = MPMShapeDestroy_CPDI;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
