@@ -14,6 +14,8 @@ typedef struct {
   PetscBool (*admissible)(void *, const MPMGrid *, const PetscReal[]);                           /* can the type evaluate a point with deformation gradient F? */
   PetscErrorCode (*setup)(MPMShape, const MPMGrid *, PetscInt);                                  /* grid and points per cell per direction */
   PetscErrorCode (*keep)(MPMShape, PetscInt, PetscInt, PetscInt, PetscBool);                     /* MPMShapeKeep, where the type keeps stencils */
+  void (*keepone)(void *, PetscInt, const PetscReal[], const MPMStencil *);                      /* the generic scatter keeps local point q's stencil at x */
+  PetscBool (*keptone)(void *, PetscInt, const PetscReal[], MPMStencil *);                       /* the generic gather: point q's kept stencil, if valid at x */
 } MPMShapeOps;
 struct _p_MPMShape {
   MPM_CLASS_HEADER(MPMShapeOps);

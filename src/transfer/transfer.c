@@ -255,6 +255,8 @@ MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node,
   const float     *hw = force && mpm->heat.live ? MPMHeatWeights(mpm) : NULL; /* the heat exchange (MPMHeatScatter) */
   const PetscReal *T  = pts->f[MPM_FIELD_TEMPERATURE];
   MPMStencil       st;
+  const PetscBool  keep = (PetscBool)(force && !BODY && !CRACK && mpm->shape->keeps); /* the stencils kept for grid to points (MPMShapeKeep) */
+  const PetscInt   kp0  = mpm->win_n >= 0 ? mpm->win_p0 : 0;
 
   for (PetscInt p = 0; p < pts->n; p++) {
     const PetscReal P   = pr[p] + q[p];
@@ -269,6 +271,7 @@ MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node,
     PetscReal dx[MPM_MAX_STENCIL][MPM_MAX_DIM], gc[MPM_MAX_DIM];
     if (CRACK && cs->keep && !cs->near[MPMGridCellNode(g, &x[p * d])]) continue; /* far from failed material: every entry is the body's */
     MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, F, ds, p, Fs), &st);
+    if (keep) mpm->shape->ops.keepone(mpm->shape->data, kp0 + p, &x[p * d], &st);
     if (AFFINE) MPMStencilOffsets(g, &x[p * d], &st, dx);
     if (CRACK) MPMCrackPointGradient(cs->D, d, &st, cs->g2min, gc);
     for (PetscInt a = 0; a < st.n; a++) {
@@ -379,13 +382,13 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
     const PetscReal *V = pts.f[MPM_FIELD_VOLUME], *pr = pts.f[MPM_FIELD_PRESSURE], *q = pts.f[MPM_FIELD_VISCOSITY];
     const PetscReal *S = pts.f[MPM_FIELD_STRESS];
 
-    const PetscBool kernel = (PetscBool)(mpm->kern && !body && !crack);
-    const PetscInt  kp0    = mpm->win_n >= 0 ? mpm->win_p0 : 0;
-    if (force) PetscCall(MPMShapeKeep(mpm->shape, mpm->pts.n, kp0, pts.n, kernel)); /* the stencils kept for grid to points */
-    if (kernel) {                                                                   /* the specialised kernel, then the cell sums of the cell rule */
+    const PetscBool fresh = (PetscBool)(force && !body && !crack); /* the stencils kept for grid to points (both paths) */
+    const PetscInt  kp0   = mpm->win_n >= 0 ? mpm->win_p0 : 0;
+    if (force) PetscCall(MPMShapeKeep(mpm->shape, mpm->pts.n, kp0, pts.n, fresh));
+    if (mpm->kern && !body && !crack) { /* the specialised kernel, then the cell sums of the cell rule */
       const MPMTransferArgs A = {.n    = pts.n,
                                  .kp0  = kp0,
-                                 .keep = force && mpm->shape->keeps ? MPM_KEEP_STORE : MPM_KEEP_NONE,
+                                 .keep = fresh && mpm->shape->keeps ? MPM_KEEP_STORE : MPM_KEEP_NONE,
                                  .hw   = force && mpm->heat.live ? MPMHeatWeights(mpm) : NULL,
                                  .hT   = pts.f[MPM_FIELD_TEMPERATURE],
                                  .hW   = mpm->heat.W,
@@ -489,7 +492,7 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
     PetscBool       nodal = PETSC_FALSE;                                                      /* a node of the stencil asks for more than 1 - alpha */
     PetscReal       dx[MPM_MAX_STENCIL][MPM_MAX_DIM], gc[MPM_MAX_DIM];
     const PetscReal rh = HOOP ? MPMHoopRadius(mpm, pts, p) : 1.0; /* the hoop terms' radius */
-    MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, A->F, A->ds, p, Fs), &st);
+    if (!(A->keep == MPM_KEEP_LOAD && mpm->shape->ops.keptone(mpm->shape->data, A->kp0 + p, &x[p * d], &st))) MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, A->F, A->ds, p, Fs), &st);
     if (AFFINE && velocity) MPMStencilOffsets(g, &x[p * d], &st, dx);
     if (CRACK) MPMCrackPointGradient(A->crack->D, d, &st, A->crack->g2min, gc);
     for (PetscInt a = 0; a < st.n; a++) {

@@ -10,7 +10,8 @@
 #include "../shapeimpl.h"
 #include "../../transfer/transfer.h"
 
-/* A point's stencil in 2D as the step's points to grid evaluated it, for its grid to points (CPDIKeep, CPDIKept): the
+/* A point's stencil in 2D and r-z as the step's points to grid evaluated it, for its grid to points (CPDIKeep, CPDIKept: the
+   specialised kernels; MPMShapeKeepOne_CPDI, MPMShapeKeptOne_CPDI: the generic transfers): the
    position it was evaluated at and its ns <= 9 entries (a domain within a cell of its point in each direction, the
    3 x 3 merged box or less); ns = 0: none kept. 272 bytes with 4-byte indices. */
 #define CPDI_KEPT 9
@@ -353,6 +354,46 @@ static PetscErrorCode MPMShapeSetUp_CPDI(MPMShape shape, const MPMGrid *g, Petsc
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The generic transfers' (the r-z grid, APIC): local point q's stencil at x kept, or its kept stencil read (false
+   where none is valid), with the records of the specialised kernels' (CPDIKeep, CPDIKept). */
+static void MPMShapeKeepOne_CPDI(void *ctx, PetscInt q, const PetscReal x[], const MPMStencil *st)
+{
+  CPDIKept2 *r      = &((Shape_CPDI *)ctx)->kept[q];
+  PetscBool  mirror = PETSC_FALSE;
+
+  for (PetscInt e = 0; e < st->n; e++) mirror = (PetscBool)(mirror || st->s[e][0] != 1.0 || st->s[e][1] != 1.0);
+  if (mirror || st->n > CPDI_KEPT) {
+    r->ns = 0;
+    return;
+  }
+  r->x[0] = x[0];
+  r->x[1] = x[1];
+  for (PetscInt e = 0; e < st->n; e++) {
+    r->W[e]     = st->w[e];
+    r->DW[e][0] = st->dw[e][0];
+    r->DW[e][1] = st->dw[e][1];
+    r->node[e]  = st->node[e];
+  }
+  r->ns = st->n;
+}
+
+static PetscBool MPMShapeKeptOne_CPDI(void *ctx, PetscInt q, const PetscReal x[], MPMStencil *st)
+{
+  const Shape_CPDI *cp = (const Shape_CPDI *)ctx;
+  const CPDIKept2  *r  = &cp->kept[q];
+
+  if (q >= cp->kn || !r->ns || r->x[0] != x[0] || r->x[1] != x[1]) return PETSC_FALSE;
+  st->n = r->ns;
+  for (PetscInt e = 0; e < r->ns; e++) {
+    st->node[e]  = r->node[e];
+    st->w[e]     = r->W[e];
+    st->dw[e][0] = r->DW[e][0];
+    st->dw[e][1] = r->DW[e][1];
+    st->s[e][0] = st->s[e][1] = 1.0;
+  }
+  return PETSC_TRUE;
+}
+
 /* MPMShapeKeep: room for nlocal points' stencils (new room holds none: set as it is first used, so that the room
    beyond the points is not touched); without fresh, points p0 to p0 + n - 1 keep none this step. */
 static PetscErrorCode MPMShapeKeep_CPDI(MPMShape shape, PetscInt nlocal, PetscInt p0, PetscInt n, PetscBool fresh)
@@ -390,7 +431,7 @@ static PetscErrorCode MPMShapeSetFromOptions_CPDI(MPMShape shape, PetscOptionIte
   PetscFunctionBegin;
   PetscOptionsHeadBegin(PetscOptionsObject, "CPDI shape functions");
   PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-shape_cpdi_reach", "How far a point domain's corners may reach beyond its cell [cells], 1 to 4 (ghost width = reach + 1)", &cp->reach, 1, 4));
-  PetscCall(PetscOptionsBool("-shape_cpdi_keep", "2D: keep each point's stencil from points to grid for grid to points (272 bytes a point; the same results)", "", cp->keep, &cp->keep, NULL));
+  PetscCall(PetscOptionsBool("-shape_cpdi_keep", "2D and r-z: keep each point's stencil from points to grid for grid to points (272 bytes a point; the same results)", "", cp->keep, &cp->keep, NULL));
   PetscOptionsHeadEnd();
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -426,6 +467,8 @@ PetscErrorCode MPMShapeCreate_CPDI(MPMShape shape)
   shape->ops.setfromoptions = MPMShapeSetFromOptions_CPDI;
   shape->ops.view           = MPMShapeView_CPDI;
   shape->ops.keep           = MPMShapeKeep_CPDI;
+  shape->ops.keepone        = MPMShapeKeepOne_CPDI;
+  shape->ops.keptone        = MPMShapeKeptOne_CPDI;
   shape->ops.destroy        = MPMShapeDestroy_CPDI;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
