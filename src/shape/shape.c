@@ -72,8 +72,10 @@ PetscErrorCode MPMShapeSetUp(MPMShape shape, const MPMGrid *g, PetscInt ppc)
 }
 
 /* Before the step's points to grid of the n points from local point p0 on (of nlocal), where the type keeps stencils
-   (shape->keeps): room for nlocal points' stencils; with fresh, the specialised kernel stores them (MPM_KEEP_STORE), else
-   (the generic scatter) their kept stencils are dropped, so that grid to points evaluates them again. */
+   (shape->keeps): room for nlocal points' stencils; with fresh, the scatter stores them (the specialised kernels'
+   MPM_KEEP_STORE, the generic scatter's keepone), else (a body force, a crack field) their kept stencils are dropped,
+   so that grid to points evaluates them again. Every gather that reads them (MPMGather, from MPMStep only) follows
+   the same step's scatter over the same points, and nothing changes x_p, F_p or the domain scale in between. */
 PetscErrorCode MPMShapeKeep(MPMShape shape, PetscInt nlocal, PetscInt p0, PetscInt n, PetscBool fresh)
 {
   PetscFunctionBegin;

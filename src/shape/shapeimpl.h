@@ -27,8 +27,8 @@ struct _p_MPMShape {
                                         the tent N over it (linear, GIMP, CPDI): the contact module's position gap test
                                         reads a body's extent from two nodal masses */
   const MPMTransferKernels *kernels; /* specialised transfer kernels for d = 1, 2, 3 (kernels.h), NULL: generic only */
-  PetscBool                 keeps;   /* the specialised kernels keep each point's stencil from the step's points to grid
-                                        for its grid to points (set up for the grid's dimension; MPMShapeKeep) */
+  PetscBool                 keeps;   /* the step's points to grid keeps each point's stencil for its grid to points
+                                        (set up for the grid's dimension; MPMShapeKeep) */
 };
 
 /* N_I(x_p) and grad N_I(x_p) at a point with deformation gradient F (read only by types that follow the

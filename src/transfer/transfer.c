@@ -491,8 +491,10 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
     PetscReal       nb = 0.0, bv0[MPM_MAX_DIM] = {0, 0, 0}, Rbc[MPM_MAX_DIM] = {0, 0, 0};     /* nodal PIC shares: sum N b_I, sum N b_I v_I^n, sum N b_I (v_I^n - v_p) . v_I */
     PetscBool       nodal = PETSC_FALSE;                                                      /* a node of the stencil asks for more than 1 - alpha */
     PetscReal       dx[MPM_MAX_STENCIL][MPM_MAX_DIM], gc[MPM_MAX_DIM];
-    const PetscReal rh = HOOP ? MPMHoopRadius(mpm, pts, p) : 1.0; /* the hoop terms' radius */
-    if (!(A->keep == MPM_KEEP_LOAD && mpm->shape->ops.keptone(mpm->shape->data, A->kp0 + p, &x[p * d], &st))) MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, A->F, A->ds, p, Fs), &st);
+    const PetscReal rh   = HOOP ? MPMHoopRadius(mpm, pts, p) : 1.0; /* the hoop terms' radius */
+    PetscBool       kept = PETSC_FALSE;
+    if (A->keep == MPM_KEEP_LOAD) kept = mpm->shape->ops.keptone(mpm->shape->data, A->kp0 + p, &x[p * d], &st); /* the stencil the step's scatter kept */
+    if (!kept) MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, A->F, A->ds, p, Fs), &st);
     if (AFFINE && velocity) MPMStencilOffsets(g, &x[p * d], &st, dx);
     if (CRACK) MPMCrackPointGradient(A->crack->D, d, &st, A->crack->g2min, gc);
     for (PetscInt a = 0; a < st.n; a++) {

@@ -249,7 +249,8 @@ MPM_CPDI_INLINE PetscBool CPDIKernelStencil(const void *ctx, const MPMGrid *g, c
 }
 
 /* The step's points to grid keeps point p's stencil in 2D (MPMShapeKeep), unless it has a mirror sign or more than
-   CPDI_KEPT entries; grid to points evaluates those again. */
+   CPDI_KEPT entries; grid to points evaluates those again. The kernels' context is const, the records it points to
+   are not: only the stores here write them. */
 MPM_CPDI_INLINE void CPDIKeep(const void *ctx, const MPMTransferArgs *A, PetscInt p, PetscInt ns, const PetscInt node[], const PetscReal W[], const PetscReal DW[], PetscBool mirror, const PetscInt d)
 {
   CPDIKept2 *r;
@@ -380,9 +381,11 @@ static void MPMShapeKeepOne_CPDI(void *ctx, PetscInt q, const PetscReal x[], con
 static PetscBool MPMShapeKeptOne_CPDI(void *ctx, PetscInt q, const PetscReal x[], MPMStencil *st)
 {
   const Shape_CPDI *cp = (const Shape_CPDI *)ctx;
-  const CPDIKept2  *r  = &cp->kept[q];
+  const CPDIKept2  *r;
 
-  if (q >= cp->kn || !r->ns || r->x[0] != x[0] || r->x[1] != x[1]) return PETSC_FALSE;
+  if (q >= cp->kn) return PETSC_FALSE;
+  r = &cp->kept[q];
+  if (!r->ns || r->x[0] != x[0] || r->x[1] != x[1]) return PETSC_FALSE;
   st->n = r->ns;
   for (PetscInt e = 0; e < r->ns; e++) {
     st->node[e]  = r->node[e];
