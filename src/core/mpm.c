@@ -259,8 +259,7 @@ PetscErrorCode MPMSetUp(MPM mpm)
     PetscCall(MPMCreateGrid(mpm, sw + (mpm->viscosity ? mpm->viscosity->ghost : 0), why));
   }
   PetscCall(MPMShapeSetUp(mpm->shape, &mpm->grid, mpm->ppc));
-  mpm->kern =
-    mpm->transfer_kernel == MPM_TRANSFER_SPECIALISED && mpm->shape->kernels && !mpm->grid.axisym && mpm->update != MPM_UPDATE_APIC ? &mpm->shape->kernels[mpm->grid.dim - 1] : NULL; /* the specialised kernels have no hoop terms and no affine part */
+  mpm->kern = mpm->transfer_kernel == MPM_TRANSFER_SPECIALISED && mpm->shape->kernels && mpm->update != MPM_UPDATE_APIC ? &mpm->shape->kernels[mpm->grid.dim - 1] : NULL; /* the specialised kernels have no affine part */
   /* MUSL: the remap is the only point-kinematics module, so nothing changes v_p between grid to points and the remap */
   mpm->remap_fused = (PetscBool)(mpm->scheme == MPM_SCHEME_MUSL && mpm->kern);
   { /* the point phases of MPMStepPoints window by window: the modules among them pointwise, and a grid to points that updates

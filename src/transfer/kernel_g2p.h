@@ -19,7 +19,7 @@
    (vpic = sum N v_I, dv = sum N dv_I, dv2_k = sum N dv_Ik^2, R_k, Lp = sum v_I (x) grad N, Lb = sum (2 v_I - dv_I) (x) grad N;
    |dv|^2 and R summed over the components here, MPMKSumComponents). */
 MPM_KINLINE void MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, PetscInt p, const PetscReal vpic[MPM_KD], const PetscReal dv[MPM_KD], const PetscReal dv2c[MPM_KD], const PetscReal Rc[MPM_KD],
-                                                               const PetscReal Lp[MPM_KD * MPM_KD], const PetscReal Lb[MPM_KD * MPM_KD], const PetscReal *nod, const int mode)
+                                                               const PetscReal Lp[MPM_KD * MPM_KD], const PetscReal Lb[MPM_KD * MPM_KD], const PetscReal *nod, const PetscReal rh, const PetscReal Lbtt, const int mode)
 {
   const PetscInt   D        = MPM_KD;
   const PetscBool  velocity = (PetscBool)(mode & MPM_G2P_VELOCITY), kinematics = (PetscBool)(mode & MPM_G2P_KINEMATICS), work = (PetscBool)(mode & MPM_G2P_WORK);
@@ -44,10 +44,15 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(const MPMTransfer
         for (PetscInt i = 0; i < D; i++) div += Lb[i * D + i];
       if (A->stress)
         for (PetscInt i = 0; i < D * D; i++) sL += S[p * D * D + i] * Lb[i];
+      if (MPM_KD == 2 && A->hoopr) { /* axisymmetric: the hoop work, -P Lbar_tt + s_tt Lbar_tt, s_tt = -(s_rr + s_zz) */
+        div += Lbtt;
+        if (A->stress) sL -= (S[p * D * D] + S[p * D * D + D + 1]) * Lbtt;
+      }
       e[p] += MPMWorkIncrement(A, p, e[p], sL, div);
     }
   }
   if (kinematics) {
+    if (MPM_KD == 2 && A->hoopr) A->hooprate[p] = vpic[0] / rh; /* L_tt = v_r / r at x^n, as L_p */
     for (PetscInt i = 0; i < D; i++) x[p * D + i] += A->dt * vpic[i];
     for (PetscInt i = 0; i < D * D; i++) L[p * D * D + i] = Lp[i];
   }
@@ -65,8 +70,10 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
   const v4        zero = {0.0, 0.0, 0.0, 0.0};
   v4              vpic = zero, dv = zero, dv2 = zero, R = zero, Lp[MPM_KD], Lb[MPM_KD], vp = zero, bv0 = zero, Rb = zero;
   PetscReal       vpicl[MPM_KD], dvl[MPM_KD], dv2l[MPM_KD], Rl[MPM_KD], Lpl[MPM_KD * MPM_KD], Lbl[MPM_KD * MPM_KD], nod[1 + 2 * MPM_KD], nb = 0.0;
-  const PetscBool shares = (PetscBool)(velocity && A->bn); /* the nodal PIC shares of a step where a point asked (src/transfer/blend.c) */
-  PetscBool       nodal  = PETSC_FALSE;                    /* a node of the stencil has b_I > 1 - alpha */
+  const PetscBool shares = (PetscBool)(velocity && A->bn);                       /* the nodal PIC shares of a step where a point asked (src/transfer/blend.c) */
+  PetscBool       nodal  = PETSC_FALSE;                                          /* a node of the stencil has b_I > 1 - alpha */
+  const PetscReal rh     = MPM_KD == 2 && A->hoopr ? A->hoopr(A->hctx, p) : 1.0; /* axisymmetric: the hoop terms' radius */
+  PetscReal       Lbtt   = 0.0;                                                  /* and sum N (2 v_I - dv_I)_r / r_p */
 
   for (PetscInt i = 0; i < D; i++) {
     vp[i] = A->v[p * D + i];
@@ -105,6 +112,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
     if (work) {
       const v4 b = 2.0 * vI - dvI;
       for (PetscInt i = 0; i < D; i++) Lb[i] += b[i] * dwv;
+      if (MPM_KD == 2 && A->hoopr) Lbtt += W[a] * b[0] / rh;
     }
     if (kinematics)
       for (PetscInt i = 0; i < D; i++) Lp[i] += vI[i] * dwv;
@@ -122,7 +130,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
     nod[1 + D + i] = Rb[i];
   }
   nod[0] = nb;
-  MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p, vpicl, dvl, dv2l, Rl, Lpl, Lbl, nodal ? nod : NULL, mode);
+  MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p, vpicl, dvl, dv2l, Rl, Lpl, Lbl, nodal ? nod : NULL, rh, Lbtt, mode);
   if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p, ns, node, W, NULL, SG, MPM_P2G_REMAP, mirror, 1);
   if (kinematics && A->hw) MPMHeatGather(A, p, ns, node, W, 1); /* the heat exchange */
 }
@@ -176,7 +184,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
       Lpl[i] = Lp[i][l];
       Lbl[i] = Lb[i][l];
     }
-    MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p0 + l, vpicl, dvl, dv2l, Rl, Lpl, Lbl, NULL, mode);
+    MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p0 + l, vpicl, dvl, dv2l, Rl, Lpl, Lbl, NULL, 1.0, 0.0, mode); /* never axisymmetric (MPMKG2PLoopMode) */
     if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p0 + l, MPM_KS, &node[0][l], &W[0][l], NULL, NULL, MPM_P2G_REMAP, 0, MPM_KLANES);
     if (kinematics && A->hw) MPMHeatGather(A, p0 + l, MPM_KS, &node[0][l], &W[0][l], MPM_KLANES);
   }
@@ -219,8 +227,8 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
   PetscInt              p = 0;
 
 #if defined(MPM_KLANES)
-  for (; !(A->bn && (mode & MPM_G2P_VELOCITY)) && p + MPM_KLANES <= A->n; p += MPM_KLANES) { /* a step with nodal PIC shares: point by point */
-    PetscInt  node[MPM_KS][MPM_KLANES];                                                      /* each entry's lanes side by side (MPMKStencilStrided) */
+  for (; !(A->bn && (mode & MPM_G2P_VELOCITY)) && !A->hoopr && p + MPM_KLANES <= A->n; p += MPM_KLANES) { /* a step with nodal PIC shares, or the hoop terms: point by point */
+    PetscInt  node[MPM_KS][MPM_KLANES];                                                                   /* each entry's lanes side by side (MPMKStencilStrided) */
     PetscReal W[MPM_KS][MPM_KLANES], DW[MPM_KS][MPM_KD][MPM_KLANES], SG[MPM_KLANES][MPM_KS][MPM_KD];
     PetscBool mirror[MPM_KLANES], any = PETSC_FALSE;
 #  if defined(MPM_KTENT)

@@ -29,9 +29,13 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
      otherwise load them again after every node update */
   const PetscReal mp = A->m[p], Vp = (mode & (MPM_P2G_PRESSURE | MPM_P2G_STRESS)) ? A->V[p] : 0.0, P = (mode & MPM_P2G_PRESSURE) ? A->pr[p] + A->q[p] : 0.0, VP = Vp * P;
   MPM_KCV         vp = zero, Sc[MPM_KD];
-  PetscReal       Sp[MPM_KD * MPM_KD];
+  PetscReal       Sp[MPM_KD * MPM_KD], hoop = 0.0;
 
   for (PetscInt k = 0; k < D; k++) vp[k] = A->v[p * D + k];
+#if MPM_KD == 2
+  if (A->hoopr && !(mode & MPM_P2G_REMAP)) /* axisymmetric: the hoop force -sigma_tt V / r, sigma_tt = -(p + q) - (s_rr + s_zz), with p + q whatever takes the pressure */
+    hoop = A->V[p] * (A->pr[p] + A->q[p] + ((mode & MPM_P2G_STRESS) ? A->S[p * D * D] + A->S[p * D * D + D + 1] : 0.0)) / A->hoopr(A->hctx, p);
+#endif
   if (mode & MPM_P2G_STRESS) { /* -V sigma = V ((p + q) I - s), formed once (MPMStressForceMatrix; p + q = 0 where the cell rule takes it), by columns */
     for (PetscInt k = 0; k < D * D; k++) Sp[k] = A->S[p * D * D + k];
     MPMStressForceMatrix(D, Vp, P, Sp);
@@ -64,6 +68,7 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
     }
     if (mode & (MPM_P2G_STRESS | MPM_P2G_PRESSURE))
       for (PetscInt k = 0; k < D; k++) nd->f[k] += f[k];
+    if (hoop != 0.0) nd->f[0] += sg[0] * hoop * W[a * ls];
   }
   if (A->hw && !(mode & MPM_P2G_REMAP)) MPMHeatScatter(A, p, ns, node, W, ls); /* the heat exchange's nodal sums */
 }

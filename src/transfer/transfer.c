@@ -224,6 +224,19 @@ static inline PetscReal MPMHoopRadius(MPM mpm, const MPMPoints *pts, PetscInt p)
   return PetscMax(r, 0.5 * w);
 }
 
+/* MPMHoopRadius for the specialised kernels (MPMTransferArgs::hoopr): the object and the points they were given. */
+typedef struct {
+  MPM              mpm;
+  const MPMPoints *pts;
+} MPMHoopContext;
+
+static PetscReal MPMKernelHoopRadius(const void *ctx, PetscInt p)
+{
+  const MPMHoopContext *hc = (const MPMHoopContext *)ctx;
+
+  return MPMHoopRadius(hc->mpm, hc->pts, p);
+}
+
 /* The generic loops' variants (MPMGenericVariant): the reference, which computes what the specialised kernels compute
    (they reproduce it bit for bit, tests/scenes/kernels.json), and the terms that only some runs have, each a
    compile-time flag of the same loop body, so that the reference carries no branch for them:
@@ -386,22 +399,25 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
     const PetscInt  kp0   = mpm->win_n >= 0 ? mpm->win_p0 : 0;
     if (force) PetscCall(MPMShapeKeep(mpm->shape, mpm->pts.n, kp0, pts.n, fresh));
     if (mpm->kern && !body && !crack) { /* the specialised kernel, then the cell sums of the cell rule */
-      const MPMTransferArgs A = {.n    = pts.n,
-                                 .kp0  = kp0,
-                                 .keep = fresh && mpm->shape->keeps ? MPM_KEEP_STORE : MPM_KEEP_NONE,
-                                 .hw   = force && mpm->heat.live ? MPMHeatWeights(mpm) : NULL,
-                                 .hT   = pts.f[MPM_FIELD_TEMPERATURE],
-                                 .hW   = mpm->heat.W,
-                                 .x    = (PetscReal *)x,
-                                 .v    = (PetscReal *)v,
-                                 .m    = m,
-                                 .V    = V,
-                                 .pr   = pr,
-                                 .q    = q,
-                                 .S    = S,
-                                 .F    = mpm->track_F ? pts.f[MPM_FIELD_DEFGRAD] : NULL,
-                                 .ds   = mpm->shape->needs_F ? pts.f[MPM_FIELD_DOMAINSCALE] : NULL,
-                                 .runs = (PetscBool)(mpm->ppc > 1)};
+      const MPMHoopContext  hc = {mpm, &pts};
+      const MPMTransferArgs A  = {.n     = pts.n,
+                                  .hoopr = force && g->axisym ? MPMKernelHoopRadius : NULL,
+                                  .hctx  = &hc,
+                                  .kp0   = kp0,
+                                  .keep  = fresh && mpm->shape->keeps ? MPM_KEEP_STORE : MPM_KEEP_NONE,
+                                  .hw    = force && mpm->heat.live ? MPMHeatWeights(mpm) : NULL,
+                                  .hT    = pts.f[MPM_FIELD_TEMPERATURE],
+                                  .hW    = mpm->heat.W,
+                                  .x     = (PetscReal *)x,
+                                  .v     = (PetscReal *)v,
+                                  .m     = m,
+                                  .V     = V,
+                                  .pr    = pr,
+                                  .q     = q,
+                                  .S     = S,
+                                  .F     = mpm->track_F ? pts.f[MPM_FIELD_DEFGRAD] : NULL,
+                                  .ds    = mpm->shape->needs_F ? pts.f[MPM_FIELD_DOMAINSCALE] : NULL,
+                                  .runs  = (PetscBool)(mpm->ppc > 1 && !g->axisym)}; /* the runs have no hoop force */
       mpm->kern->p2g[(force && !cellrule ? MPM_P2G_PRESSURE : 0) | (stress ? MPM_P2G_STRESS : 0)](g, mpm->shape->data, &A, node);
       if (cellrule && mpm->cell_volume != MPM_CELL_VOLUME_FULL)
         for (PetscInt p = 0; p < pts.n; p++) MPMCellRuleAdd(mpm, &x[p * d], V[p], pr[p] + q[p]);
@@ -694,6 +710,7 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
       }
     }
     MPMExpansion          ex = {mpm, pts.f[MPM_FIELD_DENSITY], pts.f[MPM_FIELD_MASS], pts.f[MPM_FIELD_MATERIAL]};
+    const MPMHoopContext  hc = {mpm, &pts};
     const MPMTransferArgs A  = {.n         = pts.n,
                                 .x         = x,
                                 .v         = v,
@@ -720,6 +737,9 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
                                 .hw        = kinematics && mpm->heat.live ? MPMHeatWeights(mpm) : NULL,
                                 .hT        = pts.f[MPM_FIELD_TEMPERATURE],
                                 .hW        = mpm->heat.W,
+                                .hoopr     = g->axisym ? MPMKernelHoopRadius : NULL,
+                                .hctx      = &hc,
+                                .hooprate  = pts.f[MPM_FIELD_HOOPRATE],
                                 .kp0       = mpm->win_n >= 0 ? mpm->win_p0 : 0,
                                 .keep      = mpm->shape->keeps && !crack ? MPM_KEEP_LOAD : MPM_KEEP_NONE};
     if (remap) { /* f_I, zeroed by the kick (MPMGridAdvance, and the ghosts from their owners), takes the remap's momenta (MPMRemapApply) */

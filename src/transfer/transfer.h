@@ -67,14 +67,18 @@ typedef struct {
   PetscReal        dt, wfac;                                              /* step, half the kick (the work's time factor)                 */
   PetscReal (*expand)(void *, PetscInt, PetscReal, PetscReal, PetscReal); /* (ctx, p, e_p, eps, linear work) -> the pressure's work along the isentrope; NULL: always linear */
   void                *ectx;
-  PetscReal            threshold; /* relative expansion over the kick above which expand takes the pressure's work [-] */
-  PetscBool            runs;      /* points to grid by runs of same-cell points (seeded with several points per cell) */
-  const MPMCrackSplit *crack;     /* generic grid to points: the body's crack field, read by each entry's side (src/grid/crack.c), or NULL */
-  const float         *hw;        /* the heat exchange (MPMHeatScatter): the points' weights w_p [erg/eV] (single precision), or NULL */
-  const PetscReal     *hT;        /* their temperatures [eV]                                                                   */
-  PetscReal           *hW;        /* its nodal sums, 2 per node of the ghosted local grid                                           */
-  PetscInt             kp0;       /* the first point's index among the rank's points (a window's offset), for the kept stencils       */
-  MPMKeep              keep;      /* the kept stencils (MPMShapeKeep): stored by the step's points to grid, read by its grid to points */
+  PetscReal            threshold;             /* relative expansion over the kick above which expand takes the pressure's work [-] */
+  PetscBool            runs;                  /* points to grid by runs of same-cell points (seeded with several points per cell) */
+  const MPMCrackSplit *crack;                 /* generic grid to points: the body's crack field, read by each entry's side (src/grid/crack.c), or NULL */
+  const float         *hw;                    /* the heat exchange (MPMHeatScatter): the points' weights w_p [erg/eV] (single precision), or NULL */
+  const PetscReal     *hT;                    /* their temperatures [eV]                                                                   */
+  PetscReal           *hW;                    /* its nodal sums, 2 per node of the ghosted local grid                                           */
+  PetscReal (*hoopr)(const void *, PetscInt); /* axisymmetric (2D): point p's hoop radius [cm] (MPMHoopRadius), NULL: planar; in points
+                                                 to grid only where the step's force is summed */
+  const void *hctx;
+  PetscReal  *hooprate; /* axisymmetric: L_tt = v_r / r, written by the kinematics [1/s]                                   */
+  PetscInt    kp0;      /* the first point's index among the rank's points (a window's offset), for the kept stencils       */
+  MPMKeep     keep;     /* the kept stencils (MPMShapeKeep): stored by the step's points to grid, read by its grid to points */
 } MPMTransferArgs;
 
 /* The heat exchange of artificial conduction (src/modules/conduction.c), fused into the step's transfers: a point with
