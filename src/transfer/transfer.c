@@ -218,9 +218,23 @@ static inline void MPMStencilOffsets(const MPMGrid *g, const PetscReal xp[], con
    1e15 dyn/cm^2 and a step collapse). A point farther out than w_p / 2 (every seeded point: r_p >= w_p) keeps r_p. */
 static inline PetscReal MPMHoopRadius(MPM mpm, const MPMPoints *pts, PetscInt p)
 {
-  const PetscReal er[MPM_MAX_DIM] = {1.0, 0.0, 0.0}, r = pts->f[MPM_FIELD_POSITION][2 * p];
-  const PetscReal w = mpm->shape->needs_F ? MPMPointHalfExtent(mpm, pts, p, er) : 0.5 * mpm->grid.h[0] / mpm->ppc;
+  const PetscReal er[2] = {1.0, 0.0}, r = pts->f[MPM_FIELD_POSITION][2 * p];
+  PetscReal       w = 0.5 * mpm->grid.h[0] / mpm->ppc;
 
+  if (mpm->shape->needs_F) { /* MPMPointHalfExtent(mpm, pts, p, er), its operations with d = 2 (the r-z grid's): inlined */
+    PetscReal        Rs[4];
+    const PetscReal *R = pts->f[MPM_FIELD_DEFGRAD] ? MPMPointDomain(2, pts->f[MPM_FIELD_DEFGRAD], pts->f[MPM_FIELD_DOMAINSCALE], p, Rs) : NULL;
+    if (!R)
+      w = 0.5 * PetscPowReal(pts->f[MPM_FIELD_VOLUME][p], 1.0 / 2);
+    else {
+      w = 0.0;
+      for (PetscInt j = 0; j < 2; j++) {
+        PetscReal nr = 0.0;
+        for (PetscInt k = 0; k < 2; k++) nr += er[k] * R[k * 2 + j];
+        w += 0.5 * PetscAbsReal(nr) * (mpm->grid.h[j] / mpm->ppc);
+      }
+    }
+  }
   return PetscMax(r, 0.5 * w);
 }
 
