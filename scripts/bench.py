@@ -19,6 +19,8 @@ Cases (point-steps per second, median of --repeat runs, each case's runs interle
   anvil3d    the 3D Taylor anvil (taylor_anvil_3d.opts) in the program's default method (CPDI, the FLIP/PIC blend,
              splitting, heat conduction), 4.1e3 points, 100 steps: what a user running the defaults in 3D gets
   cpdi8      the 3D manufactured neo-Hookean solid (mms_axis_aligned_3d.opts) with CPDI at 8 points per cell, 12^3 cells
+  anvilrz    the r-z Taylor anvil (taylor_anvil_rz.opts) in the default method at 48 x 126 cells (R0/24), 2.3e3 points,
+             1500 steps: the validation runs' grid
 Each case on every rank count of --ranks; with --before, the same runs with another petmpm (the code before a
 change) interleaved too, and the speed-up. The -log_view phase shares of each case on one rank, and the memory
 per point in 3D: the marginal process memory per point between two sizes (PETSc's -memory_view maximum), with block8
@@ -119,6 +121,7 @@ def main():
         ("bar2ddef", "2D bar, the default method (cpdi1.opts)", "bar_impact_2d.opts", ["-options_file", DEFAULT, "-mpm_cells", "600,2600", "-ts_max_steps", "20"], None, None),
         ("anvil3d", "3D Taylor anvil, the default method (CPDI, blend, splitting), R0/9", "taylor_anvil_3d.opts", ["-mpm_cells", "24,24,63", "-ts_max_steps", "100"], None, None),
         ("cpdi8", "3D manufactured solid, CPDI, 8 ppc, 12^3 cells", "mms_axis_aligned_3d.opts", ["-mpm_cells", "12,12,12", "-mpm_shape_type", "cpdi"], None, None),
+        ("anvilrz", "r-z Taylor anvil, the default method, R0/24", "taylor_anvil_rz.opts", ["-mpm_cells", "48,126", "-ts_max_steps", "1500"], None, None),
     ]
     if a.cases:
         cases = [c for c in cases if c[0] in a.cases.split(",")]
