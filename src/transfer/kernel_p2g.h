@@ -7,6 +7,8 @@
    and by mode (MPM_P2G_*) the internal force [dyn]
      pressure  f_I += s_I V_p (p_p + q_p) grad N_I
      stress    f_I += s_I (-V_p sigma_p) grad N_I,  -V sigma = V ((p + q) I - s)  (MPMStressForceMatrix)
+   on the r-z grid, where the step sums the force (A->hoopr), the hoop force
+     f_I,r += s_I,r N_I (-sigma_tt V_p / r_p),  sigma_tt = -(p + q) - (s_rr + s_zz),  r_p = MPMHoopRadius
    and, where the step makes the heat exchange (A->hw), a weighted point's W_I and Q_I (MPMHeatScatter), point by point
    (MPMKP2GPoint) or by runs of same-cell points whose node sums stay in registers (MPMKP2GRuns).
    MPMKP2GPoint with MPM_P2G_REMAP is the momentum product alone into f_I, the MUSL remap's, for grid to points. The
