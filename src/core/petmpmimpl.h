@@ -264,10 +264,33 @@ static inline void MPMNodalMeanStencilOf(MPM mpm, const MPMPoints *pts, PetscInt
   MPMShapeWeights(mpm->shape, &mpm->grid, &pts->f[MPM_FIELD_POSITION][p * d], MPMPointDomain(d, pts->f[MPM_FIELD_DEFGRAD], pts->f[MPM_FIELD_DOMAINSCALE], p, Fs), st);
 }
 
+/* The index among the rank's points of the first point MPMPointsGetArrays shows (a window's start, else 0). */
+static inline PetscInt MPMPointsWindowStart(MPM mpm)
+{
+  return mpm->win_n >= 0 ? mpm->win_p0 : 0;
+}
+
 /* The heat exchange's weights of the points MPMPointsGetArrays shows (all, or a window). */
 static inline const float *MPMHeatWeights(MPM mpm)
 {
-  return mpm->heat.w + (mpm->win_n >= 0 ? mpm->win_p0 : 0);
+  return mpm->heat.w + MPMPointsWindowStart(mpm);
+}
+
+/* Half the extent of point p's domain along the unit vector n [cm]: its lattice site deformed by F diag(s) where the
+   points carry F, else a cube of its volume; d the grid's dimension (a constant where the caller knows it, so that
+   the loops unroll: the r-z hoop radius), MPMPointHalfExtent with d = mpm->grid.dim. */
+static inline PetscReal MPMPointHalfExtentDim(MPM mpm, const MPMPoints *pts, PetscInt p, const PetscReal n[], const PetscInt d)
+{
+  PetscReal        Rs[MPM_MAX_DIM * MPM_MAX_DIM], e = 0.0;
+  const PetscReal *R = pts->f[MPM_FIELD_DEFGRAD] ? MPMPointDomain(d, pts->f[MPM_FIELD_DEFGRAD], pts->f[MPM_FIELD_DOMAINSCALE], p, Rs) : NULL;
+
+  if (!R) return 0.5 * PetscPowReal(pts->f[MPM_FIELD_VOLUME][p], 1.0 / d);
+  for (PetscInt j = 0; j < d; j++) {
+    PetscReal nr = 0.0;
+    for (PetscInt k = 0; k < d; k++) nr += n[k] * R[k * d + j];
+    e += 0.5 * PetscAbsReal(nr) * (mpm->grid.h[j] / mpm->ppc);
+  }
+  return e;
 }
 
 /* div v_p = tr L_p, plus the hoop rate v_r / r on an axisymmetric grid, of the point's last step (kept by MPMStepPoints:

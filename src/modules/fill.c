@@ -238,15 +238,17 @@ static PetscErrorCode MPMFillExcess(MPM mpm, const MPMFill *fl, PetscReal **W)
   PetscReal     *E = fl->E;
 
   const PetscInt nb = d == 1 ? 3 : d == 2 ? 9 : 27;
-  PetscInt       off[27];
+  PetscInt       off[27], b[27][3];
   PetscReal      wo[27];
 
   PetscFunctionBegin;
-  for (PetscInt o = 0; o < nb; o++) { /* block entry o's offset and weight, for the nodes whose block is all on the grid */
-    const PetscInt b[3] = {o % 3 - 1, d > 1 ? (o / 3) % 3 - 1 : 0, d > 2 ? o / 9 - 1 : 0};
-    wo[o]               = 1.0;
-    for (PetscInt k = 0; k < d; k++) wo[o] *= b[k] == 0 ? 2.0 : 1.0;
-    off[o] = (b[2] * g->gm[1] + b[1]) * g->gm[0] + b[0];
+  for (PetscInt o = 0; o < nb; o++) { /* block entry o: its node's offset per direction and in the local array, its weight (1, 2, 1) per direction */
+    b[o][0] = o % 3 - 1;
+    b[o][1] = d > 1 ? (o / 3) % 3 - 1 : 0;
+    b[o][2] = d > 2 ? o / 9 - 1 : 0;
+    wo[o]   = 1.0;
+    for (PetscInt k = 0; k < d; k++) wo[o] *= b[o][k] == 0 ? 2.0 : 1.0;
+    off[o] = (b[o][2] * g->gm[1] + b[o][1]) * g->gm[0] + b[o][0];
   }
   PetscCall(PetscArrayzero(E, nloc));
   for (PetscInt k2 = g->xs[2]; k2 < g->xs[2] + g->xm[2]; k2++)
@@ -254,26 +256,15 @@ static PetscErrorCode MPMFillExcess(MPM mpm, const MPMFill *fl, PetscReal **W)
       for (PetscInt k0 = g->xs[0]; k0 < g->xs[0] + g->xm[0]; k0++) {
         const PetscInt ijk[3] = {k0 - g->gs[0], k1 - g->gs[1], k2 - g->gs[2]}, nI = (ijk[2] * g->gm[1] + ijk[1]) * g->gm[0] + ijk[0];
         PetscReal      S = 0.0, S0 = 0.0;
-        PetscBool      inner = PETSC_TRUE;
+        PetscBool      inner = PETSC_TRUE; /* the whole block on the local grid: no entry to test */
         for (PetscInt k = 0; k < d; k++) inner = (PetscBool)(inner && ijk[k] >= 1 && ijk[k] <= g->gm[k] - 2);
-        if (inner) { /* the same terms in the same order as the loop below */
-          for (PetscInt o = 0; o < nb; o++) {
-            S += wo[o] * (*W)[2 * (nI + off[o])];
-            S0 += wo[o] * fl->ref[nI + off[o]];
-          }
-        } else
-          for (PetscInt o = 0; o < nb; o++) {
-            const PetscInt a[3] = {ijk[0] + o % 3 - 1, ijk[1] + (d > 1 ? (o / 3) % 3 - 1 : 0), ijk[2] + (d > 2 ? o / 9 - 1 : 0)};
-            PetscBool      in   = PETSC_TRUE;
-            PetscReal      w    = 1.0;
-            PetscInt       nJ;
-            for (PetscInt k = 0; k < 3; k++) in = (PetscBool)(in && a[k] >= 0 && a[k] < g->gm[k]);
-            if (!in) continue;
-            for (PetscInt k = 0; k < d; k++) w *= a[k] == ijk[k] ? 2.0 : 1.0; /* the weights (1, 2, 1) per direction */
-            nJ = (a[2] * g->gm[1] + a[1]) * g->gm[0] + a[0];
-            S += w * (*W)[2 * nJ];
-            S0 += w * fl->ref[nJ];
-          }
+        for (PetscInt o = 0; o < nb; o++) {
+          PetscBool outside = PETSC_FALSE;
+          for (PetscInt k = 0; !inner && k < d; k++) outside = (PetscBool)(outside || ijk[k] + b[o][k] < 0 || ijk[k] + b[o][k] >= g->gm[k]);
+          if (outside) continue;
+          S += wo[o] * (*W)[2 * (nI + off[o])];
+          S0 += wo[o] * fl->ref[nI + off[o]];
+        }
         if (S0 > 0.0 && (*W)[2 * nI] > 0.0) E[nI] = PetscMax(0.0, S / S0 - (1.0 + fl->tol)) * fl->ref[nI];
       }
   for (PetscInt i = 0; i < nloc; i++) (*W)[2 * i] = E[i];

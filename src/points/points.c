@@ -898,19 +898,7 @@ PetscErrorCode MPMBodiesEnd(MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Half the extent of point p's domain along the unit vector n [cm]: its lattice site deformed by F diag(s) where the
-   points carry F, else a cube of its volume. */
 PetscReal MPMPointHalfExtent(MPM mpm, const MPMPoints *pts, PetscInt p, const PetscReal n[])
 {
-  const PetscInt   d = mpm->grid.dim;
-  PetscReal        Rs[MPM_MAX_DIM * MPM_MAX_DIM], e = 0.0;
-  const PetscReal *R = pts->f[MPM_FIELD_DEFGRAD] ? MPMPointDomain(d, pts->f[MPM_FIELD_DEFGRAD], pts->f[MPM_FIELD_DOMAINSCALE], p, Rs) : NULL;
-
-  if (!R) return 0.5 * PetscPowReal(pts->f[MPM_FIELD_VOLUME][p], 1.0 / d);
-  for (PetscInt j = 0; j < d; j++) {
-    PetscReal nr = 0.0;
-    for (PetscInt k = 0; k < d; k++) nr += n[k] * R[k * d + j];
-    e += 0.5 * PetscAbsReal(nr) * (mpm->grid.h[j] / mpm->ppc);
-  }
-  return e;
+  return MPMPointHalfExtentDim(mpm, pts, p, n, mpm->grid.dim);
 }

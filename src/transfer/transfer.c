@@ -218,23 +218,9 @@ static inline void MPMStencilOffsets(const MPMGrid *g, const PetscReal xp[], con
    1e15 dyn/cm^2 and a step collapse). A point farther out than w_p / 2 (every seeded point: r_p >= w_p) keeps r_p. */
 static inline PetscReal MPMHoopRadius(MPM mpm, const MPMPoints *pts, PetscInt p)
 {
-  const PetscReal er[2] = {1.0, 0.0}, r = pts->f[MPM_FIELD_POSITION][2 * p];
-  PetscReal       w = 0.5 * mpm->grid.h[0] / mpm->ppc;
+  const PetscReal er[MPM_MAX_DIM] = {1.0, 0.0, 0.0}, r = pts->f[MPM_FIELD_POSITION][2 * p];
+  const PetscReal w = mpm->shape->needs_F ? MPMPointHalfExtentDim(mpm, pts, p, er, 2) : 0.5 * mpm->grid.h[0] / mpm->ppc; /* the r-z grid: d = 2 */
 
-  if (mpm->shape->needs_F) { /* MPMPointHalfExtent(mpm, pts, p, er), its operations with d = 2 (the r-z grid's): inlined */
-    PetscReal        Rs[4];
-    const PetscReal *R = pts->f[MPM_FIELD_DEFGRAD] ? MPMPointDomain(2, pts->f[MPM_FIELD_DEFGRAD], pts->f[MPM_FIELD_DOMAINSCALE], p, Rs) : NULL;
-    if (!R)
-      w = 0.5 * PetscPowReal(pts->f[MPM_FIELD_VOLUME][p], 1.0 / 2);
-    else {
-      w = 0.0;
-      for (PetscInt j = 0; j < 2; j++) {
-        PetscReal nr = 0.0;
-        for (PetscInt k = 0; k < 2; k++) nr += er[k] * R[k * 2 + j];
-        w += 0.5 * PetscAbsReal(nr) * (mpm->grid.h[j] / mpm->ppc);
-      }
-    }
-  }
   return PetscMax(r, 0.5 * w);
 }
 
@@ -283,7 +269,7 @@ MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node,
   const PetscReal *T  = pts->f[MPM_FIELD_TEMPERATURE];
   MPMStencil       st;
   const PetscBool  keep = (PetscBool)(force && !BODY && !CRACK && mpm->shape->keeps); /* the stencils kept for grid to points (MPMShapeKeep) */
-  const PetscInt   kp0  = mpm->win_n >= 0 ? mpm->win_p0 : 0;
+  const PetscInt   kp0  = MPMPointsWindowStart(mpm);
 
   for (PetscInt p = 0; p < pts->n; p++) {
     const PetscReal P   = pr[p] + q[p];
@@ -410,7 +396,7 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
     const PetscReal *S = pts.f[MPM_FIELD_STRESS];
 
     const PetscBool fresh = (PetscBool)(force && !body && !crack); /* the stencils kept for grid to points (both paths) */
-    const PetscInt  kp0   = mpm->win_n >= 0 ? mpm->win_p0 : 0;
+    const PetscInt  kp0   = MPMPointsWindowStart(mpm);
     if (force) PetscCall(MPMShapeKeep(mpm->shape, mpm->pts.n, kp0, pts.n, fresh));
     if (mpm->kern && !body && !crack) { /* the specialised kernel, then the cell sums of the cell rule */
       const MPMHoopContext  hc = {mpm, &pts};
@@ -754,7 +740,7 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
                                 .hoopr     = g->axisym ? MPMKernelHoopRadius : NULL,
                                 .hctx      = &hc,
                                 .hooprate  = pts.f[MPM_FIELD_HOOPRATE],
-                                .kp0       = mpm->win_n >= 0 ? mpm->win_p0 : 0,
+                                .kp0       = MPMPointsWindowStart(mpm),
                                 .keep      = mpm->shape->keeps && !crack ? MPM_KEEP_LOAD : MPM_KEEP_NONE};
     if (remap) { /* f_I, zeroed by the kick (MPMGridAdvance, and the ghosts from their owners), takes the remap's momenta (MPMRemapApply) */
       mpm->kern->g2p_remap[work ? MPM_G2P_MODE_VELOCITY_WORK : MPM_G2P_MODE_VELOCITY](g, mpm->shape->data, &A, node);

@@ -248,41 +248,51 @@ MPM_CPDI_INLINE PetscBool CPDIKernelStencil(const void *ctx, const MPMGrid *g, c
   return mirror;
 }
 
-/* The step's points to grid keeps point p's stencil in 2D (MPMShapeKeep), unless it has a mirror sign or more than
-   CPDI_KEPT entries; grid to points evaluates those again. The kernels' context is const, the records it points to
-   are not: only the stores here write them. */
-MPM_CPDI_INLINE void CPDIKeep(const void *ctx, const MPMTransferArgs *A, PetscInt p, PetscInt ns, const PetscInt node[], const PetscReal W[], const PetscReal DW[], PetscBool mirror, const PetscInt d)
+/* Local point q's record of its stencil at x (ns entries; entry e's gradient at DW[e sdw], DW[e sdw + 1]), or none where
+   it has a mirror sign or more than CPDI_KEPT entries: grid to points evaluates those again. The kernels' context is
+   const, the records it points to are not: only this function writes them. */
+MPM_CPDI_INLINE void CPDIKeptStore(const Shape_CPDI *cp, PetscInt q, const PetscReal x[], PetscInt ns, const PetscInt node[], const PetscReal W[], const PetscReal DW[], PetscInt sdw, PetscBool mirror)
 {
-  CPDIKept2 *r;
+  CPDIKept2 *r = &cp->kept[q];
 
-  if (d != 2) return;
-  r = &((const Shape_CPDI *)ctx)->kept[A->kp0 + p];
   if (mirror || ns > CPDI_KEPT) {
     r->ns = 0;
     return;
   }
-  r->x[0] = A->x[2 * p];
-  r->x[1] = A->x[2 * p + 1];
+  r->x[0] = x[0];
+  r->x[1] = x[1];
   for (PetscInt e = 0; e < ns; e++) {
     r->W[e]     = W[e];
-    r->DW[e][0] = DW[2 * e];
-    r->DW[e][1] = DW[2 * e + 1];
+    r->DW[e][0] = DW[e * sdw];
+    r->DW[e][1] = DW[e * sdw + 1];
     r->node[e]  = node[e];
   }
   r->ns = ns;
 }
 
-/* The step's grid to points: point p's kept stencil (its entries' count; the nodes, weights and gradients in *node, *W,
-   *DW), or 0 where none is kept for it at its present position. Nothing changes x_p, F_p or the domain's scale between
-   the step's points to grid and its grid to points (MPMStep), and the position is checked. */
+/* Local point q's record, where one is kept for it at its present position x, else NULL. Nothing changes x_p, F_p or
+   the domain's scale between the step's points to grid and its grid to points (MPMStep), and the position is checked. */
+MPM_CPDI_INLINE const CPDIKept2 *CPDIKeptFind(const Shape_CPDI *cp, PetscInt q, const PetscReal x[])
+{
+  const CPDIKept2 *r;
+
+  if (q >= cp->kn) return NULL;
+  r = &cp->kept[q];
+  return r->ns && r->x[0] == x[0] && r->x[1] == x[1] ? r : NULL;
+}
+
+/* The specialised kernels' hooks (kernels.h) in 2D: the step's points to grid keeps point p's stencil (MPMShapeKeep);
+   its grid to points reads it (the entries' count, the nodes, weights and gradients in *node, *W, *DW; 0: none). */
+MPM_CPDI_INLINE void CPDIKeep(const void *ctx, const MPMTransferArgs *A, PetscInt p, PetscInt ns, const PetscInt node[], const PetscReal W[], const PetscReal DW[], PetscBool mirror, const PetscInt d)
+{
+  if (d == 2) CPDIKeptStore((const Shape_CPDI *)ctx, A->kp0 + p, &A->x[2 * p], ns, node, W, DW, 2, mirror);
+}
+
 MPM_CPDI_INLINE PetscInt CPDIKept(const void *ctx, const MPMTransferArgs *A, PetscInt p, const PetscInt **node, const PetscReal **W, const PetscReal **DW, const PetscInt d)
 {
-  const Shape_CPDI *cp = (const Shape_CPDI *)ctx;
-  const CPDIKept2  *r;
+  const CPDIKept2 *r = d == 2 ? CPDIKeptFind((const Shape_CPDI *)ctx, A->kp0 + p, &A->x[2 * p]) : NULL;
 
-  if (d != 2 || A->kp0 + p >= cp->kn) return 0;
-  r = &cp->kept[A->kp0 + p];
-  if (!r->ns || r->x[0] != A->x[2 * p] || r->x[1] != A->x[2 * p + 1]) return 0;
+  if (!r) return 0;
   *node = r->node;
   *W    = r->W;
   *DW   = &r->DW[0][0];
@@ -359,33 +369,17 @@ static PetscErrorCode MPMShapeSetUp_CPDI(MPMShape shape, const MPMGrid *g, Petsc
    where none is valid), with the records of the specialised kernels' (CPDIKeep, CPDIKept). */
 static void MPMShapeKeepOne_CPDI(void *ctx, PetscInt q, const PetscReal x[], const MPMStencil *st)
 {
-  CPDIKept2 *r      = &((Shape_CPDI *)ctx)->kept[q];
-  PetscBool  mirror = PETSC_FALSE;
+  PetscBool mirror = PETSC_FALSE;
 
   for (PetscInt e = 0; e < st->n; e++) mirror = (PetscBool)(mirror || st->s[e][0] != 1.0 || st->s[e][1] != 1.0);
-  if (mirror || st->n > CPDI_KEPT) {
-    r->ns = 0;
-    return;
-  }
-  r->x[0] = x[0];
-  r->x[1] = x[1];
-  for (PetscInt e = 0; e < st->n; e++) {
-    r->W[e]     = st->w[e];
-    r->DW[e][0] = st->dw[e][0];
-    r->DW[e][1] = st->dw[e][1];
-    r->node[e]  = st->node[e];
-  }
-  r->ns = st->n;
+  CPDIKeptStore((const Shape_CPDI *)ctx, q, x, st->n, st->node, st->w, &st->dw[0][0], MPM_MAX_DIM, mirror);
 }
 
 static PetscBool MPMShapeKeptOne_CPDI(void *ctx, PetscInt q, const PetscReal x[], MPMStencil *st)
 {
-  const Shape_CPDI *cp = (const Shape_CPDI *)ctx;
-  const CPDIKept2  *r;
+  const CPDIKept2 *r = CPDIKeptFind((const Shape_CPDI *)ctx, q, x);
 
-  if (q >= cp->kn) return PETSC_FALSE;
-  r = &cp->kept[q];
-  if (!r->ns || r->x[0] != x[0] || r->x[1] != x[1]) return PETSC_FALSE;
+  if (!r) return PETSC_FALSE;
   st->n = r->ns;
   for (PetscInt e = 0; e < r->ns; e++) {
     st->node[e]  = r->node[e];
@@ -423,7 +417,6 @@ static PetscErrorCode MPMShapeDestroy_CPDI(MPMShape shape)
 
   PetscFunctionBegin;
   PetscCall(PetscFree(cp->kept));
-  cp->kn = cp->kinit = cp->kcap = 0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
