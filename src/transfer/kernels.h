@@ -14,7 +14,13 @@
      MPM_KKEEP(ctx, A, p, ns, node, W, DW, mirror, d)
                         keeps point p's stencil (A->keep == MPM_KEEP_STORE)
      MPM_KKEPT(ctx, A, p, &node, &W, &DW, d)
-                        its kept stencil, the number of entries, 0 where none is valid (A->keep == MPM_KEEP_LOAD). */
+                        its kept stencil, the number of entries, 0 where none is valid (A->keep == MPM_KEEP_LOAD)
+   and, optionally, for points to grid in 2D, both of
+     MPM_KSLANES        the points of a group (a constant)
+     MPM_KSTENCIL_LANES(ctx, g, A, p0, node, W, DW)
+                        the 9-entry stencils of points p0 to p0 + MPM_KSLANES - 1 in vector lanes (node[9][lanes],
+                        W[9][lanes], DW[9][2][lanes]), the same bits as MPM_KSTENCIL's; returns the mask of the lanes
+                        filled (the others go through MPM_KSTENCIL). */
 #include "transfer.h"
 
 #if !defined(__GNUC__)

@@ -248,6 +248,108 @@ MPM_CPDI_INLINE PetscBool CPDIKernelStencil(const void *ctx, const MPMGrid *g, c
   return mirror;
 }
 
+/* The 2D stencils of CPDI_LANES points p0, p0 + 1, ... in vector lanes, lane l point p0 + l (the specialised points to
+   grid's, MPM_KSTENCIL_LANES): CPDIStencil's operations per lane, so the same bits, where a point's corners span a box
+   of 3 x 3 nodes (two cells in each direction: the common case at one point per cell) that lies within the grid
+   (nothing folded, no mirror sign). Corner c contributes to box position a_k = o_k + b (o_k = first_k,c - lo_k in
+   {0, 1}) the weight w_b; as a factor u_k,c(a) over the box's 3 positions that is 0 elsewhere, and adding a product
+   with a factor 0 leaves a sum unchanged, the merged sums come out in corner order as CPDIStencil's. Fills the 9
+   entries of each lane (entry e = a_0 + 3 a_1) and returns the mask of the lanes done; the others are left to
+   CPDIStencil. */
+#define CPDI_LANES 8
+typedef PetscReal CPDILVec __attribute__((vector_size(CPDI_LANES * sizeof(PetscReal))));
+typedef PetscInt  CPDILIVec __attribute__((vector_size(CPDI_LANES * sizeof(PetscInt))));
+typedef long long CPDILMask __attribute__((vector_size(CPDI_LANES * sizeof(long long)))); /* a lane mask for CPDILVec */
+
+/* The vector whose lane l is a[l * stride]. */
+MPM_CPDI_INLINE CPDILVec CPDILanes(const PetscReal *a, PetscInt stride)
+{
+  PetscReal t[CPDI_LANES];
+  CPDILVec  v;
+
+  for (PetscInt l = 0; l < CPDI_LANES; l++) t[l] = a[l * stride];
+  __builtin_memcpy(&v, t, sizeof(v));
+  return v;
+}
+
+MPM_CPDI_INLINE unsigned CPDIKernelStencilLanes(const void *ctx, const MPMGrid *g, const MPMTransferArgs *A, PetscInt p0, PetscInt node[9][CPDI_LANES], PetscReal W[9][CPDI_LANES], PetscReal DW[9][2][CPDI_LANES])
+{
+  const Shape_CPDI *cp      = (const Shape_CPDI *)ctx;
+  const PetscReal   S[2][4] = {{-1.0, 1.0, -1.0, 1.0}, {-1.0, -1.0, 1.0, 1.0}}; /* s_ck, as CPDICorners' */
+  CPDILVec          R[4], Ri[4], det, gs[2][4], w0[2][4], w1[2][4], E[9][3];
+  CPDILIVec         first[2][4], lo[2], ok;
+  unsigned          mask = 0;
+
+  for (PetscInt k = 0; k < 4; k++) { /* R = F diag(s) diag(l0) (MPMPointDomain, CPDIDomain) */
+    CPDILVec f = A->F ? CPDILanes(&A->F[p0 * 4 + k], 4) : (CPDILVec){0} + (k == 0 || k == 3 ? 1.0 : 0.0);
+    if (A->F && A->ds) f = f * CPDILanes(&A->ds[p0 * 2 + (k & 1)], 2);
+    R[k] = f * cp->l0[k & 1];
+  }
+  det   = R[0] * R[3] - R[1] * R[2];
+  Ri[0] = R[3] / det;
+  Ri[1] = -R[1] / det;
+  Ri[2] = -R[2] / det;
+  Ri[3] = R[0] / det;
+  for (PetscInt c = 0; c < 4; c++)
+    for (PetscInt j = 0; j < 2; j++) gs[j][c] = ((CPDILVec){0} + Ri[j] * S[0][c]) + Ri[2 + j] * S[1][c]; /* (R^-T s)_j */
+  for (PetscInt i = 0; i < 2; i++) {
+    const CPDILVec x = -(CPDILVec){0} + CPDILanes(&A->x[p0 * 2 + i], 2); /* -0 + x, as CPDICorners' */
+    for (PetscInt c = 0; c < 4; c++) {
+      const CPDILVec xi = (((x + R[2 * i] * S[0][c]) + R[2 * i + 1] * S[1][c]) - g->lo[i]) / g->h[i];
+      CPDILIVec      fl = __builtin_convertvector(xi, CPDILIVec);
+      CPDILVec       fi = __builtin_convertvector(fl, CPDILVec);
+      fl                = fl + __builtin_convertvector(xi < fi, CPDILIVec);
+      fi                = __builtin_convertvector(fl, CPDILVec);
+      first[i][c]       = fl;
+      w0[i][c]          = 1.0 - (xi - fi);
+      w1[i][c]          = xi - fi;
+    }
+  }
+  ok = (CPDILIVec){0} == 0; /* all lanes true (-1) */
+  for (PetscInt i = 0; i < 2; i++) {
+    CPDILIVec hi = first[i][0];
+    lo[i]        = first[i][0];
+    for (PetscInt c = 1; c < 4; c++) {
+      const CPDILIVec less = first[i][c]<lo[i], more = first[i][c]> hi; /* -1 where true */
+      lo[i]                = (first[i][c] & less) | (lo[i] & ~less);
+      hi                   = (first[i][c] & more) | (hi & ~more);
+    }
+    ok = ok & (hi == lo[i] + 1) & (lo[i] >= 0) & (lo[i] + 2 <= g->cells[i]);
+  }
+  for (PetscInt l = 0; l < CPDI_LANES; l++) mask |= (unsigned)(ok[l] != 0) << l;
+  if (!mask) return 0;
+  for (PetscInt e = 0; e < 9; e++)
+    for (PetscInt j = 0; j < 3; j++) E[e][j] = (CPDILVec){0};
+  for (PetscInt c = 0; c < 4; c++) {
+    CPDILVec u[2][3];
+    for (PetscInt i = 0; i < 2; i++) { /* u_i,c(a): w0 at a = o, w1 at a = o + 1, else 0 */
+      const CPDILMask o0 = __builtin_convertvector(first[i][c] == lo[i], CPDILMask), b0 = (CPDILMask)w0[i][c], b1 = (CPDILMask)w1[i][c];
+      u[i][0] = (CPDILVec)(b0 & o0);
+      u[i][1] = (CPDILVec)((b1 & o0) | (b0 & ~o0));
+      u[i][2] = (CPDILVec)(b1 & ~o0);
+    }
+    for (PetscInt a1 = 0; a1 < 3; a1++) {
+      const CPDILVec N1 = (1.0 / 4) * u[1][a1]; /* CPDIStencil's N1 = (2^-d 1) w_1 */
+      for (PetscInt a0 = 0; a0 < 3; a0++) {
+        const CPDILVec N = N1 * u[0][a0];
+        CPDILVec      *e = E[3 * a1 + a0];
+        e[0] += N;
+        e[1] += N * gs[0][c];
+        e[2] += N * gs[1][c];
+      }
+    }
+  }
+  for (PetscInt a1 = 0, e = 0; a1 < 3; a1++)
+    for (PetscInt a0 = 0; a0 < 3; a0++, e++) {
+      const CPDILIVec nd = (lo[1] + a1 - g->gs[1]) * g->gm[0] + (lo[0] + a0 - g->gs[0]);
+      __builtin_memcpy(node[e], &nd, sizeof(nd));
+      __builtin_memcpy(W[e], &E[e][0], sizeof(CPDILVec));
+      __builtin_memcpy(DW[e][0], &E[e][1], sizeof(CPDILVec));
+      __builtin_memcpy(DW[e][1], &E[e][2], sizeof(CPDILVec));
+    }
+  return mask;
+}
+
 /* Local point q's record of its stencil at x (ns entries; entry e's gradient at DW[e sdw], DW[e sdw + 1]), or none where
    it has a mirror sign or more than CPDI_KEPT entries: grid to points evaluates those again. The kernels' context is
    const, the records it points to are not: only this function writes them. */
@@ -304,6 +406,8 @@ MPM_CPDI_INLINE PetscInt CPDIKept(const void *ctx, const MPMTransferArgs *A, Pet
 #define MPM_KSTENCIL CPDIKernelStencil
 #define MPM_KKEEP CPDIKeep
 #define MPM_KKEPT CPDIKept
+#define MPM_KSTENCIL_LANES CPDIKernelStencilLanes
+#define MPM_KSLANES CPDI_LANES
 #include "../../transfer/kernels.h"
 
 static void MPMShapeEvaluate_CPDI(void *ctx, const MPMGrid *g, const PetscReal x[], const PetscReal F[], MPMStencil *st)
