@@ -84,6 +84,7 @@ MPM_KG2PREMAP_MODES(MPM_KG2PREMAP, MPM_KD)
 #undef MPM_KP2G
 #undef MPM_KG2P
 #undef MPM_KS
+#undef MPM_KS3
 #undef MPM_KCV
 #undef MPM_KEVAL
 #undef MPM_KLANE

@@ -254,6 +254,28 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
       }
   }
 #endif
+#if defined(MPM_KSTENCIL_LANES) && MPM_KD > 1
+  PetscInt skip = 0;
+  for (; A->keep != MPM_KEEP_LOAD && p + MPM_KSLANES <= A->n; p += MPM_KSLANES) { /* no kept stencils: each group's 3^d in vector lanes */
+    PetscInt  node[MPM_KS3][MPM_KSLANES];
+    PetscReal W[MPM_KS3][MPM_KSLANES], DW[MPM_KS3][MPM_KD][MPM_KSLANES];
+    unsigned  done = 0;
+    if (skip) /* after a group with no lane done (domains within a cell: several points per cell), 7 groups untried */
+      skip--;
+    else if (!(done = MPM_KSTENCIL_LANES(ctx, g, A, p, node, W, &DW[0][0][0], MPM_KD)))
+      skip = 7;
+    for (PetscInt l = 0; l < MPM_KSLANES; l++) {
+      PetscInt  nodel[MPM_KS]; /* MPMKG2PPoint's arrays, of which MPM_KS3 are filled */
+      PetscReal Wl[MPM_KS], DWl[MPM_KS][MPM_KD];
+      if (!((done >> l) & 1u)) { /* a point the lanes leave: its own stencil */
+        MPM_KCAT(MPMKG2POne, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, p + l, mode);
+        continue;
+      }
+      MPM_KCAT(MPMKStencilLaneOut, MPM_KNAME, MPM_KD, d)(l, node, W, DW, nodel, Wl, DWl);
+      MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS3, nodel, Wl, DWl, NULL, mode, 0);
+    }
+  }
+#endif
   for (; p < A->n; p++) MPM_KCAT(MPMKG2POne, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, p, mode);
 }
 

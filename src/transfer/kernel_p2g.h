@@ -250,28 +250,28 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GLoop, MPM_KNAME, MPM_KD, d)(const MPMGrid *gin,
     }
   }
 #endif
-#if defined(MPM_KSTENCIL_LANES) && MPM_KD == 2
-  for (; p + MPM_KSLANES <= A->n; p += MPM_KSLANES) { /* point by point, each group's 3 x 3 stencils in vector lanes */
-    PetscInt       node[9][MPM_KSLANES];
-    PetscReal      W[9][MPM_KSLANES], DW[9][2][MPM_KSLANES];
-    const unsigned done = MPM_KSTENCIL_LANES(ctx, g, A, p, node, W, DW);
+#if defined(MPM_KSTENCIL_LANES) && MPM_KD > 1
+  PetscInt skip = 0;
+  for (; p + MPM_KSLANES <= A->n; p += MPM_KSLANES) { /* point by point, each group's 3^d stencils in vector lanes */
+    PetscInt  node[MPM_KS3][MPM_KSLANES];
+    PetscReal W[MPM_KS3][MPM_KSLANES], DW[MPM_KS3][MPM_KD][MPM_KSLANES];
+    unsigned  done = 0;
+    if (skip) /* after a group with no lane done (domains within a cell: several points per cell), 7 groups untried */
+      skip--;
+    else if (!(done = MPM_KSTENCIL_LANES(ctx, g, A, p, node, W, &DW[0][0][0], MPM_KD)))
+      skip = 7;
     for (PetscInt l = 0; l < MPM_KSLANES; l++) {
-      PetscInt  nodel[9];
-      PetscReal Wl[9], DWl[9][2];
+      PetscInt  nodel[MPM_KS3];
+      PetscReal Wl[MPM_KS3], DWl[MPM_KS3][MPM_KD];
       if (!((done >> l) & 1u)) { /* a point the lanes leave: its own stencil */
         MPM_KCAT(MPMKP2GOne, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, p + l, mode);
         continue;
       }
-      for (PetscInt a = 0; a < 9; a++) {
-        nodel[a]  = node[a][l];
-        Wl[a]     = W[a][l];
-        DWl[a][0] = DW[a][0][l];
-        DWl[a][1] = DW[a][1][l];
-      }
+      MPM_KCAT(MPMKStencilLaneOut, MPM_KNAME, MPM_KD, d)(l, node, W, DW, nodel, Wl, DWl);
 #  if defined(MPM_KKEEP)
-      if (A->keep == MPM_KEEP_STORE) MPM_KKEEP(ctx, A, p + l, 9, nodel, Wl, &DWl[0][0], PETSC_FALSE, MPM_KD);
+      if (A->keep == MPM_KEEP_STORE) MPM_KKEEP(ctx, A, p + l, MPM_KS3, nodel, Wl, &DWl[0][0], PETSC_FALSE, MPM_KD);
 #  endif
-      MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, 9, nodel, Wl, DWl, NULL, mode, 0, 1);
+      MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS3, nodel, Wl, DWl, NULL, mode, 0, 1);
     }
   }
 #endif

@@ -197,3 +197,18 @@ MPM_KINLINE void MPM_KCAT(MPMKLaneOut, MPM_KNAME, MPM_KD, d)(PetscInt l, const P
   }
 }
 #endif
+
+#if defined(MPM_KSTENCIL_LANES) && MPM_KD > 1
+/* A family's 3^d-entry stencils in vector lanes (MPM_KSTENCIL_LANES, kernels.h): the entries' count and lane l as one
+   point's arrays. */
+#  define MPM_KS3 (MPM_KD == 2 ? 9 : 27)
+MPM_KINLINE void MPM_KCAT(MPMKStencilLaneOut, MPM_KNAME, MPM_KD, d)(PetscInt l, const PetscInt node[MPM_KS3][MPM_KSLANES], const PetscReal W[MPM_KS3][MPM_KSLANES], const PetscReal DW[MPM_KS3][MPM_KD][MPM_KSLANES], PetscInt nodel[MPM_KS3],
+                                                                    PetscReal Wl[MPM_KS3], PetscReal DWl[MPM_KS3][MPM_KD])
+{
+  for (PetscInt a = 0; a < MPM_KS3; a++) {
+    nodel[a] = node[a][l];
+    Wl[a]    = W[a][l];
+    for (PetscInt k = 0; k < MPM_KD; k++) DWl[a][k] = DW[a][k][l];
+  }
+}
+#endif

@@ -15,12 +15,13 @@
                         keeps point p's stencil (A->keep == MPM_KEEP_STORE)
      MPM_KKEPT(ctx, A, p, &node, &W, &DW, d)
                         its kept stencil, the number of entries, 0 where none is valid (A->keep == MPM_KEEP_LOAD)
-   and, optionally, for points to grid in 2D, both of
+   and, optionally, in 2D and 3D, both of
      MPM_KSLANES        the points of a group (a constant)
-     MPM_KSTENCIL_LANES(ctx, g, A, p0, node, W, DW)
-                        the 9-entry stencils of points p0 to p0 + MPM_KSLANES - 1 in vector lanes (node[9][lanes],
-                        W[9][lanes], DW[9][2][lanes]), the same bits as MPM_KSTENCIL's; returns the mask of the lanes
-                        filled (the others go through MPM_KSTENCIL). */
+     MPM_KSTENCIL_LANES(ctx, g, A, p0, node, W, DW, d)
+                        the 3^d-entry stencils of points p0 to p0 + MPM_KSLANES - 1 in vector lanes (node[3^d][lanes],
+                        W[3^d][lanes], DW flat as [3^d][d][lanes]), the same bits as MPM_KSTENCIL's; returns the mask of
+                        the lanes filled (the others go through MPM_KSTENCIL). Points to grid uses it, and grid to
+                        points where no stencil is kept. */
 #include "transfer.h"
 
 #if !defined(__GNUC__)

@@ -248,13 +248,13 @@ MPM_CPDI_INLINE PetscBool CPDIKernelStencil(const void *ctx, const MPMGrid *g, c
   return mirror;
 }
 
-/* The 2D stencils of CPDI_LANES points p0, p0 + 1, ... in vector lanes, lane l point p0 + l (the specialised points to
-   grid's, MPM_KSTENCIL_LANES): CPDIStencil's operations per lane, so the same bits, where a point's corners span a box
-   of 3 x 3 nodes (two cells in each direction: the common case at one point per cell) that lies within the grid
+/* The stencils of CPDI_LANES points p0, p0 + 1, ... in 2D or 3D in vector lanes, lane l point p0 + l (the specialised
+   transfers', MPM_KSTENCIL_LANES): CPDIStencil's operations per lane, so the same bits, where a point's corners span a
+   box of 3^d nodes (two cells in each direction: the common case at one point per cell) that lies within the grid
    (nothing folded, no mirror sign). Corner c contributes to box position a_k = o_k + b (o_k = first_k,c - lo_k in
    {0, 1}) the weight w_b; as a factor u_k,c(a) over the box's 3 positions that is 0 elsewhere, and adding a product
-   with a factor 0 leaves a sum unchanged, the merged sums come out in corner order as CPDIStencil's. Fills the 9
-   entries of each lane (entry e = a_0 + 3 a_1) and returns the mask of the lanes done; the others are left to
+   with a factor 0 leaves a sum unchanged, the merged sums come out in corner order as CPDIStencil's. Fills the 3^d
+   entries of each lane (entry e = a_0 + 3 a_1 + 9 a_2: node[e][l], W[e][l], DW[(e d + j) CPDI_LANES + l]) and returns the mask of the lanes done; the others are left to
    CPDIStencil. */
 #define CPDI_LANES 8
 typedef PetscReal CPDILVec __attribute__((vector_size(CPDI_LANES * sizeof(PetscReal))));
@@ -272,44 +272,64 @@ MPM_CPDI_INLINE CPDILVec CPDILanes(const PetscReal *a, PetscInt stride)
   return v;
 }
 
-MPM_CPDI_INLINE unsigned CPDIKernelStencilLanes(const void *ctx, const MPMGrid *g, const MPMTransferArgs *A, PetscInt p0, PetscInt node[9][CPDI_LANES], PetscReal W[9][CPDI_LANES], PetscReal DW[9][2][CPDI_LANES])
+MPM_CPDI_INLINE unsigned CPDIKernelStencilLanes(const void *ctx, const MPMGrid *g, const MPMTransferArgs *A, PetscInt p0, PetscInt node[][CPDI_LANES], PetscReal W[][CPDI_LANES], PetscReal DW[], const PetscInt d)
 {
-  const Shape_CPDI *cp      = (const Shape_CPDI *)ctx;
-  const PetscReal   S[2][4] = {{-1.0, 1.0, -1.0, 1.0}, {-1.0, -1.0, 1.0, 1.0}}; /* s_ck, as CPDICorners' */
-  CPDILVec          R[4], Ri[4], det, gs[2][4], w0[2][4], w1[2][4], E[9][3];
-  CPDILIVec         first[2][4], lo[2], ok;
+  const Shape_CPDI *cp = (const Shape_CPDI *)ctx;
+  const PetscInt    nc = 1 << d, dd = d * d;
+  CPDILVec          R[9], Ri[9], det, gs[3][8], w0[3][8], w1[3][8], u[3][8][3];
+  CPDILIVec         first[3][8], lo[3], ok;
   unsigned          mask = 0;
 
-  for (PetscInt k = 0; k < 4; k++) { /* R = F diag(s) diag(l0) (MPMPointDomain, CPDIDomain) */
-    CPDILVec f = A->F ? CPDILanes(&A->F[p0 * 4 + k], 4) : (CPDILVec){0} + (k == 0 || k == 3 ? 1.0 : 0.0);
-    if (A->F && A->ds) f = f * CPDILanes(&A->ds[p0 * 2 + (k & 1)], 2);
-    R[k] = f * cp->l0[k & 1];
+  for (PetscInt k = 0; k < dd; k++) { /* R = F diag(s) diag(l0) (MPMPointDomain, CPDIDomain) */
+    CPDILVec f = A->F ? CPDILanes(&A->F[p0 * dd + k], dd) : (CPDILVec){0} + (k % (d + 1) == 0 ? 1.0 : 0.0);
+    if (A->F && A->ds) f = f * CPDILanes(&A->ds[p0 * d + k % d], d);
+    R[k] = f * cp->l0[k % d];
   }
-  det   = R[0] * R[3] - R[1] * R[2];
-  Ri[0] = R[3] / det;
-  Ri[1] = -R[1] / det;
-  Ri[2] = -R[2] / det;
-  Ri[3] = R[0] / det;
-  for (PetscInt c = 0; c < 4; c++)
-    for (PetscInt j = 0; j < 2; j++) gs[j][c] = ((CPDILVec){0} + Ri[j] * S[0][c]) + Ri[2 + j] * S[1][c]; /* (R^-T s)_j */
-  for (PetscInt i = 0; i < 2; i++) {
-    const CPDILVec x = -(CPDILVec){0} + CPDILanes(&A->x[p0 * 2 + i], 2); /* -0 + x, as CPDICorners' */
-    for (PetscInt c = 0; c < 4; c++) {
-      const CPDILVec xi = (((x + R[2 * i] * S[0][c]) + R[2 * i + 1] * S[1][c]) - g->lo[i]) / g->h[i];
-      CPDILIVec      fl = __builtin_convertvector(xi, CPDILIVec);
-      CPDILVec       fi = __builtin_convertvector(fl, CPDILVec);
-      fl                = fl + __builtin_convertvector(xi < fi, CPDILIVec);
-      fi                = __builtin_convertvector(fl, CPDILVec);
-      first[i][c]       = fl;
-      w0[i][c]          = 1.0 - (xi - fi);
-      w1[i][c]          = xi - fi;
+  if (d == 2) { /* R^-1, the operations of CPDIDomain and MPMDeterminant */
+    det   = R[0] * R[3] - R[1] * R[2];
+    Ri[0] = R[3] / det;
+    Ri[1] = -R[1] / det;
+    Ri[2] = -R[2] / det;
+    Ri[3] = R[0] / det;
+  } else {
+    det   = R[0] * (R[4] * R[8] - R[5] * R[7]) - R[1] * (R[3] * R[8] - R[5] * R[6]) + R[2] * (R[3] * R[7] - R[4] * R[6]);
+    Ri[0] = (R[4] * R[8] - R[5] * R[7]) / det;
+    Ri[1] = (R[2] * R[7] - R[1] * R[8]) / det;
+    Ri[2] = (R[1] * R[5] - R[2] * R[4]) / det;
+    Ri[3] = (R[5] * R[6] - R[3] * R[8]) / det;
+    Ri[4] = (R[0] * R[8] - R[2] * R[6]) / det;
+    Ri[5] = (R[2] * R[3] - R[0] * R[5]) / det;
+    Ri[6] = (R[3] * R[7] - R[4] * R[6]) / det;
+    Ri[7] = (R[1] * R[6] - R[0] * R[7]) / det;
+    Ri[8] = (R[0] * R[4] - R[1] * R[3]) / det;
+  }
+  for (PetscInt c = 0; c < nc; c++)
+    for (PetscInt j = 0; j < d; j++) { /* (R^-T s_c)_j, s_ck = +-1 by bit k of c, in CPDICorners' order */
+      CPDILVec t = (CPDILVec){0};
+      for (PetscInt k = 0; k < d; k++) t += Ri[k * d + j] * (((c >> k) & 1) ? 1.0 : -1.0);
+      gs[j][c] = t;
+    }
+  for (PetscInt i = 0; i < d; i++) {
+    const CPDILVec x = -(CPDILVec){0} + CPDILanes(&A->x[p0 * d + i], d); /* -0 + x, as CPDICorners' */
+    for (PetscInt c = 0; c < nc; c++) {
+      CPDILVec  xc = x, xi, fi;
+      CPDILIVec fl;
+      for (PetscInt k = 0; k < d; k++) xc += R[i * d + k] * (((c >> k) & 1) ? 1.0 : -1.0);
+      xi          = (xc - g->lo[i]) / g->h[i];
+      fl          = __builtin_convertvector(xi, CPDILIVec);
+      fi          = __builtin_convertvector(fl, CPDILVec);
+      fl          = fl + __builtin_convertvector(xi < fi, CPDILIVec);
+      fi          = __builtin_convertvector(fl, CPDILVec);
+      first[i][c] = fl;
+      w0[i][c]    = 1.0 - (xi - fi);
+      w1[i][c]    = xi - fi;
     }
   }
   ok = (CPDILIVec){0} == 0; /* all lanes true (-1) */
-  for (PetscInt i = 0; i < 2; i++) {
+  for (PetscInt i = 0; i < d; i++) {
     CPDILIVec hi = first[i][0];
     lo[i]        = first[i][0];
-    for (PetscInt c = 1; c < 4; c++) {
+    for (PetscInt c = 1; c < nc; c++) {
       const CPDILIVec less = first[i][c]<lo[i], more = first[i][c]> hi; /* -1 where true */
       lo[i]                = (first[i][c] & less) | (lo[i] & ~less);
       hi                   = (first[i][c] & more) | (hi & ~more);
@@ -318,34 +338,36 @@ MPM_CPDI_INLINE unsigned CPDIKernelStencilLanes(const void *ctx, const MPMGrid *
   }
   for (PetscInt l = 0; l < CPDI_LANES; l++) mask |= (unsigned)(ok[l] != 0) << l;
   if (!mask) return 0;
-  for (PetscInt e = 0; e < 9; e++)
-    for (PetscInt j = 0; j < 3; j++) E[e][j] = (CPDILVec){0};
-  for (PetscInt c = 0; c < 4; c++) {
-    CPDILVec u[2][3];
-    for (PetscInt i = 0; i < 2; i++) { /* u_i,c(a): w0 at a = o, w1 at a = o + 1, else 0 */
+  for (PetscInt c = 0; c < nc; c++)
+    for (PetscInt i = 0; i < d; i++) { /* u_i,c(a): w0 at a = o, w1 at a = o + 1, else 0 */
       const CPDILMask o0 = __builtin_convertvector(first[i][c] == lo[i], CPDILMask), b0 = (CPDILMask)w0[i][c], b1 = (CPDILMask)w1[i][c];
-      u[i][0] = (CPDILVec)(b0 & o0);
-      u[i][1] = (CPDILVec)((b1 & o0) | (b0 & ~o0));
-      u[i][2] = (CPDILVec)(b1 & ~o0);
+      u[i][c][0] = (CPDILVec)(b0 & o0);
+      u[i][c][1] = (CPDILVec)((b1 & o0) | (b0 & ~o0));
+      u[i][c][2] = (CPDILVec)(b1 & ~o0);
     }
+  /* a row of 3 entries (a_1, a_2 fixed) at a time, its sums in registers over the corners in order */
+  for (PetscInt a2 = 0; a2 < (d > 2 ? 3 : 1); a2++)
     for (PetscInt a1 = 0; a1 < 3; a1++) {
-      const CPDILVec N1 = (1.0 / 4) * u[1][a1]; /* CPDIStencil's N1 = (2^-d 1) w_1 */
-      for (PetscInt a0 = 0; a0 < 3; a0++) {
-        const CPDILVec N = N1 * u[0][a0];
-        CPDILVec      *e = E[3 * a1 + a0];
-        e[0] += N;
-        e[1] += N * gs[0][c];
-        e[2] += N * gs[1][c];
+      CPDILVec acc[3][4];
+      for (PetscInt a0 = 0; a0 < 3; a0++)
+        for (PetscInt j = 0; j <= d; j++) acc[a0][j] = (CPDILVec){0};
+      for (PetscInt c = 0; c < nc; c++) {
+        const CPDILVec N2 = (1.0 / nc) * (d > 2 ? u[2][c][a2] : (CPDILVec){0} + 1.0); /* CPDIStencil's N2 = 2^-d w_2 (1 in 2D) */
+        const CPDILVec N1 = N2 * u[1][c][a1];
+        for (PetscInt a0 = 0; a0 < 3; a0++) {
+          const CPDILVec N = N1 * u[0][c][a0];
+          acc[a0][0] += N;
+          for (PetscInt j = 0; j < d; j++) acc[a0][1 + j] += N * gs[j][c];
+        }
       }
-    }
-  }
-  for (PetscInt a1 = 0, e = 0; a1 < 3; a1++)
-    for (PetscInt a0 = 0; a0 < 3; a0++, e++) {
-      const CPDILIVec nd = (lo[1] + a1 - g->gs[1]) * g->gm[0] + (lo[0] + a0 - g->gs[0]);
-      __builtin_memcpy(node[e], &nd, sizeof(nd));
-      __builtin_memcpy(W[e], &E[e][0], sizeof(CPDILVec));
-      __builtin_memcpy(DW[e][0], &E[e][1], sizeof(CPDILVec));
-      __builtin_memcpy(DW[e][1], &E[e][2], sizeof(CPDILVec));
+      for (PetscInt a0 = 0; a0 < 3; a0++) {
+        const PetscInt  e  = 9 * a2 + 3 * a1 + a0;
+        const CPDILIVec o1 = d > 2 ? (lo[2] + a2 - g->gs[2]) * g->gm[1] + (lo[1] + a1 - g->gs[1]) : lo[1] + a1 - g->gs[1];
+        const CPDILIVec nd = o1 * g->gm[0] + (lo[0] + a0 - g->gs[0]);
+        __builtin_memcpy(node[e], &nd, sizeof(nd));
+        __builtin_memcpy(W[e], &acc[a0][0], sizeof(CPDILVec));
+        for (PetscInt j = 0; j < d; j++) __builtin_memcpy(&DW[(e * d + j) * CPDI_LANES], &acc[a0][1 + j], sizeof(CPDILVec));
+      }
     }
   return mask;
 }
