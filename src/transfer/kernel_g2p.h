@@ -256,7 +256,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
 #endif
 #if defined(MPM_KSTENCIL_LANES) && MPM_KD > 1
   PetscInt skip = 0;
-  for (; A->keep != MPM_KEEP_LOAD && p + MPM_KSLANES <= A->n; p += MPM_KSLANES) { /* no kept stencils: each group's 3^d in vector lanes */
+  for (; p + MPM_KSLANES <= A->n; p += MPM_KSLANES) { /* each group's 3^d stencils in vector lanes (points to grid keeps none of them) */
     PetscInt  node[MPM_KS3][MPM_KSLANES];
     PetscReal W[MPM_KS3][MPM_KSLANES], DW[MPM_KS3][MPM_KD][MPM_KSLANES];
     unsigned  done = 0;
@@ -267,7 +267,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
     for (PetscInt l = 0; l < MPM_KSLANES; l++) {
       PetscInt  nodel[MPM_KS]; /* MPMKG2PPoint's arrays, of which MPM_KS3 are filled */
       PetscReal Wl[MPM_KS], DWl[MPM_KS][MPM_KD];
-      if (!((done >> l) & 1u)) { /* a point the lanes leave: its own stencil */
+      if (!((done >> l) & 1u)) { /* a point the lanes leave: its kept or its own stencil */
         MPM_KCAT(MPMKG2POne, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, p + l, mode);
         continue;
       }

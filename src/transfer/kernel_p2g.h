@@ -269,7 +269,7 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GLoop, MPM_KNAME, MPM_KD, d)(const MPMGrid *gin,
       }
       MPM_KCAT(MPMKStencilLaneOut, MPM_KNAME, MPM_KD, d)(l, node, W, DW, nodel, Wl, DWl);
 #  if defined(MPM_KKEEP)
-      if (A->keep == MPM_KEEP_STORE) MPM_KKEEP(ctx, A, p + l, MPM_KS3, nodel, Wl, &DWl[0][0], PETSC_FALSE, MPM_KD);
+      if (A->keep == MPM_KEEP_STORE) MPM_KKEEP(ctx, A, p + l, 0, NULL, NULL, NULL, PETSC_TRUE, MPM_KD); /* none kept: grid to points takes it in lanes again */
 #  endif
       MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS3, nodel, Wl, DWl, NULL, mode, 0, 1);
     }

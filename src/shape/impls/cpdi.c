@@ -12,20 +12,21 @@
 
 /* A point's stencil in 2D and r-z as the step's points to grid evaluated it, for its grid to points (CPDIKeep, CPDIKept: the
    specialised kernels; MPMShapeKeepOne_CPDI, MPMShapeKeptOne_CPDI: the generic transfers): the
-   position it was evaluated at and its ns <= 9 entries (a domain within a cell of its point in each direction, the
-   3 x 3 merged box or less); ns = 0: none kept. 272 bytes with 4-byte indices. */
+   position it was evaluated at and its entries (a domain within a cell of its point in each direction, the 3 x 3
+   merged box or less), 272 bytes with 4-byte indices; their number ns <= 9 apart, one byte a point (0: none kept). */
 #define CPDI_KEPT 9
 typedef struct {
   PetscReal x[2], W[CPDI_KEPT], DW[CPDI_KEPT][2];
-  PetscInt  node[CPDI_KEPT], ns;
+  PetscInt  node[CPDI_KEPT];
 } CPDIKept2;
 
 typedef struct {
-  PetscReal  l0[MPM_MAX_DIM]; /* undeformed half-width of the domain [cm] */
-  PetscInt   reach;           /* how far the corners may reach beyond the point's cell [cells] */
-  PetscBool  keep;            /* -mpm_shape_cpdi_keep: keep the stencils in 2D */
-  CPDIKept2 *kept;            /* the rank's points' stencils, kn of them valid to index, kinit set, room for kcap */
-  PetscInt   kn, kinit, kcap;
+  PetscReal      l0[MPM_MAX_DIM]; /* undeformed half-width of the domain [cm] */
+  PetscInt       reach;           /* how far the corners may reach beyond the point's cell [cells] */
+  PetscBool      keep;            /* -mpm_shape_cpdi_keep: keep the stencils in 2D */
+  CPDIKept2     *kept;            /* the rank's points' stencils, kn of them valid to index, room for kcap */
+  unsigned char *kns;             /* the number of entries kept for each (0: none); all kcap set */
+  PetscInt       kn, kcap;
 } Shape_CPDI;
 
 static PetscInt MPMShapeSupport_CPDI(void *ctx)
@@ -380,7 +381,7 @@ MPM_CPDI_INLINE void CPDIKeptStore(const Shape_CPDI *cp, PetscInt q, const Petsc
   CPDIKept2 *r = &cp->kept[q];
 
   if (mirror || ns > CPDI_KEPT) {
-    r->ns = 0;
+    cp->kns[q] = 0;
     return;
   }
   r->x[0] = x[0];
@@ -391,18 +392,17 @@ MPM_CPDI_INLINE void CPDIKeptStore(const Shape_CPDI *cp, PetscInt q, const Petsc
     r->DW[e][1] = DW[e * sdw + 1];
     r->node[e]  = node[e];
   }
-  r->ns = ns;
+  cp->kns[q] = (unsigned char)ns;
 }
 
-/* Local point q's record, where one is kept for it at its present position x, else NULL. Nothing changes x_p, F_p or
-   the domain's scale between the step's points to grid and its grid to points (MPMStep), and the position is checked. */
-MPM_CPDI_INLINE const CPDIKept2 *CPDIKeptFind(const Shape_CPDI *cp, PetscInt q, const PetscReal x[])
+/* The number of entries of local point q's record in *r, where one is kept for it at its present position x, else 0.
+   Nothing changes x_p, F_p or the domain's scale between the step's points to grid and its grid to points (MPMStep),
+   and the position is checked. */
+MPM_CPDI_INLINE PetscInt CPDIKeptFind(const Shape_CPDI *cp, PetscInt q, const PetscReal x[], const CPDIKept2 **r)
 {
-  const CPDIKept2 *r;
-
-  if (q >= cp->kn) return NULL;
-  r = &cp->kept[q];
-  return r->ns && r->x[0] == x[0] && r->x[1] == x[1] ? r : NULL;
+  if (q >= cp->kn || !cp->kns[q]) return 0;
+  *r = &cp->kept[q];
+  return (*r)->x[0] == x[0] && (*r)->x[1] == x[1] ? cp->kns[q] : 0;
 }
 
 /* The specialised kernels' hooks (kernels.h) in 2D: the step's points to grid keeps point p's stencil (MPMShapeKeep);
@@ -414,13 +414,14 @@ MPM_CPDI_INLINE void CPDIKeep(const void *ctx, const MPMTransferArgs *A, PetscIn
 
 MPM_CPDI_INLINE PetscInt CPDIKept(const void *ctx, const MPMTransferArgs *A, PetscInt p, const PetscInt **node, const PetscReal **W, const PetscReal **DW, const PetscInt d)
 {
-  const CPDIKept2 *r = d == 2 ? CPDIKeptFind((const Shape_CPDI *)ctx, A->kp0 + p, &A->x[2 * p]) : NULL;
+  const CPDIKept2 *r  = NULL;
+  const PetscInt   ns = d == 2 ? CPDIKeptFind((const Shape_CPDI *)ctx, A->kp0 + p, &A->x[2 * p], &r) : 0;
 
-  if (!r) return 0;
+  if (!ns) return 0;
   *node = r->node;
   *W    = r->W;
   *DW   = &r->DW[0][0];
-  return r->ns;
+  return ns;
 }
 
 #define MPM_KNAME CPDI
@@ -503,11 +504,12 @@ static void MPMShapeKeepOne_CPDI(void *ctx, PetscInt q, const PetscReal x[], con
 
 static PetscBool MPMShapeKeptOne_CPDI(void *ctx, PetscInt q, const PetscReal x[], MPMStencil *st)
 {
-  const CPDIKept2 *r = CPDIKeptFind((const Shape_CPDI *)ctx, q, x);
+  const CPDIKept2 *r  = NULL;
+  const PetscInt   ns = CPDIKeptFind((const Shape_CPDI *)ctx, q, x, &r);
 
-  if (!r) return PETSC_FALSE;
-  st->n = r->ns;
-  for (PetscInt e = 0; e < r->ns; e++) {
+  if (!ns) return PETSC_FALSE;
+  st->n = ns;
+  for (PetscInt e = 0; e < ns; e++) {
     st->node[e]  = r->node[e];
     st->w[e]     = r->W[e];
     st->dw[e][0] = r->DW[e][0];
@@ -517,23 +519,21 @@ static PetscBool MPMShapeKeptOne_CPDI(void *ctx, PetscInt q, const PetscReal x[]
   return PETSC_TRUE;
 }
 
-/* MPMShapeKeep: room for nlocal points' stencils (new room holds none: set as it is first used, so that the room
-   beyond the points is not touched); without fresh, points p0 to p0 + n - 1 keep none this step. */
+/* MPMShapeKeep: room for nlocal points' stencils (new room holds none; the records are not touched until written);
+   without fresh, points p0 to p0 + n - 1 keep none this step. */
 static PetscErrorCode MPMShapeKeep_CPDI(MPMShape shape, PetscInt nlocal, PetscInt p0, PetscInt n, PetscBool fresh)
 {
   Shape_CPDI *cp = (Shape_CPDI *)shape->data;
 
   PetscFunctionBegin;
   if (nlocal > cp->kcap) {
-    PetscCall(PetscFree(cp->kept));
-    cp->kcap  = nlocal + nlocal / 4;
-    cp->kinit = 0;
-    PetscCall(PetscMalloc1(cp->kcap, &cp->kept));
+    PetscCall(PetscFree2(cp->kept, cp->kns));
+    cp->kcap = nlocal + nlocal / 4;
+    PetscCall(PetscMalloc2(cp->kcap, &cp->kept, cp->kcap, &cp->kns));
+    PetscCall(PetscArrayzero(cp->kns, cp->kcap));
   }
-  for (; cp->kinit < nlocal; cp->kinit++) cp->kept[cp->kinit].ns = 0;
   cp->kn = nlocal;
-  if (!fresh)
-    for (PetscInt q = p0; q < p0 + n; q++) cp->kept[q].ns = 0;
+  if (!fresh) PetscCall(PetscArrayzero(&cp->kns[p0], n));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -542,7 +542,7 @@ static PetscErrorCode MPMShapeDestroy_CPDI(MPMShape shape)
   Shape_CPDI *cp = (Shape_CPDI *)shape->data;
 
   PetscFunctionBegin;
-  PetscCall(PetscFree(cp->kept));
+  PetscCall(PetscFree2(cp->kept, cp->kns));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -553,7 +553,7 @@ static PetscErrorCode MPMShapeSetFromOptions_CPDI(MPMShape shape, PetscOptionIte
   PetscFunctionBegin;
   PetscOptionsHeadBegin(PetscOptionsObject, "CPDI shape functions");
   PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-shape_cpdi_reach", "How far a point domain's corners may reach beyond its cell [cells], 1 to 4 (ghost width = reach + 1)", &cp->reach, 1, 4));
-  PetscCall(PetscOptionsBool("-shape_cpdi_keep", "2D and r-z: keep each point's stencil from points to grid for grid to points (272 bytes a point; the same results)", "", cp->keep, &cp->keep, NULL));
+  PetscCall(PetscOptionsBool("-shape_cpdi_keep", "2D and r-z: keep from points to grid for grid to points the stencils the vector lanes leave (273 bytes a point; the same results)", "", cp->keep, &cp->keep, NULL));
   PetscOptionsHeadEnd();
   PetscFunctionReturn(PETSC_SUCCESS);
 }
