@@ -140,15 +140,15 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
 #if defined(MPM_KLANES)
 /* MPM_KLANES points at once, none with a mirrored entry: the stencil sums of MPMKG2PPoint with one vector lane per point
    (the same operations in the same order in every lane, so the same bits as point by point), then each point's finish. */
-MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, const MPMNode *nodes, PetscInt p0, const PetscInt node[MPM_KS][MPM_KLANES], const PetscReal W[MPM_KS][MPM_KLANES], const PetscReal DW[MPM_KS][MPM_KD][MPM_KLANES],
-                                                              const int mode)
+MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, const MPMNode *nodes, PetscInt p0, const PetscInt ns, const PetscInt node[][MPM_KLANES], const PetscReal W[][MPM_KLANES],
+                                                              const PetscReal DW[][MPM_KD][MPM_KLANES], const int mode)
 {
   const PetscInt  D        = MPM_KD;
   const PetscBool velocity = (PetscBool)(mode & MPM_G2P_VELOCITY), kinematics = (PetscBool)(mode & MPM_G2P_KINEMATICS), work = (PetscBool)(mode & MPM_G2P_WORK);
   MPM_KVEC        vpic[MPM_KD] = {0}, dv[MPM_KD] = {0}, Lp[MPM_KD * MPM_KD] = {0}, Lb[MPM_KD * MPM_KD] = {0}, dv2[MPM_KD] = {0}, R[MPM_KD] = {0}, vp[MPM_KD];
 
   for (PetscInt i = 0; i < D; i++) vp[i] = MPM_KLANE(&A->v[p0 * D + i], D);
-  for (PetscInt a = 0; a < MPM_KS; a++) {
+  for (PetscInt a = 0; a < ns; a++) {
     const MPM_KVEC w = MPM_KLANE(W[a], 1);
     MPM_KVEC       dw[MPM_KD];
     for (PetscInt j = 0; j < D; j++) dw[j] = MPM_KLANE(DW[a][j], 1);
@@ -187,8 +187,8 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
       Lbl[i] = Lb[i][l];
     }
     MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p0 + l, vpicl, dvl, dv2l, Rl, Lpl, Lbl, NULL, 1.0, 0.0, mode); /* never axisymmetric (MPMKG2PLoopMode) */
-    if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p0 + l, MPM_KS, &node[0][l], &W[0][l], NULL, NULL, MPM_P2G_REMAP, 0, MPM_KLANES);
-    if (kinematics && A->hw) MPMHeatGather(A, p0 + l, MPM_KS, &node[0][l], &W[0][l], MPM_KLANES);
+    if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p0 + l, ns, &node[0][l], &W[0][l], NULL, NULL, MPM_P2G_REMAP, 0, MPM_KLANES);
+    if (kinematics && A->hw) MPMHeatGather(A, p0 + l, ns, &node[0][l], &W[0][l], MPM_KLANES);
   }
 }
 #endif
@@ -228,7 +228,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
   const MPMTransferArgs Al = *Ain, *A = &Al;
   PetscInt              p = 0;
 
-#if defined(MPM_KLANES)
+#if defined(MPM_KLANES) && !defined(MPM_KSTENCIL)
   for (; !(A->bn && (mode & MPM_G2P_VELOCITY)) && !A->hoopr && p + MPM_KLANES <= A->n; p += MPM_KLANES) { /* a step with nodal PIC shares, or the hoop terms: point by point */
     PetscInt  node[MPM_KS][MPM_KLANES];                                                                   /* each entry's lanes side by side (MPMKStencilStrided) */
     PetscReal W[MPM_KS][MPM_KLANES], DW[MPM_KS][MPM_KD][MPM_KLANES], SG[MPM_KLANES][MPM_KS][MPM_KD];
@@ -241,12 +241,12 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
         any       = (PetscBool)(any || mirror[l]);
       }
     if (!any)
-      MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(A, nodes, p, node, W, DW, mode);
+      MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(A, nodes, p, MPM_KS, node, W, DW, mode);
     else /* a wall beside the group: each point on its own, with the stencil already evaluated (its lane copied out) */
       for (PetscInt l = 0; l < MPM_KLANES; l++) {
         PetscInt  nodel[MPM_KS];
         PetscReal Wl[MPM_KS], DWl[MPM_KS][MPM_KD];
-        MPM_KCAT(MPMKLaneOut, MPM_KNAME, MPM_KD, d)(l, node, W, DW, nodel, Wl, DWl);
+        MPM_KCAT(MPMKLaneOut, MPM_KNAME, MPM_KD, d)(l, MPM_KS, node, W, DW, nodel, Wl, DWl);
         if (mirror[l])
           MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS, nodel, Wl, DWl, SG[l], mode, 1);
         else
@@ -264,6 +264,10 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
       skip--;
     else if (!(done = MPM_KSTENCIL_LANES(ctx, g, A, p, node, W, &DW[0][0][0], MPM_KD)))
       skip = 7;
+    if (done == (1u << MPM_KSLANES) - 1 && !(A->bn && (mode & MPM_G2P_VELOCITY)) && !A->hoopr) { /* every lane: their sums in lanes too */
+      MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(A, nodes, p, MPM_KS3, node, W, DW, mode);
+      continue;
+    }
     for (PetscInt l = 0; l < MPM_KSLANES; l++) {
       PetscInt  nodel[MPM_KS]; /* MPMKG2PPoint's arrays, of which MPM_KS3 are filled */
       PetscReal Wl[MPM_KS], DWl[MPM_KS][MPM_KD];
@@ -271,7 +275,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
         MPM_KCAT(MPMKG2POne, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, p + l, mode);
         continue;
       }
-      MPM_KCAT(MPMKStencilLaneOut, MPM_KNAME, MPM_KD, d)(l, node, W, DW, nodel, Wl, DWl);
+      MPM_KCAT(MPMKLaneOut, MPM_KNAME, MPM_KD, d)(l, MPM_KS3, node, W, DW, nodel, Wl, DWl);
       MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS3, nodel, Wl, DWl, NULL, mode, 0);
     }
   }

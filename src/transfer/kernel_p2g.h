@@ -245,7 +245,7 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GLoop, MPM_KNAME, MPM_KD, d)(const MPMGrid *gin,
     for (PetscInt l = 0; l < MPM_KLANES; l++) {
       PetscInt  nodel[MPM_KS];
       PetscReal Wl[MPM_KS], DWl[MPM_KS][MPM_KD];
-      MPM_KCAT(MPMKLaneOut, MPM_KNAME, MPM_KD, d)(l, node, W, DW, nodel, Wl, DWl);
+      MPM_KCAT(MPMKLaneOut, MPM_KNAME, MPM_KD, d)(l, MPM_KS, node, W, DW, nodel, Wl, DWl);
       MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS, nodel, Wl, DWl, NULL, mode, 0, 1);
     }
   }
@@ -267,7 +267,7 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GLoop, MPM_KNAME, MPM_KD, d)(const MPMGrid *gin,
         MPM_KCAT(MPMKP2GOne, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, p + l, mode);
         continue;
       }
-      MPM_KCAT(MPMKStencilLaneOut, MPM_KNAME, MPM_KD, d)(l, node, W, DW, nodel, Wl, DWl);
+      MPM_KCAT(MPMKLaneOut, MPM_KNAME, MPM_KD, d)(l, MPM_KS3, node, W, DW, nodel, Wl, DWl);
 #  if defined(MPM_KKEEP)
       if (A->keep == MPM_KEEP_STORE) MPM_KKEEP(ctx, A, p + l, 0, NULL, NULL, NULL, PETSC_TRUE, MPM_KD); /* none kept: grid to points takes it in lanes again */
 #  endif

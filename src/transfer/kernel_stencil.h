@@ -186,11 +186,11 @@ MPM_KINLINE int  MPM_KCAT(MPMKStencilTent, MPM_KNAME, MPM_KD, d)(const MPMGrid *
 }
 #  endif
 
-/* Lane l of a group's lane-interleaved stencil as one point's arrays. */
-MPM_KINLINE void MPM_KCAT(MPMKLaneOut, MPM_KNAME, MPM_KD, d)(PetscInt l, const PetscInt node[MPM_KS][MPM_KLANES], const PetscReal W[MPM_KS][MPM_KLANES], const PetscReal DW[MPM_KS][MPM_KD][MPM_KLANES], PetscInt nodel[MPM_KS], PetscReal Wl[MPM_KS],
-                                                             PetscReal DWl[MPM_KS][MPM_KD])
+/* Lane l of a group's lane-interleaved stencil of ns entries as one point's arrays. */
+MPM_KINLINE void MPM_KCAT(MPMKLaneOut, MPM_KNAME, MPM_KD, d)(PetscInt l, const PetscInt ns, const PetscInt node[][MPM_KLANES], const PetscReal W[][MPM_KLANES], const PetscReal DW[][MPM_KD][MPM_KLANES], PetscInt nodel[], PetscReal Wl[],
+                                                             PetscReal DWl[][MPM_KD])
 {
-  for (PetscInt a = 0; a < MPM_KS; a++) {
+  for (PetscInt a = 0; a < ns; a++) {
     nodel[a] = node[a][l];
     Wl[a]    = W[a][l];
     for (PetscInt k = 0; k < MPM_KD; k++) DWl[a][k] = DW[a][k][l];
@@ -199,16 +199,6 @@ MPM_KINLINE void MPM_KCAT(MPMKLaneOut, MPM_KNAME, MPM_KD, d)(PetscInt l, const P
 #endif
 
 #if defined(MPM_KSTENCIL_LANES) && MPM_KD > 1
-/* A family's 3^d-entry stencils in vector lanes (MPM_KSTENCIL_LANES, kernels.h): the entries' count and lane l as one
-   point's arrays. */
+/* The entries of a family's stencils in lanes (MPM_KSTENCIL_LANES, kernels.h): 3^d. */
 #  define MPM_KS3 (MPM_KD == 2 ? 9 : 27)
-MPM_KINLINE void MPM_KCAT(MPMKStencilLaneOut, MPM_KNAME, MPM_KD, d)(PetscInt l, const PetscInt node[MPM_KS3][MPM_KSLANES], const PetscReal W[MPM_KS3][MPM_KSLANES], const PetscReal DW[MPM_KS3][MPM_KD][MPM_KSLANES], PetscInt nodel[MPM_KS3],
-                                                                    PetscReal Wl[MPM_KS3], PetscReal DWl[MPM_KS3][MPM_KD])
-{
-  for (PetscInt a = 0; a < MPM_KS3; a++) {
-    nodel[a] = node[a][l];
-    Wl[a]    = W[a][l];
-    for (PetscInt k = 0; k < MPM_KD; k++) DWl[a][k] = DW[a][k][l];
-  }
-}
 #endif

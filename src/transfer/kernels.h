@@ -53,6 +53,12 @@
 #    define MPM_KLANES_2 2
 #    define MPM_KLANES_3 2
 #  endif
+#elif defined(__GNUC__) && defined(PETSC_USE_REAL_DOUBLE) && defined(MPM_KSTENCIL_LANES)
+/* a family with its own stencil in lanes (MPM_KSTENCIL_LANES): its group's points */
+#  define MPM_KVECTOR
+#  define MPM_KLANES_1 MPM_KSLANES
+#  define MPM_KLANES_2 MPM_KSLANES
+#  define MPM_KLANES_3 MPM_KSLANES
 #endif
 #define MPM_KCAT_(a, b, c, d) a##_##b##_##c##d
 #define MPM_KCAT(a, b, c, d) MPM_KCAT_(a, b, c, d)
