@@ -20,10 +20,11 @@
    are formed over the components in the lanes of one vector (MPM_KCV; the pressure's as s (V_p P) grad N, equal to
    (s V_p) P grad N since s is +-1, MPMShapeFold1d) and added to the node component by component. With MPM_P2G_REMAP
    (the MUSL remap's momentum fused into grid to points, after the point's finish with its new velocity) only the
-   momentum product, into f_I: the remap's own scatter's products in point order, the same bits. Entry a's node and
-   weight are node[a ls] and W[a ls] (one point's arrays, ls = 1, or one lane of a group's, ls = MPM_KLANES). */
-MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, MPMNode *nodes, PetscInt p, const PetscInt ns, const PetscInt *node, const PetscReal *W, const PetscReal DW[][MPM_KD], const PetscReal SG[][MPM_KD],
-                                                              const int mode, const int mirror, const PetscInt ls)
+   momentum product, into f_I: the remap's own scatter's products in point order, the same bits. Entry a's node,
+   weight and gradient component k are node[a ls], W[a ls] and DW[(a d + k) ls] (one point's arrays, ls = 1, or one
+   lane of a group's, ls = the group's lanes). */
+MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, MPMNode *nodes, PetscInt p, const PetscInt ns, const PetscInt *node, const PetscReal *W, const PetscReal *DW, const PetscReal SG[][MPM_KD], const int mode,
+                                                              const int mirror, const PetscInt ls)
 {
   const PetscInt D    = MPM_KD;
   const MPM_KCV  zero = {0.0, 0.0, 0.0, 0.0};
@@ -61,11 +62,11 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
     for (PetscInt k = 0; k < D; k++) mv[k] += m[k];
     if (mode & MPM_P2G_STRESS) {
       MPM_KCV sgr = zero;
-      for (PetscInt j = 0; j < D; j++) sgr += Sc[j] * DW[a][j];
+      for (PetscInt j = 0; j < D; j++) sgr += Sc[j] * DW[(a * D + j) * ls];
       f = sg * sgr;
     } else if (mode & MPM_P2G_PRESSURE) {
       MPM_KCV dw = zero;
-      for (PetscInt k = 0; k < D; k++) dw[k] = DW[a][k];
+      for (PetscInt k = 0; k < D; k++) dw[k] = DW[(a * D + k) * ls];
       f = sg * VP * dw;
     }
     if (mode & (MPM_P2G_STRESS | MPM_P2G_PRESSURE))
@@ -86,9 +87,9 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GOne, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, co
   if (A->keep == MPM_KEEP_STORE) MPM_KKEEP(ctx, A, p, ns, node, W, &DW[0][0], mirror, MPM_KD);
 #endif
   if (mirror)
-    MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 1, 1);
+    MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, &DW[0][0], SG, mode, 1, 1);
   else
-    MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 0, 1);
+    MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, &DW[0][0], SG, mode, 0, 1);
 }
 
 #if !defined(MPM_KSTENCIL) && defined(__GNUC__) && defined(PETSC_USE_REAL_DOUBLE) && (MPM_KS & (MPM_KS - 1)) == 0
@@ -242,12 +243,7 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GLoop, MPM_KNAME, MPM_KD, d)(const MPMGrid *gin,
       for (PetscInt l = 0; l < MPM_KLANES; l++) MPM_KCAT(MPMKP2GOne, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, p + l, mode);
       continue;
     }
-    for (PetscInt l = 0; l < MPM_KLANES; l++) {
-      PetscInt  nodel[MPM_KS];
-      PetscReal Wl[MPM_KS], DWl[MPM_KS][MPM_KD];
-      MPM_KCAT(MPMKLaneOut, MPM_KNAME, MPM_KD, d)(l, MPM_KS, node, W, DW, nodel, Wl, DWl);
-      MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS, nodel, Wl, DWl, NULL, mode, 0, 1);
-    }
+    for (PetscInt l = 0; l < MPM_KLANES; l++) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS, &node[0][l], &W[0][l], &DW[0][0][l], NULL, mode, 0, MPM_KLANES);
   }
 #endif
 #if defined(MPM_KSTENCIL_LANES) && MPM_KD > 1
@@ -261,17 +257,14 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GLoop, MPM_KNAME, MPM_KD, d)(const MPMGrid *gin,
     else if (!(done = MPM_KSTENCIL_LANES(ctx, g, A, p, node, W, &DW[0][0][0], MPM_KD)))
       skip = 7;
     for (PetscInt l = 0; l < MPM_KSLANES; l++) {
-      PetscInt  nodel[MPM_KS3];
-      PetscReal Wl[MPM_KS3], DWl[MPM_KS3][MPM_KD];
       if (!((done >> l) & 1u)) { /* a point the lanes leave: its own stencil */
         MPM_KCAT(MPMKP2GOne, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, p + l, mode);
         continue;
       }
-      MPM_KCAT(MPMKLaneOut, MPM_KNAME, MPM_KD, d)(l, MPM_KS3, node, W, DW, nodel, Wl, DWl);
 #  if defined(MPM_KKEEP)
       if (A->keep == MPM_KEEP_STORE) MPM_KKEEP(ctx, A, p + l, 0, NULL, NULL, NULL, PETSC_TRUE, MPM_KD); /* none kept: grid to points takes it in lanes again */
 #  endif
-      MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS3, nodel, Wl, DWl, NULL, mode, 0, 1);
+      MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS3, &node[0][l], &W[0][l], &DW[0][0][l], NULL, mode, 0, MPM_KSLANES);
     }
   }
 #endif
