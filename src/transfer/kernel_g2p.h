@@ -145,9 +145,15 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
 {
   const PetscInt  D        = MPM_KD;
   const PetscBool velocity = (PetscBool)(mode & MPM_G2P_VELOCITY), kinematics = (PetscBool)(mode & MPM_G2P_KINEMATICS), work = (PetscBool)(mode & MPM_G2P_WORK);
-  MPM_KVEC        vpic[MPM_KD] = {0}, dv[MPM_KD] = {0}, Lp[MPM_KD * MPM_KD] = {0}, Lb[MPM_KD * MPM_KD] = {0}, dv2[MPM_KD] = {0}, R[MPM_KD] = {0}, vp[MPM_KD];
+  const PetscBool hoop         = (PetscBool)(MPM_KD == 2 && A->hoopr);
+  MPM_KVEC        vpic[MPM_KD] = {0}, dv[MPM_KD] = {0}, Lp[MPM_KD * MPM_KD] = {0}, Lb[MPM_KD * MPM_KD] = {0}, dv2[MPM_KD] = {0}, R[MPM_KD] = {0}, vp[MPM_KD], rh, Lbtt = {0};
 
   for (PetscInt i = 0; i < D; i++) vp[i] = MPM_KLANE(&A->v[p0 * D + i], D);
+  { /* axisymmetric: the hoop terms' radius of each lane's point (1 elsewhere), as MPMKG2PPoint */
+    PetscReal rl[MPM_KLANES];
+    for (PetscInt l = 0; l < MPM_KLANES; l++) rl[l] = hoop ? A->hoopr(A->hctx, p0 + l) : 1.0;
+    rh = MPM_KLANE(rl, 1);
+  }
   for (PetscInt a = 0; a < ns; a++) {
     const MPM_KVEC w = MPM_KLANE(W[a], 1);
     MPM_KVEC       dw[MPM_KD];
@@ -167,8 +173,10 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
           dv2[i] += w * dvI * dvI;
           if (!(mode & MPM_G2P_FLIP)) R[i] += w * (vI - dvI - vp[i]) * vI;
         }
-        if (work)
+        if (work) {
           for (PetscInt j = 0; j < D; j++) Lb[i * D + j] += (2.0 * vI - dvI) * dw[j];
+          if (hoop && i == 0) Lbtt += w * (2.0 * vI - dvI) / rh; /* sum N (2 v_I - dv_I)_r / r_p */
+        }
       }
       if (kinematics)
         for (PetscInt j = 0; j < D; j++) Lp[i * D + j] += vI * dw[j];
@@ -186,7 +194,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
       Lpl[i] = Lp[i][l];
       Lbl[i] = Lb[i][l];
     }
-    MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p0 + l, vpicl, dvl, dv2l, Rl, Lpl, Lbl, NULL, 1.0, 0.0, mode); /* never axisymmetric (MPMKG2PLoopMode) */
+    MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p0 + l, vpicl, dvl, dv2l, Rl, Lpl, Lbl, NULL, rh[l], Lbtt[l], mode);
     if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p0 + l, ns, &node[0][l], &W[0][l], NULL, NULL, MPM_P2G_REMAP, 0, MPM_KLANES);
     if (kinematics && A->hw) MPMHeatGather(A, p0 + l, ns, &node[0][l], &W[0][l], MPM_KLANES);
   }
@@ -229,8 +237,8 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
   PetscInt              p = 0;
 
 #if defined(MPM_KLANES) && !defined(MPM_KSTENCIL)
-  for (; !(A->bn && (mode & MPM_G2P_VELOCITY)) && !A->hoopr && p + MPM_KLANES <= A->n; p += MPM_KLANES) { /* a step with nodal PIC shares, or the hoop terms: point by point */
-    PetscInt  node[MPM_KS][MPM_KLANES];                                                                   /* each entry's lanes side by side (MPMKStencilStrided) */
+  for (; !(A->bn && (mode & MPM_G2P_VELOCITY)) && p + MPM_KLANES <= A->n; p += MPM_KLANES) { /* a step with nodal PIC shares: point by point */
+    PetscInt  node[MPM_KS][MPM_KLANES];                                                      /* each entry's lanes side by side (MPMKStencilStrided) */
     PetscReal W[MPM_KS][MPM_KLANES], DW[MPM_KS][MPM_KD][MPM_KLANES], SG[MPM_KLANES][MPM_KS][MPM_KD];
     PetscBool mirror[MPM_KLANES], any = PETSC_FALSE;
 #  if defined(MPM_KTENT)
@@ -264,7 +272,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
       skip--;
     else if (!(done = MPM_KSTENCIL_LANES(ctx, g, A, p, node, W, &DW[0][0][0], MPM_KD)))
       skip = 7;
-    if (done == (1u << MPM_KSLANES) - 1 && !(A->bn && (mode & MPM_G2P_VELOCITY)) && !A->hoopr) { /* every lane: their sums in lanes too */
+    if (done == (1u << MPM_KSLANES) - 1 && !(A->bn && (mode & MPM_G2P_VELOCITY))) { /* every lane: their sums in lanes too */
       MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(A, nodes, p, MPM_KS3, node, W, DW, mode);
       continue;
     }
