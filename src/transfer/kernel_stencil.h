@@ -201,4 +201,20 @@ MPM_KINLINE void MPM_KCAT(MPMKLaneOut, MPM_KNAME, MPM_KD, d)(PetscInt l, const P
 #if defined(MPM_KSTENCIL_LANES) && MPM_KD > 1
 /* The entries of a family's stencils in lanes (MPM_KSTENCIL_LANES, kernels.h): 3^d. */
 #  define MPM_KS3 (MPM_KD == 2 ? 9 : 27)
+
+/* The group of points p to p + MPM_KSLANES - 1: their stencils in lanes, and the mask of the lanes done. After a group
+   with no lane done (domains within a cell: several points per cell) the next 7 groups are not tried (*skip). */
+MPM_KINLINE unsigned MPM_KCAT(MPMKStencilGroup, MPM_KNAME, MPM_KD, d)(const void *ctx, const MPMGrid *g, const MPMTransferArgs *A, PetscInt p, PetscInt node[MPM_KS3][MPM_KSLANES], PetscReal W[MPM_KS3][MPM_KSLANES],
+                                                                      PetscReal DW[MPM_KS3][MPM_KD][MPM_KSLANES], PetscInt *skip)
+{
+  unsigned done;
+
+  if (*skip) {
+    (*skip)--;
+    return 0;
+  }
+  done = MPM_KSTENCIL_LANES(ctx, g, A, p, node, W, &DW[0][0][0], MPM_KD);
+  if (!done) *skip = 7;
+  return done;
+}
 #endif

@@ -45,6 +45,30 @@ static void MPMShapeBasis1d_CPDI(void *ctx, PetscReal xi, PetscInt *first, Petsc
 #endif
 #define MPM_CPDI_INLINE static inline __attribute__((always_inline))
 
+/* Ri = R^-1 for d = 2 or 3 (the adjugate over det = MPMDeterminant's), the same expressions for scalars and for vectors
+   of points (CPDIKernelStencilLanes), so that both give the same bits. */
+#define CPDI_INVERSE(d, R, Ri, det)                                                                                         \
+  do {                                                                                                                      \
+    if ((d) == 2) {                                                                                                         \
+      det   = R[0] * R[3] - R[1] * R[2];                                                                                    \
+      Ri[0] = R[3] / det;                                                                                                   \
+      Ri[1] = -R[1] / det;                                                                                                  \
+      Ri[2] = -R[2] / det;                                                                                                  \
+      Ri[3] = R[0] / det;                                                                                                   \
+    } else {                                                                                                                \
+      det   = R[0] * (R[4] * R[8] - R[5] * R[7]) - R[1] * (R[3] * R[8] - R[5] * R[6]) + R[2] * (R[3] * R[7] - R[4] * R[6]); \
+      Ri[0] = (R[4] * R[8] - R[5] * R[7]) / det;                                                                            \
+      Ri[1] = (R[2] * R[7] - R[1] * R[8]) / det;                                                                            \
+      Ri[2] = (R[1] * R[5] - R[2] * R[4]) / det;                                                                            \
+      Ri[3] = (R[5] * R[6] - R[3] * R[8]) / det;                                                                            \
+      Ri[4] = (R[0] * R[8] - R[2] * R[6]) / det;                                                                            \
+      Ri[5] = (R[2] * R[3] - R[0] * R[5]) / det;                                                                            \
+      Ri[6] = (R[3] * R[7] - R[4] * R[6]) / det;                                                                            \
+      Ri[7] = (R[1] * R[6] - R[0] * R[7]) / det;                                                                            \
+      Ri[8] = (R[0] * R[4] - R[1] * R[3]) / det;                                                                            \
+    }                                                                                                                       \
+  } while (0)
+
 /* R = F diag(l0) (F NULL: the identity) and R^-1 (Ri NULL: R alone). */
 MPM_CPDI_INLINE void CPDIDomain(const Shape_CPDI *cp, PetscInt d, const PetscReal F[], PetscReal R[], PetscReal Ri[])
 {
@@ -53,25 +77,10 @@ MPM_CPDI_INLINE void CPDIDomain(const Shape_CPDI *cp, PetscInt d, const PetscRea
   for (PetscInt i = 0; i < d; i++)
     for (PetscInt k = 0; k < d; k++) R[i * d + k] = (F ? F[i * d + k] : (i == k ? 1.0 : 0.0)) * cp->l0[k];
   if (!Ri) return; /* the weights alone need no inverse */
-  det = MPMDeterminant(d, R);
   if (d == 1)
     Ri[0] = 1.0 / R[0];
-  else if (d == 2) {
-    Ri[0] = R[3] / det;
-    Ri[1] = -R[1] / det;
-    Ri[2] = -R[2] / det;
-    Ri[3] = R[0] / det;
-  } else {
-    Ri[0] = (R[4] * R[8] - R[5] * R[7]) / det;
-    Ri[1] = (R[2] * R[7] - R[1] * R[8]) / det;
-    Ri[2] = (R[1] * R[5] - R[2] * R[4]) / det;
-    Ri[3] = (R[5] * R[6] - R[3] * R[8]) / det;
-    Ri[4] = (R[0] * R[8] - R[2] * R[6]) / det;
-    Ri[5] = (R[2] * R[3] - R[0] * R[5]) / det;
-    Ri[6] = (R[3] * R[7] - R[4] * R[6]) / det;
-    Ri[7] = (R[1] * R[6] - R[0] * R[7]) / det;
-    Ri[8] = (R[0] * R[4] - R[1] * R[3]) / det;
-  }
+  else
+    CPDI_INVERSE(d, R, Ri, det);
 }
 
 /* The corners c of the domain x + R s_c in the lanes of one vector (the 2^d <= 8 corners; lane c beyond them repeats
@@ -286,24 +295,7 @@ MPM_CPDI_INLINE unsigned CPDIKernelStencilLanes(const void *ctx, const MPMGrid *
     if (A->F && A->ds) f = f * CPDILanes(&A->ds[p0 * d + k % d], d);
     R[k] = f * cp->l0[k % d];
   }
-  if (d == 2) { /* R^-1, the operations of CPDIDomain and MPMDeterminant */
-    det   = R[0] * R[3] - R[1] * R[2];
-    Ri[0] = R[3] / det;
-    Ri[1] = -R[1] / det;
-    Ri[2] = -R[2] / det;
-    Ri[3] = R[0] / det;
-  } else {
-    det   = R[0] * (R[4] * R[8] - R[5] * R[7]) - R[1] * (R[3] * R[8] - R[5] * R[6]) + R[2] * (R[3] * R[7] - R[4] * R[6]);
-    Ri[0] = (R[4] * R[8] - R[5] * R[7]) / det;
-    Ri[1] = (R[2] * R[7] - R[1] * R[8]) / det;
-    Ri[2] = (R[1] * R[5] - R[2] * R[4]) / det;
-    Ri[3] = (R[5] * R[6] - R[3] * R[8]) / det;
-    Ri[4] = (R[0] * R[8] - R[2] * R[6]) / det;
-    Ri[5] = (R[2] * R[3] - R[0] * R[5]) / det;
-    Ri[6] = (R[3] * R[7] - R[4] * R[6]) / det;
-    Ri[7] = (R[1] * R[6] - R[0] * R[7]) / det;
-    Ri[8] = (R[0] * R[4] - R[1] * R[3]) / det;
-  }
+  CPDI_INVERSE(d, R, Ri, det); /* as CPDIDomain's */
   for (PetscInt c = 0; c < nc; c++)
     for (PetscInt j = 0; j < d; j++) { /* (R^-T s_c)_j, s_ck = +-1 by bit k of c, in CPDICorners' order */
       CPDILVec t = (CPDILVec){0};
