@@ -263,11 +263,11 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
   }
 #endif
 #if defined(MPM_KSTENCIL_LANES) && MPM_KD > 1
-  PetscInt skip = 0;
+  PetscInt skip[2] = {0, 0};
   for (; p + MPM_KSLANES <= A->n; p += MPM_KSLANES) { /* each group's 3^d stencils in vector lanes (points to grid keeps none of them) */
     PetscInt       node[MPM_KS3][MPM_KSLANES];
     PetscReal      W[MPM_KS3][MPM_KSLANES], DW[MPM_KS3][MPM_KD][MPM_KSLANES];
-    const unsigned done = MPM_KCAT(MPMKStencilGroup, MPM_KNAME, MPM_KD, d)(ctx, g, A, p, node, W, DW, &skip);
+    const unsigned done = MPM_KCAT(MPMKStencilGroup, MPM_KNAME, MPM_KD, d)(ctx, g, A, p, node, W, DW, skip);
     if (done == (1u << MPM_KSLANES) - 1 && !(A->bn && (mode & MPM_G2P_VELOCITY))) { /* every lane: their sums in lanes too */
       MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(A, nodes, p, MPM_KS3, node, W, DW, mode);
       continue;
