@@ -57,21 +57,20 @@ static PetscErrorCode MPMDomainCheckpoint(MPMModule mod, MPM mpm, MPMCheckpoint 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode MPMDomainApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
+/* The pass over the points with the dimension d a constant (MPMDomainApply calls it for d = 2 and 3, so that the loops
+   over components unroll): keep[m] says that material m reads F (its points are never reset). Returns the resets. */
+static inline __attribute__((always_inline)) PetscInt MPMDomainPass(const MPMDomain *dm, MPMPoints *pts, const PetscBool keep[], const PetscInt d)
 {
-  MPMDomain     *dm = (MPMDomain *)mod->data;
-  const PetscInt d  = mpm->grid.dim;
-  MPMPoints      pts;
+  const PetscReal *mat = pts->f[MPM_FIELD_MATERIAL], *sc = pts->f[MPM_FIELD_DOMAINSCALE];
+  PetscReal       *Fp     = pts->f[MPM_FIELD_DEFGRAD];
+  PetscInt         resets = 0;
 
-  PetscFunctionBegin;
-  PetscCall(MPMPointsGetArrays(mpm, &pts));
-  for (PetscInt p = 0; p < pts.n; p++) {
-    const MPMStrength S = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].strength;
-    PetscReal        *F = &pts.f[MPM_FIELD_DEFGRAD][p * d * d], Rs[MPM_MAX_DIM * MPM_MAX_DIM], edges = 1.0, det;
-    const PetscReal  *s = pts.f[MPM_FIELD_DOMAINSCALE] ? &pts.f[MPM_FIELD_DOMAINSCALE][p * d] : NULL;
-    const PetscReal  *R;
-    if (S && S->needs_F) continue;
-    R = MPMPointDomain(d, pts.f[MPM_FIELD_DEFGRAD], pts.f[MPM_FIELD_DOMAINSCALE], p, Rs); /* F diag(s) */
+  for (PetscInt p = 0; p < pts->n; p++) {
+    PetscReal       *F = &Fp[p * d * d], Rs[MPM_MAX_DIM * MPM_MAX_DIM], edges = 1.0, det;
+    const PetscReal *s = sc ? &sc[p * d] : NULL;
+    const PetscReal *R;
+    if (keep[(PetscInt)mat[p]]) continue;
+    R = MPMPointDomain(d, Fp, sc, p, Rs); /* F diag(s) */
     for (PetscInt k = 0; k < d; k++) {
       PetscReal len2 = 0.0;
       for (PetscInt i = 0; i < d; i++) len2 += R[i * d + k] * R[i * d + k];
@@ -84,9 +83,24 @@ static PetscErrorCode MPMDomainApply(MPMModule mod, MPM mpm, const MPMStepContex
       for (PetscInt i = 0; i < d; i++)
         for (PetscInt k = 0; k < d; k++) F[i * d + k] = i == k ? a / (s ? s[k] : 1.0) : 0.0;
     }
-    dm->resets++;
+    resets++;
   }
+  return resets;
+}
+
+static PetscErrorCode MPMDomainApply(MPMModule mod, MPM mpm, const MPMStepContext *ctx, MPMNode *unused)
+{
+  MPMDomain *dm = (MPMDomain *)mod->data;
+  MPMPoints  pts;
+  PetscBool *keep;
+
+  PetscFunctionBegin;
+  PetscCall(PetscMalloc1(mpm->nmat, &keep));
+  for (PetscInt m = 0; m < mpm->nmat; m++) keep[m] = (PetscBool)(mpm->mat[m].strength && mpm->mat[m].strength->needs_F);
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  dm->resets += mpm->grid.dim == 2 ? MPMDomainPass(dm, &pts, keep, 2) : MPMDomainPass(dm, &pts, keep, 3);
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  PetscCall(PetscFree(keep));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
