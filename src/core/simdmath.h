@@ -15,6 +15,17 @@
 typedef double  MPMVd __attribute__((vector_size(MPM_SIMD_LANES * sizeof(double))));
 typedef int64_t MPMVi __attribute__((vector_size(MPM_SIMD_LANES * sizeof(int64_t))));
 
+/* The vector whose lane l is a[l stride]. */
+static inline __attribute__((always_inline)) MPMVd MPMVLoadStrided(const double *a, int64_t stride)
+{
+  double t[MPM_SIMD_LANES];
+  MPMVd  v;
+
+  for (int l = 0; l < MPM_SIMD_LANES; l++) t[l] = a[l * stride];
+  __builtin_memcpy(&v, t, sizeof(v));
+  return v;
+}
+
 /* Lane by lane: a where the mask (a comparison's result, all ones or zero) is set, else b. */
 static inline __attribute__((always_inline)) MPMVd MPMVSelect(MPMVi mask, MPMVd a, MPMVd b)
 {

@@ -58,8 +58,8 @@ static PetscErrorCode MPMDomainCheckpoint(MPMModule mod, MPM mpm, MPMCheckpoint 
 }
 
 /* The pass over the points with the dimension d a constant (MPMDomainApply calls it for d = 2 and 3, so that the loops
-   over components unroll): keep[m] says that material m reads F (its points are never reset). Returns the resets. */
-static inline __attribute__((always_inline)) PetscInt MPMDomainPass(const MPMDomain *dm, MPMPoints *pts, const PetscBool keep[], const PetscInt d)
+   over components unroll): readsF[m] says that material m reads F (its points are never reset). Returns the resets. */
+static inline __attribute__((always_inline)) PetscInt MPMDomainPass(const MPMDomain *dm, MPMPoints *pts, const PetscBool readsF[], const PetscInt d)
 {
   const PetscReal *mat = pts->f[MPM_FIELD_MATERIAL], *sc = pts->f[MPM_FIELD_DOMAINSCALE];
   PetscReal       *Fp     = pts->f[MPM_FIELD_DEFGRAD];
@@ -69,7 +69,7 @@ static inline __attribute__((always_inline)) PetscInt MPMDomainPass(const MPMDom
     PetscReal       *F = &Fp[p * d * d], Rs[MPM_MAX_DIM * MPM_MAX_DIM], edges = 1.0, det;
     const PetscReal *s = sc ? &sc[p * d] : NULL;
     const PetscReal *R;
-    if (keep[(PetscInt)mat[p]]) continue;
+    if (readsF[(PetscInt)mat[p]]) continue;
     R = MPMPointDomain(d, Fp, sc, p, Rs); /* F diag(s) */
     for (PetscInt k = 0; k < d; k++) {
       PetscReal len2 = 0.0;
@@ -92,15 +92,13 @@ static PetscErrorCode MPMDomainApply(MPMModule mod, MPM mpm, const MPMStepContex
 {
   MPMDomain *dm = (MPMDomain *)mod->data;
   MPMPoints  pts;
-  PetscBool *keep;
+  PetscBool  readsF[MPM_MAX_MATERIALS];
 
   PetscFunctionBegin;
-  PetscCall(PetscMalloc1(mpm->nmat, &keep));
-  for (PetscInt m = 0; m < mpm->nmat; m++) keep[m] = (PetscBool)(mpm->mat[m].strength && mpm->mat[m].strength->needs_F);
+  for (PetscInt m = 0; m < mpm->nmat; m++) readsF[m] = (PetscBool)(mpm->mat[m].strength && mpm->mat[m].strength->needs_F);
   PetscCall(MPMPointsGetArrays(mpm, &pts));
-  dm->resets += mpm->grid.dim == 2 ? MPMDomainPass(dm, &pts, keep, 2) : MPMDomainPass(dm, &pts, keep, 3);
+  dm->resets += mpm->grid.dim == 2 ? MPMDomainPass(dm, &pts, readsF, 2) : MPMDomainPass(dm, &pts, readsF, 3);
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-  PetscCall(PetscFree(keep));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -9,6 +9,7 @@
    a point whose domain stretches further stops the run with its diagnosis. */
 #include "../shapeimpl.h"
 #include "../../transfer/transfer.h"
+#include "core/simdmath.h"
 
 /* A point's stencil in 2D and r-z as the step's points to grid evaluated it, for its grid to points (CPDIKeep, CPDIKept: the
    specialised kernels; MPMShapeKeepOne_CPDI, MPMShapeKeptOne_CPDI: the generic transfers): the
@@ -258,61 +259,47 @@ MPM_CPDI_INLINE PetscBool CPDIKernelStencil(const void *ctx, const MPMGrid *g, c
   return mirror;
 }
 
-/* The stencils of CPDI_LANES points p0, p0 + 1, ... in 2D or 3D in vector lanes, lane l point p0 + l (the specialised
+/* The stencils of MPM_SIMD_LANES points p0, p0 + 1, ... in 2D or 3D in vector lanes, lane l point p0 + l (the specialised
    transfers', MPM_KSTENCIL_LANES): CPDIStencil's operations per lane, so the same bits, where a point's corners span a
    box of 3^d nodes (two cells in each direction: the common case at one point per cell) that lies within the grid
    (nothing folded, no mirror sign). Corner c contributes to box position a_k = o_k + b (o_k = first_k,c - lo_k in
    {0, 1}) the weight w_b; as a factor u_k,c(a) over the box's 3 positions that is 0 elsewhere, and adding a product
    with a factor 0 leaves a sum unchanged, the merged sums come out in corner order as CPDIStencil's. Fills the 3^d
-   entries of each lane (entry e = a_0 + 3 a_1 + 9 a_2: node[e][l], W[e][l], DW[(e d + j) CPDI_LANES + l]) and returns the mask of the lanes done; the others are left to
+   entries of each lane (entry e = a_0 + 3 a_1 + 9 a_2: node[e][l], W[e][l], DW[(e d + j) MPM_SIMD_LANES + l]) and returns the mask of the lanes done; the others are left to
    CPDIStencil. */
-#define CPDI_LANES 8
-typedef PetscReal CPDILVec __attribute__((vector_size(CPDI_LANES * sizeof(PetscReal))));
-typedef PetscInt  CPDILIVec __attribute__((vector_size(CPDI_LANES * sizeof(PetscInt))));
-typedef long long CPDILMask __attribute__((vector_size(CPDI_LANES * sizeof(long long)))); /* a lane mask for CPDILVec */
+typedef PetscInt CPDILIVec __attribute__((vector_size(MPM_SIMD_LANES * sizeof(PetscInt)))); /* node indices of the lanes (src/core/simdmath.h) */
 
-/* The vector whose lane l is a[l * stride]. */
-MPM_CPDI_INLINE CPDILVec CPDILanes(const PetscReal *a, PetscInt stride)
-{
-  PetscReal t[CPDI_LANES];
-  CPDILVec  v;
-
-  for (PetscInt l = 0; l < CPDI_LANES; l++) t[l] = a[l * stride];
-  __builtin_memcpy(&v, t, sizeof(v));
-  return v;
-}
-
-MPM_CPDI_INLINE unsigned CPDIKernelStencilLanes(const void *ctx, const MPMGrid *g, const MPMTransferArgs *A, PetscInt p0, PetscInt node[][CPDI_LANES], PetscReal W[][CPDI_LANES], PetscReal DW[], const PetscInt d)
+MPM_CPDI_INLINE unsigned CPDIKernelStencilLanes(const void *ctx, const MPMGrid *g, const MPMTransferArgs *A, PetscInt p0, PetscInt node[][MPM_SIMD_LANES], PetscReal W[][MPM_SIMD_LANES], PetscReal DW[], const PetscInt d)
 {
   const Shape_CPDI *cp = (const Shape_CPDI *)ctx;
   const PetscInt    nc = 1 << d, dd = d * d;
-  CPDILVec          R[9], Ri[9], det, gs[3][8], w0[3][8], w1[3][8], u[3][8][3];
+  MPMVd             R[9], Ri[9], det, gs[3][8], w0[3][8], w1[3][8], u[3][8][3];
   CPDILIVec         first[3][8], lo[3], ok;
   unsigned          mask = 0;
 
   for (PetscInt k = 0; k < dd; k++) { /* R = F diag(s) diag(l0) (MPMPointDomain, CPDIDomain) */
-    CPDILVec f = A->F ? CPDILanes(&A->F[p0 * dd + k], dd) : (CPDILVec){0} + (k % (d + 1) == 0 ? 1.0 : 0.0);
-    if (A->F && A->ds) f = f * CPDILanes(&A->ds[p0 * d + k % d], d);
+    MPMVd f = A->F ? MPMVLoadStrided(&A->F[p0 * dd + k], dd) : (MPMVd){0} + (k % (d + 1) == 0 ? 1.0 : 0.0);
+    if (A->F && A->ds) f = f * MPMVLoadStrided(&A->ds[p0 * d + k % d], d);
     R[k] = f * cp->l0[k % d];
   }
   CPDI_INVERSE(d, R, Ri, det); /* as CPDIDomain's */
   for (PetscInt c = 0; c < nc; c++)
     for (PetscInt j = 0; j < d; j++) { /* (R^-T s_c)_j, s_ck = +-1 by bit k of c, in CPDICorners' order */
-      CPDILVec t = (CPDILVec){0};
+      MPMVd t = (MPMVd){0};
       for (PetscInt k = 0; k < d; k++) t += Ri[k * d + j] * (((c >> k) & 1) ? 1.0 : -1.0);
       gs[j][c] = t;
     }
   for (PetscInt i = 0; i < d; i++) {
-    const CPDILVec x = -(CPDILVec){0} + CPDILanes(&A->x[p0 * d + i], d); /* -0 + x, as CPDICorners' */
+    const MPMVd x = -(MPMVd){0} + MPMVLoadStrided(&A->x[p0 * d + i], d); /* -0 + x, as CPDICorners' */
     for (PetscInt c = 0; c < nc; c++) {
-      CPDILVec  xc = x, xi, fi;
+      MPMVd     xc = x, xi, fi;
       CPDILIVec fl;
       for (PetscInt k = 0; k < d; k++) xc += R[i * d + k] * (((c >> k) & 1) ? 1.0 : -1.0);
       xi          = (xc - g->lo[i]) / g->h[i];
       fl          = __builtin_convertvector(xi, CPDILIVec);
-      fi          = __builtin_convertvector(fl, CPDILVec);
+      fi          = __builtin_convertvector(fl, MPMVd);
       fl          = fl + __builtin_convertvector(xi < fi, CPDILIVec);
-      fi          = __builtin_convertvector(fl, CPDILVec);
+      fi          = __builtin_convertvector(fl, MPMVd);
       first[i][c] = fl;
       w0[i][c]    = 1.0 - (xi - fi);
       w1[i][c]    = xi - fi;
@@ -329,26 +316,26 @@ MPM_CPDI_INLINE unsigned CPDIKernelStencilLanes(const void *ctx, const MPMGrid *
     }
     ok = ok & (hi == lo[i] + 1) & (lo[i] >= 0) & (lo[i] + 2 <= g->cells[i]);
   }
-  for (PetscInt l = 0; l < CPDI_LANES; l++) mask |= (unsigned)(ok[l] != 0) << l;
+  for (PetscInt l = 0; l < MPM_SIMD_LANES; l++) mask |= (unsigned)(ok[l] != 0) << l;
   if (!mask) return 0;
   for (PetscInt c = 0; c < nc; c++)
     for (PetscInt i = 0; i < d; i++) { /* u_i,c(a): w0 at a = o, w1 at a = o + 1, else 0 */
-      const CPDILMask o0 = __builtin_convertvector(first[i][c] == lo[i], CPDILMask), b0 = (CPDILMask)w0[i][c], b1 = (CPDILMask)w1[i][c];
-      u[i][c][0] = (CPDILVec)(b0 & o0);
-      u[i][c][1] = (CPDILVec)((b1 & o0) | (b0 & ~o0));
-      u[i][c][2] = (CPDILVec)(b1 & ~o0);
+      const MPMVi o0 = __builtin_convertvector(first[i][c] == lo[i], MPMVi), zero = {0};
+      u[i][c][0] = MPMVSelect(o0, w0[i][c], (MPMVd)zero);
+      u[i][c][1] = MPMVSelect(o0, w1[i][c], w0[i][c]);
+      u[i][c][2] = MPMVSelect(o0, (MPMVd)zero, w1[i][c]);
     }
   /* a row of 3 entries (a_1, a_2 fixed) at a time, its sums in registers over the corners in order */
   for (PetscInt a2 = 0; a2 < (d > 2 ? 3 : 1); a2++)
     for (PetscInt a1 = 0; a1 < 3; a1++) {
-      CPDILVec acc[3][4];
+      MPMVd acc[3][4];
       for (PetscInt a0 = 0; a0 < 3; a0++)
-        for (PetscInt j = 0; j <= d; j++) acc[a0][j] = (CPDILVec){0};
+        for (PetscInt j = 0; j <= d; j++) acc[a0][j] = (MPMVd){0};
       for (PetscInt c = 0; c < nc; c++) {
-        const CPDILVec N2 = (1.0 / nc) * (d > 2 ? u[2][c][a2] : (CPDILVec){0} + 1.0); /* CPDIStencil's N2 = 2^-d w_2 (1 in 2D) */
-        const CPDILVec N1 = N2 * u[1][c][a1];
+        const MPMVd N2 = (1.0 / nc) * (d > 2 ? u[2][c][a2] : (MPMVd){0} + 1.0); /* CPDIStencil's N2 = 2^-d w_2 (1 in 2D) */
+        const MPMVd N1 = N2 * u[1][c][a1];
         for (PetscInt a0 = 0; a0 < 3; a0++) {
-          const CPDILVec N = N1 * u[0][c][a0];
+          const MPMVd N = N1 * u[0][c][a0];
           acc[a0][0] += N;
           for (PetscInt j = 0; j < d; j++) acc[a0][1 + j] += N * gs[j][c];
         }
@@ -358,8 +345,8 @@ MPM_CPDI_INLINE unsigned CPDIKernelStencilLanes(const void *ctx, const MPMGrid *
         const CPDILIVec o1 = d > 2 ? (lo[2] + a2 - g->gs[2]) * g->gm[1] + (lo[1] + a1 - g->gs[1]) : lo[1] + a1 - g->gs[1];
         const CPDILIVec nd = o1 * g->gm[0] + (lo[0] + a0 - g->gs[0]);
         __builtin_memcpy(node[e], &nd, sizeof(nd));
-        __builtin_memcpy(W[e], &acc[a0][0], sizeof(CPDILVec));
-        for (PetscInt j = 0; j < d; j++) __builtin_memcpy(&DW[(e * d + j) * CPDI_LANES], &acc[a0][1 + j], sizeof(CPDILVec));
+        __builtin_memcpy(W[e], &acc[a0][0], sizeof(MPMVd));
+        for (PetscInt j = 0; j < d; j++) __builtin_memcpy(&DW[(e * d + j) * MPM_SIMD_LANES], &acc[a0][1 + j], sizeof(MPMVd));
       }
     }
   return mask;
@@ -422,7 +409,7 @@ MPM_CPDI_INLINE PetscInt CPDIKept(const void *ctx, const MPMTransferArgs *A, Pet
 #define MPM_KKEEP CPDIKeep
 #define MPM_KKEPT CPDIKept
 #define MPM_KSTENCIL_LANES CPDIKernelStencilLanes
-#define MPM_KSLANES CPDI_LANES
+#define MPM_KSLANES MPM_SIMD_LANES
 #include "../../transfer/kernels.h"
 
 static void MPMShapeEvaluate_CPDI(void *ctx, const MPMGrid *g, const PetscReal x[], const PetscReal F[], MPMStencil *st)
