@@ -139,9 +139,10 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
 
 #if defined(MPM_KLANES)
 /* MPM_KLANES points at once, none with a mirrored entry: the stencil sums of MPMKG2PPoint with one vector lane per point
-   (the same operations in the same order in every lane, so the same bits as point by point), then each point's finish. */
+   (the same operations in the same order in every lane, so the same bits as point by point), then the finish of each
+   point in the mask (bit l: lane l; a lane outside it holds a valid node and weight 0 and is not written). */
 MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, const MPMNode *nodes, PetscInt p0, const PetscInt ns, const PetscInt node[][MPM_KLANES], const PetscReal W[][MPM_KLANES],
-                                                              const PetscReal DW[][MPM_KD][MPM_KLANES], const int mode)
+                                                              const PetscReal DW[][MPM_KD][MPM_KLANES], const int mode, const unsigned mask)
 {
   const PetscInt  D        = MPM_KD;
   const PetscBool velocity = (PetscBool)(mode & MPM_G2P_VELOCITY), kinematics = (PetscBool)(mode & MPM_G2P_KINEMATICS), work = (PetscBool)(mode & MPM_G2P_WORK);
@@ -184,6 +185,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
   }
   for (PetscInt l = 0; l < MPM_KLANES; l++) {
     PetscReal vpicl[MPM_KD], dvl[MPM_KD], dv2l[MPM_KD], Rl[MPM_KD], Lpl[MPM_KD * MPM_KD], Lbl[MPM_KD * MPM_KD];
+    if (!((mask >> l) & 1u)) continue;
     for (PetscInt i = 0; i < D; i++) {
       vpicl[i] = vpic[i][l];
       dvl[i]   = dv[i][l];
@@ -249,7 +251,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
         any       = (PetscBool)(any || mirror[l]);
       }
     if (!any)
-      MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(A, nodes, p, MPM_KS, node, W, DW, mode);
+      MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(A, nodes, p, MPM_KS, node, W, DW, mode, (1u << MPM_KLANES) - 1);
     else /* a wall beside the group: each point on its own, with the stencil already evaluated (its lane copied out) */
       for (PetscInt l = 0; l < MPM_KLANES; l++) {
         PetscInt  nodel[MPM_KS];
@@ -269,7 +271,23 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
     PetscReal      W[MPM_KS3][MPM_KSLANES], DW[MPM_KS3][MPM_KD][MPM_KSLANES];
     const unsigned done = MPM_KCAT(MPMKStencilGroup, MPM_KNAME, MPM_KD, d)(ctx, g, A, p, node, W, DW, skip);
     if (done == (1u << MPM_KSLANES) - 1 && !(A->bn && (mode & MPM_G2P_VELOCITY))) { /* every lane: their sums in lanes too */
-      MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(A, nodes, p, MPM_KS3, node, W, DW, mode);
+      MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(A, nodes, p, MPM_KS3, node, W, DW, mode, done);
+      continue;
+    }
+    if (done && !(A->bn && (mode & MPM_G2P_VELOCITY)) && !(mode & MPM_G2P_REMAP)) {
+      /* some lanes done (the others: a point at a wall, a domain over 3 cells): their sums in lanes, then the others point by
+         point; without the remap a point writes only its own fields, so the order of the points does not matter */
+      const PetscInt l0 = __builtin_ctz(done);
+      for (PetscInt l = 0; l < MPM_KSLANES; l++) /* a lane left: lane l0's nodes with weight 0 (read, never written back) */
+        if (!((done >> l) & 1u))
+          for (PetscInt a = 0; a < MPM_KS3; a++) {
+            node[a][l] = node[a][l0];
+            W[a][l]    = 0.0;
+            for (PetscInt k = 0; k < MPM_KD; k++) DW[a][k][l] = 0.0;
+          }
+      MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(A, nodes, p, MPM_KS3, node, W, DW, mode, done);
+      for (PetscInt l = 0; l < MPM_KSLANES; l++)
+        if (!((done >> l) & 1u)) MPM_KCAT(MPMKG2POne, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, p + l, mode);
       continue;
     }
     for (PetscInt l = 0; l < MPM_KSLANES; l++) {
