@@ -267,14 +267,19 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
 #if defined(MPM_KSTENCIL_LANES) && MPM_KD > 1
   PetscInt skip[2] = {0, 0};
   for (; p + MPM_KSLANES <= A->n; p += MPM_KSLANES) { /* each group's 3^d stencils in vector lanes (points to grid keeps none of them) */
-    PetscInt       node[MPM_KS3][MPM_KSLANES];
-    PetscReal      W[MPM_KS3][MPM_KSLANES], DW[MPM_KS3][MPM_KD][MPM_KSLANES];
-    const unsigned done = MPM_KCAT(MPMKStencilGroup, MPM_KNAME, MPM_KD, d)(ctx, g, A, p, node, W, DW, skip);
-    if (done == (1u << MPM_KSLANES) - 1 && !(A->bn && (mode & MPM_G2P_VELOCITY))) { /* every lane: their sums in lanes too */
+    PetscInt        node[MPM_KS3][MPM_KSLANES];
+    PetscReal       W[MPM_KS3][MPM_KSLANES], DW[MPM_KS3][MPM_KD][MPM_KSLANES];
+    unsigned        padded;
+    const unsigned  found  = MPM_KCAT(MPMKStencilGroup, MPM_KNAME, MPM_KD, d)(ctx, g, A, p, node, W, DW, &padded, skip);
+    const PetscBool shares = (PetscBool)(A->bn && (mode & MPM_G2P_VELOCITY));
+    /* with nodal PIC shares every entry of a stencil, of weight 0 too, decides whether its point takes them
+       (MPMGatherGeneric), so a padded lane (kernels.h) takes its own stencil then */
+    const unsigned done = shares ? found & ~padded : found;
+    if (done == (1u << MPM_KSLANES) - 1 && !shares) { /* every lane: their sums in lanes too */
       MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(A, nodes, p, MPM_KS3, node, W, DW, mode, done);
       continue;
     }
-    if (done && !(A->bn && (mode & MPM_G2P_VELOCITY)) && !(mode & MPM_G2P_REMAP)) {
+    if (done && !shares && !(mode & MPM_G2P_REMAP)) {
       /* some lanes done (the others: a point at a wall, a domain over 3 cells): their sums in lanes, then the others point by
          point; without the remap a point writes only its own fields, so the order of the points does not matter */
       const PetscInt l0 = __builtin_ctz(done);

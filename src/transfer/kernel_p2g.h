@@ -251,7 +251,8 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GLoop, MPM_KNAME, MPM_KD, d)(const MPMGrid *gin,
   for (; p + MPM_KSLANES <= A->n; p += MPM_KSLANES) { /* point by point, each group's 3^d stencils in vector lanes */
     PetscInt       node[MPM_KS3][MPM_KSLANES];
     PetscReal      W[MPM_KS3][MPM_KSLANES], DW[MPM_KS3][MPM_KD][MPM_KSLANES];
-    const unsigned done = MPM_KCAT(MPMKStencilGroup, MPM_KNAME, MPM_KD, d)(ctx, g, A, p, node, W, DW, skip);
+    unsigned       padded; /* entries of weight 0 add nothing to a node */
+    const unsigned done = MPM_KCAT(MPMKStencilGroup, MPM_KNAME, MPM_KD, d)(ctx, g, A, p, node, W, DW, &padded, skip);
     for (PetscInt l = 0; l < MPM_KSLANES; l++) {
       if (!((done >> l) & 1u)) { /* a point the lanes leave: its own stencil */
         MPM_KCAT(MPMKP2GOne, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, p + l, mode);

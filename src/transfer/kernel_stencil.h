@@ -202,19 +202,21 @@ MPM_KINLINE void MPM_KCAT(MPMKLaneOut, MPM_KNAME, MPM_KD, d)(PetscInt l, const P
 /* The entries of a family's stencils in lanes (MPM_KSTENCIL_LANES, kernels.h): 3^d. */
 #  define MPM_KS3 (MPM_KD == 2 ? 9 : 27)
 
-/* The group of points p to p + MPM_KSLANES - 1: their stencils in lanes, and the mask of the lanes done. After n
+/* The group of points p to p + MPM_KSLANES - 1: their stencils in lanes, the mask of the lanes done, and in *padded of
+   those with entries of weight 0 beyond their own stencil. After n
    groups in a row with no lane done (domains within a cell: several points per cell; a row of points at a wall) the
    next 2^n - 1, at most 7, are not tried: skip[0] groups left to pass over, skip[1] the next count. */
 MPM_KINLINE unsigned MPM_KCAT(MPMKStencilGroup, MPM_KNAME, MPM_KD, d)(const void *ctx, const MPMGrid *g, const MPMTransferArgs *A, PetscInt p, PetscInt node[MPM_KS3][MPM_KSLANES], PetscReal W[MPM_KS3][MPM_KSLANES],
-                                                                      PetscReal DW[MPM_KS3][MPM_KD][MPM_KSLANES], PetscInt skip[2])
+                                                                      PetscReal DW[MPM_KS3][MPM_KD][MPM_KSLANES], unsigned *padded, PetscInt skip[2])
 {
   unsigned done;
 
+  *padded = 0;
   if (skip[0]) {
     skip[0]--;
     return 0;
   }
-  done    = MPM_KSTENCIL_LANES(ctx, g, A, p, node, W, &DW[0][0][0], MPM_KD);
+  done    = MPM_KSTENCIL_LANES(ctx, g, A, p, node, W, (PetscReal *)DW, padded, MPM_KD);
   skip[0] = done ? 0 : skip[1];
   skip[1] = done ? 0 : PetscMin(2 * skip[1] + 1, 7);
   return done;

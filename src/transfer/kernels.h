@@ -17,11 +17,13 @@
                         its kept stencil, the number of entries, 0 where none is valid (A->keep == MPM_KEEP_LOAD)
    and, optionally, in 2D and 3D, both of
      MPM_KSLANES        the points of a group (a constant)
-     MPM_KSTENCIL_LANES(ctx, g, A, p0, node, W, DW, d)
+     MPM_KSTENCIL_LANES(ctx, g, A, p0, node, W, DW, padded, d)
                         the 3^d-entry stencils of points p0 to p0 + MPM_KSLANES - 1 in vector lanes (node[3^d][lanes],
-                        W[3^d][lanes], DW flat as [3^d][d][lanes]), the same bits as MPM_KSTENCIL's; returns the mask of
+                        W[3^d][lanes], DW flat as [3^d][d][lanes]), the same bits as MPM_KSTENCIL's, a lane whose own
+                        stencil is smaller padded with entries of weight 0 (their mask in *padded); returns the mask of
                         the lanes filled (the others go through MPM_KSTENCIL). Points to grid uses it, and grid to
-                        points where no stencil is kept. */
+                        points where no stencil is kept (a padded lane not in a step with the blend's nodal PIC shares,
+                        whose test reads every entry's node). */
 #include "transfer.h"
 
 #if !defined(__GNUC__)

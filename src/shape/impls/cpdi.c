@@ -260,21 +260,23 @@ MPM_CPDI_INLINE PetscBool CPDIKernelStencil(const void *ctx, const MPMGrid *g, c
 }
 
 /* The stencils of MPM_SIMD_LANES points p0, p0 + 1, ... in 2D or 3D in vector lanes, lane l point p0 + l (the specialised
-   transfers', MPM_KSTENCIL_LANES): CPDIStencil's operations per lane, so the same bits, where a point's corners span a
-   box of 3^d nodes (two cells in each direction: the common case at one point per cell) that lies within the grid
-   (nothing folded, no mirror sign). Corner c contributes to box position a_k = o_k + b (o_k = first_k,c - lo_k in
-   {0, 1}) the weight w_b; as a factor u_k,c(a) over the box's 3 positions that is 0 elsewhere, and adding a product
-   with a factor 0 leaves a sum unchanged, the merged sums come out in corner order as CPDIStencil's. Fills the 3^d
-   entries of each lane (entry e = a_0 + 3 a_1 + 9 a_2: node[e][l], W[e][l], DW[(e d + j) MPM_SIMD_LANES + l]) and returns the mask of the lanes done; the others are left to
-   CPDIStencil. */
+   transfers', MPM_KSTENCIL_LANES): CPDIStencil's operations per lane, so the same bits, where a point's corners span
+   2 or 3 nodes in each direction (within two cells: the common case at one point per cell; within one at more points
+   per cell and for split points) and its box of 3 nodes per direction from its lowest lies within the grid (nothing
+   folded, no mirror sign). Corner c contributes to box position a_k = o_k + b (o_k = first_k,c - lo_k in {0, 1}) the
+   weight w_b; as a factor u_k,c(a) over the box's 3 positions that is 0 elsewhere, and adding a product with a factor
+   0 leaves a sum unchanged, the merged sums come out in corner order as CPDIStencil's; a point whose corners span 2
+   nodes in a direction (padded) has CPDIStencil's entries in its order with entries of weight 0 between them. Fills the
+   3^d entries of each lane (entry e = a_0 + 3 a_1 + 9 a_2: node[e][l], W[e][l], DW[(e d + j) MPM_SIMD_LANES + l]) and
+   the mask of the padded lanes, and returns the mask of the lanes done; the others are left to CPDIStencil. */
 typedef PetscInt CPDILIVec __attribute__((vector_size(MPM_SIMD_LANES * sizeof(PetscInt)))); /* node indices of the lanes (src/core/simdmath.h) */
 
-MPM_CPDI_INLINE unsigned CPDIKernelStencilLanes(const void *ctx, const MPMGrid *g, const MPMTransferArgs *A, PetscInt p0, PetscInt node[][MPM_SIMD_LANES], PetscReal W[][MPM_SIMD_LANES], PetscReal DW[], const PetscInt d)
+MPM_CPDI_INLINE unsigned CPDIKernelStencilLanes(const void *ctx, const MPMGrid *g, const MPMTransferArgs *A, PetscInt p0, PetscInt node[][MPM_SIMD_LANES], PetscReal W[][MPM_SIMD_LANES], PetscReal DW[], unsigned *padded, const PetscInt d)
 {
   const Shape_CPDI *cp = (const Shape_CPDI *)ctx;
   const PetscInt    nc = 1 << d, dd = d * d;
   MPMVd             R[9], Ri[9], det, gs[3][8], w0[3][8], w1[3][8], u[3][8][3];
-  CPDILIVec         first[3][8], lo[3], ok;
+  CPDILIVec         first[3][8], lo[3], ok, pad;
   unsigned          mask = 0;
 
   for (PetscInt k = 0; k < dd; k++) { /* R = F diag(s) diag(l0) (MPMPointDomain, CPDIDomain) */
@@ -305,7 +307,8 @@ MPM_CPDI_INLINE unsigned CPDIKernelStencilLanes(const void *ctx, const MPMGrid *
       w1[i][c]    = xi - fi;
     }
   }
-  ok = (CPDILIVec){0} == 0; /* all lanes true (-1) */
+  ok  = (CPDILIVec){0} == 0; /* all lanes true (-1) */
+  pad = (CPDILIVec){0};
   for (PetscInt i = 0; i < d; i++) {
     CPDILIVec hi = first[i][0];
     lo[i]        = first[i][0];
@@ -314,9 +317,14 @@ MPM_CPDI_INLINE unsigned CPDIKernelStencilLanes(const void *ctx, const MPMGrid *
       lo[i]                = (first[i][c] & less) | (lo[i] & ~less);
       hi                   = (first[i][c] & more) | (hi & ~more);
     }
-    ok = ok & (hi == lo[i] + 1) & (lo[i] >= 0) & (lo[i] + 2 <= g->cells[i]);
+    ok  = ok & ((hi == lo[i] + 1) | (hi == lo[i])) & (lo[i] >= 0) & (lo[i] + 2 <= g->cells[i]);
+    pad = pad | (hi == lo[i]);
   }
-  for (PetscInt l = 0; l < MPM_SIMD_LANES; l++) mask |= (unsigned)(ok[l] != 0) << l;
+  *padded = 0;
+  for (PetscInt l = 0; l < MPM_SIMD_LANES; l++) {
+    mask |= (unsigned)(ok[l] != 0) << l;
+    *padded |= (unsigned)(ok[l] != 0 && pad[l] != 0) << l;
+  }
   if (!mask) return 0;
   for (PetscInt c = 0; c < nc; c++)
     for (PetscInt i = 0; i < d; i++) { /* u_i,c(a): w0 at a = o, w1 at a = o + 1, else 0 */
