@@ -275,13 +275,9 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
     /* with nodal PIC shares every entry of a stencil, of weight 0 too, decides whether its point takes them
        (MPMGatherGeneric), so a padded lane (kernels.h) takes its own stencil then */
     const unsigned done = shares ? found & ~padded : found;
-    if (done == (1u << MPM_KSLANES) - 1 && !shares) { /* every lane: their sums in lanes too */
-      MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(A, nodes, p, MPM_KS3, node, W, DW, mode, done);
-      continue;
-    }
-    if (done && !shares && !(mode & MPM_G2P_REMAP)) {
-      /* some lanes done (the others: a point at a wall, a domain over 3 cells): their sums in lanes, then the others point by
-         point; without the remap a point writes only its own fields, so the order of the points does not matter */
+    if (done && !shares && (done == (1u << MPM_KSLANES) - 1 || !(mode & MPM_G2P_REMAP))) {
+      /* the lanes done sum in lanes; the others (a point at a wall, a domain over 3 cells) follow point by point, which
+         needs no remap: without it a point writes only its own fields, so the order of the points does not matter */
       const PetscInt l0 = __builtin_ctz(done);
       for (PetscInt l = 0; l < MPM_KSLANES; l++) /* a lane left: lane l0's nodes with weight 0 (read, never written back) */
         if (!((done >> l) & 1u))
