@@ -102,41 +102,97 @@ static MPMVd MPMStrengthReturns_JC(const Strength_JC *jc, PetscReal dt, MPMVd se
   return dg;
 }
 
-/* The batch of points idx[0..n): the trial deviator, the screen and the wave speed point by point; the returns of the
-   points past the screen MPM_SIMD_LANES at a time (MPMStrengthReturns_JC; the last group's spare lanes do not yield). */
+/* The trial deviator (MPMHypoelasticTrial), its von Mises stress (MPMVonMisesStress), the wave speed
+   (MPMHypoelasticWaveSpeed2) and the homologous temperature of the nl <= MPM_SIMD_LANES points idx[0..nl) in vector
+   lanes, by the pointwise kernels' operations in their order (the same bits); rho[l] and c2[l] are the lanes' own. The
+   spare lanes hold zeros. */
+static inline __attribute__((always_inline)) void MPMStrengthTrialLanes_JC(const Strength_JC *jc, const PetscInt d, PetscReal dt, PetscInt nl, const PetscInt idx[], const PetscReal L[], const PetscReal rho[], const PetscReal T[], PetscReal s[],
+                                                                           PetscReal c2[], MPMVd *seq, MPMVd *Ts)
+{
+  const PetscInt dd   = d * d;
+  const MPMVd    zero = {0}, one = zero + 1.0;
+  MPMVd          Lv[MPM_MAX_DIM * MPM_MAX_DIM], sv[MPM_MAX_DIM * MPM_MAX_DIM], ds[MPM_MAX_DIM * MPM_MAX_DIM], trD = zero, ss = zero, x, y, rv = one, Tv = zero;
+  double         t[MPM_SIMD_LANES];
+
+  for (PetscInt k = 0; k < dd; k++) {
+    Lv[k] = sv[k] = zero;
+    for (PetscInt l = 0; l < nl; l++) {
+      Lv[k][l] = L[idx[l] * dd + k];
+      sv[k][l] = s[idx[l] * dd + k];
+    }
+  }
+  for (PetscInt l = 0; l < nl; l++) {
+    rv[l] = rho[l];
+    Tv[l] = T[idx[l]];
+  }
+  for (PetscInt i = 0; i < d; i++) trD += Lv[i * d + i];
+  for (PetscInt i = 0; i < d; i++)
+    for (PetscInt j = 0; j < d; j++) {
+      MPMVd rot = zero;
+      for (PetscInt k = 0; k < d; k++) {
+        const MPMVd Wik = 0.5 * (Lv[i * d + k] - Lv[k * d + i]), Wkj = 0.5 * (Lv[k * d + j] - Lv[j * d + k]);
+        rot += Wik * sv[k * d + j] - sv[i * d + k] * Wkj;
+      }
+      ds[i * d + j] = 2.0 * jc->G * (0.5 * (Lv[i * d + j] + Lv[j * d + i]) - (i == j ? trD / 3.0 : zero)) + rot;
+    }
+  for (PetscInt k = 0; k < dd; k++) {
+    sv[k] += dt * ds[k];
+    for (PetscInt l = 0; l < nl; l++) s[idx[l] * dd + k] = sv[k][l];
+  }
+  if (d == 1)
+    ss = 1.5 * sv[0] * sv[0];
+  else {
+    for (PetscInt k = 0; k < dd; k++) ss += sv[k] * sv[k];
+    if (d == 2) ss += (sv[0] + sv[3]) * (sv[0] + sv[3]);
+  }
+  ss = 1.5 * ss;
+  for (PetscInt l = 0; l < MPM_SIMD_LANES; l++) t[l] = PetscSqrtReal(ss[l]);
+  __builtin_memcpy(seq, t, sizeof(t));
+  x = 4.0 * jc->G / (3.0 * rv);
+  for (PetscInt l = 0; l < nl; l++) c2[l] = x[l];
+  x   = (Tv - jc->Tr) / (jc->Tm - jc->Tr); /* MPMStrengthHomologous_JC: PetscMin(1, PetscMax(0, x)) */
+  y   = MPMVSelect(zero < x, x, zero);
+  *Ts = MPMVSelect(one < y, one, y);
+}
+
+/* The batch of points idx[0..n): the trial deviator, the screen and the wave speed MPM_SIMD_LANES points at a time
+   (MPMStrengthTrialLanes_JC); the returns of the points past the screen MPM_SIMD_LANES at a time
+   (MPMStrengthReturns_JC; the last group's spare lanes do not yield). An elastic trial below A (1 - T*) needs no
+   return and no pow: for m >= 1, T*^m <= T* and eps_p^n >= 0, so the flow stress at the rate 0 of the yield check is
+   at least A (1 - T*) (in floating point up to pow's last bits, which could only give a return of that size). */
 static inline __attribute__((always_inline)) void MPMStrengthStressD_JC(const Strength_JC *jc, const PetscInt d, PetscReal dt, PetscInt n, const PetscInt idx[], const PetscReal L[], const PetscReal rho[], const PetscReal T[], PetscReal s[],
                                                                         PetscReal epsp[], PetscReal c2[])
 {
   PetscInt q[MPM_SIMD_LANES], nq = 0;
   MPMVd    seq = {0}, ep = {0}, Ts = {0}, Rt = {0};
 
-  for (PetscInt i = 0; i <= n; i++) {
-    if (i < n) { /* the trial deviator. An elastic trial below A (1 - T*) needs no return and no pow: for m >= 1,
-                    T*^m <= T* and eps_p^n >= 0, so the flow stress at the rate 0 of the yield check is at least
-                    A (1 - T*) (in floating point up to pow's last bits, which could only give a return of that size) */
-      const PetscInt  p   = idx[i];
-      const PetscReal Tsp = MPMStrengthHomologous_JC(jc, T[p]);
-      PetscReal       v;
-      MPMHypoelasticTrial(d, dt, jc->G, &L[p * d * d], &s[p * d * d]);
-      c2[i] = MPMHypoelasticWaveSpeed2(jc->G, rho[i]);
-      v     = MPMVonMisesStress(d, &s[p * d * d]);
-      if (jc->m >= 1.0 && v <= jc->A * (1.0 - Tsp)) continue;
-      q[nq]   = p;
-      seq[nq] = v;
-      ep[nq]  = epsp[p];
-      Ts[nq]  = Tsp;
-      Rt[nq]  = jc->total_rate ? MPMStrengthRateFactor_JC(jc, MPMEquivalentStrainRate(d, &L[p * d * d]) / jc->epsdot0) : 1.0;
-      nq++;
-    }
-    if (nq == MPM_SIMD_LANES || (i == n && nq)) {
-      const MPMVd dg = MPMStrengthReturns_JC(jc, dt, seq, ep, Ts, Rt);
-      for (PetscInt l = 0; l < nq; l++) { /* s scaled back to the flow stress, eps_p advanced */
-        if (dg[l] == 0.0) continue;       /* no yield */
-        for (PetscInt k = 0; k < d * d; k++) s[q[l] * d * d + k] *= (seq[l] - 3.0 * jc->G * dg[l]) / seq[l];
-        epsp[q[l]] += dg[l];
+  for (PetscInt i0 = 0; i0 < n; i0 += MPM_SIMD_LANES) {
+    const PetscInt nl = PetscMin(MPM_SIMD_LANES, n - i0);
+    MPMVd          v, Tsv;
+    MPMVi          yield;
+
+    MPMStrengthTrialLanes_JC(jc, d, dt, nl, &idx[i0], L, &rho[i0], T, s, &c2[i0], &v, &Tsv);
+    yield = jc->m >= 1.0 ? ~(v <= jc->A * (1.0 - Tsv)) : (MPMVi){0} - 1; /* a NaN yields, so that it reaches s */
+    for (PetscInt l = 0; l <= nl; l++) {
+      if (l < nl && yield[l]) {
+        const PetscInt p = idx[i0 + l];
+        q[nq]            = p;
+        seq[nq]          = v[l];
+        ep[nq]           = epsp[p];
+        Ts[nq]           = Tsv[l];
+        Rt[nq]           = jc->total_rate ? MPMStrengthRateFactor_JC(jc, MPMEquivalentStrainRate(d, &L[p * d * d]) / jc->epsdot0) : 1.0;
+        nq++;
       }
-      for (PetscInt l = 0; l < MPM_SIMD_LANES; l++) seq[l] = ep[l] = Ts[l] = Rt[l] = 0.0; /* spare lanes: seq = 0 does not yield */
-      nq = 0;
+      if (nq == MPM_SIMD_LANES || (l == nl && i0 + nl == n && nq)) {
+        const MPMVd dg = MPMStrengthReturns_JC(jc, dt, seq, ep, Ts, Rt);
+        for (PetscInt k = 0; k < nq; k++) { /* s scaled back to the flow stress, eps_p advanced */
+          if (dg[k] == 0.0) continue;       /* no yield */
+          for (PetscInt a = 0; a < d * d; a++) s[q[k] * d * d + a] *= (seq[k] - 3.0 * jc->G * dg[k]) / seq[k];
+          epsp[q[k]] += dg[k];
+        }
+        for (PetscInt k = 0; k < MPM_SIMD_LANES; k++) seq[k] = ep[k] = Ts[k] = Rt[k] = 0.0; /* spare lanes: seq = 0 does not yield */
+        nq = 0;
+      }
     }
   }
 }
