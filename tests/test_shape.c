@@ -174,8 +174,10 @@ static PetscErrorCode CheckCPDIMerge(PetscInt dim, PetscInt *fails)
    the merged box of src/shape/impls/cpdi.c): with R = F diag(h / (2 ppc)) and the corners x_c = x + R s_c,
      S_J = 2^-d sum_c N_J(x_c),   grad S_J = 2^-d R^-T sum_c N_J(x_c) s_c,
    N_J the tent of node J. Inside the grid, at 1 and 2 points per cell, domains sheared by up to 0.3 and (at 2) stretched
-   to about 3 cells; every node of the stencil and every node the corners reach compared, to 1e-13. */
-static PetscErrorCode CheckCPDIDefinition(PetscInt dim, PetscInt *fails)
+   to about 3 cells; every node of the stencil and every node the corners reach compared, to 1e-13. With subdivide
+   (-mpm_shape_cpdi_subdivide) the mean over the 2^d halves h, centres x + R s_h / 2 and half-widths R / 2:
+     S_J = 4^-d sum_h sum_c N_J(x_hc),   grad S_J = 4^-d sum_h 2 R^-T sum_c N_J(x_hc) s_c. */
+static PetscErrorCode CheckCPDIDefinition(PetscInt dim, PetscBool subdivide, PetscInt *fails)
 {
   MPMShape    shape;
   MPMGrid     g;
@@ -188,6 +190,9 @@ static PetscErrorCode CheckCPDIDefinition(PetscInt dim, PetscInt *fails)
   PetscFunctionBegin;
   PetscCall(MPMShapeCreate(PETSC_COMM_SELF, &shape));
   PetscCall(MPMShapeSetType(shape, MPMSHAPECPDI));
+  PetscCall(PetscOptionsSetValue(NULL, "-mpm_shape_cpdi_subdivide", subdivide ? "true" : "false"));
+  PetscCall(MPMShapeSetFromOptions(shape));
+  PetscCall(PetscOptionsClearValue(NULL, "-mpm_shape_cpdi_subdivide"));
   CPDITestGrid(dim, 14, -0.7, 0.2, &g);
   for (PetscInt k = 0; k < MPM_MAX_DIM; k++) nodes *= g.gm[k];
   PetscCall(PetscRandomCreate(PETSC_COMM_SELF, &rnd));
@@ -200,7 +205,7 @@ static PetscErrorCode CheckCPDIDefinition(PetscInt dim, PetscInt *fails)
         PetscCall(PetscRandomGetValueReal(rnd, &r));
         x[k] = g.lo[k] + (5.0 + 4.0 * r) * g.h[k];
       }
-      RandomF(rnd, dim, s % 2 && ppc == 2 ? 6.0 : 1.0, F);
+      RandomF(rnd, dim, s % 2 && ppc == 2 && !subdivide ? 6.0 : 1.0, F); /* the halves: within the merged box (at most 4 nodes a direction) */
       for (PetscInt i = 0; i < dim; i++)
         for (PetscInt k = 0; k < dim; k++) R[i * dim + k] = F[i * dim + k] * 0.5 * g.h[k] / ppc;
       det = MPMDeterminant(dim, R);
@@ -216,20 +221,24 @@ static PetscErrorCode CheckCPDIDefinition(PetscInt dim, PetscInt *fails)
           for (PetscInt j = 0; j < 3; j++) /* the cofactor of R_ji over det */
             Ri[i * 3 + j] = (R[((j + 1) % 3) * 3 + (i + 1) % 3] * R[((j + 2) % 3) * 3 + (i + 2) % 3] - R[((j + 1) % 3) * 3 + (i + 2) % 3] * R[((j + 2) % 3) * 3 + (i + 1) % 3]) / det;
       for (PetscInt J = 0; J < nodes; J++) S[J] = G[J][0] = G[J][1] = G[J][2] = 0.0;
-      for (PetscInt c = 0; c < (1 << dim); c++) { /* corner c: its tents over all nodes */
-        PetscReal xc[3] = {0, 0, 0}, sc[3];
-        for (PetscInt k = 0; k < dim; k++) sc[k] = (c >> k) & 1 ? 1.0 : -1.0;
+      for (PetscInt hc = 0; hc < (subdivide ? 1 << 2 * dim : 1 << dim); hc++) { /* corner c of half h (c = hc): its tents over all nodes */
+        const PetscInt h = subdivide ? hc >> dim : 0, c = hc & ((1 << dim) - 1);
+        PetscReal      xc[3] = {0, 0, 0}, sc[3], sh[3], f = subdivide ? 0.5 : 1.0;
+        for (PetscInt k = 0; k < dim; k++) {
+          sc[k] = (c >> k) & 1 ? 1.0 : -1.0;
+          sh[k] = subdivide ? ((h >> k) & 1 ? 1.0 : -1.0) : 0.0;
+        }
         for (PetscInt i = 0; i < dim; i++) {
           xc[i] = x[i];
-          for (PetscInt k = 0; k < dim; k++) xc[i] += R[i * dim + k] * sc[k];
+          for (PetscInt k = 0; k < dim; k++) xc[i] += R[i * dim + k] * (f * sh[k] + f * sc[k]);
         }
         for (PetscInt J = 0; J < nodes; J++) {
           const PetscInt ijk[3] = {J % g.gm[0], (J / g.gm[0]) % g.gm[1], J / (g.gm[0] * g.gm[1])};
-          PetscReal      N      = 1.0 / (1 << dim);
+          PetscReal      N      = 1.0 / (subdivide ? 1 << 2 * dim : 1 << dim);
           for (PetscInt k = 0; k < dim; k++) N *= PetscMax(0.0, 1.0 - PetscAbsReal((xc[k] - g.lo[k]) / g.h[k] - ijk[k]));
           S[J] += N;
           for (PetscInt j = 0; j < dim; j++)
-            for (PetscInt k = 0; k < dim; k++) G[J][j] += N * Ri[k * dim + j] * sc[k]; /* (R^-T s_c)_j */
+            for (PetscInt k = 0; k < dim; k++) G[J][j] += N * Ri[k * dim + j] * sc[k] / f; /* ((f R)^-T s_c)_j */
         }
       }
       MPMShapeEvaluate(shape, &g, x, F, &st);
@@ -246,8 +255,8 @@ static PetscErrorCode CheckCPDIDefinition(PetscInt dim, PetscInt *fails)
   PetscCall(MPMShapeDestroy(&shape));
   ok = (PetscBool)(worst < 1e-13 && missing == 0);
   if (!ok) (*fails)++;
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s cpdi     %" PetscInt_FMT "D against its definition corner by corner: largest difference %.1e (weights, gradients times h; tol 1e-13), %" PetscInt_FMT " nodes left out\n", ok ? "PASSED" : "FAILED", dim,
-                        (double)worst, missing));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s cpdi     %" PetscInt_FMT "D%s against its definition corner by corner: largest difference %.1e (weights, gradients times h; tol 1e-13), %" PetscInt_FMT " nodes left out\n", ok ? "PASSED" : "FAILED", dim,
+                        subdivide ? " (halves)" : "", (double)worst, missing));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -303,7 +312,8 @@ int main(int argc, char **argv)
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   PetscCall(CheckClassBase(&fails));
   for (PetscInt dim = 1; dim <= 3; dim++) PetscCall(CheckCPDIMerge(dim, &fails));
-  for (PetscInt dim = 1; dim <= 3; dim++) PetscCall(CheckCPDIDefinition(dim, &fails));
+  for (PetscInt dim = 1; dim <= 3; dim++) PetscCall(CheckCPDIDefinition(dim, PETSC_FALSE, &fails));
+  for (PetscInt dim = 1; dim <= 3; dim++) PetscCall(CheckCPDIDefinition(dim, PETSC_TRUE, &fails));
   for (size_t t = 0; t < sizeof(types) / sizeof(types[0]) + 1; t++) {
     const PetscBool stretched = (PetscBool)(t == sizeof(types) / sizeof(types[0])); /* CPDI again with F near 6 I */
     const char     *type      = stretched ? MPMSHAPECPDI : types[t];
