@@ -12,7 +12,9 @@ against 0.71 and 0.70, and at 400^2 the 30-degree error is 1.34 times the aligne
 module: orders 0.59 and 0.43 at 30 degrees, 1.77 times the aligned error at 400^2 (1.96% and 1.11%). Measured where it comes from (400^2): the star state left of the contact and the contact itself hold 1.06% of
 the 1.96% against 0.24% of 1.11% aligned. Not the interface's cut sites, the conduction or the relaxation; without
 splitting it is worse, with quadratic B-splines instead of CPDI it no longer depends on the angle: CPDI's domains
-stretched off the grid's axes (docs/verification_2d.md). The assertion: order >= 0.75 at 30 degrees.
+stretched off the grid's axes (docs/verification_2d.md): CPDI's corner rule over domains 1 to 1.5 cells long. With
+-mpm_shape_cpdi_subdivide (each domain as its halves; not the default) the order is 0.89, asserted in scene_oblique.
+The assertion: order >= 0.75 at 30 degrees in the default method.
 """
 import math
 import os
