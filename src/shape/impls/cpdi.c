@@ -581,7 +581,6 @@ static PetscErrorCode MPMShapeSetFromOptions_CPDI(MPMShape shape, PetscOptionIte
 
   PetscFunctionBegin;
   PetscOptionsHeadBegin(PetscOptionsObject, "CPDI shape functions");
-
   PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-shape_cpdi_reach", "How far a point domain's corners may reach beyond its cell [cells], 1 to 4 (ghost width = reach + 1)", &cp->reach, 1, 4));
   PetscCall(PetscOptionsBool("-shape_cpdi_subdivide",
                              "Each point's weights as the mean of its domain's 2^d halves' corner rules (3^d points per domain instead of 2^d: more accurate for domains over a cell long; point by point, 2 to 3 times the run time; a box over 4 nodes "
