@@ -6,6 +6,7 @@
    components alike, so the d x d block carries the whole 3D deviator. */
 #pragma once
 #include "strengthimpl.h"
+#include "core/simdmath.h"
 
 /* The strain-rate deviator D' = D - tr(D)/3 I of D = (L + L^T)/2, with the 3D trace (the unresolved directions do not
    deform), component (i, j) of the d x d block; trD = sum_k L_kk. */
@@ -64,6 +65,51 @@ static inline PetscReal MPMVonMisesStress(PetscInt d, const PetscReal s[])
 static inline PetscReal MPMHypoelasticWaveSpeed2(PetscReal G, PetscReal rho)
 {
   return 4.0 * G / (3.0 * rho);
+}
+
+/* MPMHypoelasticTrial, MPMVonMisesStress and MPMHypoelasticWaveSpeed2 of the nl <= MPM_SIMD_LANES points idx[0..nl)
+   in vector lanes (s of point idx[l] updated, seq[l] its von Mises stress, c2[l] from rho[l]), by the same operations
+   in the same order (the same bits): a change to one of the pointwise kernels goes here too. Spare lanes hold zeros. */
+static inline __attribute__((always_inline)) void MPMHypoelasticTrialLanes(const PetscInt d, PetscReal dt, PetscReal G, PetscInt nl, const PetscInt idx[], const PetscReal L[], const PetscReal rho[], PetscReal s[], PetscReal c2[], MPMVd *seq)
+{
+  const PetscInt dd   = d * d;
+  const MPMVd    zero = {0};
+  MPMVd          Lv[MPM_MAX_DIM * MPM_MAX_DIM], sv[MPM_MAX_DIM * MPM_MAX_DIM], ds[MPM_MAX_DIM * MPM_MAX_DIM], trD = zero, ss = zero, rv = zero + 1.0, x;
+  double         t[MPM_SIMD_LANES];
+
+  for (PetscInt k = 0; k < dd; k++) {
+    Lv[k] = sv[k] = zero;
+    for (PetscInt l = 0; l < nl; l++) {
+      Lv[k][l] = L[idx[l] * dd + k];
+      sv[k][l] = s[idx[l] * dd + k];
+    }
+  }
+  for (PetscInt l = 0; l < nl; l++) rv[l] = rho[l];
+  for (PetscInt i = 0; i < d; i++) trD += Lv[i * d + i];
+  for (PetscInt i = 0; i < d; i++)
+    for (PetscInt j = 0; j < d; j++) {
+      MPMVd rot = zero;
+      for (PetscInt k = 0; k < d; k++) {
+        const MPMVd Wik = 0.5 * (Lv[i * d + k] - Lv[k * d + i]), Wkj = 0.5 * (Lv[k * d + j] - Lv[j * d + k]);
+        rot += Wik * sv[k * d + j] - sv[i * d + k] * Wkj;
+      }
+      ds[i * d + j] = 2.0 * G * (0.5 * (Lv[i * d + j] + Lv[j * d + i]) - (i == j ? trD / 3.0 : zero)) + rot;
+    }
+  for (PetscInt k = 0; k < dd; k++) {
+    sv[k] += dt * ds[k];
+    for (PetscInt l = 0; l < nl; l++) s[idx[l] * dd + k] = sv[k][l];
+  }
+  if (d == 1)
+    ss = 1.5 * sv[0] * sv[0];
+  else {
+    for (PetscInt k = 0; k < dd; k++) ss += sv[k] * sv[k];
+    if (d == 2) ss += (sv[0] + sv[3]) * (sv[0] + sv[3]);
+  }
+  ss = 1.5 * ss;
+  for (PetscInt l = 0; l < MPM_SIMD_LANES; l++) t[l] = PetscSqrtReal(ss[l]);
+  __builtin_memcpy(seq, t, sizeof(t));
+  x = 4.0 * G / (3.0 * rv);
+  for (PetscInt l = 0; l < nl; l++) c2[l] = x[l];
 }
 
 /* Radial return (Wilkins; Simo & Hughes, ch. 3): when the trial deviator lies outside the yield surface, find the

@@ -136,19 +136,20 @@ static __attribute__((noinline)) void CPDIHalfCorners(const MPMGrid *g, const Pe
   CPDICorners(g, xs, Rh, Ri ? Rih : NULL, gs, first, w0, w1, d);
 }
 
-/* The box along direction i widened to the halves' corners' first nodes (their corners lie in the domain's, but are
-   rounded otherwise). */
-static __attribute__((noinline)) void CPDIHalvesBox(const MPMGrid *g, const PetscReal x[], const PetscReal R[], PetscInt i, PetscInt d, PetscInt *lo, PetscInt *hi)
+/* The box lo[i]..hi[i] widened to the halves' corners' first nodes (their corners lie in the domain's, but are rounded
+   otherwise). */
+static __attribute__((noinline)) void CPDIHalvesBox(const MPMGrid *g, const PetscReal x[], const PetscReal R[], PetscInt d, PetscInt lo[], PetscInt hi[])
 {
   CPDIVec  gs[MPM_MAX_DIM], w0[MPM_MAX_DIM], w1[MPM_MAX_DIM];
   CPDIIVec first[MPM_MAX_DIM];
 
   for (PetscInt h = 0; h < (1 << d); h++) {
     CPDIHalfCorners(g, x, R, NULL, h, gs, first, w0, w1, d);
-    for (PetscInt c = 0; c < (1 << d); c++) {
-      *lo = PetscMin(*lo, first[i][c]);
-      *hi = PetscMax(*hi, first[i][c]);
-    }
+    for (PetscInt i = 0; i < d; i++)
+      for (PetscInt c = 0; c < (1 << d); c++) {
+        lo[i] = PetscMin(lo[i], first[i][c]);
+        hi[i] = PetscMax(hi[i], first[i][c]);
+      }
   }
 }
 
@@ -169,20 +170,21 @@ MPM_CPDI_INLINE PetscInt CPDIStencil(const Shape_CPDI *cp, const MPMGrid *g, con
   PetscReal       R[MPM_MAX_DIM * MPM_MAX_DIM], Ri[MPM_MAX_DIM * MPM_MAX_DIM];
   CPDIVec         gs[MPM_MAX_DIM], w0[MPM_MAX_DIM], w1[MPM_MAX_DIM];
   CPDIIVec        first[MPM_MAX_DIM];
-  PetscInt        lo[MPM_MAX_DIM], n[MPM_MAX_DIM], stride[MPM_MAX_DIM], nb = 1;
+  PetscInt        lo[MPM_MAX_DIM], hi[MPM_MAX_DIM], n[MPM_MAX_DIM], stride[MPM_MAX_DIM], nb = 1;
   PetscBool       merge = PETSC_TRUE;
 
   CPDIDomain(cp, d, F, R, grad ? Ri : NULL);
   CPDICorners(g, x, R, grad ? Ri : NULL, gs, first, w0, w1, d);
   for (PetscInt i = 0; i < d; i++) {
-    PetscInt hi = first[i][0];
-    lo[i]       = first[i][0];
+    lo[i] = hi[i] = first[i][0];
     for (PetscInt c = 1; c < nc; c++) {
       lo[i] = PetscMin(lo[i], first[i][c]);
-      hi    = PetscMax(hi, first[i][c]);
+      hi[i] = PetscMax(hi[i], first[i][c]);
     }
-    if (cp->subdivide) CPDIHalvesBox(g, x, R, i, d, &lo[i], &hi); /* the halves' corners lie in the corners' box, up to rounding */
-    n[i]      = hi - lo[i] + 2;
+  }
+  if (cp->subdivide) CPDIHalvesBox(g, x, R, d, lo, hi);
+  for (PetscInt i = 0; i < d; i++) {
+    n[i]      = hi[i] - lo[i] + 2;
     stride[i] = nb;
     nb *= n[i];
     merge = (PetscBool)(merge && n[i] <= 4);
@@ -316,8 +318,7 @@ MPM_CPDI_INLINE unsigned CPDIKernelStencilLanes(const void *ctx, const MPMGrid *
   const PetscInt    nc = 1 << d, dd = d * d;
   MPMVd             R[9], Ri[9], det, gs[3][8], w0[3][8], w1[3][8], u[3][8][3];
 
-  *padded = 0;
-  if (cp->subdivide) return 0; /* the halves' stencils: point by point */
+  if (cp->subdivide) return 0; /* the halves' stencils: point by point (the caller's *padded stays 0) */
   CPDILIVec first[3][8], lo[3], ok, pad;
   unsigned  mask = 0;
 

@@ -102,57 +102,34 @@ static MPMVd MPMStrengthReturns_JC(const Strength_JC *jc, PetscReal dt, MPMVd se
   return dg;
 }
 
-/* The trial deviator (MPMHypoelasticTrial), its von Mises stress (MPMVonMisesStress), the wave speed
-   (MPMHypoelasticWaveSpeed2) and the homologous temperature of the nl <= MPM_SIMD_LANES points idx[0..nl) in vector
-   lanes, by the pointwise kernels' operations in their order (the same bits); rho[l] and c2[l] are the lanes' own. The
-   spare lanes hold zeros. */
+/* The hypoelastic trial of the nl <= MPM_SIMD_LANES points idx[0..nl) in lanes (MPMHypoelasticTrialLanes) and their
+   homologous temperatures (MPMStrengthHomologous_JC's PetscMin(1, PetscMax(0, x)) as selects: the same bits). */
 static inline __attribute__((always_inline)) void MPMStrengthTrialLanes_JC(const Strength_JC *jc, const PetscInt d, PetscReal dt, PetscInt nl, const PetscInt idx[], const PetscReal L[], const PetscReal rho[], const PetscReal T[], PetscReal s[],
                                                                            PetscReal c2[], MPMVd *seq, MPMVd *Ts)
 {
-  const PetscInt dd   = d * d;
-  const MPMVd    zero = {0}, one = zero + 1.0;
-  MPMVd          Lv[MPM_MAX_DIM * MPM_MAX_DIM], sv[MPM_MAX_DIM * MPM_MAX_DIM], ds[MPM_MAX_DIM * MPM_MAX_DIM], trD = zero, ss = zero, x, y, rv = one, Tv = zero;
-  double         t[MPM_SIMD_LANES];
+  const MPMVd zero = {0}, one = zero + 1.0;
+  MPMVd       Tv = zero, x, y;
 
-  for (PetscInt k = 0; k < dd; k++) {
-    Lv[k] = sv[k] = zero;
-    for (PetscInt l = 0; l < nl; l++) {
-      Lv[k][l] = L[idx[l] * dd + k];
-      sv[k][l] = s[idx[l] * dd + k];
-    }
-  }
-  for (PetscInt l = 0; l < nl; l++) {
-    rv[l] = rho[l];
-    Tv[l] = T[idx[l]];
-  }
-  for (PetscInt i = 0; i < d; i++) trD += Lv[i * d + i];
-  for (PetscInt i = 0; i < d; i++)
-    for (PetscInt j = 0; j < d; j++) {
-      MPMVd rot = zero;
-      for (PetscInt k = 0; k < d; k++) {
-        const MPMVd Wik = 0.5 * (Lv[i * d + k] - Lv[k * d + i]), Wkj = 0.5 * (Lv[k * d + j] - Lv[j * d + k]);
-        rot += Wik * sv[k * d + j] - sv[i * d + k] * Wkj;
-      }
-      ds[i * d + j] = 2.0 * jc->G * (0.5 * (Lv[i * d + j] + Lv[j * d + i]) - (i == j ? trD / 3.0 : zero)) + rot;
-    }
-  for (PetscInt k = 0; k < dd; k++) {
-    sv[k] += dt * ds[k];
-    for (PetscInt l = 0; l < nl; l++) s[idx[l] * dd + k] = sv[k][l];
-  }
-  if (d == 1)
-    ss = 1.5 * sv[0] * sv[0];
-  else {
-    for (PetscInt k = 0; k < dd; k++) ss += sv[k] * sv[k];
-    if (d == 2) ss += (sv[0] + sv[3]) * (sv[0] + sv[3]);
-  }
-  ss = 1.5 * ss;
-  for (PetscInt l = 0; l < MPM_SIMD_LANES; l++) t[l] = PetscSqrtReal(ss[l]);
-  __builtin_memcpy(seq, t, sizeof(t));
-  x = 4.0 * jc->G / (3.0 * rv);
-  for (PetscInt l = 0; l < nl; l++) c2[l] = x[l];
-  x   = (Tv - jc->Tr) / (jc->Tm - jc->Tr); /* MPMStrengthHomologous_JC: PetscMin(1, PetscMax(0, x)) */
+  MPMHypoelasticTrialLanes(d, dt, jc->G, nl, idx, L, rho, s, c2, seq);
+  for (PetscInt l = 0; l < nl; l++) Tv[l] = T[idx[l]];
+  x   = (Tv - jc->Tr) / (jc->Tm - jc->Tr);
   y   = MPMVSelect(zero < x, x, zero);
   *Ts = MPMVSelect(one < y, one, y);
+}
+
+/* The returns of the nq queued points q[] (MPMStrengthReturns_JC): s scaled back to the flow stress, eps_p advanced;
+   the lanes then cleared (spare lanes: seq = 0 does not yield). */
+static inline __attribute__((always_inline)) void MPMStrengthFlush_JC(const Strength_JC *jc, const PetscInt d, PetscReal dt, const PetscInt q[], PetscInt *nq, MPMVd *seq, MPMVd *ep, MPMVd *Ts, MPMVd *Rt, PetscReal s[], PetscReal epsp[])
+{
+  const MPMVd dg = MPMStrengthReturns_JC(jc, dt, *seq, *ep, *Ts, *Rt);
+
+  for (PetscInt k = 0; k < *nq; k++) {
+    if (dg[k] == 0.0) continue; /* no yield */
+    for (PetscInt a = 0; a < d * d; a++) s[q[k] * d * d + a] *= ((*seq)[k] - 3.0 * jc->G * dg[k]) / (*seq)[k];
+    epsp[q[k]] += dg[k];
+  }
+  *seq = *ep = *Ts = *Rt = (MPMVd){0};
+  *nq                    = 0;
 }
 
 /* The batch of points idx[0..n): the trial deviator, the screen and the wave speed MPM_SIMD_LANES points at a time
@@ -173,28 +150,18 @@ static inline __attribute__((always_inline)) void MPMStrengthStressD_JC(const St
 
     MPMStrengthTrialLanes_JC(jc, d, dt, nl, &idx[i0], L, &rho[i0], T, s, &c2[i0], &v, &Tsv);
     yield = jc->m >= 1.0 ? ~(v <= jc->A * (1.0 - Tsv)) : (MPMVi){0} - 1; /* a NaN yields, so that it reaches s */
-    for (PetscInt l = 0; l <= nl; l++) {
-      if (l < nl && yield[l]) {
-        const PetscInt p = idx[i0 + l];
-        q[nq]            = p;
-        seq[nq]          = v[l];
-        ep[nq]           = epsp[p];
-        Ts[nq]           = Tsv[l];
-        Rt[nq]           = jc->total_rate ? MPMStrengthRateFactor_JC(jc, MPMEquivalentStrainRate(d, &L[p * d * d]) / jc->epsdot0) : 1.0;
-        nq++;
-      }
-      if (nq == MPM_SIMD_LANES || (l == nl && i0 + nl == n && nq)) {
-        const MPMVd dg = MPMStrengthReturns_JC(jc, dt, seq, ep, Ts, Rt);
-        for (PetscInt k = 0; k < nq; k++) { /* s scaled back to the flow stress, eps_p advanced */
-          if (dg[k] == 0.0) continue;       /* no yield */
-          for (PetscInt a = 0; a < d * d; a++) s[q[k] * d * d + a] *= (seq[k] - 3.0 * jc->G * dg[k]) / seq[k];
-          epsp[q[k]] += dg[k];
-        }
-        for (PetscInt k = 0; k < MPM_SIMD_LANES; k++) seq[k] = ep[k] = Ts[k] = Rt[k] = 0.0; /* spare lanes: seq = 0 does not yield */
-        nq = 0;
-      }
+    for (PetscInt l = 0; l < nl; l++) {
+      const PetscInt p = idx[i0 + l];
+      if (!yield[l]) continue;
+      q[nq]   = p;
+      seq[nq] = v[l];
+      ep[nq]  = epsp[p];
+      Ts[nq]  = Tsv[l];
+      Rt[nq]  = jc->total_rate ? MPMStrengthRateFactor_JC(jc, MPMEquivalentStrainRate(d, &L[p * d * d]) / jc->epsdot0) : 1.0;
+      if (++nq == MPM_SIMD_LANES) MPMStrengthFlush_JC(jc, d, dt, q, &nq, &seq, &ep, &Ts, &Rt, s, epsp);
     }
   }
+  if (nq) MPMStrengthFlush_JC(jc, d, dt, q, &nq, &seq, &ep, &Ts, &Rt, s, epsp);
 }
 
 static void MPMStrengthStress_JC_n(void *ctx, PetscInt d, PetscReal dt, PetscInt n, const PetscInt idx[], const PetscReal L[], const PetscReal F[], const PetscReal rho[], const PetscReal T[], PetscReal s[], PetscReal epsp[], PetscReal c2[])
