@@ -119,37 +119,43 @@ MPM_CPDI_INLINE void CPDICorners(const MPMGrid *g, const PetscReal x[], const Pe
   }
 }
 
-/* -mpm_shape_cpdi_subdivide: the corners (CPDICorners) of half h of the domain x + R [-1,1]^d, centre x + R s_h / 2 and
-   half-widths R / 2 (gradient factors 2 R^-T s_c). Out of line: the corner rule's path keeps its frame. */
-static __attribute__((noinline)) void CPDIHalfCorners(const MPMGrid *g, const PetscReal x[], const PetscReal R[], const PetscReal Ri[], PetscInt h, CPDIVec gs[], CPDIIVec first[], CPDIVec w0[], CPDIVec w1[], PetscInt d)
+/* -mpm_shape_cpdi_subdivide: the mean of the corner rules of the domain's 2^d halves (centres x + R s_h / 2, half-widths
+   R / 2) is a rule on the 3^d points x_t = x + R t, t in {-1, 0, 1}^d (a half's corner x + R (s_h + s_c) / 2): point t
+   is a corner of 2^z halves (z: its zeros), so
+     S_I = sum_t a_t N_I(x_t),   grad S_I = sum_t a_t N_I(x_t) 2 R^-T t,   a_t = prod_k (t_k = 0 ? 1/2 : 1/4)
+   (a half's corner weight 2^-d, its gradient factor 2 R^-T s_c, 2^-d per half; the s_c of the halves that share a zero
+   t_k cancel). Point q has t_k = (digit k of q in base 3) - 1. */
+#define CPDI_SUB_MAX 27
+MPM_CPDI_INLINE PetscReal CPDISubOffset(PetscInt q, PetscInt k)
 {
-  PetscReal xs[MPM_MAX_DIM], Rh[MPM_MAX_DIM * MPM_MAX_DIM], Rih[MPM_MAX_DIM * MPM_MAX_DIM];
-
-  for (PetscInt k = 0; k < d * d; k++) {
-    Rh[k]  = 0.5 * R[k];
-    Rih[k] = Ri ? 2.0 * Ri[k] : 0.0;
-  }
-  for (PetscInt i = 0; i < d; i++) {
-    xs[i] = x[i];
-    for (PetscInt k = 0; k < d; k++) xs[i] += Rh[i * d + k] * (((h >> k) & 1) ? 1.0 : -1.0);
-  }
-  CPDICorners(g, xs, Rh, Ri ? Rih : NULL, gs, first, w0, w1, d);
+  return (PetscReal)((k == 0 ? q : (k == 1 ? q / 3 : q / 9)) % 3) - 1.0;
 }
 
-/* The box lo[i]..hi[i] widened to the halves' corners' first nodes (their corners lie in the domain's, but are rounded
-   otherwise). */
-static __attribute__((noinline)) void CPDIHalvesBox(const MPMGrid *g, const PetscReal x[], const PetscReal R[], PetscInt d, PetscInt lo[], PetscInt hi[])
+MPM_CPDI_INLINE PetscReal CPDISubWeight(PetscInt q, const PetscInt d)
 {
-  CPDIVec  gs[MPM_MAX_DIM], w0[MPM_MAX_DIM], w1[MPM_MAX_DIM];
-  CPDIIVec first[MPM_MAX_DIM];
+  PetscReal a = 1.0;
+  for (PetscInt k = 0; k < d; k++) a *= CPDISubOffset(q, k) == 0.0 ? 0.5 : 0.25;
+  return a;
+}
 
-  for (PetscInt h = 0; h < (1 << d); h++) {
-    CPDIHalfCorners(g, x, R, NULL, h, gs, first, w0, w1, d);
-    for (PetscInt i = 0; i < d; i++)
-      for (PetscInt c = 0; c < (1 << d); c++) {
-        lo[i] = PetscMin(lo[i], first[i][c]);
-        hi[i] = PetscMax(hi[i], first[i][c]);
-      }
+/* Point q of the rule above one at a time: the first node of the linear basis per direction (a global index, not yet
+   folded), its weights and the gradient factors (R^-T 2t)_j (Ri NULL: not formed); CPDIKernelStencilLanes does the
+   same operations per lane, so the same bits. */
+MPM_CPDI_INLINE void CPDISubPoint(const MPMGrid *g, const PetscReal x[], const PetscReal R[], const PetscReal Ri[], PetscInt q, PetscInt first[], PetscReal w0[], PetscReal w1[], PetscReal gs[], const PetscInt d)
+{
+  for (PetscInt j = 0; Ri && j < d; j++) {
+    PetscReal t = 0.0;
+    for (PetscInt k = 0; k < d; k++) t += Ri[k * d + j] * (2.0 * CPDISubOffset(q, k));
+    gs[j] = t;
+  }
+  for (PetscInt i = 0; i < d; i++) {
+    PetscReal xc = -0.0 + x[i], xi, fi;
+    for (PetscInt k = 0; k < d; k++) xc += R[i * d + k] * CPDISubOffset(q, k);
+    xi       = (xc - g->lo[i]) / g->h[i];
+    fi       = PetscFloorReal(xi);
+    first[i] = (PetscInt)fi;
+    w0[i]    = 1.0 - (xi - fi);
+    w1[i]    = xi - fi;
   }
 }
 
@@ -172,6 +178,9 @@ MPM_CPDI_INLINE PetscInt CPDIStencil(const Shape_CPDI *cp, const MPMGrid *g, con
   CPDIIVec        first[MPM_MAX_DIM];
   PetscInt        lo[MPM_MAX_DIM], hi[MPM_MAX_DIM], n[MPM_MAX_DIM], stride[MPM_MAX_DIM], nb = 1;
   PetscBool       merge = PETSC_TRUE;
+  const PetscInt  np    = cp->subdivide ? (d == 3 ? 27 : (d == 2 ? 9 : 3)) : nc; /* the rule's points */
+  PetscInt        sfirst[CPDI_SUB_MAX][MPM_MAX_DIM];                             /* -mpm_shape_cpdi_subdivide's (CPDISubPoint) */
+  PetscReal       sw0[CPDI_SUB_MAX][MPM_MAX_DIM], sw1[CPDI_SUB_MAX][MPM_MAX_DIM], sgs[CPDI_SUB_MAX][MPM_MAX_DIM];
 
   CPDIDomain(cp, d, F, R, grad ? Ri : NULL);
   CPDICorners(g, x, R, grad ? Ri : NULL, gs, first, w0, w1, d);
@@ -182,7 +191,14 @@ MPM_CPDI_INLINE PetscInt CPDIStencil(const Shape_CPDI *cp, const MPMGrid *g, con
       hi[i] = PetscMax(hi[i], first[i][c]);
     }
   }
-  if (cp->subdivide) CPDIHalvesBox(g, x, R, d, lo, hi);
+  if (cp->subdivide) /* the rule's 3^d points (their box: the corners' but for rounding) */
+    for (PetscInt q = 0; q < np; q++) {
+      CPDISubPoint(g, x, R, grad ? Ri : NULL, q, sfirst[q], sw0[q], sw1[q], sgs[q], d);
+      for (PetscInt i = 0; i < d; i++) {
+        lo[i] = PetscMin(lo[i], sfirst[q][i]);
+        hi[i] = PetscMax(hi[i], sfirst[q][i]);
+      }
+    }
   for (PetscInt i = 0; i < d; i++) {
     n[i]      = hi[i] - lo[i] + 2;
     stride[i] = nb;
@@ -197,29 +213,27 @@ MPM_CPDI_INLINE PetscInt CPDIStencil(const Shape_CPDI *cp, const MPMGrid *g, con
     v4                E[64]; /* entry e's (W, DW_0, DW_1, DW_2) side by side: one vector per update */
 
     for (PetscInt e = 0; e < nb; e++) E[e] = (v4){0.0, 0.0, 0.0, 0.0};
-    for (PetscInt sub = 0; sub < (cp->subdivide ? nc : 1); sub++) {
-      const PetscReal sc = cp->subdivide ? scale * scale : scale; /* 2^-d per corner, and 2^-d per half */
-      if (cp->subdivide) CPDIHalfCorners(g, x, R, grad ? Ri : NULL, sub, gs, first, w0, w1, d);
-      for (PetscInt c = 0; c < nc; c++) { /* N = 2^-d N_2 N_1 N_0 (the directions beyond d: weight 1, offset 0) */
-        const PetscInt n2 = d > 2 ? 2 : 1, n1 = d > 1 ? 2 : 1;
-        PetscReal      wt[MPM_MAX_DIM][2]  = {{1.0, 1.0}, {1.0, 1.0}, {1.0, 1.0}};
-        PetscInt       off[MPM_MAX_DIM][2] = {{0, 0}, {0, 0}, {0, 0}};
-        v4             gv                  = {1.0, 0.0, 0.0, 0.0}; /* (1, R^-T s_c): N gv = (N, N gs) */
-        for (PetscInt j = 0; grad && j < d; j++) gv[1 + j] = gs[j][c];
-        for (PetscInt i = 0; i < d; i++) {
-          wt[i][0] = w0[i][c];
-          wt[i][1] = w1[i][c];
-          for (PetscInt b = 0; b < 2; b++) off[i][b] = (first[i][c] - lo[i] + b) * stride[i];
-        }
-        for (PetscInt b2 = 0; b2 < n2; b2++) {
-          const PetscReal N2 = sc * wt[2][b2];
-          for (PetscInt b1 = 0; b1 < n1; b1++) {
-            const PetscReal N1 = N2 * wt[1][b1];
-            for (PetscInt b0 = 0; b0 < 2; b0++) {
-              const PetscReal N = N1 * wt[0][b0];
-              const PetscInt  e = off[2][b2] + off[1][b1] + off[0][b0];
-              E[e] += N * gv;
-            }
+    for (PetscInt c = 0; c < np; c++) { /* N = a N_2 N_1 N_0, a = 2^-d a corner (the directions beyond d: weight 1, offset 0) */
+      const PetscInt  n2 = d > 2 ? 2 : 1, n1 = d > 1 ? 2 : 1;
+      const PetscReal sc                  = cp->subdivide ? CPDISubWeight(c, d) : scale;
+      PetscReal       wt[MPM_MAX_DIM][2]  = {{1.0, 1.0}, {1.0, 1.0}, {1.0, 1.0}};
+      PetscInt        off[MPM_MAX_DIM][2] = {{0, 0}, {0, 0}, {0, 0}};
+      v4              gv                  = {1.0, 0.0, 0.0, 0.0}; /* (1, R^-T s_c): N gv = (N, N gs) */
+      for (PetscInt j = 0; grad && j < d; j++) gv[1 + j] = cp->subdivide ? sgs[c][j] : gs[j][c];
+      for (PetscInt i = 0; i < d; i++) {
+        const PetscInt f = cp->subdivide ? sfirst[c][i] : first[i][c];
+        wt[i][0]         = cp->subdivide ? sw0[c][i] : w0[i][c];
+        wt[i][1]         = cp->subdivide ? sw1[c][i] : w1[i][c];
+        for (PetscInt b = 0; b < 2; b++) off[i][b] = (f - lo[i] + b) * stride[i];
+      }
+      for (PetscInt b2 = 0; b2 < n2; b2++) {
+        const PetscReal N2 = sc * wt[2][b2];
+        for (PetscInt b1 = 0; b1 < n1; b1++) {
+          const PetscReal N1 = N2 * wt[1][b1];
+          for (PetscInt b0 = 0; b0 < 2; b0++) {
+            const PetscReal N = N1 * wt[0][b0];
+            const PetscInt  e = off[2][b2] + off[1][b1] + off[0][b0];
+            E[e] += N * gv;
           }
         }
       }
@@ -312,15 +326,12 @@ MPM_CPDI_INLINE PetscBool CPDIKernelStencil(const void *ctx, const MPMGrid *g, c
    the mask of the padded lanes, and returns the mask of the lanes done; the others are left to CPDIStencil. */
 typedef PetscInt CPDILIVec __attribute__((vector_size(MPM_SIMD_LANES * sizeof(PetscInt)))); /* node indices of the lanes (src/core/simdmath.h) */
 
-MPM_CPDI_INLINE unsigned CPDIKernelStencilLanes(const void *ctx, const MPMGrid *g, const MPMTransferArgs *A, PetscInt p0, PetscInt node[][MPM_SIMD_LANES], PetscReal W[][MPM_SIMD_LANES], PetscReal DW[], unsigned *padded, const PetscInt d)
+MPM_CPDI_INLINE unsigned CPDILanes(const Shape_CPDI *cp, const MPMGrid *g, const MPMTransferArgs *A, PetscInt p0, PetscInt node[][MPM_SIMD_LANES], PetscReal W[][MPM_SIMD_LANES], PetscReal DW[], unsigned *padded, const PetscInt d, const PetscBool sub)
 {
-  const Shape_CPDI *cp = (const Shape_CPDI *)ctx;
-  const PetscInt    nc = 1 << d, dd = d * d;
-  MPMVd             R[9], Ri[9], det, gs[3][8], w0[3][8], w1[3][8], u[3][8][3];
-
-  if (cp->subdivide) return 0; /* the halves' stencils: point by point (the caller's *padded stays 0) */
-  CPDILIVec first[3][8], lo[3], ok, pad;
-  unsigned  mask = 0;
+  const PetscInt nc = sub ? (d == 3 ? 27 : 9) : 1 << d, dd = d * d; /* the rule's points: 2^d corners, or 3^d (sub) */
+  MPMVd          R[9], Ri[9], det, gs[3][CPDI_SUB_MAX], w0[3][CPDI_SUB_MAX], w1[3][CPDI_SUB_MAX], u[3][CPDI_SUB_MAX][3];
+  CPDILIVec      first[3][CPDI_SUB_MAX], lo[3], ok, pad;
+  unsigned       mask = 0;
 
   for (PetscInt k = 0; k < dd; k++) { /* R = F diag(s) diag(l0) (MPMPointDomain, CPDIDomain) */
     MPMVd f = A->F ? MPMVLoadStrided(&A->F[p0 * dd + k], dd) : (MPMVd){0} + (k % (d + 1) == 0 ? 1.0 : 0.0);
@@ -329,9 +340,9 @@ MPM_CPDI_INLINE unsigned CPDIKernelStencilLanes(const void *ctx, const MPMGrid *
   }
   CPDI_INVERSE(d, R, Ri, det); /* as CPDIDomain's */
   for (PetscInt c = 0; c < nc; c++)
-    for (PetscInt j = 0; j < d; j++) { /* (R^-T s_c)_j, s_ck = +-1 by bit k of c, in CPDICorners' order */
+    for (PetscInt j = 0; j < d; j++) { /* (R^-T s_c)_j, s_ck = +-1 by bit k of c, in CPDICorners' order; (R^-T 2t)_j (sub) */
       MPMVd t = (MPMVd){0};
-      for (PetscInt k = 0; k < d; k++) t += Ri[k * d + j] * (((c >> k) & 1) ? 1.0 : -1.0);
+      for (PetscInt k = 0; k < d; k++) t += Ri[k * d + j] * (sub ? 2.0 * CPDISubOffset(c, k) : (((c >> k) & 1) ? 1.0 : -1.0));
       gs[j][c] = t;
     }
   for (PetscInt i = 0; i < d; i++) {
@@ -339,7 +350,7 @@ MPM_CPDI_INLINE unsigned CPDIKernelStencilLanes(const void *ctx, const MPMGrid *
     for (PetscInt c = 0; c < nc; c++) {
       MPMVd     xc = x, xi, fi;
       CPDILIVec fl;
-      for (PetscInt k = 0; k < d; k++) xc += R[i * d + k] * (((c >> k) & 1) ? 1.0 : -1.0);
+      for (PetscInt k = 0; k < d; k++) xc += R[i * d + k] * (sub ? CPDISubOffset(c, k) : (((c >> k) & 1) ? 1.0 : -1.0));
       xi          = (xc - g->lo[i]) / g->h[i];
       fl          = __builtin_convertvector(xi, CPDILIVec);
       fi          = __builtin_convertvector(fl, MPMVd);
@@ -383,8 +394,9 @@ MPM_CPDI_INLINE unsigned CPDIKernelStencilLanes(const void *ctx, const MPMGrid *
       for (PetscInt a0 = 0; a0 < 3; a0++)
         for (PetscInt j = 0; j <= d; j++) acc[a0][j] = (MPMVd){0};
       for (PetscInt c = 0; c < nc; c++) {
-        const MPMVd N2 = (1.0 / nc) * (d > 2 ? u[2][c][a2] : (MPMVd){0} + 1.0); /* CPDIStencil's N2 = 2^-d w_2 (1 in 2D) */
-        const MPMVd N1 = N2 * u[1][c][a1];
+        const PetscReal a  = sub ? CPDISubWeight(c, d) : 1.0 / nc;         /* CPDIStencil's sc */
+        const MPMVd     N2 = a * (d > 2 ? u[2][c][a2] : (MPMVd){0} + 1.0); /* CPDIStencil's N2 = a w_2 (1 in 2D) */
+        const MPMVd     N1 = N2 * u[1][c][a1];
         for (PetscInt a0 = 0; a0 < 3; a0++) {
           const MPMVd N = N1 * u[0][c][a0];
           acc[a0][0] += N;
@@ -401,6 +413,13 @@ MPM_CPDI_INLINE unsigned CPDIKernelStencilLanes(const void *ctx, const MPMGrid *
       }
     }
   return mask;
+}
+
+MPM_CPDI_INLINE unsigned CPDIKernelStencilLanes(const void *ctx, const MPMGrid *g, const MPMTransferArgs *A, PetscInt p0, PetscInt node[][MPM_SIMD_LANES], PetscReal W[][MPM_SIMD_LANES], PetscReal DW[], unsigned *padded, const PetscInt d)
+{
+  const Shape_CPDI *cp = (const Shape_CPDI *)ctx;
+
+  return cp->subdivide ? CPDILanes(cp, g, A, p0, node, W, DW, padded, d, PETSC_TRUE) : CPDILanes(cp, g, A, p0, node, W, DW, padded, d, PETSC_FALSE);
 }
 
 /* Local point q's record of its stencil at x (ns entries; entry e's gradient at DW[e sdw], DW[e sdw + 1]), or none where
@@ -584,7 +603,7 @@ static PetscErrorCode MPMShapeSetFromOptions_CPDI(MPMShape shape, PetscOptionIte
   PetscOptionsHeadBegin(PetscOptionsObject, "CPDI shape functions");
   PetscCall(MPMOptionsRangeInt(PetscOptionsObject, "-shape_cpdi_reach", "How far a point domain's corners may reach beyond its cell [cells], 1 to 4 (ghost width = reach + 1)", &cp->reach, 1, 4));
   PetscCall(PetscOptionsBool("-shape_cpdi_subdivide",
-                             "Each point's weights as the mean of its domain's 2^d halves' corner rules (3^d points per domain instead of 2^d: more accurate for domains over a cell long; point by point, 2 to 3 times the run time; a box over 4 nodes "
+                             "Each point's weights as the mean of its domain's 2^d halves' corner rules (3^d points per domain instead of 2^d: more accurate for domains over a cell long; 1.1 times the run time in 2D, 1.6 in 3D; a box over 4 nodes "
                              "a direction keeps the corner rule)",
                              "", cp->subdivide, &cp->subdivide, NULL));
   PetscCall(PetscOptionsBool("-shape_cpdi_keep", "2D and r-z: keep from points to grid for grid to points the stencils the vector lanes leave (273 bytes a point; the same results)", "", cp->keep, &cp->keep, NULL));
