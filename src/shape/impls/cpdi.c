@@ -139,7 +139,7 @@ MPM_CPDI_INLINE PetscReal CPDISubWeight(PetscInt q, const PetscInt d)
 }
 
 /* Point q of the rule above one at a time: the first node of the linear basis per direction (a global index, not yet
-   folded), its weights and the gradient factors (R^-T 2t)_j (Ri NULL: not formed); CPDIKernelStencilLanes does the
+   folded), its weights and the gradient factors (R^-T 2t)_j (Ri NULL: not formed); CPDILanes (sub) does the
    same operations per lane, so the same bits. */
 MPM_CPDI_INLINE void CPDISubPoint(const MPMGrid *g, const PetscReal x[], const PetscReal R[], const PetscReal Ri[], PetscInt q, PetscInt first[], PetscReal w0[], PetscReal w1[], PetscReal gs[], const PetscInt d)
 {
@@ -323,7 +323,8 @@ MPM_CPDI_INLINE PetscBool CPDIKernelStencil(const void *ctx, const MPMGrid *g, c
    0 leaves a sum unchanged, the merged sums come out in corner order as CPDIStencil's; a point whose corners span 2
    nodes in a direction (padded) has CPDIStencil's entries in its order with entries of weight 0 between them. Fills the
    3^d entries of each lane (entry e = a_0 + 3 a_1 + 9 a_2: node[e][l], W[e][l], DW[(e d + j) MPM_SIMD_LANES + l]) and
-   the mask of the padded lanes, and returns the mask of the lanes done; the others are left to CPDIStencil. */
+   the mask of the padded lanes, and returns the mask of the lanes done; the others are left to CPDIStencil. With sub
+   (-mpm_shape_cpdi_subdivide) the corners are the 3^d points of CPDISubPoint, weighted a_t instead of 2^-d. */
 typedef PetscInt CPDILIVec __attribute__((vector_size(MPM_SIMD_LANES * sizeof(PetscInt)))); /* node indices of the lanes (src/core/simdmath.h) */
 
 MPM_CPDI_INLINE unsigned CPDILanes(const Shape_CPDI *cp, const MPMGrid *g, const MPMTransferArgs *A, PetscInt p0, PetscInt node[][MPM_SIMD_LANES], PetscReal W[][MPM_SIMD_LANES], PetscReal DW[], unsigned *padded, const PetscInt d, const PetscBool sub)
