@@ -64,7 +64,8 @@ PetscErrorCode MPMBalanceCheck(MPM mpm)
 
 /* Rebalance (-mpm_balance): the DMDA's ownership ranges from the points, each weighted by wpt (this rank's; 1 counts
    them). Along each direction k the points' cells give a histogram over the cells; each of the grid's rank columns
-   along k gets a run of cells holding an equal share of the weight (at least the ghost width plus one cell). The grid
+   along k gets a run of cells holding an equal share of the weight (at least the ghost width plus one cell where the
+   grid has room, the ghost width where it has not). The grid
    is rebuilt with those ranges and the points migrate to the ranks that own their cells. A tensor-product partition
    balances the marginals exactly; a body in one corner of a 2D or 3D box is balanced along each axis, not in every
    rank. */
@@ -77,7 +78,9 @@ PetscErrorCode MPMRebalance(MPM mpm, PetscReal wpt)
   PetscFunctionBegin;
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   for (PetscInt k = 0; k < g->dim; k++) {
-    const PetscInt nc = g->cells[k], np = g->nranks[k], minc = PetscMin(g->sw + 1, nc / np);
+    /* nodes of a rank column (the DMDA needs the ghost width sw; MPMGridLayout's split gave every column at least that,
+       so (nc + 1) / np >= sw): minc for all but the last, minl for the last, which also owns the last vertex */
+    const PetscInt nc = g->cells[k], np = g->nranks[k], minc = PetscMax(g->sw, PetscMin(g->sw + 1, nc / np)), minl = nc >= np * minc ? minc + 1 : minc;
     PetscReal     *hist, total = 0.0, acc = 0.0;
     PetscInt       r = 0, start = 0;
     PetscCall(PetscCalloc1(nc, &hist));
@@ -87,7 +90,7 @@ PetscErrorCode MPMRebalance(MPM mpm, PetscReal wpt)
     PetscCall(PetscMalloc1(np, &own[k]));
     for (PetscInt c = 0; c < nc && r < np - 1; c++) { /* close rank column r after cell c once it holds its share */
       acc += hist[c];
-      if ((acc >= total * (r + 1) / np && c + 1 - start >= minc) || nc - (c + 1) == (np - 1 - r) * minc) {
+      if ((acc >= total * (r + 1) / np && c + 1 - start >= minc) || nc - c == (np - 2 - r) * minc + minl) {
         own[k][r++] = c + 1 - start;
         start       = c + 1;
       }
