@@ -372,7 +372,8 @@ PetscErrorCode MPMCreatePoints(MPM mpm)
   const MPMGrid  *g = &mpm->grid;
   const PetscInt  d = g->dim;
   PetscInt        n = 0, npd = 1;
-  PetscReal       rho[MPM_MAX_MATERIALS], e[MPM_MAX_MATERIALS];
+  PetscInt        nparts = 0; /* the most parts a site seeds, on any rank */
+  PetscReal       rho[MPM_MAX_MATERIALS], e[MPM_MAX_MATERIALS], nsites = 1.0;
   MPMPiece        pc[MPM_MAX_MATERIALS];
   MPMPoints       pts;
   MPMHydrostatic *hs[MPM_MAX_REGIONS] = {NULL};
@@ -399,9 +400,14 @@ PetscErrorCode MPMCreatePoints(MPM mpm)
      (48^3 cells x 8 with a sphere cut: 0.67 s in all, 0.49 s without the cut) */
   for (PetscInt s = 0; s < g->ncells * npd; s++) {
     PetscReal x[MPM_MAX_DIM], id;
+    PetscInt  np;
     MPMSiteAt(g, mpm->ppc, s, x, &id);
-    n += MPMSiteSeed(mpm, x, pc, rho, e);
+    np = MPMSiteSeed(mpm, x, pc, rho, e);
+    n += np;
+    nparts = PetscMax(nparts, np);
   }
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &nparts, 1, MPIU_INT, MPI_MAX, mpm->comm));
+  for (PetscInt k = 0; k < d; k++) nsites *= (PetscReal)g->cells[k] * mpm->ppc; /* the lattice sites */
   PetscCall(MPMPointsRelease(mpm));
   PetscCall(DMSwarmSetLocalSizes(mpm->swarm, n, PetscMax(16, n / 100))); /* migration grows the bucket as needed */
   PetscCall(MPMPointsGetArrays(mpm, &pts));
@@ -442,15 +448,14 @@ PetscErrorCode MPMCreatePoints(MPM mpm)
       }
       pts.f[MPM_FIELD_MATERIAL][n] = (PetscReal)pc[i].material;
       if (pts.f[MPM_FIELD_BODY]) pts.f[MPM_FIELD_BODY][n] = (PetscReal)pc[i].body;
-      pts.f[MPM_FIELD_ID][n] = id;
+      pts.f[MPM_FIELD_ID][n] = id + i * nsites; /* the parts of a cut site: the site's index, then one more lattice's worth */
     }
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   for (PetscInt r = 0; r < mpm->nreg; r++) PetscCall(PetscFree(hs[r]));
   PetscCall(DMSwarmGetSize(mpm->swarm, &mpm->npoints0));
   mpm->npoints = mpm->npoints0;
-  mpm->next_id = 1.0;
-  for (PetscInt k = 0; k < d; k++) mpm->next_id *= (PetscReal)g->cells[k] * mpm->ppc; /* the lattice sites */
+  mpm->next_id = nsites * PetscMax(nparts, 1); /* the ids above those of the sites' parts: splitting's */
   PetscCheck(mpm->npoints0 > 0, mpm->comm, PETSC_ERR_USER_INPUT, "No region of -mpm_regions overlaps the domain: the scene has no material points");
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -4,6 +4,7 @@
 
 usage: output.py BUILD_DIR SOURCE_DIR
 """
+import json
 import os
 import sys
 import tempfile
@@ -77,7 +78,7 @@ def test_output():
     """HDF5 holds every particle field at every output with one row per point, the XDMF file is valid XML
     that points at existing datasets and describes the points and the grid fields as ParaView reads them, output
     works at 70,000 cells in 1D on 2 and 3 ranks and at more than 1e6 points in 2D (2 ranks) and 3D (3 ranks), and
-    -ts_max_steps stops the run."""
+    -ts_max_steps stops the run. Every point's id is its own, the parts of a cut site's and split children's too."""
     import h5py
     import numpy as np
     with tempfile.TemporaryDirectory() as d:
@@ -98,6 +99,15 @@ def test_output():
             grids = [g for g in tree.iter("Grid") if g.get("GridType") == "Uniform"]
             check(len(grids) == 2 * nout, f"XDMF has one points grid and one grid of nodes per output: {len(grids)}")
         xdmf_grid_sums(d, 1, "1D")
+    with tempfile.TemporaryDirectory() as d:  # sites that a region's boundary cuts seed a point per part; splitting adds more
+        run(["-options_file", os.path.join(SRC, "inputs", "shock_bubble_2d.opts"), "-mpm_cells", "130,45", "-ts_max_steps", "150", "-mpm_output", d, "-mpm_report", os.path.join(d, "report.json")], 2)
+        with open(os.path.join(d, "report.json")) as f:
+            r = json.load(f)
+        with h5py.File(os.path.join(d, "petmpm.h5"), "r") as f:
+            n = int(f["particle_count"][-1])
+            ids = f["particle_fields/id"][-1][:n]
+        check(len(np.unique(ids)) == n and r["robustness"]["points_split"] > 0,
+              f"the shock bubble on 2 ranks (the bubble's cut sites hold a point of each material; {r['robustness']['points_split']} points split): {len(np.unique(ids))} distinct ids among {n} points")
     for scene, dim in (("taylor_anvil_3d", 3), ("hydrostatic_2d", 2)):  # the XDMF types of vectors and tensors, integer ids, the grid fields
         with tempfile.TemporaryDirectory() as d:
             run(["-options_file", os.path.join(SRC, "inputs", scene + ".opts"), "-ts_max_steps", "2", "-mpm_output", d])
