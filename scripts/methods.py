@@ -41,6 +41,7 @@ CONFIGS = [
     ("no volume fill", ["-mpm_volume_fill", "0"], 1),
     ("cth", ["-options_file", os.path.join(lib.SRC, "inputs", "methods", "cth.opts")], 1),
     ("2 ranks", [], 2),
+    ("3 ranks", [], 3),
 ]
 # What stopped a run, from its diagnosis (src/core/constitutive.c, src/core/ts.c), first match wins.
 REASONS = [("holds little mass but this point", "light node"), ("spinodal", "spall"), ("-mpm_shape_cpdi_reach", "CPDI reach"),
@@ -108,7 +109,7 @@ def main():
     lines = ["# Method matrix", "",
              f"Made by `scripts/methods.py --coarsen {a.coarsen}`: every scene of `inputs/` at its cells divided by {a.coarsen} (at least 4), run "
              "with one method option changed at a time on top of the scene's own method (`default`: the scene as it "
-             "stands; `apic`: `-mpm_update_type apic`, which has no kinetic-energy fix, so its `E` is the energy it filters; `no volume fill`: without the volume consistency module (on by default for fluids with CPDI), `-mpm_volume_fill 0`; `cth`: `inputs/methods/cth.opts`; `2 ranks`: the scene on 2 ranks). `ok`: finished (`E`: the total "
+             "stands; `apic`: `-mpm_update_type apic`, which has no kinetic-energy fix, so its `E` is the energy it filters; `no volume fill`: without the volume consistency module (on by default for fluids with CPDI), `-mpm_volume_fill 0`; `cth`: `inputs/methods/cth.opts`; `2 ranks`, `3 ranks`: the scene on 2 and 3 ranks, 3 splitting the grid unevenly). `ok`: finished (`E`: the total "
              "energy's relative change less the isentropic expansion's share, where above 1e-6: the compatible and "
              "midpoint energy updates and a manufactured solution's body force change it by design; `spall`: points spalled, `robustness.spalled`; `isentrope`: the "
              "energy the isentropic expansion update (`-mpm_isentrope_threshold`) changed, relative, where above "
