@@ -727,13 +727,14 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
             if (ct->gap == MPM_CONTACT_GAP_SURFACE && ct->ext[ct->fam[b]][c] + ct->ext[ct->fam[uf[heavy[u]]]][c] < -1e-9 * g->hmin) continue; /* their surfaces apart along n */
             if (ct->gap == MPM_CONTACT_GAP_POSITION && MPMContactApart(ct, mpm, node, geo, n, b, uf[heavy[u]], c, ub[u], ub[heavy[u]], ctx->dt)) continue;
             if (!MPMContactCorrect(nd, d, n, vcm, vref, ct->mu[ct->fam[b]][ct->fam[uf[heavy[u]]]], &dn, vold, &wn, &wt)) continue;
-            if (!endt) {
+            if (!endt && !ctx->remap) {
               geo[b][c].f[0] = wn + wt; /* heats the body's points there (MPMContactHeat) */
               ct->work += wn + wt;
             }
             for (PetscInt f = 0; crk && f < nf; f++) /* the body's fields take its change */
               if (ct->fam[f] == b && node[f][c].m > 0.0)
                 for (PetscInt k = 0; k < d; k++) node[f][c].p[k] += nd->p[k] - vold[k];
+            if (ctx->remap) continue; /* the remap's pass: no point's velocity changes (above), so no heat, force or work */
             ct->friction += wt;
             ct->nodes++;
             if (rb >= 0) {
@@ -762,7 +763,7 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
             }
           }
         }
-        for (PetscInt b = 0; endt && b < nf; b++) { /* each field's energy taken out from its first to its last velocity, in the frame of a rigid body there */
+        for (PetscInt b = 0; endt && !ctx->remap && b < nf; b++) { /* each field's energy taken out from its first to its last velocity, in the frame of a rigid body there */
           MPMNode  *nd = &node[b][c];
           PetscReal w  = 0.0;
           for (PetscInt k = 0; k < d; k++) w += nd->m * (vs[b][k] - nd->p[k]) * ((nd->v0[k] + nd->p[k]) * 0.5 - vref[k]);
@@ -771,22 +772,21 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
         }
       }
   for (PetscInt b = 0; b < nf; b++) PetscCall(VecRestoreArray(ct->geo[b], (PetscScalar **)&geo[b]));
-  if (ct->nshared) PetscCall(MPMContactHeat(ct, mpm, node));
+  if (ct->nshared && !ctx->remap) PetscCall(MPMContactHeat(ct, mpm, node));
   for (PetscInt b = 0; b < nf; b++) PetscCall(VecRestoreArray(MPMBodyNodesVec(mpm, ct->slot[b]), (PetscScalar **)&node[b]));
-  if (anyrigid) { /* the contact force on each rigid body, all ranks; its impulse over the kicks */
+  if (anyrigid && !ctx->remap) { /* the contact force on each rigid body, all ranks; its impulse over the kicks */
     PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &frc[0][0], 13 * MPM_MAX_BODIES, MPIU_REAL, MPIU_SUM, mpm->comm));
     for (PetscInt b = 0; b < nb; b++) {
       PetscReal f2 = 0.0;
       if (!ct->rigid[b]) continue;
       for (PetscInt k = 0; k < 3; k++) {
-        if (!ctx->remap) ct->force[b][k] = 0.0;
-        ct->force[b][k] += frc[b][k];
+        ct->force[b][k] = frc[b][k];
         ct->impulse[b][k] += frc[b][k] * ctx->kick;
         ct->rwork += -frc[b][k] * ct->vrigid[b][k] * ctx->kick;
         f2 += ct->force[b][k] * ct->force[b][k];
       }
-      ct->fmax[b] = PetscMax(ct->fmax[b], PetscSqrtReal(f2));
-      if (!ctx->remap) ct->patch[b] = MPMContactPatch(frc[b], ct->force[b], mpm->grid.axisym);
+      ct->fmax[b]  = PetscMax(ct->fmax[b], PetscSqrtReal(f2));
+      ct->patch[b] = MPMContactPatch(frc[b], ct->force[b], mpm->grid.axisym);
     }
   }
   for (PetscInt b = 0; (ct->nshared || anyrigid) && b < nf; b++) { /* the ghosts of the corrected nodes */
