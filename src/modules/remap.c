@@ -23,7 +23,7 @@ static PetscErrorCode MPMRemapApply(MPMModule mod, MPM mpm, const MPMStepContext
     const PetscReal  minv = node[c].m > 0.0 ? 1.0 / node[c].m : 0.0;
     const PetscReal *mv   = mpm->remap_fused ? node[c].f : node[c].p;
     for (PetscInt k = 0; k < d; k++) node[c].p[k] = mv[k] * minv;
-    if (mpm->remap_fused) /* the node as the scatter leaves it: no force and no v_I^n, which the contact's remap pass reads */
+    if (mpm->remap_fused) /* the node as the generic scatter leaves it (f = 0, v0 = 0), for the nodal modules after the remap */
       for (PetscInt k = 0; k < d; k++) node[c].f[k] = node[c].v0[k] = 0.0;
   }
   PetscCall(VecRestoreArray(mpm->lnodes, (PetscScalar **)&node));

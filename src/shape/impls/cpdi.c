@@ -85,29 +85,24 @@ MPM_CPDI_INLINE void CPDIDomain(const Shape_CPDI *cp, PetscInt d, const PetscRea
     CPDI_INVERSE(d, R, Ri, det);
 }
 
-/* The corners c of the domain x + R s_c in the lanes of one vector (the 2^d <= 8 corners; lane c beyond them repeats
-   corner c mod 2^d): the gradient factors gs_j = (R^-T s_c)_j (Ri NULL: not formed) and, per direction i, the first of
-   the two nodes of the linear basis at each corner, first_i = floor(xi), xi = (x_c,i - lo_i) / h_i (a global index, not
-   yet folded onto the grid), and its weights w0_i = 1 - (xi - first_i), w1_i = xi - first_i (MPMShapeLinear1d). The
-   same operations per corner as one corner at a time, so the same bits. */
+/* Eight points of a domain's rule in the lanes of one vector, point l at x + R t_l (T[k]: the offsets t_lk in direction
+   k, CPDIRuleOffsets): the gradient factors gs_j = gfac (R^-T t_l)_j (Ri NULL: not formed) and, per direction i, the
+   first of the two nodes of the linear basis at each point, first_i = floor(xi), xi = (x_l,i - lo_i) / h_i (a global
+   index, not yet folded onto the grid), and its weights w0_i = 1 - (xi - first_i), w1_i = xi - first_i
+   (MPMShapeLinear1d). The same operations per point as one point at a time, so the same bits. */
 typedef PetscReal    CPDIVec __attribute__((vector_size(8 * sizeof(PetscReal))));
 typedef PetscInt     CPDIIVec __attribute__((vector_size(8 * sizeof(PetscInt))));
-MPM_CPDI_INLINE void CPDICorners(const MPMGrid *g, const PetscReal x[], const PetscReal R[], const PetscReal Ri[], CPDIVec gs[], CPDIIVec first[], CPDIVec w0[], CPDIVec w1[], const PetscInt d)
+MPM_CPDI_INLINE void CPDICorners(const MPMGrid *g, const PetscReal x[], const PetscReal R[], const PetscReal Ri[], const CPDIVec T[], PetscReal gfac, CPDIVec gs[], CPDIIVec first[], CPDIVec w0[], CPDIVec w1[], const PetscInt d)
 {
-  const CPDIVec S[MPM_MAX_DIM] = {/* s_ck, corner c's sign in direction k: bit k of c */
-                                  {-1.0, 1.0, -1.0, 1.0, -1.0, 1.0, -1.0, 1.0},
-                                  {-1.0, -1.0, 1.0, 1.0, -1.0, -1.0, 1.0, 1.0},
-                                  {-1.0, -1.0, -1.0, -1.0, 1.0, 1.0, 1.0, 1.0}};
-
   for (PetscInt j = 0; Ri && j < d; j++) {
     CPDIVec t = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    for (PetscInt k = 0; k < d; k++) t += Ri[k * d + j] * S[k]; /* (R^-T s)_j */
+    for (PetscInt k = 0; k < d; k++) t += Ri[k * d + j] * (gfac * T[k]); /* gfac (R^-T t)_j */
     gs[j] = t;
   }
   for (PetscInt i = 0; i < d; i++) {
     CPDIVec  xc = (CPDIVec){-0.0, -0.0, -0.0, -0.0, -0.0, -0.0, -0.0, -0.0} + x[i], xi, fi; /* -0 + x = x, x = -0 included */
     CPDIIVec fl;
-    for (PetscInt k = 0; k < d; k++) xc += R[i * d + k] * S[k];
+    for (PetscInt k = 0; k < d; k++) xc += R[i * d + k] * T[k];
     xi       = (xc - g->lo[i]) / g->h[i];
     fl       = __builtin_convertvector(xi, CPDIIVec); /* truncation, then floor: one less where it rounded up */
     fi       = __builtin_convertvector(fl, CPDIVec);
@@ -124,7 +119,7 @@ MPM_CPDI_INLINE void CPDICorners(const MPMGrid *g, const PetscReal x[], const Pe
    is a corner of 2^z halves (z: its zeros), so
      S_I = sum_t a_t N_I(x_t),   grad S_I = sum_t a_t N_I(x_t) 2 R^-T t,   a_t = prod_k (t_k = 0 ? 1/2 : 1/4)
    (a half's corner weight 2^-d, its gradient factor 2 R^-T s_c, 2^-d per half; the s_c of the halves that share a zero
-   t_k cancel). Point q has t_k = (digit k of q in base 3) - 1. */
+   t_k cancel). Point q has t_k = (digit k of q in base 3) - 1; CPDICorners evaluates them 8 at a time, as the corners. */
 #define CPDI_SUB_MAX 27
 MPM_CPDI_INLINE PetscReal CPDISubOffset(PetscInt q, PetscInt k)
 {
@@ -138,25 +133,19 @@ MPM_CPDI_INLINE PetscReal CPDISubWeight(PetscInt q, const PetscInt d)
   return a;
 }
 
-/* Point q of the rule above one at a time: the first node of the linear basis per direction (a global index, not yet
-   folded), its weights and the gradient factors (R^-T 2t)_j (Ri NULL: not formed); CPDILanes (sub) does the
-   same operations per lane, so the same bits. */
-MPM_CPDI_INLINE void CPDISubPoint(const MPMGrid *g, const PetscReal x[], const PetscReal R[], const PetscReal Ri[], PetscInt q, PetscInt first[], PetscReal w0[], PetscReal w1[], PetscReal gs[], const PetscInt d)
+/* The offset t_ck of the rule's point c in direction k: the corner rule's s_c (bit k of c) or, with sub, the subdivided
+   rule's (CPDISubOffset); and those of points v * 8 .. v * 8 + 7 in one vector (CPDICorners' T: the corner rule's
+   2^d <= 8 corners at v = 0, the lanes beyond 2^d repeating them; the subdivided rule's 0 beyond its 3^d points). */
+MPM_CPDI_INLINE PetscReal CPDIRuleOffset(PetscInt c, PetscInt k, const PetscBool sub)
 {
-  for (PetscInt j = 0; Ri && j < d; j++) {
-    PetscReal t = 0.0;
-    for (PetscInt k = 0; k < d; k++) t += Ri[k * d + j] * (2.0 * CPDISubOffset(q, k));
-    gs[j] = t;
-  }
-  for (PetscInt i = 0; i < d; i++) {
-    PetscReal xc = -0.0 + x[i], xi, fi;
-    for (PetscInt k = 0; k < d; k++) xc += R[i * d + k] * CPDISubOffset(q, k);
-    xi       = (xc - g->lo[i]) / g->h[i];
-    fi       = PetscFloorReal(xi);
-    first[i] = (PetscInt)fi;
-    w0[i]    = 1.0 - (xi - fi);
-    w1[i]    = xi - fi;
-  }
+  return sub ? CPDISubOffset(c, k) : (((c >> k) & 1) ? 1.0 : -1.0);
+}
+
+MPM_CPDI_INLINE CPDIVec CPDIRuleOffsets(PetscInt v, PetscInt k, const PetscBool sub, const PetscInt d)
+{
+  CPDIVec t;
+  for (PetscInt l = 0; l < 8; l++) t[l] = sub && 8 * v + l >= (d == 3 ? 27 : (d == 2 ? 9 : 3)) ? 0.0 : CPDIRuleOffset(8 * v + l, k, sub);
+  return t;
 }
 
 /* The stencil of one point: the 2^d corners' linear entries, 2^-d N_I(x_c) and 2^-d N_I(x_c) R^-T s_c, added up per node.
@@ -168,37 +157,31 @@ MPM_CPDI_INLINE void CPDISubPoint(const MPMGrid *g, const PetscReal x[], const P
    (*mirror), SG (stride ds); returns the number of entries, at most 4^d. The generic stencil (CPDIEvaluate) and the
    specialised kernels' (CPDIKernelStencil) are both this function, so the two paths agree bit for bit. Without grad (a
    constant) it fills node[] and W[] alone, with the same bits (the point-exchange modules' nodal means). */
-MPM_CPDI_INLINE PetscInt CPDIStencil(const Shape_CPDI *cp, const MPMGrid *g, const PetscReal x[], const PetscReal F[], PetscInt node[], PetscReal W[], PetscReal DW[], PetscReal SG[], PetscInt ds, PetscBool *mirror, const PetscInt d,
-                                     const PetscBool grad)
+MPM_CPDI_INLINE PetscInt CPDIStencilRule(const Shape_CPDI *cp, const MPMGrid *g, const PetscReal x[], const PetscReal F[], PetscInt node[], PetscReal W[], PetscReal DW[], PetscReal SG[], PetscInt ds, PetscBool *mirror, const PetscInt d,
+                                         const PetscBool grad, const PetscBool sub)
 {
   const PetscInt  nc    = 1 << d;
   const PetscReal scale = 1.0 / nc;
+  const PetscInt  np = sub ? (d == 3 ? 27 : (d == 2 ? 9 : 3)) : nc, nv = (np + 7) / 8; /* the rule's points, 8 a vector */
   PetscReal       R[MPM_MAX_DIM * MPM_MAX_DIM], Ri[MPM_MAX_DIM * MPM_MAX_DIM];
-  CPDIVec         gs[MPM_MAX_DIM], w0[MPM_MAX_DIM], w1[MPM_MAX_DIM];
-  CPDIIVec        first[MPM_MAX_DIM];
+  CPDIVec         gs[4][MPM_MAX_DIM], w0[4][MPM_MAX_DIM], w1[4][MPM_MAX_DIM];
+  CPDIIVec        first[4][MPM_MAX_DIM];
   PetscInt        lo[MPM_MAX_DIM], hi[MPM_MAX_DIM], n[MPM_MAX_DIM], stride[MPM_MAX_DIM], nb = 1;
   PetscBool       merge = PETSC_TRUE;
-  const PetscInt  np    = cp->subdivide ? (d == 3 ? 27 : (d == 2 ? 9 : 3)) : nc; /* the rule's points */
-  PetscInt        sfirst[CPDI_SUB_MAX][MPM_MAX_DIM];                             /* -mpm_shape_cpdi_subdivide's (CPDISubPoint) */
-  PetscReal       sw0[CPDI_SUB_MAX][MPM_MAX_DIM], sw1[CPDI_SUB_MAX][MPM_MAX_DIM], sgs[CPDI_SUB_MAX][MPM_MAX_DIM];
 
   CPDIDomain(cp, d, F, R, grad ? Ri : NULL);
-  CPDICorners(g, x, R, grad ? Ri : NULL, gs, first, w0, w1, d);
-  for (PetscInt i = 0; i < d; i++) {
-    lo[i] = hi[i] = first[i][0];
-    for (PetscInt c = 1; c < nc; c++) {
-      lo[i] = PetscMin(lo[i], first[i][c]);
-      hi[i] = PetscMax(hi[i], first[i][c]);
+  for (PetscInt v = 0; v < nv; v++) {
+    CPDIVec T[MPM_MAX_DIM];
+    for (PetscInt k = 0; k < d; k++) T[k] = CPDIRuleOffsets(v, k, sub, d);
+    CPDICorners(g, x, R, grad ? Ri : NULL, T, sub ? 2.0 : 1.0, gs[v], first[v], w0[v], w1[v], d);
+  }
+  for (PetscInt i = 0; i < d; i++) { /* the box of the points' first nodes */
+    lo[i] = hi[i] = first[0][i][0];
+    for (PetscInt c = 1; c < np; c++) {
+      lo[i] = PetscMin(lo[i], first[c / 8][i][c % 8]);
+      hi[i] = PetscMax(hi[i], first[c / 8][i][c % 8]);
     }
   }
-  if (cp->subdivide) /* the rule's 3^d points (their box: the corners' but for rounding) */
-    for (PetscInt q = 0; q < np; q++) {
-      CPDISubPoint(g, x, R, grad ? Ri : NULL, q, sfirst[q], sw0[q], sw1[q], sgs[q], d);
-      for (PetscInt i = 0; i < d; i++) {
-        lo[i] = PetscMin(lo[i], sfirst[q][i]);
-        hi[i] = PetscMax(hi[i], sfirst[q][i]);
-      }
-    }
   for (PetscInt i = 0; i < d; i++) {
     n[i]      = hi[i] - lo[i] + 2;
     stride[i] = nb;
@@ -214,17 +197,16 @@ MPM_CPDI_INLINE PetscInt CPDIStencil(const Shape_CPDI *cp, const MPMGrid *g, con
 
     for (PetscInt e = 0; e < nb; e++) E[e] = (v4){0.0, 0.0, 0.0, 0.0};
     for (PetscInt c = 0; c < np; c++) { /* N = a N_2 N_1 N_0, a = 2^-d a corner (the directions beyond d: weight 1, offset 0) */
-      const PetscInt  n2 = d > 2 ? 2 : 1, n1 = d > 1 ? 2 : 1;
-      const PetscReal sc                  = cp->subdivide ? CPDISubWeight(c, d) : scale;
+      const PetscInt  n2 = d > 2 ? 2 : 1, n1 = d > 1 ? 2 : 1, v = c / 8, l = c % 8;
+      const PetscReal sc                  = sub ? CPDISubWeight(c, d) : scale;
       PetscReal       wt[MPM_MAX_DIM][2]  = {{1.0, 1.0}, {1.0, 1.0}, {1.0, 1.0}};
       PetscInt        off[MPM_MAX_DIM][2] = {{0, 0}, {0, 0}, {0, 0}};
       v4              gv                  = {1.0, 0.0, 0.0, 0.0}; /* (1, R^-T s_c): N gv = (N, N gs) */
-      for (PetscInt j = 0; grad && j < d; j++) gv[1 + j] = cp->subdivide ? sgs[c][j] : gs[j][c];
+      for (PetscInt j = 0; grad && j < d; j++) gv[1 + j] = gs[v][j][l];
       for (PetscInt i = 0; i < d; i++) {
-        const PetscInt f = cp->subdivide ? sfirst[c][i] : first[i][c];
-        wt[i][0]         = cp->subdivide ? sw0[c][i] : w0[i][c];
-        wt[i][1]         = cp->subdivide ? sw1[c][i] : w1[i][c];
-        for (PetscInt b = 0; b < 2; b++) off[i][b] = (f - lo[i] + b) * stride[i];
+        wt[i][0] = w0[v][i][l];
+        wt[i][1] = w1[v][i][l];
+        for (PetscInt b = 0; b < 2; b++) off[i][b] = (first[v][i][l] - lo[i] + b) * stride[i];
       }
       for (PetscInt b2 = 0; b2 < n2; b2++) {
         const PetscReal N2 = sc * wt[2][b2];
@@ -265,12 +247,17 @@ MPM_CPDI_INLINE PetscInt CPDIStencil(const Shape_CPDI *cp, const MPMGrid *g, con
     }
     return nb;
   }
+  if (sub) { /* a box over 4 nodes a direction keeps the corner rule */
+    CPDIVec T[MPM_MAX_DIM];
+    for (PetscInt k = 0; k < d; k++) T[k] = CPDIRuleOffsets(0, k, PETSC_FALSE, d);
+    CPDICorners(g, x, R, grad ? Ri : NULL, T, 1.0, gs[0], first[0], w0[0], w1[0], d);
+  }
   for (PetscInt c = 0, e = 0; c < nc; c++) {
     PetscInt  idx[MPM_MAX_DIM][2];
     PetscReal sg[MPM_MAX_DIM][2];
     for (PetscInt i = 0; i < d; i++) {
-      idx[i][0] = first[i][c];
-      idx[i][1] = first[i][c] + 1;
+      idx[i][0] = first[0][i][c];
+      idx[i][1] = first[0][i][c] + 1;
       MPMShapeFold1d(g, i, 2, idx[i], sg[i]);
     }
     for (PetscInt a = 0; a < (1 << d); a++, e++) {
@@ -278,17 +265,23 @@ MPM_CPDI_INLINE PetscInt CPDIStencil(const Shape_CPDI *cp, const MPMGrid *g, con
       PetscInt  nd = 0;
       for (PetscInt i = d - 1; i >= 0; i--) {
         const PetscInt b = (a >> i) & 1;
-        N *= b ? w1[i][c] : w0[i][c];
+        N *= b ? w1[0][i][c] : w0[0][i][c];
         nd = nd * g->gm[i] + idx[i][b];
         if (grad) SG[e * ds + i] = sg[i][b];
         *mirror = (PetscBool)(*mirror || sg[i][b] < 0.0);
       }
       node[e] = nd;
       W[e]    = N;
-      for (PetscInt j = 0; grad && j < d; j++) DW[e * ds + j] = N * gs[j][c];
+      for (PetscInt j = 0; grad && j < d; j++) DW[e * ds + j] = N * gs[0][j][c];
     }
   }
   return nc * nc;
+}
+
+MPM_CPDI_INLINE PetscInt CPDIStencil(const Shape_CPDI *cp, const MPMGrid *g, const PetscReal x[], const PetscReal F[], PetscInt node[], PetscReal W[], PetscReal DW[], PetscReal SG[], PetscInt ds, PetscBool *mirror, const PetscInt d,
+                                     const PetscBool grad)
+{
+  return cp->subdivide ? CPDIStencilRule(cp, g, x, F, node, W, DW, SG, ds, mirror, d, grad, PETSC_TRUE) : CPDIStencilRule(cp, g, x, F, node, W, DW, SG, ds, mirror, d, grad, PETSC_FALSE);
 }
 
 /* MPMShapeEvaluate for CPDI, with the dimension d a constant where MPMShapeEvaluate_CPDI calls it, so that every loop
@@ -324,7 +317,7 @@ MPM_CPDI_INLINE PetscBool CPDIKernelStencil(const void *ctx, const MPMGrid *g, c
    nodes in a direction (padded) has CPDIStencil's entries in its order with entries of weight 0 between them. Fills the
    3^d entries of each lane (entry e = a_0 + 3 a_1 + 9 a_2: node[e][l], W[e][l], DW[(e d + j) MPM_SIMD_LANES + l]) and
    the mask of the padded lanes, and returns the mask of the lanes done; the others are left to CPDIStencil. With sub
-   (-mpm_shape_cpdi_subdivide) the corners are the 3^d points of CPDISubPoint, weighted a_t instead of 2^-d. */
+   (-mpm_shape_cpdi_subdivide) the corners are the 3^d points of CPDIRuleOffset, weighted a_t instead of 2^-d. */
 typedef PetscInt CPDILIVec __attribute__((vector_size(MPM_SIMD_LANES * sizeof(PetscInt)))); /* node indices of the lanes (src/core/simdmath.h) */
 
 MPM_CPDI_INLINE unsigned CPDILanes(const Shape_CPDI *cp, const MPMGrid *g, const MPMTransferArgs *A, PetscInt p0, PetscInt node[][MPM_SIMD_LANES], PetscReal W[][MPM_SIMD_LANES], PetscReal DW[], unsigned *padded, const PetscInt d, const PetscBool sub)
@@ -343,7 +336,7 @@ MPM_CPDI_INLINE unsigned CPDILanes(const Shape_CPDI *cp, const MPMGrid *g, const
   for (PetscInt c = 0; c < nc; c++)
     for (PetscInt j = 0; j < d; j++) { /* (R^-T s_c)_j, s_ck = +-1 by bit k of c, in CPDICorners' order; (R^-T 2t)_j (sub) */
       MPMVd t = (MPMVd){0};
-      for (PetscInt k = 0; k < d; k++) t += Ri[k * d + j] * (sub ? 2.0 * CPDISubOffset(c, k) : (((c >> k) & 1) ? 1.0 : -1.0));
+      for (PetscInt k = 0; k < d; k++) t += Ri[k * d + j] * ((sub ? 2.0 : 1.0) * CPDIRuleOffset(c, k, sub));
       gs[j][c] = t;
     }
   for (PetscInt i = 0; i < d; i++) {
@@ -351,7 +344,7 @@ MPM_CPDI_INLINE unsigned CPDILanes(const Shape_CPDI *cp, const MPMGrid *g, const
     for (PetscInt c = 0; c < nc; c++) {
       MPMVd     xc = x, xi, fi;
       CPDILIVec fl;
-      for (PetscInt k = 0; k < d; k++) xc += R[i * d + k] * (sub ? CPDISubOffset(c, k) : (((c >> k) & 1) ? 1.0 : -1.0));
+      for (PetscInt k = 0; k < d; k++) xc += R[i * d + k] * CPDIRuleOffset(c, k, sub);
       xi          = (xc - g->lo[i]) / g->h[i];
       fl          = __builtin_convertvector(xi, CPDILIVec);
       fi          = __builtin_convertvector(fl, MPMVd);
