@@ -6,7 +6,7 @@ axisymmetric (inputs/taylor_anvil_rz.opts) at R0/6, R0/9 and R0/12 cells, every 
 1, 2 and 3 points per cell per direction, and the anvil's friction (-mpm_wall_friction_lo: mu 0 to 0.1 at the three
 resolutions, and every shot with mu = 0.05), and the shots of two other materials (4340 steel and 6061-T6
 aluminium, ../shared/reference/taylor_other_materials.csv) at R0/6 and R0/12, the steel's also with anvil friction mu = 0
-to 0.3. Writes a markdown file (default
+to 0.3, and the steel against Johnson & Cook's own EPIC-2 computation of its shots. Writes a markdown file (default
 docs/validation-taylor-runs.md) and the final-profile plot of the three 3D runs (docs/taylor_profile.png, scripts/taylor_profile.py).
 
 usage: scripts/taylor.py [--exe build/petmpm] [--out docs/validation-taylor-runs.md] [--quick]
@@ -33,6 +33,12 @@ MATERIALS = [("taylor_steel_rz", "4340 steel, Johnson & Cook 1983", 2.08e4, 2.54
              ("taylor_aluminium_rz", "6061-T6, Wilkins & Guinan 1973", 1.91e4, 2.347, 2.126, 0.0, 0.0, 2.667, 42),
              ("taylor_aluminium_rz", "6061-T6, Wilkins & Guinan 1973", 2.62e4, 2.347, 1.981, 0.0, 0.0, 2.667, 42),
              ("taylor_aluminium_rz", "6061-T6, Wilkins & Guinan 1973", 3.73e4, 2.347, 1.650, 1.660, 0.830, 2.667, 42)]
+
+
+# Johnson & Cook's own EPIC-2 computation of the steel shots with the same constants (their 1983 paper's Figure 9, the
+# scan in bbanerjee/HighRateExptData TaylorData/JPG/taylorJohnsonCook.jpg): V [cm/s] -> (Lf printed [cm], footprint
+# read off the drawn outlines, least and largest [cm]; docs/validation-taylor.md)
+EPIC2 = {2.08e4: (2.248, 1.01, 1.15), 2.82e4: (1.031, 1.12, 1.16), 3.43e4: (0.606, 1.11, 1.20)}
 
 
 def run(exe, scene, args, out):
@@ -111,6 +117,7 @@ def main():
         md += ["", "## Other materials, each with its own published constants (inputs/taylor_steel_rz.opts, taylor_aluminium_rz.opts), rz rod",
                "", "| shot | V [m/s] | L0 | cells a radius | Lf measured / computed | error | Dmax measured / computed | error | width at 0.2 L0 measured / computed | error |",
                "|---|---|---|---|---|---|---|---|---|---|"]
+        epic = []  # the steel's (V, n, Lf, Dmax) for the EPIC-2 table
         for scene, src, v, L0, lf, dm, w, zhi, nz in MATERIALS:
             for n in (6, 12):
                 rep, err = run(a.exe, scene, shot_args(v, L0, lf, dm, w, zhi, nz, n), os.path.join(tmp, "material"))
@@ -123,6 +130,14 @@ def main():
                     return f"{10 * ref:.2f} / {10 * val:.2f} | {100 * (val / ref - 1):+.1f}%" if ref > 0 else f"- / {10 * val:.2f} | not measured"
 
                 md.append(f"| {src} | {v / 100:.0f} | {10 * L0:.1f} | {n} | {cell('final_length', lf)} | {cell('footprint', dm)} | {cell('width_0.2L0', w)} |")
+                if scene.startswith("taylor_steel"):
+                    epic.append((v, n, check(rep, "final_length"), check(rep, "footprint")))
+        md += ["", "## 4340 steel against Johnson & Cook's own EPIC-2 computation (the same constants; their 1983 Figure 9), rz rod", "",
+               "| V [m/s] | cells a radius | Lf EPIC-2 / computed | error | Dmax EPIC-2 (read) / computed | against the reading's middle |", "|---|---|---|---|---|---|"]
+        for v, n, lf_c, dm_c in epic:
+            lf_e, lo, hi = EPIC2[v]
+            md.append(f"| {v / 100:.0f} | {n} | {10 * lf_e:.2f} / {10 * lf_c:.2f} | {100 * (lf_c / lf_e - 1):+.1f}% | {10 * lo:.1f} to {10 * hi:.1f} / {10 * dm_c:.2f} | "
+                      f"{100 * (dm_c / (0.5 * (lo + hi)) - 1):+.1f}% |")
         md += ["", "## 4340 steel with anvil friction (-mpm_wall_friction_lo 0,mu), rz rod: Lf / Dmax errors against the shots", "",
                "| shot | V [m/s] | L0 | cells a radius | " + " | ".join(f"mu = {mu}" for mu in STEEL_FRICTION) + " |", "|---|---|---|---|" + "---|" * len(STEEL_FRICTION)]
         for scene, src, v, L0, lf, dm, w, zhi, nz in MATERIALS:
