@@ -20,7 +20,7 @@ def test_riemann2d_accuracy():
     (scripts/riemann2d.py, the reference the second-order grid code at 200^2): petmpm's L1 density error in the
     default method must not exceed first-order Godunov's on the same grid (issue 41's goal), and stay symmetric about
     x = y. Measured (2026-11-29, petmpm's margin wide enough that the rarefactions from its outflow faces stay outside
-    the unit square): 2.63% against 1.77% (second order 0.70%), symmetric to 1e-14: the symmetry holds, the accuracy
+    the unit square): 2.63% against 1.77% (second order 0.70%; 2.54% since the volume consistency module became the default, docs/verification_2d.md), symmetric to 1e-14: the symmetry holds, the accuracy
     does not (docs/verification_2d.md; 4.25% before the margin was widened)."""
     with tempfile.TemporaryDirectory() as d:
         out = os.path.join(d, "r.json")
