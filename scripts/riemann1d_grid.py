@@ -6,9 +6,9 @@ transmissive faces; a strip 4 cells wide) on the same cells. Where petmpm's shoc
 that every code misses at these resolutions (issue 41: LeBlanc's shock 22 cells ahead).
 
 Reported per resolution and code, as a table (and as JSON with --json):
-  L1      sum |rho - rho_exact| / sum rho_exact over the cells of the scene's window (-mpm_exact_window), rho_exact the exact solution's cell
-          average (16 samples a cell); petmpm's final points spread over the cells their extents [x - V/2, x + V/2]
-          cover (sum m / sum V of the overlaps);
+  L1      sum |rho - rho_exact| / sum rho_exact over the cells of the scene's window (-mpm_exact_window), rho_exact
+          the exact solution's cell average (16 samples a cell); petmpm's final points binned on the cells as the 2D
+          studies bin them (scripts/riemann2d.py binned: sum m / sum V, an emptied cell its neighbours' mean);
   shock   the shock's position error in cells: the crossing of (rho*_s + rho_ahead) / 2 nearest the exact shock (the
           right one, or the left one if the right wave is a rarefaction), linear between cell centres; petmpm's from
           its report (the same criterion on its points, src/exact/impls/riemann.c);
@@ -31,6 +31,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import fv2d  # noqa: E402
 import petmpmlib as lib  # noqa: E402
+from blast2d import petmpm  # noqa: E402
+from riemann2d import binned  # noqa: E402
 
 
 def states(scene):
@@ -109,31 +111,16 @@ def main():
         inw = (x > win[0]) & (x < win[1])
         l1 = lambda rho: float(np.abs(rho - ex)[inw].sum() / ex[inw].sum())  # noqa: E731
         with tempfile.TemporaryDirectory() as d:
-            t0 = time.time()
-            rep, p = lib.run(os.path.join(a.build, "petmpm"), ["-options_file", lib.scene_path(a.scene), "-mpm_cells", str(N), *a.extra], 1, d)
-            wall = time.time() - t0
-            if rep is None:
-                raise SystemExit(f"petmpm failed at {N} cells: {(p.stdout + p.stderr).strip().splitlines()[-1:]}")
-            P = lib.final_fields(os.path.join(d, "petmpm.h5"))
-        M, Vs = np.zeros(N), np.zeros(N)
-        for xp, m, V in zip(P["position"].ravel(), P["mass"].ravel(), P["volume"].ravel()):  # each point's mass over its extent [x - V/2, x + V/2]
-            a0, a1 = max(lo, xp - 0.5 * V), min(hi, xp + 0.5 * V)
-            for i in range(max(0, int((a0 - lo) / h)), min(N, int((a1 - lo) / h) + 1)):
-                ov = min(a1, lo + (i + 1) * h) - max(a0, lo + i * h)
-                if ov > 0:
-                    M[i] += m * ov / V
-                    Vs[i] += ov
-        rho_p = np.where(Vs > 0, M / np.where(Vs > 0, Vs, 1), 0.0)
+            rep, wall = petmpm(a.build, ["-options_file", lib.scene_path(a.scene), "-mpm_cells", str(N), *a.extra], d)
+            rho_p = binned(os.path.join(d, "petmpm.h5"), N / (hi - lo), (lo, hi))[0]
         chk = {c["name"]: c["value"] for c in rep["checks"]}
         rows.append(dict(code="petmpm", N=N, L1=l1(rho_p), shock=(chk.get("shock_position", np.nan) - xs) / h,
-                         contact=(chk["contact_position"] - xc) / h if "contact_position" in chk else np.nan, wall=wall))
-        W0 = np.zeros((4, 4, N))
-        left = x < x0
-        for k, (qL, qR) in enumerate(((WL[0], WR[0]), (WL[1], WR[1]), (0.0, 0.0), (WL[2], WR[2]))):
-            W0[k] = np.where(left, qL, qR)[None, :]
+                         contact=(chk.get("contact_position", np.nan) - xc) / h, wall=wall))
+        strip = (lo, hi, 0.0, 4 * h)  # the grid codes' 1D problem: 4 rows, the left state in quadrants 2 and 3
+        U0 = fv2d.quadrants([(q[0], q[1], 0.0, q[2]) for q in (WR, WL, WL, WR)], N, 4, strip, xm=x0, gamma=g)
         for order in (int(o) for o in a.orders.split(",")):
             t0 = time.time()
-            fv = fv2d.solve(fv2d.cons(W0, g), (lo, hi, 0.0, 4 * h), t, order=order, gamma=g)
+            fv = fv2d.solve(U0, strip, t, order=order, gamma=g)
             rho = fv["rho"][1]
             rows.append(dict(code=f"order {order}", N=N, L1=l1(rho), shock=(crossing(x, rho, ls, xs) - xs) / h, contact=(crossing(x, rho, lc, xc) - xc) / h,
                              wall=time.time() - t0))

@@ -5,7 +5,7 @@ default method against first-order Godunov on the same cells (scripts/riemann1d_
 cells. petmpm's shock runs 22 cells ahead (issue 41); the grid codes miss it too: at each resolution petmpm's shock
 is not further from the exact one than first-order Godunov's, in cells, and its L1 density error is not above
 first-order Godunov's; both fall with refinement (the shock's error in cm). Measured (2026-11-30): shock +22.2 and
-+23.0 cells against first order's +26.7 and +35.8 (second order +7.4 and +7.4), L1 0.48% and 0.25% against 1.10% and
++23.0 cells against first order's +26.7 and +35.8 (second order +7.4 and +7.4), L1 0.50% and 0.26% against 1.10% and
 0.71% (second order 0.15% and 0.076%); at 3600 cells +24.4 against +44.2 (+7.5) cells, L1 0.13% against 0.44%
 (0.039%) (docs/shock-capturing.md item 10).
 

@@ -141,10 +141,16 @@ MPM_CPDI_INLINE PetscReal CPDIRuleOffset(PetscInt c, PetscInt k, const PetscBool
   return sub ? CPDISubOffset(c, k) : (((c >> k) & 1) ? 1.0 : -1.0);
 }
 
+/* The number of the rule's points: the 2^d corners, or with sub the subdivided rule's 3^d. */
+MPM_CPDI_INLINE PetscInt CPDIRuleSize(const PetscBool sub, const PetscInt d)
+{
+  return sub ? (d == 3 ? 27 : (d == 2 ? 9 : 3)) : 1 << d;
+}
+
 MPM_CPDI_INLINE CPDIVec CPDIRuleOffsets(PetscInt v, PetscInt k, const PetscBool sub, const PetscInt d)
 {
   CPDIVec t;
-  for (PetscInt l = 0; l < 8; l++) t[l] = sub && 8 * v + l >= (d == 3 ? 27 : (d == 2 ? 9 : 3)) ? 0.0 : CPDIRuleOffset(8 * v + l, k, sub);
+  for (PetscInt l = 0; l < 8; l++) t[l] = sub && 8 * v + l >= CPDIRuleSize(sub, d) ? 0.0 : CPDIRuleOffset(8 * v + l, k, sub);
   return t;
 }
 
@@ -162,7 +168,7 @@ MPM_CPDI_INLINE PetscInt CPDIStencilRule(const Shape_CPDI *cp, const MPMGrid *g,
 {
   const PetscInt  nc    = 1 << d;
   const PetscReal scale = 1.0 / nc;
-  const PetscInt  np = sub ? (d == 3 ? 27 : (d == 2 ? 9 : 3)) : nc, nv = (np + 7) / 8; /* the rule's points, 8 a vector */
+  const PetscInt  np = CPDIRuleSize(sub, d), nv = (np + 7) / 8; /* the rule's points, 8 a vector */
   PetscReal       R[MPM_MAX_DIM * MPM_MAX_DIM], Ri[MPM_MAX_DIM * MPM_MAX_DIM];
   CPDIVec         gs[4][MPM_MAX_DIM], w0[4][MPM_MAX_DIM], w1[4][MPM_MAX_DIM];
   CPDIIVec        first[4][MPM_MAX_DIM];
@@ -322,7 +328,7 @@ typedef PetscInt CPDILIVec __attribute__((vector_size(MPM_SIMD_LANES * sizeof(Pe
 
 MPM_CPDI_INLINE unsigned CPDILanes(const Shape_CPDI *cp, const MPMGrid *g, const MPMTransferArgs *A, PetscInt p0, PetscInt node[][MPM_SIMD_LANES], PetscReal W[][MPM_SIMD_LANES], PetscReal DW[], unsigned *padded, const PetscInt d, const PetscBool sub)
 {
-  const PetscInt nc = sub ? (d == 3 ? 27 : 9) : 1 << d, dd = d * d; /* the rule's points: 2^d corners, or 3^d (sub) */
+  const PetscInt nc = CPDIRuleSize(sub, d), dd = d * d; /* the rule's points: 2^d corners, or 3^d (sub) */
   MPMVd          R[9], Ri[9], det, gs[3][CPDI_SUB_MAX], w0[3][CPDI_SUB_MAX], w1[3][CPDI_SUB_MAX], u[3][CPDI_SUB_MAX][3];
   CPDILIVec      first[3][CPDI_SUB_MAX], lo[3], ok, pad;
   unsigned       mask = 0;
