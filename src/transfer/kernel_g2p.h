@@ -147,7 +147,10 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
   const PetscInt  D        = MPM_KD;
   const PetscBool velocity = (PetscBool)(mode & MPM_G2P_VELOCITY), kinematics = (PetscBool)(mode & MPM_G2P_KINEMATICS), work = (PetscBool)(mode & MPM_G2P_WORK);
   const PetscBool hoop         = (PetscBool)(MPM_KD == 2 && A->hoopr);
-  MPM_KVEC        vpic[MPM_KD] = {0}, dv[MPM_KD] = {0}, Lp[MPM_KD * MPM_KD] = {0}, Lb[MPM_KD * MPM_KD] = {0}, dv2[MPM_KD] = {0}, R[MPM_KD] = {0}, vp[MPM_KD], rh, Lbtt = {0};
+  MPM_KVEC        vpic[MPM_KD] = {0}, dv[MPM_KD] = {0}, Lp[MPM_KD * MPM_KD] = {0}, Lb[MPM_KD * MPM_KD] = {0}, dv2[MPM_KD] = {0}, R[MPM_KD] = {0}, vp[MPM_KD], rh, Lbtt = {0}, Tbar = {0};
+  PetscBool       heat = PETSC_FALSE; /* a lane's point exchanges heat: the group sums Tbar = sum N T_I (MPMHeatGather) in lanes */
+
+  for (PetscInt l = 0; kinematics && A->hw && l < MPM_KLANES; l++) heat = (PetscBool)(heat || (((mask >> l) & 1u) && A->hw[p0 + l] > 0.0));
 
   for (PetscInt i = 0; i < D; i++) vp[i] = MPM_KLANE(&A->v[p0 * D + i], D);
   { /* axisymmetric: the hoop terms' radius of each lane's point (1 elsewhere), as MPMKG2PPoint */
@@ -159,6 +162,11 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
     const MPM_KVEC w = MPM_KLANE(W[a], 1);
     MPM_KVEC       dw[MPM_KD];
     for (PetscInt j = 0; j < D; j++) dw[j] = MPM_KLANE(DW[a][j], 1);
+    if (heat) {
+      PetscReal Tl[MPM_KLANES];
+      for (PetscInt l = 0; l < MPM_KLANES; l++) Tl[l] = A->hW[2 * node[a][l] + 1];
+      Tbar += w * MPM_KLANE(Tl, 1);
+    }
     for (PetscInt i = 0; i < D; i++) {
       PetscReal vl[MPM_KLANES], v0l[MPM_KLANES];
       for (PetscInt l = 0; l < MPM_KLANES; l++) {
@@ -198,7 +206,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
     }
     MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p0 + l, vpicl, dvl, dv2l, Rl, Lpl, Lbl, NULL, rh[l], Lbtt[l], mode);
     if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p0 + l, ns, &node[0][l], &W[0][l], NULL, NULL, MPM_P2G_REMAP, 0, MPM_KLANES);
-    if (kinematics && A->hw) MPMHeatGather(A, p0 + l, ns, &node[0][l], &W[0][l], MPM_KLANES);
+    if (heat) MPMHeatGatherFinish(A, p0 + l, Tbar[l]);
   }
 }
 #endif

@@ -31,6 +31,8 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
   /* the point's values in locals, read once: a store to a node may alias any double array, so the compiler would
      otherwise load them again after every node update */
   const PetscReal mp = A->m[p], Vp = (mode & (MPM_P2G_PRESSURE | MPM_P2G_STRESS)) ? A->V[p] : 0.0, P = (mode & MPM_P2G_PRESSURE) ? A->pr[p] + A->q[p] : 0.0, VP = Vp * P;
+  /* the heat exchange's weight w_p and w_p T_p (0: none), summed into its nodal sums with the entries (MPMHeatScatter) */
+  const PetscReal hwp = A->hw && !(mode & MPM_P2G_REMAP) ? A->hw[p] : 0.0, hwT = hwp > 0.0 ? hwp * A->hT[p] : 0.0;
   MPM_KCV         vp = zero, Sc[MPM_KD];
   PetscReal       Sp[MPM_KD * MPM_KD], hoop = 0.0;
 
@@ -72,8 +74,8 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
     if (mode & (MPM_P2G_STRESS | MPM_P2G_PRESSURE))
       for (PetscInt k = 0; k < D; k++) nd->f[k] += f[k];
     if (hoop != 0.0) nd->f[0] += sg[0] * hoop * W[a * ls];
+    if (hwp > 0.0) MPMHeatScatterEntry(A->hW, node[a * ls], W[a * ls], hwp, hwT);
   }
-  if (A->hw && !(mode & MPM_P2G_REMAP)) MPMHeatScatter(A, p, ns, node, W, ls); /* the heat exchange's nodal sums */
 }
 
 /* One point of points to grid: its stencil, then MPMKP2GPoint, with the mirror signs only where the stencil has one. */

@@ -106,14 +106,22 @@ static inline void MPMHeatScatter(const MPMTransferArgs *A, PetscInt p, PetscInt
 
 /* Point p's gather and its energy change; hW holds W_I and T_I = Q_I / W_I by then (MPMHeatExchangeSum; 0 where no
    weighted point reaches). */
+static inline void MPMHeatGatherFinish(const MPMTransferArgs *A, PetscInt p, PetscReal Tbar)
+{
+  const PetscReal w = A->hw[p];
+
+  if (w > 0.0) A->e[p] += w * (Tbar - A->hT[p]) / A->m[p];
+}
+
+/* Point p's gather, Tbar = sum_I N_I(x_p) T_I over its ns entries in order, and its energy change
+   (MPMHeatGatherFinish, which the kernels in vector lanes call with their own sum in the same order). */
 static inline void MPMHeatGather(const MPMTransferArgs *A, PetscInt p, PetscInt ns, const PetscInt *node, const PetscReal *W, PetscInt ls)
 {
-  const PetscReal w    = A->hw[p];
-  PetscReal       Tbar = 0.0;
+  PetscReal Tbar = 0.0;
 
-  if (!(w > 0.0)) return;
+  if (!(A->hw[p] > 0.0)) return;
   for (PetscInt a = 0; a < ns; a++) Tbar += W[a * ls] * A->hW[2 * node[a * ls] + 1];
-  A->e[p] += w * (Tbar - A->hT[p]) / A->m[p];
+  MPMHeatGatherFinish(A, p, Tbar);
 }
 
 /* The point's force matrix -V_p sigma_p = V_p ((p + q) I - s_p) (d x d, row major) in place of its deviatoric stress
