@@ -11,6 +11,7 @@ typedef struct {
   void (*pressure_n)(void *, PetscInt, const PetscReal[], const PetscReal[], PetscReal[], PetscReal[]); /* batched: n points (rho[], e[]) -> p[], c^2[]; NULL: a loop over pressure */
   void (*temperature_n)(void *, PetscInt, const PetscReal[], const PetscReal[], PetscReal[]);           /* batched: (rho[], e[]) -> T[]; NULL: a loop over temperature       */
   PetscReal (*isentrope)(void *, PetscReal, PetscReal, PetscReal);                                      /* (rho0, e0, rho1) -> e1 on the isentrope through (rho0, e0); NULL: RK4 steps of de/drho = p/rho^2 */
+  PetscReal (*heatcapacity)(void *, PetscReal, PetscReal);                                              /* (rho, e) -> c_v = (de/dT)_rho [erg/(g eV)]; NULL: a central difference of T (MPMEOSHeatCapacity) */
 } MPMEOSOps;
 
 /* Batched EOS operations of a type from its pointwise ones, in the type's own file so that the loop inlines them. */
@@ -71,6 +72,20 @@ static inline void MPMEOSPressureKernel(MPMEOS eos, PetscReal rho, PetscReal e, 
 static inline void MPMEOSTemperatureKernel(MPMEOS eos, PetscReal rho, PetscReal e, PetscReal *T)
 {
   eos->ops.temperature(eos->data, rho, e, T);
+}
+
+/* The specific heat at constant volume c_v = (de/dT)_rho [erg/(g eV)] at (rho, e): the type's own (a constant Cv in every
+   type with a temperature), else 2 de / (T(e + de) - T(e - de)) with de = 1e-3 max(|e|, 1) erg/g, wide enough that
+   round-off in e does not reach it; 0 where T does not rise with e (a type without temperature). */
+static inline PetscReal MPMEOSHeatCapacity(MPMEOS eos, PetscReal rho, PetscReal e)
+{
+  PetscReal de, T0, T1;
+
+  if (eos->ops.heatcapacity) return eos->ops.heatcapacity(eos->data, rho, e);
+  de = 1e-3 * PetscMax(PetscAbsReal(e), 1.0);
+  MPMEOSTemperatureKernel(eos, rho, e - de, &T0);
+  MPMEOSTemperatureKernel(eos, rho, e + de, &T1);
+  return T1 > T0 ? 2.0 * de / (T1 - T0) : 0.0;
 }
 
 static inline void MPMEOSEnergyKernel(MPMEOS eos, PetscReal rho, PetscReal T, PetscReal *e)

@@ -4,7 +4,7 @@
    by temperature,
      m_p de_p = w_p (sum_I N_I(x_p) T_I - T_p),  T_I = sum_q N_I(x_q) w_q T_q / sum_q N_I(x_q) w_q,
      w_p = beta_p m_p c_v,p,  beta_p = min(1, C_h max(0, -tr L_p) dt),
-   with c_v,p = de/dT [erg/(g eV)] at the point's density from its EOS, div v_p and dt its last step's: a diffusion with
+   with c_v,p = de/dT [erg/(g eV)] at the point's density from its EOS (MPMEOSHeatCapacity), div v_p and dt its last step's: a diffusion with
    diffusivity about C_h h^2 |div v| [cm^2/s] where the step compressed (after Noh, J. Comput. Phys. 72 (1987) 78).
    The module sets the weights at the step's start; points to grid sums W_I and Q_I with the stencils it evaluates
    anyway, and grid to points, before it moves the points, changes e_p (MPMHeatScatter, src/transfer/transfer.h), so
@@ -59,14 +59,12 @@ static PetscErrorCode MPMConductionApply(MPMModule mod, MPM mpm, const MPMStepCo
     const PetscReal *rho = pts.f[MPM_FIELD_DENSITY], *e = pts.f[MPM_FIELD_ENERGY];
     for (PetscInt p = 0; p < pts.n; p++) { /* beta_p, c_v,p and the weight w_p = beta_p m_p c_v,p */
       const MPMEOS E    = mpm->mat[(PetscInt)pts.f[MPM_FIELD_MATERIAL][p]].eos;
-      PetscReal    beta = MPMConductionBeta(C, &pts, p, ctx->dt), de, T0, T1;
+      PetscReal    beta = MPMConductionBeta(C, &pts, p, ctx->dt), cv;
       w[p]              = 0.0;
-      if (beta < 1e-10) continue;                    /* expansion, rest, or too little to matter (and no denormal weights) */
-      de = 1e-3 * PetscMax(PetscAbsReal(e[p]), 1.0); /* a central difference wide enough that round-off in e does not reach c_v */
-      MPMEOSTemperatureKernel(E, rho[p], e[p] - de, &T0);
-      MPMEOSTemperatureKernel(E, rho[p], e[p] + de, &T1);
-      if (!(T1 > T0)) continue;                                                               /* an EOS without temperature */
-      w[p] = (float)PetscMin(beta * pts.f[MPM_FIELD_MASS][p] * (2.0 * de / (T1 - T0)), 1e38); /* c_v = 2 de / (T1 - T0); single precision (a flat T(e) not inf) */
+      if (beta < 1e-10) continue; /* expansion, rest, or too little to matter (and no denormal weights) */
+      cv = MPMEOSHeatCapacity(E, rho[p], e[p]);
+      if (!(cv > 0.0)) continue;                                          /* an EOS without temperature */
+      w[p] = (float)PetscMin(beta * pts.f[MPM_FIELD_MASS][p] * cv, 1e38); /* single precision (a flat T(e) not inf) */
       if (w[p] > 0.0) {
         const PetscInt c = MPMGridCellNode(&mpm->grid, &pts.f[MPM_FIELD_POSITION][p * mpm->grid.dim]);
         cmin             = PetscMin(cmin, c);

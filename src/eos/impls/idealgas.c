@@ -31,6 +31,12 @@ static PetscReal MPMEOSIsentrope_IdealGas(void *ctx, PetscReal rho0, PetscReal e
   return e0 * PetscPowReal(rho1 / rho0, ((const EOS_IdealGas *)ctx)->gamma - 1.0);
 }
 
+/* c_v = (de/dT)_rho: the constant Cv. */
+static PetscReal MPMEOSHeatCapacity_IdealGas(void *ctx, PetscReal rho, PetscReal e)
+{
+  return ((const EOS_IdealGas *)ctx)->cv;
+}
+
 static void MPMEOSEnergy_IdealGas(void *ctx, PetscReal rho, PetscReal T, PetscReal *e)
 {
   *e = ((const EOS_IdealGas *)ctx)->cv * T;
@@ -92,6 +98,7 @@ PetscErrorCode MPMEOSCreate_IdealGas(MPMEOS eos)
   eos->ops.temperature_n  = MPMEOSTemperature_IdealGas_n;
   eos->ops.isentrope      = MPMEOSIsentrope_IdealGas;
   eos->ops.energy         = MPMEOSEnergy_IdealGas;
+  eos->ops.heatcapacity   = MPMEOSHeatCapacity_IdealGas;
   eos->ops.setfromoptions = MPMEOSSetFromOptions_IdealGas;
   eos->ops.view           = MPMEOSView_IdealGas;
   PetscFunctionReturn(PETSC_SUCCESS);

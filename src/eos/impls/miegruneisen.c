@@ -104,6 +104,12 @@ static void MPMEOSTemperature_MG(void *ctx, PetscReal rho, PetscReal e, PetscRea
 
 MPM_EOS_BATCHED(MPMEOSPressure_MG, MPMEOSTemperature_MG)
 
+/* c_v = (de/dT)_rho: the constant Cv. */
+static PetscReal MPMEOSHeatCapacity_MG(void *ctx, PetscReal rho, PetscReal e)
+{
+  return ((const EOS_MG *)ctx)->cv;
+}
+
 static void MPMEOSEnergy_MG(void *ctx, PetscReal rho, PetscReal T, PetscReal *e)
 {
   const EOS_MG *mg = (const EOS_MG *)ctx;
@@ -198,6 +204,7 @@ PetscErrorCode MPMEOSCreate_MieGruneisen(MPMEOS eos)
   eos->ops.pressure_n     = MPMEOSPressure_MG_n;
   eos->ops.temperature_n  = MPMEOSTemperature_MG_n;
   eos->ops.energy         = MPMEOSEnergy_MG;
+  eos->ops.heatcapacity   = MPMEOSHeatCapacity_MG;
   eos->ops.setfromoptions = MPMEOSSetFromOptions_MG;
   eos->ops.view           = MPMEOSView_MG;
   PetscCall(MGSetUp(eos, mg));

@@ -45,6 +45,12 @@ static void MPMEOSTemperature_Tait(void *ctx, PetscReal rho, PetscReal e, PetscR
 
 MPM_EOS_BATCHED(MPMEOSPressure_Tait, MPMEOSTemperature_Tait)
 
+/* c_v = (de/dT)_rho: the constant Cv. */
+static PetscReal MPMEOSHeatCapacity_Tait(void *ctx, PetscReal rho, PetscReal e)
+{
+  return ((const EOS_Tait *)ctx)->cv;
+}
+
 static void MPMEOSEnergy_Tait(void *ctx, PetscReal rho, PetscReal T, PetscReal *e)
 {
   const EOS_Tait *t = (const EOS_Tait *)ctx;
@@ -125,6 +131,7 @@ PetscErrorCode MPMEOSCreate_Tait(MPMEOS eos)
   eos->ops.temperature_n  = MPMEOSTemperature_Tait_n;
   eos->ops.isentrope      = MPMEOSIsentrope_Tait;
   eos->ops.energy         = MPMEOSEnergy_Tait;
+  eos->ops.heatcapacity   = MPMEOSHeatCapacity_Tait;
   eos->ops.setfromoptions = MPMEOSSetFromOptions_Tait;
   eos->ops.view           = MPMEOSView_Tait;
   PetscFunctionReturn(PETSC_SUCCESS);
