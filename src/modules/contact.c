@@ -19,6 +19,12 @@
    bodies reach each other along the normal (MPMContactExtents); position, where their extents along the normal, each
    from the body's mass at the node and a cell inwards, meet at the end of the step (MPMContactApart: a node under a
    curved surface a fraction of a cell above the other body is not a support); docs/contact.md gives what each measured.
+   Beside a rigid body the volume test asks more: a rigid body fills half of each of its surface nodes alone, so f =
+   0.5 takes any mass of the other body there as touching and holds a curved body as a flat punch; there the bodies
+   touch where their volumes fill f_r = -mpm_contact_fill_rigid (default 0.95) of the node, or, on a node the other
+   body covers only in part (the rim of a footprint), where the position test finds their extents meet (linear, GIMP
+   and CPDI shapes; with B-splines, f alone). Between deformable bodies f stays: a stricter fraction made them meet
+   later and harder (Sulsky's disks lost more kinetic energy).
    A rigid body (-body_<b>_rigid_velocity) moves at its prescribed velocity: its nodes take it, and at a shared node
    v_cm is it (infinite mass); the force it exerts on the other bodies is the contact force on it (report, HDF5
    history). The kinetic energy a correction takes out of the grid, m_b (v_b* - v_b') . ((v_b^n + v_b') / 2 - v_r) per
@@ -43,6 +49,8 @@ typedef struct {
   MPMContactNormal normal;
   MPMContactGap    gap;                                                          /* -mpm_contact_gap                                   */
   PetscReal        fill;                                                         /* -mpm_contact_fill: the volume gap test's fraction f [-] */
+  PetscReal        fill_rigid;                                                   /* -mpm_contact_fill_rigid: its fraction f_r where a rigid body is [-] */
+  PetscBool        rigid_gap;                                                    /* that test on: the volume test, f_r > f, a rigid body, the tent's masses */
   PetscReal       *ext[MPM_MAX_BODIES];                                          /* surface gap test, per local node: max_p (x_p . n_b + a_p) over the body's points there [cm] */
   PetscBool        rigid[MPM_MAX_BODIES];                                        /* -body_<b>_rigid_velocity given                  */
   MPMTable         vtab[MPM_MAX_BODIES];                                         /* its velocity over time (-body_<b>_rigid_velocity[_times]) [cm/s] */
@@ -101,6 +109,11 @@ static PetscErrorCode MPMContactSetFromOptions(MPMModule mod, MPM mpm, PetscOpti
                              "", MPMContactGaps, (PetscEnum)ct->gap, (PetscEnum *)&ct->gap, NULL));
   PetscCall(PetscOptionsReal("-mpm_contact_fill", "Volume gap test (-mpm_contact_gap volume): bodies touch at a node where their volumes fill this fraction of its cell volume [-], in [0, 1]", "", ct->fill, &ct->fill, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_contact_fill", ct->fill, 0.0, 1.0, PETSC_FALSE, PETSC_FALSE));
+  PetscCall(PetscOptionsReal("-mpm_contact_fill_rigid",
+                             "Volume gap test where one of the bodies is rigid (it fills half of its surface nodes alone): they touch where their volumes fill this fraction of the cell volume, or where their extents along the normal meet (the "
+                             "position test; linear, GIMP and CPDI shapes) [-], in [0, 1] (at most -mpm_contact_fill: as between deformable bodies)",
+                             "", ct->fill_rigid, &ct->fill_rigid, NULL));
+  PetscCall(MPMOptionsCheckRange("-mpm_contact_fill_rigid", ct->fill_rigid, 0.0, 1.0, PETSC_FALSE, PETSC_FALSE));
   for (PetscInt b = 0; b < mpm->nbodies; b++) {
     char opt[MPM_MAX_NAME + 32];
     PetscCall(PetscSNPrintf(opt, sizeof(opt), "-body_%s_rigid_velocity", mpm->bodyname[b]));
@@ -574,16 +587,20 @@ static void MPMContactCrackPair(MPMContact *ct, MPM mpm, MPMNode *const *node, P
   }
 }
 
-/* The position gap test reads the integral of the tent from the nodal masses: shape types whose masses are it
-   (MPMShape::tent_mass: linear, GIMP, CPDI). */
+/* The position gap test, and the volume test's where a rigid body is (-mpm_contact_fill_rigid), read the integral of the
+   tent from the nodal masses: shape types whose masses are it (MPMShape::tent_mass: linear, GIMP, CPDI). */
 static PetscErrorCode MPMContactSetUp(MPMModule mod, MPM mpm)
 {
-  MPMContact  *ct = (MPMContact *)mod->data;
+  MPMContact  *ct       = (MPMContact *)mod->data;
+  PetscBool    anyrigid = PETSC_FALSE;
   MPMShapeType type;
 
   PetscFunctionBegin;
   PetscCall(MPMShapeGetType(mpm->shape, &type));
   PetscCheck(ct->gap != MPM_CONTACT_GAP_POSITION || mpm->shape->tent_mass, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_contact_gap position reads the tent's integral from the nodal masses: it needs -mpm_shape_type linear, gimp or cpdi, not %s", type);
+  ct->rigid_gap = (PetscBool)(ct->gap == MPM_CONTACT_GAP_VOLUME && ct->fill_rigid > ct->fill && mpm->shape->tent_mass); /* (B-splines: the volume test's f alone) */
+  for (PetscInt b = 0; b < mpm->nbodies; b++) anyrigid = (PetscBool)(anyrigid || ct->rigid[b]);
+  ct->rigid_gap = (PetscBool)(ct->rigid_gap && anyrigid);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -646,12 +663,14 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
         PetscInt       nin = 0, rb = -1, heavy[MPM_MAX_BODIES], nfam = 0, fam0 = -1;
         PetscReal      M = 0.0, P[3] = {0.0, 0.0, 0.0}, vcm[3], vref[3], Vsum = 0.0, Vnode = g->vcell;
         PetscBool      gap, volgap, crk = PETSC_FALSE, endt, hasfam[MPM_MAX_BODIES] = {PETSC_FALSE}; /* crk: a crack field has mass here */
+        PetscBool      rgap = PETSC_FALSE, rfull;                                                    /* a rigid body here (ct->rigid_gap), and the volumes fill f_r of the node */
         PetscInt       nbod = 0;                                                                     /* bodies with mass here                 */
         PetscReal      vs[MPM_MAX_BODIES][3];
         for (PetscInt b = 0; b < nf; b++)
           if (node[b][c].m > 0.0) {
             if (!hasfam[ct->fam[b]]) nbod++;
             hasfam[ct->fam[b]] = PETSC_TRUE;
+            rgap               = (PetscBool)(rgap || (ct->rigid_gap && b < nb && ct->rigid[b]));
             nin++;
             Vsum += geo[b][c].m;
             if (fam0 < 0 || (ct->fam[b] != fam0 && nfam < 2)) nfam++;
@@ -663,13 +682,14 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
           if ((w >> k) & 1) Vnode *= 0.5; /* a node on a symmetry plane holds half a cell: its points' images are not summed there */
         volgap = (PetscBool)(Vsum >= ct->fill * Vnode);
         gap    = (PetscBool)(ct->gap != MPM_CONTACT_GAP_VOLUME || volgap);
+        rfull  = (PetscBool)(Vsum >= ct->fill_rigid * Vnode);
         for (PetscInt k = 0; k < d; k++) vref[k] = 0.0;
         for (PetscInt f = nb; f < nf; f++) crk = (PetscBool)(crk || node[f][c].m > 0.0);
         endt = (PetscBool)(crk || nbod > 2); /* the node's energy tallied once, from its fields' first and last velocities */
         for (PetscInt b = 0; endt && b < nf; b++)
           for (PetscInt k = 0; k < d; k++) vs[b][k] = node[b][c].p[k];
         for (PetscInt f = nb; f < nf && !ctx->remap; f++) MPMContactCrackPair(ct, mpm, node, f, c, ct->gap == MPM_CONTACT_GAP_POSITION ? volgap : gap); /* a body and its crack field */
-        if (nfam > 1 && gap) { /* the bodies that meet here; with a crack field, each body's fields as one (their centre of mass), so that two bodies' corrections balance */
+        if (nfam > 1 && (gap || rgap)) { /* the bodies that meet here; with a crack field, each body's fields as one (their centre of mass), so that two bodies' corrections balance */
           MPMNode  *U[MPM_MAX_BODIES], agg[MPM_MAX_BODIES];
           PetscReal ub[MPM_MAX_BODIES][3]; /* each one's velocity before the corrections */
           PetscInt  uf[MPM_MAX_BODIES], nu = 0;
@@ -726,6 +746,7 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
             MPMContactNormalOf(ct, mpm, node, geo, b, c, n);
             if (ct->gap == MPM_CONTACT_GAP_SURFACE && ct->ext[ct->fam[b]][c] + ct->ext[ct->fam[uf[heavy[u]]]][c] < -1e-9 * g->hmin) continue; /* their surfaces apart along n */
             if (ct->gap == MPM_CONTACT_GAP_POSITION && MPMContactApart(ct, mpm, node, geo, n, b, uf[heavy[u]], c, ub[u], ub[heavy[u]], ctx->dt)) continue;
+            if (rgap && !rfull && MPMContactApart(ct, mpm, node, geo, n, b, uf[heavy[u]], c, ub[u], ub[heavy[u]], ctx->dt)) continue; /* beside a rigid body: f_r or the extents */
             if (!MPMContactCorrect(nd, d, n, vcm, vref, ct->mu[ct->fam[b]][ct->fam[uf[heavy[u]]]], &dn, vold, &wn, &wt)) continue;
             if (!endt && !ctx->remap) {
               geo[b][c].f[0] = wn + wt; /* heats the body's points there (MPMContactHeat) */
@@ -802,7 +823,7 @@ static PetscErrorCode MPMContactView(MPMModule mod, MPM mpm, PetscViewer viewer)
   MPMContact *ct = (MPMContact *)mod->data;
 
   PetscFunctionBegin;
-  PetscCall(PetscViewerASCIIPrintf(viewer, "contact between %" PetscInt_FMT " bodies: normal %s, fill %g, friction", mpm->nbodies, MPMContactNormals[ct->normal], (double)ct->fill));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "contact between %" PetscInt_FMT " bodies: normal %s, fill %g (%g beside a rigid body), friction", mpm->nbodies, MPMContactNormals[ct->normal], (double)ct->fill, (double)ct->fill_rigid));
   PetscCall(PetscViewerASCIIUseTabs(viewer, PETSC_FALSE));
   for (PetscInt a = 0; a < mpm->nbodies; a++)
     for (PetscInt b = a + 1; b < mpm->nbodies; b++) PetscCall(PetscViewerASCIIPrintf(viewer, " %s-%s %g", mpm->bodyname[a], mpm->bodyname[b], (double)ct->mu[a][b]));
@@ -918,6 +939,7 @@ PetscErrorCode MPMModuleCreate_Contact(MPMModule mod)
   PetscFunctionBegin;
   PetscCall(PetscNew(&ct));
   ct->fill                = 0.5;
+  ct->fill_rigid          = 0.95;
   ct->gap                 = MPM_CONTACT_GAP_VOLUME;
   ct->gid                 = -1;
   mod->data               = ct;
