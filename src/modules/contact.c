@@ -823,8 +823,10 @@ static PetscErrorCode MPMContactView(MPMModule mod, MPM mpm, PetscViewer viewer)
   MPMContact *ct = (MPMContact *)mod->data;
 
   PetscFunctionBegin;
-  PetscCall(PetscViewerASCIIPrintf(viewer, "contact between %" PetscInt_FMT " bodies: normal %s, fill %g (%g beside a rigid body), friction", mpm->nbodies, MPMContactNormals[ct->normal], (double)ct->fill, (double)ct->fill_rigid));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "contact between %" PetscInt_FMT " bodies: normal %s, fill %g", mpm->nbodies, MPMContactNormals[ct->normal], (double)ct->fill));
   PetscCall(PetscViewerASCIIUseTabs(viewer, PETSC_FALSE));
+  if (ct->rigid_gap) PetscCall(PetscViewerASCIIPrintf(viewer, " (%g or the extents beside a rigid body)", (double)ct->fill_rigid));
+  PetscCall(PetscViewerASCIIPrintf(viewer, ", friction"));
   for (PetscInt a = 0; a < mpm->nbodies; a++)
     for (PetscInt b = a + 1; b < mpm->nbodies; b++) PetscCall(PetscViewerASCIIPrintf(viewer, " %s-%s %g", mpm->bodyname[a], mpm->bodyname[b], (double)ct->mu[a][b]));
   PetscCall(PetscViewerASCIIPrintf(viewer, "\n"));
