@@ -4,8 +4,9 @@
    by temperature,
      m_p de_p = w_p (sum_I N_I(x_p) T_I - T_p),  T_I = sum_q N_I(x_q) w_q T_q / sum_q N_I(x_q) w_q,
      w_p = beta_p m_p c_v,p,  beta_p = min(1, C_h max(0, -tr L_p) dt),
-   with c_v,p = de/dT [erg/(g eV)] at the point's density from its EOS (MPMEOSHeatCapacity), div v_p and dt its last step's: a diffusion with
-   diffusivity about C_h h^2 |div v| [cm^2/s] where the step compressed (after Noh, J. Comput. Phys. 72 (1987) 78).
+   with c_v,p = de/dT [erg/(g eV)] at the point's density from its EOS (MPMEOSHeatCapacity), div v_p and dt its last
+   step's: a diffusion with diffusivity about C_h h^2 |div v| [cm^2/s] where the step compressed (after Noh, J. Comput.
+   Phys. 72 (1987) 78).
    The module sets the weights at the step's start; points to grid sums W_I and Q_I with the stencils it evaluates
    anyway, and grid to points, before it moves the points, changes e_p (MPMHeatScatter, src/transfer/transfer.h), so
    the exchange costs no stencil of its own. Internal energy is conserved to round-off, sum_p m_p de_p = 0; a point at
