@@ -10,8 +10,9 @@
 #   strong2d  the 2D bar of inputs/bar_impact_2d.opts at 600 x 2600 cells: 960,000 points
 #   solo3d    weak3d's one-rank bar run as RANKS independent one-rank jobs at once (no communication): what sharing
 #             the machine (memory bandwidth, the all-core clock) costs, apart from the exchanges. One line per copy
-#             ("copy": i); scaling.py sums the copies' rates. Copy i asks for core i (--cpu-set i --bind-to core) where
-#             the machine binds; inside ../shared/devkit's root Open MPI reported no binding for it.
+#             ("copy": i); scaling.py sums the copies' rates. Copy i runs on core i: taskset -c i where taskset is
+#             found (on PATH or ./taskset), else mpiexec --cpu-set i --bind-to core where the machine binds.
+# RESULTS.binding gets each rank's allowed CPUs (/proc/self/status) under the runs' mpiexec binding.
 # each in linear MUSL ("lin", the scene's own method) and in the program's default method ("def",
 # inputs/methods/cpdi1.opts), on every rank count of RANKS, REPEAT times interleaved (repeat-major, so that a drift of
 # the machine's speed touches every rank count alike), after one -log_view run of each method on 1 rank and on the
@@ -38,6 +39,11 @@ mpiexec -n 2 $bind $exe -help > /dev/null 2>&1 || bind="--bind-to none --oversub
   echo "{\"machine\": {\"cores\": $(nproc), \"cpu\": \"$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')\", \"bind\": \"$bind\"}}"
 } >> "$res"
 tmp=$(mktemp -d)
+# Where the ranks may run: each rank's allowed CPUs as the kernel sees them (Cpus_allowed_list), at the largest count.
+# solo3d pins copy i to core i with taskset where it exists (./taskset beside petmpm in ../shared/devkit's root).
+taskset=$(command -v taskset || { [[ -x ./taskset ]] && echo ./taskset; } || true)
+mpiexec -n "${ranks##* }" $bind grep Cpus_allowed_list /proc/self/status > "$res.binding" 2>&1
+[[ -n $taskset ]] && "$taskset" -c 3 grep Cpus_allowed_list /proc/self/status >> "$res.binding" 2>&1
 
 record() { # record REPORT LOG KEYS EXTRA: append {KEYS, EXTRA"report": REPORT} to RESULTS, or {KEYS, "failed": true} and LOG's tail
   if [[ -s $1 ]]; then
@@ -77,8 +83,9 @@ solo() { # solo CASE METHOD COPIES REP: COPIES one-rank runs of weak3d's bar at 
   [[ $m == def* ]] && args+=(-options_file inputs/methods/cpdi1.opts)
   for ((i = 0; i < n; i++)); do
     rm -rf "$tmp/o$i" "$tmp/r$i.json"
-    [[ $bind == *core* ]] && b=(--cpu-set "$i" --bind-to core)
-    mpiexec -n 1 "${b[@]}" $exe "${args[@]}" -ts_max_steps "$steps" -mpm_progress 0 -mpm_output "$tmp/o$i" \
+    pin=()
+    if [[ -n $taskset ]]; then pin=("$taskset" -c "$i"); elif [[ $bind == *core* ]]; then b=(--cpu-set "$i" --bind-to core); fi
+    "${pin[@]}" mpiexec -n 1 "${b[@]}" $exe "${args[@]}" -ts_max_steps "$steps" -mpm_progress 0 -mpm_output "$tmp/o$i" \
       -mpm_report "$tmp/r$i.json" > "$tmp/log$i" 2>&1 &
   done
   wait
