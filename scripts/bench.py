@@ -26,7 +26,7 @@ change) interleaved too, and the speed-up. The -log_view phase shares of each ca
 per point in 3D: the marginal process memory per point between two sizes (PETSc's -memory_view maximum), with block8
 in its method and with bardef in the default method; with bar1 and bardef (bar2d and bar2ddef) the default method's
 rate over the linear one on the same points. Last, the largest rank counts of --scaling (scripts/scaling_runs.sh's runs
-on the lent 16-core machine, docs/studies/scaling16/runs_1129a.jsonl by default), quoted as measured there.
+on the lent 16-core machine, docs/studies/scaling16/runs_1130.jsonl by default), quoted as measured there.
 """
 import argparse
 import os
@@ -102,7 +102,7 @@ def main():
     ap.add_argument("--cases", default="", help="comma-separated case names (default: every case); the memory figure comes with block8")
     ap.add_argument("--markdown", default="")
     ap.add_argument("--out", default=os.path.join("output", "bench"))
-    ap.add_argument("--scaling", default=os.path.join(SRC, "docs", "studies", "scaling16", "runs_1129a.jsonl"),
+    ap.add_argument("--scaling", default=os.path.join(SRC, "docs", "studies", "scaling16", "runs_1130.jsonl"),
                     help="scripts/scaling_runs.sh's runs on a many-core machine, whose largest rank counts are quoted ('' for none)")
     a = ap.parse_args()
     exe = os.path.abspath(os.path.join(a.build, "petmpm"))
