@@ -111,7 +111,7 @@ static PetscErrorCode MPMContactSetFromOptions(MPMModule mod, MPM mpm, PetscOpti
   PetscCall(MPMOptionsCheckRange("-mpm_contact_fill", ct->fill, 0.0, 1.0, PETSC_FALSE, PETSC_FALSE));
   PetscCall(PetscOptionsReal("-mpm_contact_fill_rigid",
                              "Volume gap test where one of the bodies is rigid (it fills half of its surface nodes alone): they touch where their volumes fill this fraction of the cell volume, or where their extents along the normal meet (the "
-                             "position test; linear, GIMP and CPDI shapes) [-], in [0, 1] (at most -mpm_contact_fill: as between deformable bodies)",
+                             "position test; linear, GIMP and CPDI shapes) [-], in [0, 1] (a value at most -mpm_contact_fill gives the test between deformable bodies)",
                              "", ct->fill_rigid, &ct->fill_rigid, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_contact_fill_rigid", ct->fill_rigid, 0.0, 1.0, PETSC_FALSE, PETSC_FALSE));
   for (PetscInt b = 0; b < mpm->nbodies; b++) {
