@@ -10,9 +10,11 @@
 #   strong2d  the 2D bar of inputs/bar_impact_2d.opts at 600 x 2600 cells: 960,000 points
 #   solo3d    weak3d's one-rank bar run as RANKS independent one-rank jobs at once (no communication): what sharing
 #             the machine (memory bandwidth, the all-core clock) costs, apart from the exchanges. One line per copy
-#             ("copy": i); scaling.py sums the copies' rates. Copy i runs on core i: taskset -c i where taskset is
-#             found (on PATH or ./taskset), else mpiexec --cpu-set i --bind-to core where the machine binds.
-# RESULTS.binding gets each rank's allowed CPUs (/proc/self/status) under the runs' mpiexec binding.
+#             ("copy": i); scaling.py sums the copies' rates. Copy i runs on the i-th CPU the script may use: taskset
+#             where it is found (on PATH or ./taskset) and there are as many CPUs as copies, else mpiexec --cpu-set i
+#             --bind-to core where the machine binds.
+# RESULTS.binding gets each rank's allowed CPUs (/proc/self/status) under the runs' mpiexec binding, and a taskset
+# copy's under mpiexec --bind-to none.
 # each in linear MUSL ("lin", the scene's own method) and in the program's default method ("def",
 # inputs/methods/cpdi1.opts), on every rank count of RANKS, REPEAT times interleaved (repeat-major, so that a drift of
 # the machine's speed touches every rank count alike), after one -log_view run of each method on 1 rank and on the
@@ -34,16 +36,21 @@ budget=${5:-480}
 exe=./petmpm
 t0=$(date +%s)
 bind="--map-by core --bind-to core"
-mpiexec -n 2 $bind $exe -help > /dev/null 2>&1 || bind="--bind-to none --oversubscribe"
+mpiexec -n "${ranks##* }" $bind $exe -help > /dev/null 2>&1 || bind="--bind-to none --oversubscribe" # every count binds, or none
 {
   echo "{\"machine\": {\"cores\": $(nproc), \"cpu\": \"$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')\", \"bind\": \"$bind\"}}"
 } >> "$res"
 tmp=$(mktemp -d)
 # Where the ranks may run: each rank's allowed CPUs as the kernel sees them (Cpus_allowed_list), at the largest count.
-# solo3d pins copy i to core i with taskset where it exists (./taskset beside petmpm in ../shared/devkit's root).
+# solo3d pins copy i to the i-th CPU this script may use (cpus) with taskset where it exists (./taskset beside petmpm
+# in ../shared/devkit's root) and there are enough of them; else the copies go unpinned (--bind-to none).
 taskset=$(command -v taskset || { [[ -x ./taskset ]] && echo ./taskset; } || true)
-mpiexec -n "${ranks##* }" $bind grep Cpus_allowed_list /proc/self/status > "$res.binding" 2>&1
-[[ -n $taskset ]] && "$taskset" -c 3 grep Cpus_allowed_list /proc/self/status >> "$res.binding" 2>&1
+cpus=()
+for r in $(sed -n 's/^Cpus_allowed_list:[[:space:]]*//p' /proc/self/status | tr ',' ' '); do
+  if [[ $r == *-* ]]; then for ((c = ${r%-*}; c <= ${r#*-}; c++)); do cpus+=("$c"); done; else cpus+=("$r"); fi
+done
+mpiexec -n "${ranks##* }" $bind bash -c 'echo "rank ${OMPI_COMM_WORLD_RANK:-?}: $(grep Cpus_allowed_list /proc/self/status)"' > "$res.binding" 2>&1
+[[ -n $taskset ]] && echo "taskset -c ${cpus[0]} then mpiexec --bind-to none: $("$taskset" -c "${cpus[0]}" mpiexec -n 1 --bind-to none grep Cpus_allowed_list /proc/self/status 2>&1)" >> "$res.binding"
 
 record() { # record REPORT LOG KEYS EXTRA: append {KEYS, EXTRA"report": REPORT} to RESULTS, or {KEYS, "failed": true} and LOG's tail
   if [[ -s $1 ]]; then
@@ -84,8 +91,10 @@ solo() { # solo CASE METHOD COPIES REP: COPIES one-rank runs of weak3d's bar at 
   for ((i = 0; i < n; i++)); do
     rm -rf "$tmp/o$i" "$tmp/r$i.json"
     pin=()
-    if [[ -n $taskset ]]; then pin=("$taskset" -c "$i"); elif [[ $bind == *core* ]]; then b=(--cpu-set "$i" --bind-to core); fi
-    "${pin[@]}" mpiexec -n 1 "${b[@]}" $exe "${args[@]}" -ts_max_steps "$steps" -mpm_progress 0 -mpm_output "$tmp/o$i" \
+    if ((n <= ${#cpus[@]})); then # a CPU each; else unpinned
+      if [[ -n $taskset ]]; then pin=("$taskset" -c "${cpus[i]}"); elif [[ $bind == *core* ]]; then b=(--cpu-set "${cpus[i]}" --bind-to core); fi
+    fi
+    ${pin[@]+"${pin[@]}"} mpiexec -n 1 "${b[@]}" $exe "${args[@]}" -ts_max_steps "$steps" -mpm_progress 0 -mpm_output "$tmp/o$i" \
       -mpm_report "$tmp/r$i.json" > "$tmp/log$i" 2>&1 &
   done
   wait

@@ -20,8 +20,8 @@ typedef struct {
 
 /* The least share beta_p a point exchanges: below it, a step's compression too slight to make a shock (at C_h = 2, a
    volume change under 5e-7 in the step), the exchange is skipped. Measured against 1e-10: the 1D tubes' and the planar
-   Sedov blast's L1 errors and the r-z Taylor rod within 4e-6 relative; half the points of the default 3D bar, in its
-   elastic wave's noise, no longer exchange (docs/performance.md, "The heat exchange's least share"). */
+   Sedov blast's L1 errors and the r-z Taylor rod within 4e-6 relative; 22 to 40% of the default 3D bar's points, in
+   its elastic waves' noise, no longer exchange (docs/performance.md, "The heat exchange's least share"). */
 #define MPM_CONDUCTION_BETA_MIN 1e-6
 
 static PetscErrorCode MPMConductionSetFromOptions(MPMModule mod, MPM mpm, PetscOptionItems *PetscOptionsObject)
