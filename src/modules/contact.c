@@ -11,7 +11,8 @@
    its mass field at the node: it points out of the body): -mpm_contact_normal average (default), n_b along
    g_b - sum_{c != b} g_c (the two bodies' normals averaged, equal and opposite for two bodies, so that momentum is
    conserved exactly), or mass, along g_b; where a rigid body is present, minus the rigid body's own normal (its
-   surface is exact: the averaged normal tilts at a block's corners and slowed a frictionless block on an incline).
+   surface is exact: the averaged normal tilts at a block's corners and slowed a frictionless block on an incline),
+   taken from its geometry where it is one region (its polygon, box or shell), else from its mass gradient.
    Gap test (-mpm_contact_gap): volume (default), the bodies touch at node I only where their volumes there fill it,
    sum_b sum_p N_I(x_p) V_p >= f V_I, V_I the node's share of the cells (r-z: times r_I; half a cell for each symmetry plane the node lies on), f = -mpm_contact_fill (default 0.5; the
    approach test alone, none, lets bodies meet a cell early: the disks of inputs/disks_2d.opts lose 12% of their
@@ -55,6 +56,8 @@ typedef struct {
   PetscBool        rigid[MPM_MAX_BODIES];                                        /* -body_<b>_rigid_velocity given                  */
   MPMTable         vtab[MPM_MAX_BODIES];                                         /* its velocity over time (-body_<b>_rigid_velocity[_times]) [cm/s] */
   PetscReal        vrigid[MPM_MAX_BODIES][3];                                    /* its velocity in this kick, v(t^n + dt_n / 2) [cm/s] */
+  PetscInt         rreg[MPM_MAX_BODIES];                                         /* its one region, whose geometry gives its normals, or -1 (several)  */
+  PetscReal        shift[MPM_MAX_BODIES][3];                                     /* its displacement from t = 0 to t^n, int v dt [cm] */
   Vec              geo[MPM_MAX_BODIES];                                          /* per body, ghosted local nodes: m = sum N V_p, p = grad m (MPMNode layout) */
   PetscInt         gid;                                                          /* the grid the vectors were made for (MPMGrid::id)   */
   char            *shared;                                                       /* per local node: two or more bodies have mass there */
@@ -121,6 +124,9 @@ static PetscErrorCode MPMContactSetFromOptions(MPMModule mod, MPM mpm, PetscOpti
                               "A rigid body: its prescribed velocity, one value per dimension [cm/s], or one row per time of -body_<b>_rigid_velocity_times (linear in between); it takes part in contact and the report gives the contact force on it",
                               mpm->grid.dim, &ct->vtab[b], &ct->rigid[b]));
     if (ct->rigid[b]) MPMTableEval(&ct->vtab[b], 0.0, ct->vrigid[b]);
+    ct->rreg[b] = -1;
+    for (PetscInt r = 0, nr = 0; ct->rigid[b] && r < mpm->nreg; r++)
+      if (mpm->reg[r].body == b) ct->rreg[b] = nr++ ? -1 : r;
     for (PetscInt r = 0; ct->rigid[b] && r < mpm->nreg; r++) { /* its points start at its velocity: nothing would change theirs */
       PetscCheck(mpm->reg[r].body != b || mpm->reg[r].vradial == 0.0, mpm->comm, PETSC_ERR_USER_INPUT, "%s: region %s of the rigid body has a radial velocity (-region_%s_velocity_radial %g); valid is 0", opt, mpm->reg[r].name, mpm->reg[r].name,
                  (double)mpm->reg[r].vradial);
@@ -319,8 +325,80 @@ static PetscInt MPMContactOnWall(MPM mpm, PetscInt c)
   return w;
 }
 
+/* int_0^t v dt of a velocity table (linear between its rows, held beyond them): the trapezoid rule between the rows,
+   exact [cm]. */
+static void MPMContactTableIntegral(const MPMTable *tab, PetscReal t, PetscReal s[])
+{
+  PetscReal a = 0.0, va[3], vb[3];
+
+  for (PetscInt k = 0; k < tab->dim; k++) s[k] = 0.0;
+  MPMTableEval(tab, 0.0, va);
+  for (PetscInt i = 0; i <= tab->n && a < t; i++) {
+    const PetscReal b = i < tab->n ? PetscMin(t, tab->t[i]) : t;
+    if (!(b > a)) continue;
+    MPMTableEval(tab, b, vb);
+    for (PetscInt k = 0; k < tab->dim; k++) {
+      s[k] += 0.5 * (b - a) * (va[k] + vb[k]);
+      va[k] = vb[k];
+    }
+    a = b;
+  }
+}
+
+/* Rigid body rb's outward unit normal at node c from its region's geometry, where the body has one region: the face of
+   its polygon, else of its box, or of its shell (-rmin, -rmax), nearest to where the node lay when the body started
+   (x_I less the body's displacement), faces on the grid's boundary left out (nothing meets them). Its surface is exact: the mass
+   gradient of a surface that crosses the cells, at one point per cell a staircase, scattered by 20 to 40 degrees and
+   braked a frictionless block on a rigid wedge by 18% (docs/contact.md). False where the body has several regions,
+   or a closed surface (-region_<r>_surface), or no face is found: its mass gradient then. */
+static PetscBool MPMContactRigidShapeNormal(const MPMContact *ct, MPM mpm, PetscInt rb, PetscInt c, PetscReal n[])
+{
+  const MPMGrid   *g = &mpm->grid;
+  const PetscInt   d = g->dim, ic[3] = {c % g->gm[0], (c / g->gm[0]) % g->gm[1], c / (g->gm[0] * g->gm[1])};
+  const MPMRegion *reg;
+  PetscReal        x[MPM_MAX_DIM] = {0, 0, 0}, best = PETSC_MAX_REAL, dist, nk[MPM_MAX_DIM], r2 = 0.0, dr[MPM_MAX_DIM] = {0, 0, 0};
+
+  if (rb < 0 || rb >= mpm->nbodies || ct->rreg[rb] < 0) return PETSC_FALSE;
+  reg = &mpm->reg[ct->rreg[rb]];
+  for (PetscInt k = 0; k < d; k++) {
+    x[k] = g->lo[k] + (g->gs[k] + ic[k]) * g->h[k] - ct->shift[rb][k];
+    if (k != reg->axis) {
+      dr[k] = x[k] - reg->center[k];
+      r2 += dr[k] * dr[k];
+    }
+  }
+  if (reg->outline) {
+    if (!MPMOutlineNearestEdge(reg->outline, x, g->lo, g->hi, &dist, nk)) return PETSC_FALSE;
+    best = dist;
+    for (PetscInt k = 0; k < d; k++) n[k] = nk[k];
+  }
+  for (PetscInt k = 0; k < d && !reg->outline; k++) { /* the box's faces inside the grid (with a polygon, its bounding box) */
+    if (reg->lo[k] > g->lo[k] && PetscAbsReal(x[k] - reg->lo[k]) < best) {
+      best = PetscAbsReal(x[k] - reg->lo[k]);
+      for (PetscInt j = 0; j < d; j++) n[j] = j == k ? -1.0 : 0.0;
+    }
+    if (reg->hi[k] < g->hi[k] && PetscAbsReal(reg->hi[k] - x[k]) < best) {
+      best = PetscAbsReal(reg->hi[k] - x[k]);
+      for (PetscInt j = 0; j < d; j++) n[j] = j == k ? 1.0 : 0.0;
+    }
+  }
+  if (r2 > 0.0) { /* the shell's spheres or cylinders */
+    const PetscReal r = PetscSqrtReal(r2);
+    if (reg->rmax < PETSC_MAX_REAL && PetscAbsReal(r - reg->rmax) < best) {
+      best = PetscAbsReal(r - reg->rmax);
+      for (PetscInt j = 0; j < d; j++) n[j] = dr[j] / r;
+    }
+    if (reg->rmin > 0.0 && PetscAbsReal(r - reg->rmin) < best) {
+      best = PetscAbsReal(r - reg->rmin);
+      for (PetscInt j = 0; j < d; j++) n[j] = -dr[j] / r;
+    }
+  }
+  return (PetscBool)(best < PETSC_MAX_REAL);
+}
+
 /* Minus the outward normal of rigid body rb at node c into n, where its surface is (|g| h >= m / 10: not in its
-   interior, where the gradient vanishes); false elsewhere. */
+   interior, where the gradient vanishes); false elsewhere. The normal is its geometry's where it has one
+   (MPMContactRigidShapeNormal), else its mass gradient's. */
 static PetscBool MPMContactRigidNormal(const MPMContact *ct, MPM mpm, MPMNode *const *node, MPMNode *const *geo, PetscInt rb, PetscInt c, PetscReal n[])
 {
   const PetscInt d = mpm->grid.dim, nb = ct->nf;
@@ -328,7 +406,7 @@ static PetscBool MPMContactRigidNormal(const MPMContact *ct, MPM mpm, MPMNode *c
 
   for (PetscInt k = 0; k < d; k++) g2 += PetscSqr(geo[rb][c].p[k]);
   if (!(node[rb][c].m > 0.0) || g2 * PetscSqr(mpm->grid.hmin) < 0.01 * PetscSqr(mpm->grid.axisym ? geo[rb][c].v0[0] : node[rb][c].m) || (mpm->grid.axisym && !(geo[rb][c].v0[0] > 0.0))) return PETSC_FALSE;
-  MPMContactNormalAt(ct, d, nb, rb, geo, c, PETSC_TRUE, n);
+  if (!MPMContactRigidShapeNormal(ct, mpm, rb, c, n)) MPMContactNormalAt(ct, d, nb, rb, geo, c, PETSC_TRUE, n);
   for (PetscInt k = 0; k < d; k++) n[k] = -n[k];
   return PETSC_TRUE;
 }
@@ -353,7 +431,7 @@ static void MPMContactNormalOf(const MPMContact *ct, MPM mpm, MPMNode *const *no
   for (PetscInt o = 0; o < nb && !ct->rigid[b]; o++)
     if (o != b && ct->rigid[o] && node[o][c].m > 0.0) rb = o;
   if (ct->rigid[b]) {
-    MPMContactNormalAt(ct, d, nb, b, geo, c, PETSC_TRUE, n);
+    if (!MPMContactRigidShapeNormal(ct, mpm, b, c, n)) MPMContactNormalAt(ct, d, nb, b, geo, c, PETSC_TRUE, n);
     found = PETSC_TRUE;
   } else if (rb >= 0)
     found = MPMContactRigidNormal(ct, mpm, node, geo, rb, c, n);
@@ -644,6 +722,7 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
       if (!ct->rigid[b]) continue;
       MPMTableEval(&ct->vtab[b], ctx->tn + 0.5 * ctx->dt, ct->vrigid[b]);
       MPMTableEval(&ct->vtab[b], ctx->tn + 0.5 * ctx->dt - ctx->kick, vold);
+      MPMContactTableIntegral(&ct->vtab[b], ctx->tn, ct->shift[b]); /* where its points are at t^n */
       MPMBodyBox(mpm, b, &blo, &bhi);
       for (PetscInt i2 = blo[2]; i2 < bhi[2]; i2++)
         for (PetscInt i1 = blo[1]; i1 < bhi[1]; i1++)

@@ -110,6 +110,41 @@ static PetscBool MPMSurfaceContains(const MPMOutline o, const PetscReal xin[])
   return in;
 }
 
+/* A polygon's edge nearest to x, leaving out the edges that lie on the face of the box lo .. hi (the grid's: beyond it
+   nothing touches them): its distance from x [cm] and its outward unit normal n; false for a closed surface or where
+   every edge lies on the box. The vertices run either way: the normal is turned to point away from the polygon's
+   interior (the sign of its area). */
+PetscBool MPMOutlineNearestEdge(const MPMOutline o, const PetscReal x[], const PetscReal lo[], const PetscReal hi[], PetscReal *dist, PetscReal n[])
+{
+  PetscReal best = PETSC_MAX_REAL, area = 0.0;
+
+  if (o->dim != 2) return PETSC_FALSE;
+  for (PetscInt i = 0, j = o->n - 1; i < o->n; j = i++) area += o->v[2 * j] * o->v[2 * i + 1] - o->v[2 * i] * o->v[2 * j + 1]; /* twice the signed area */
+  for (PetscInt i = 0, j = o->n - 1; i < o->n; j = i++) {
+    const PetscReal ax = o->v[2 * j], ay = o->v[2 * j + 1], bx = o->v[2 * i], by = o->v[2 * i + 1], ex = bx - ax, ey = by - ay, l2 = ex * ex + ey * ey;
+    PetscReal       t, dx, dy, d2;
+    PetscBool       onbox = PETSC_FALSE;
+    for (PetscInt k = 0; k < 2; k++) {
+      const PetscReal a = k ? ay : ax, b = k ? by : bx;
+      onbox = (PetscBool)(onbox || (a <= lo[k] && b <= lo[k]) || (a >= hi[k] && b >= hi[k]));
+    }
+    if (onbox || !(l2 > 0.0)) continue;
+    t  = PetscMin(1.0, PetscMax(0.0, ((x[0] - ax) * ex + (x[1] - ay) * ey) / l2));
+    dx = x[0] - (ax + t * ex);
+    dy = x[1] - (ay + t * ey);
+    d2 = dx * dx + dy * dy;
+    if (d2 < best) { /* the edge's right-hand normal (ey, -ex) points out of a counter-clockwise polygon */
+      const PetscReal s = (area > 0.0 ? 1.0 : -1.0) / PetscSqrtReal(l2);
+      best              = d2;
+      n[0]              = s * ey;
+      n[1]              = -s * ex;
+    }
+  }
+  if (best >= PETSC_MAX_REAL) return PETSC_FALSE;
+  *dist = PetscSqrtReal(best);
+  return PETSC_TRUE;
+}
+
 PetscBool MPMOutlineContains(const MPMOutline o, const PetscReal x[])
 {
   return o->dim == 2 ? MPMPolygonContains(o, x) : MPMSurfaceContains(o, x);
