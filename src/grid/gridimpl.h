@@ -219,6 +219,14 @@ static inline void MPMGridCellBasis(const MPMGrid *g, const PetscInt ijk[], MPMS
   MPMShapeTensor(g, nn, idx, w, dw, sg, st);
 }
 
+/* The indices along each direction of the ghosted-local node c (flat). */
+static inline void MPMGridNodeIndices(const MPMGrid *g, PetscInt c, PetscInt i[])
+{
+  i[0] = c % g->gm[0];
+  i[1] = (c / g->gm[0]) % g->gm[1];
+  i[2] = c / (g->gm[0] * g->gm[1]);
+}
+
 /* The ghosted-local index of the first node of the cell that holds x (clamped to the ghosted box). */
 static inline PetscInt MPMGridCellNode(const MPMGrid *g, const PetscReal x[])
 {

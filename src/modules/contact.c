@@ -314,10 +314,10 @@ static void MPMContactNormalAt(const MPMContact *ct, PetscInt d, PetscInt nb, Pe
 /* Bit k set: the ghosted-local node c lies on a wall (a symmetry plane) normal to direction k. */
 static PetscInt MPMContactOnWall(MPM mpm, PetscInt c)
 {
-  const MPMGrid *g    = &mpm->grid;
-  const PetscInt i[3] = {c % g->gm[0], (c / g->gm[0]) % g->gm[1], c / (g->gm[0] * g->gm[1])};
-  PetscInt       w    = 0;
+  const MPMGrid *g = &mpm->grid;
+  PetscInt       i[3], w = 0;
 
+  MPMGridNodeIndices(g, c, i);
   for (PetscInt k = 0; k < g->dim; k++) {
     const PetscInt gi = i[k] + g->gs[k];
     if ((gi == 0 && mpm->bc_lo[k] == MPM_BC_WALL) || (gi == g->cells[k] && mpm->bc_hi[k] == MPM_BC_WALL)) w |= 1 << k;
@@ -354,12 +354,14 @@ static void MPMContactTableIntegral(const MPMTable *tab, PetscReal t, PetscReal 
 static PetscBool MPMContactRigidShapeNormal(const MPMContact *ct, MPM mpm, PetscInt rb, PetscInt c, PetscReal n[])
 {
   const MPMGrid   *g = &mpm->grid;
-  const PetscInt   d = g->dim, ic[3] = {c % g->gm[0], (c / g->gm[0]) % g->gm[1], c / (g->gm[0] * g->gm[1])};
+  const PetscInt   d = g->dim;
+  PetscInt         ic[3];
   const MPMRegion *reg;
   PetscReal        x[MPM_MAX_DIM] = {0, 0, 0}, best = PETSC_MAX_REAL, dist, nk[MPM_MAX_DIM], r2 = 0.0, dr[MPM_MAX_DIM] = {0, 0, 0};
 
   if (rb < 0 || rb >= mpm->nbodies || ct->rreg[rb] < 0) return PETSC_FALSE;
   reg = &mpm->reg[ct->rreg[rb]];
+  MPMGridNodeIndices(g, c, ic);
   for (PetscInt k = 0; k < d; k++) {
     x[k] = g->lo[k] + (g->gs[k] + ic[k]) * g->h[k] - ct->shift[rb][k];
     if (k != reg->axis) {

@@ -63,6 +63,7 @@ struct _n_MPMOutline {
   PetscReal *v;      /* polygon: x, y per vertex; surface: 9 per triangle */
   PetscReal  lo[3], hi[3];
   PetscReal  volume; /* area (2D), revolved volume per radian (r-z) or enclosed volume (3D) [cm^d] */
+  PetscReal  orient; /* polygon: +1 where its vertices run counter-clockwise, -1 clockwise (the sign of its area) */
   PetscReal  eps[3]; /* the surface's ray offset [cm] */
   PetscInt   nb[2];  /* bins along y and z */
   PetscInt  *bstart; /* CSR: the triangles of bin b are bidx[bstart[b] .. bstart[b + 1]) */
@@ -113,13 +114,12 @@ static PetscBool MPMSurfaceContains(const MPMOutline o, const PetscReal xin[])
 /* A polygon's edge nearest to x, leaving out the edges that lie on the face of the box lo .. hi (the grid's: beyond it
    nothing touches them): its distance from x [cm] and its outward unit normal n; false for a closed surface or where
    every edge lies on the box. The vertices run either way: the normal is turned to point away from the polygon's
-   interior (the sign of its area). */
+   interior (MPMOutline::orient). */
 PetscBool MPMOutlineNearestEdge(const MPMOutline o, const PetscReal x[], const PetscReal lo[], const PetscReal hi[], PetscReal *dist, PetscReal n[])
 {
-  PetscReal best = PETSC_MAX_REAL, area = 0.0;
+  PetscReal best = PETSC_MAX_REAL;
 
   if (o->dim != 2) return PETSC_FALSE;
-  for (PetscInt i = 0, j = o->n - 1; i < o->n; j = i++) area += o->v[2 * j] * o->v[2 * i + 1] - o->v[2 * i] * o->v[2 * j + 1]; /* twice the signed area */
   for (PetscInt i = 0, j = o->n - 1; i < o->n; j = i++) {
     const PetscReal ax = o->v[2 * j], ay = o->v[2 * j + 1], bx = o->v[2 * i], by = o->v[2 * i + 1], ex = bx - ax, ey = by - ay, l2 = ex * ex + ey * ey;
     PetscReal       t, dx, dy, d2;
@@ -134,7 +134,7 @@ PetscBool MPMOutlineNearestEdge(const MPMOutline o, const PetscReal x[], const P
     dy = x[1] - (ay + t * ey);
     d2 = dx * dx + dy * dy;
     if (d2 < best) { /* the edge's right-hand normal (ey, -ex) points out of a counter-clockwise polygon */
-      const PetscReal s = (area > 0.0 ? 1.0 : -1.0) / PetscSqrtReal(l2);
+      const PetscReal s = o->orient / PetscSqrtReal(l2);
       best              = d2;
       n[0]              = s * ey;
       n[1]              = -s * ex;
@@ -151,7 +151,7 @@ PetscBool MPMOutlineContains(const MPMOutline o, const PetscReal x[])
 }
 
 /* Area (2D) or per-radian revolved volume about x = 0 (r-z: int r dA = A r_c) of the polygon, shoelace formulas. */
-static PetscReal MPMPolygonVolume(const MPMOutline o, PetscBool axisym)
+static PetscReal MPMPolygonVolume(const MPMOutline o, PetscBool axisym, PetscReal *orient)
 {
   PetscReal A = 0.0, Ar = 0.0;
 
@@ -160,6 +160,7 @@ static PetscReal MPMPolygonVolume(const MPMOutline o, PetscBool axisym)
     A += 0.5 * c;
     Ar += c * (xi + xj) / 6.0;
   }
+  *orient = A > 0.0 ? 1.0 : -1.0;
   return PetscAbsReal(axisym ? Ar : A);
 }
 
@@ -407,7 +408,7 @@ PetscErrorCode MPMOutlineSetFromOptions(PetscOptionItems *PetscOptionsObject, MP
         (*o)->lo[k] = PetscMin((*o)->lo[k], (*o)->v[2 * i + k]);
         (*o)->hi[k] = PetscMax((*o)->hi[k], (*o)->v[2 * i + k]);
       }
-    (*o)->volume = MPMPolygonVolume(*o, mpm->grid.axisym);
+    (*o)->volume = MPMPolygonVolume(*o, mpm->grid.axisym, &(*o)->orient);
     PetscCheck((*o)->volume > 0.0, mpm->comm, PETSC_ERR_USER_INPUT, "-%spolygon: the polygon encloses no area", prefix);
     PetscCheck(!mpm->grid.axisym || (*o)->lo[0] >= 0.0, mpm->comm, PETSC_ERR_USER_INPUT, "-%spolygon: in r-z a profile lies at r >= 0; vertex r down to %g", prefix, (double)(*o)->lo[0]);
   }
