@@ -8,6 +8,10 @@ usage:
       tip at z = Z pointing down -z: the (r, z) profile as a polygon file (N points along the nose) for r-z scenes,
       and the surface of revolution (M segments around) as a binary STL for 3D scenes, its axis along z through
       x = y = 0. Prints the volume of each: the profile's revolved volume per radian (Pappus) and the mesh's.
+  scripts/outline.py prism --polygon X1,Y1,X2,Y2,... --depth W0,W1 [--turn DEG] --stl FILE
+      a convex polygon in (x, y) extruded along z from W0 to W1, then turned by DEG about the y axis
+      (x' = x cos DEG + z sin DEG, z' = z cos DEG - x sin DEG): a 3D body whose faces cross the grid's cells (the
+      rigid wedge and the block of inputs/wedge_3d.opts).
   scripts/outline.py torus --R R --a A [--center X,Y,Z] [--n N] [--stl FILE]
       a torus (tube radius A about a circle of radius R in the xy plane): a non-convex closed surface.
 
@@ -93,6 +97,27 @@ def torus(R, a, center=(0.0, 0.0, 0.0), n=48):
     return np.array(tris)
 
 
+def prism(poly, w0, w1, turn=0.0):
+    """Triangles of the convex polygon poly ((n, 2) vertices in (x, y), in order) extruded along z from w0 to w1 and
+    turned by turn degrees about the y axis: two fans for the caps, two triangles per side."""
+    poly = np.asarray(poly, float)
+    e = np.roll(poly, -1, axis=0) - poly
+    cross = e[:, 0] * np.roll(e, -1, axis=0)[:, 1] - e[:, 1] * np.roll(e, -1, axis=0)[:, 0]
+    if not (np.all(cross > 0) or np.all(cross < 0)):
+        raise SystemExit("prism: the polygon must be convex (its caps are fans)")
+    c, s = math.cos(math.radians(turn)), math.sin(math.radians(turn))
+    P = lambda q, w: (q[0] * c + w * s, q[1], w * c - q[0] * s)
+    tris = []
+    for i in range(1, len(poly) - 1):
+        tris.append((P(poly[0], w0), P(poly[i + 1], w0), P(poly[i], w0)))
+        tris.append((P(poly[0], w1), P(poly[i], w1), P(poly[i + 1], w1)))
+    for i in range(len(poly)):
+        a, b = poly[i], poly[(i + 1) % len(poly)]
+        tris.append((P(a, w0), P(b, w0), P(b, w1)))
+        tris.append((P(a, w0), P(b, w1), P(a, w1)))
+    return np.array(tris)
+
+
 def mesh_volume(tris):
     """Enclosed volume of a closed triangle mesh: |sum x0 . (x1 x x2)| / 6."""
     return abs(np.einsum("ij,ij->i", tris[:, 0], np.cross(tris[:, 1], tris[:, 2])).sum()) / 6.0
@@ -129,6 +154,11 @@ def main():
     o.add_argument("--segments", type=int, default=48)
     o.add_argument("--profile")
     o.add_argument("--stl")
+    p = sub.add_parser("prism")
+    p.add_argument("--polygon", required=True)
+    p.add_argument("--depth", required=True)
+    p.add_argument("--turn", type=float, default=0.0)
+    p.add_argument("--stl", required=True)
     t = sub.add_parser("torus")
     t.add_argument("--R", type=float, required=True)
     t.add_argument("--a", type=float, required=True)
@@ -145,6 +175,12 @@ def main():
             tris = revolve(pts, args.segments)
             write_stl(args.stl, tris)
             print(f"surface: {len(tris)} triangles, volume {mesh_volume(tris):.9g} cm^3")
+    elif args.kind == "prism":
+        xy = [float(v) for v in args.polygon.split(",")]
+        w0, w1 = (float(v) for v in args.depth.split(","))
+        tris = prism(np.reshape(xy, (-1, 2)), w0, w1, args.turn)
+        write_stl(args.stl, tris)
+        print(f"surface: {len(tris)} triangles, volume {mesh_volume(tris):.9g} cm^3")
     else:
         tris = torus(args.R, args.a, tuple(float(c) for c in args.center.split(",")), args.n)
         write_stl(args.stl, tris)

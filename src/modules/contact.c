@@ -346,11 +346,11 @@ static void MPMContactTableIntegral(const MPMTable *tab, PetscReal t, PetscReal 
 }
 
 /* Rigid body rb's outward unit normal at node c from its region's geometry, where the body has one region: the face of
-   its polygon, else of its box, or of its shell (-rmin, -rmax), nearest to where the node lay when the body started
-   (x_I less the body's displacement), faces on the grid's boundary left out (nothing meets them). Its surface is exact: the mass
-   gradient of a surface that crosses the cells, at one point per cell a staircase, scattered by 20 to 40 degrees and
-   braked a frictionless block on a rigid wedge by 18% (docs/contact.md). False where the body has several regions,
-   or a closed surface (-region_<r>_surface), or no face is found: its mass gradient then. */
+   its polygon or closed surface (-region_<r>_surface), else of its box, or of its shell (-rmin, -rmax), nearest to where
+   the node lay when the body started (x_I less the body's displacement), faces on the grid's boundary left out (nothing
+   meets them). Its surface is exact: the mass gradient of a surface that crosses the cells, at one point per cell a
+   staircase, scattered by 20 to 40 degrees and braked a frictionless block on a rigid wedge by 18% in 2D and 21% in 3D
+   (docs/contact.md). False where the body has several regions or no face is found: its mass gradient then. */
 static PetscBool MPMContactRigidShapeNormal(const MPMContact *ct, MPM mpm, PetscInt rb, PetscInt c, PetscReal n[])
 {
   const MPMGrid   *g = &mpm->grid;
@@ -370,7 +370,7 @@ static PetscBool MPMContactRigidShapeNormal(const MPMContact *ct, MPM mpm, Petsc
     }
   }
   if (reg->outline) {
-    if (!MPMOutlineNearestEdge(reg->outline, x, g->lo, g->hi, &dist, nk)) return PETSC_FALSE;
+    if (!MPMOutlineNearestFace(reg->outline, x, g->lo, g->hi, &dist, nk)) return PETSC_FALSE;
     best = dist;
     for (PetscInt k = 0; k < d; k++) n[k] = nk[k];
   }

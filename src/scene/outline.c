@@ -68,6 +68,10 @@ struct _n_MPMOutline {
   PetscInt   nb[2];  /* bins along y and z */
   PetscInt  *bstart; /* CSR: the triangles of bin b are bidx[bstart[b] .. bstart[b + 1]) */
   PetscInt  *bidx;
+  PetscReal *nrm;    /* surface: each triangle's outward unit normal (0 for a triangle of no area) */
+  PetscInt   fb[3];  /* surface: bins of the nearest-face search along x, y, z over lo .. hi */
+  PetscInt  *fstart; /* CSR: the triangles whose boxes meet face bin b are fidx[fstart[b] .. fstart[b + 1]) */
+  PetscInt  *fidx;
   char       source[PETSC_MAX_PATH_LEN];
 };
 
@@ -111,24 +115,123 @@ static PetscBool MPMSurfaceContains(const MPMOutline o, const PetscReal xin[])
   return in;
 }
 
-/* A polygon's edge nearest to x, leaving out the edges that lie on the face of the box lo .. hi (the grid's: beyond it
-   nothing touches them): its distance from x [cm] and its outward unit normal n; false for a closed surface or where
-   every edge lies on the box. The vertices run either way: the normal is turned to point away from the polygon's
-   interior (MPMOutline::orient). */
-PetscBool MPMOutlineNearestEdge(const MPMOutline o, const PetscReal x[], const PetscReal lo[], const PetscReal hi[], PetscReal *dist, PetscReal n[])
+/* Whether a polygon's edge (d = 2: two vertices of 2 coordinates) or a surface's triangle (d = 3: three of 3) lies on
+   a face of the box lo .. hi: all its vertices at or beyond one of the box's faces. */
+static PetscBool MPMOutlineOnBox(PetscInt d, const PetscReal *v, const PetscReal lo[], const PetscReal hi[])
+{
+  for (PetscInt k = 0; k < d; k++) {
+    PetscBool below = PETSC_TRUE, above = PETSC_TRUE;
+    for (PetscInt c = 0; c < d; c++) {
+      below = (PetscBool)(below && v[d * c + k] <= lo[k]);
+      above = (PetscBool)(above && v[d * c + k] >= hi[k]);
+    }
+    if (below || above) return PETSC_TRUE;
+  }
+  return PETSC_FALSE;
+}
+
+/* The squared distance from p to the triangle t (9 coordinates) [cm^2]: its closest point by the triangle's Voronoi
+   regions (Ericson, Real-Time Collision Detection, 2005, sec. 5.1.5). */
+static PetscReal MPMTriangleDistance2(const PetscReal *t, const PetscReal p[])
+{
+  PetscReal ab[3], ac[3], ap[3], bp[3], cp[3], q[3], d1 = 0, d2 = 0, d3 = 0, d4 = 0, d5 = 0, d6 = 0, va, vb, vc, r = 0;
+
+  for (PetscInt k = 0; k < 3; k++) {
+    ab[k] = t[3 + k] - t[k];
+    ac[k] = t[6 + k] - t[k];
+    ap[k] = p[k] - t[k];
+    bp[k] = p[k] - t[3 + k];
+    cp[k] = p[k] - t[6 + k];
+    d1 += ab[k] * ap[k];
+    d2 += ac[k] * ap[k];
+    d3 += ab[k] * bp[k];
+    d4 += ac[k] * bp[k];
+    d5 += ab[k] * cp[k];
+    d6 += ac[k] * cp[k];
+  }
+  vc = d1 * d4 - d3 * d2;
+  vb = d5 * d2 - d1 * d6;
+  va = d3 * d6 - d5 * d4;
+  for (PetscInt k = 0; k < 3; k++) {
+    if (d1 <= 0 && d2 <= 0)
+      q[k] = t[k]; /* vertex a */
+    else if (d3 >= 0 && d4 <= d3)
+      q[k] = t[3 + k]; /* vertex b */
+    else if (d6 >= 0 && d5 <= d6)
+      q[k] = t[6 + k]; /* vertex c */
+    else if (vc <= 0 && d1 >= 0 && d3 <= 0)
+      q[k] = t[k] + d1 / (d1 - d3) * ab[k]; /* edge ab */
+    else if (vb <= 0 && d2 >= 0 && d6 <= 0)
+      q[k] = t[k] + d2 / (d2 - d6) * ac[k]; /* edge ac */
+    else if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
+      q[k] = t[3 + k] + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (t[6 + k] - t[3 + k]); /* edge bc */
+    else
+      q[k] = t[k] + (vb * ab[k] + vc * ac[k]) / (va + vb + vc); /* the face */
+    r += PetscSqr(p[k] - q[k]);
+  }
+  return r;
+}
+
+static inline PetscInt MPMFaceBin(const MPMOutline o, PetscInt k, PetscReal x)
+{
+  const PetscInt b = (PetscInt)PetscFloorReal((x - o->lo[k]) / (o->hi[k] - o->lo[k]) * o->fb[k]);
+  return PetscMin(PetscMax(b, 0), o->fb[k] - 1);
+}
+
+/* The surface's triangle nearest to x (MPMOutlineNearestFace): the face bins in rings of growing Chebyshev radius
+   about x's bin, until the nearest distance found is below the distance from x to the bins not yet searched. */
+static PetscReal MPMSurfaceNearest(const MPMOutline o, const PetscReal x[], const PetscReal lo[], const PetscReal hi[], PetscReal n[])
+{
+  PetscInt  c[3], R = 0;
+  PetscReal best = PETSC_MAX_REAL;
+
+  for (PetscInt k = 0; k < 3; k++) c[k] = MPMFaceBin(o, k, x[k]);
+  for (;; R++) {
+    PetscReal bound = PETSC_MAX_REAL; /* from x to the bins beyond ring R */
+    PetscBool all   = PETSC_TRUE;
+    for (PetscInt bz = PetscMax(c[2] - R, 0); bz <= PetscMin(c[2] + R, o->fb[2] - 1); bz++)
+      for (PetscInt by = PetscMax(c[1] - R, 0); by <= PetscMin(c[1] + R, o->fb[1] - 1); by++)
+        for (PetscInt bx = PetscMax(c[0] - R, 0); bx <= PetscMin(c[0] + R, o->fb[0] - 1); bx++) {
+          const PetscInt b = bx + o->fb[0] * (by + o->fb[1] * bz);
+          if (PetscMax(PetscAbs(bx - c[0]), PetscMax(PetscAbs(by - c[1]), PetscAbs(bz - c[2]))) != R) continue; /* searched in a smaller ring */
+          for (PetscInt q = o->fstart[b]; q < o->fstart[b + 1]; q++) {
+            const PetscInt   i = o->fidx[q];
+            const PetscReal *t = &o->v[9 * i], *m = &o->nrm[3 * i];
+            PetscReal        d2;
+            if (m[0] == 0.0 && m[1] == 0.0 && m[2] == 0.0) continue;
+            if (MPMOutlineOnBox(3, t, lo, hi)) continue;
+            d2 = MPMTriangleDistance2(t, x);
+            if (d2 < best) {
+              best = d2;
+              for (PetscInt k = 0; k < 3; k++) n[k] = m[k];
+            }
+          }
+        }
+    for (PetscInt k = 0; k < 3; k++) {
+      const PetscReal w = (o->hi[k] - o->lo[k]) / o->fb[k];
+      if (c[k] - R > 0) bound = PetscMin(bound, x[k] - (o->lo[k] + (c[k] - R) * w));
+      if (c[k] + R < o->fb[k] - 1) bound = PetscMin(bound, o->lo[k] + (c[k] + R + 1) * w - x[k]);
+      all = (PetscBool)(all && c[k] - R <= 0 && c[k] + R >= o->fb[k] - 1);
+    }
+    if (all || (best < PETSC_MAX_REAL && best <= PetscSqr(PetscMax(bound, 0.0)))) break;
+  }
+  return best;
+}
+
+/* The outline's face nearest to x, a polygon's edge or a surface's triangle, leaving out the faces that lie on the
+   face of the box lo .. hi (the grid's: beyond it nothing touches them): its distance from x [cm] and its outward unit
+   normal n; false where every face lies on the box. A polygon's vertices run either way: the normal is turned to point
+   away from its interior (MPMOutline::orient); a surface's triangles are turned at set-up (MPMSurfaceOrient). */
+PetscBool MPMOutlineNearestFace(const MPMOutline o, const PetscReal x[], const PetscReal lo[], const PetscReal hi[], PetscReal *dist, PetscReal n[])
 {
   PetscReal best = PETSC_MAX_REAL;
 
-  if (o->dim != 2) return PETSC_FALSE;
-  for (PetscInt i = 0, j = o->n - 1; i < o->n; j = i++) {
+  if (o->dim == 3) best = MPMSurfaceNearest(o, x, lo, hi, n);
+  for (PetscInt i = 0, j = o->n - 1; o->dim == 2 && i < o->n; j = i++) {
     const PetscReal ax = o->v[2 * j], ay = o->v[2 * j + 1], bx = o->v[2 * i], by = o->v[2 * i + 1], ex = bx - ax, ey = by - ay, l2 = ex * ex + ey * ey;
+    const PetscReal e[4] = {ax, ay, bx, by};
     PetscReal       t, dx, dy, d2;
-    PetscBool       onbox = PETSC_FALSE;
-    for (PetscInt k = 0; k < 2; k++) {
-      const PetscReal a = k ? ay : ax, b = k ? by : bx;
-      onbox = (PetscBool)(onbox || (a <= lo[k] && b <= lo[k]) || (a >= hi[k] && b >= hi[k]));
-    }
-    if (onbox || !(l2 > 0.0)) continue;
+    if (MPMOutlineOnBox(2, e, lo, hi) || !(l2 > 0.0)) continue;
     t  = PetscMin(1.0, PetscMax(0.0, ((x[0] - ax) * ex + (x[1] - ay) * ey) / l2));
     dx = x[0] - (ax + t * ex);
     dy = x[1] - (ay + t * ey);
@@ -340,6 +443,70 @@ static PetscErrorCode MPMSurfaceSetUp(MPI_Comm comm, const char opt[], MPMOutlin
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Each triangle's outward unit normal: the cross product of its edges, turned where a point 1e-6 of the surface's size
+   beyond its centroid along it lies inside (the surface need not be oriented); and the face bins of the nearest-face
+   search (MPMSurfaceNearest), about as many as triangles over the bounding box, at most 64 a direction. */
+static PetscErrorCode MPMSurfaceOrient(MPMOutline o)
+{
+  PetscReal size = 0.0, vol = 1.0, s;
+  PetscInt *cnt, nbins;
+
+  PetscFunctionBegin;
+  for (PetscInt k = 0; k < 3; k++) {
+    size = PetscMax(size, o->hi[k] - o->lo[k]);
+    vol *= o->hi[k] - o->lo[k];
+  }
+  PetscCall(PetscMalloc1(3 * o->n, &o->nrm));
+  for (PetscInt i = 0; i < o->n; i++) {
+    const PetscReal *t    = &o->v[9 * i];
+    const PetscReal  u[3] = {t[3] - t[0], t[4] - t[1], t[5] - t[2]}, w[3] = {t[6] - t[0], t[7] - t[1], t[8] - t[2]};
+    PetscReal       *m = &o->nrm[3 * i], l, y[3];
+    m[0]               = u[1] * w[2] - u[2] * w[1];
+    m[1]               = u[2] * w[0] - u[0] * w[2];
+    m[2]               = u[0] * w[1] - u[1] * w[0];
+    l                  = PetscSqrtReal(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+    if (!(l > 0.0)) {
+      m[0] = m[1] = m[2] = 0.0;
+      continue;
+    }
+    for (PetscInt k = 0; k < 3; k++) {
+      m[k] /= l;
+      y[k] = (t[k] + t[3 + k] + t[6 + k]) / 3.0 + 1e-6 * size * m[k];
+    }
+    if (MPMSurfaceContains(o, y))
+      for (PetscInt k = 0; k < 3; k++) m[k] = -m[k];
+  }
+  s = PetscCbrtReal(vol / o->n);
+  for (PetscInt k = 0; k < 3; k++) o->fb[k] = PetscMax(1, PetscMin(64, (PetscInt)PetscCeilReal((o->hi[k] - o->lo[k]) / s)));
+  nbins = o->fb[0] * o->fb[1] * o->fb[2];
+  PetscCall(PetscCalloc1(nbins + 1, &cnt));
+  PetscCall(PetscCalloc1(nbins + 1, &o->fstart));
+  for (PetscInt pass = 0; pass < 2; pass++) {
+    for (PetscInt i = 0; i < o->n; i++) {
+      const PetscReal *t = &o->v[9 * i];
+      PetscInt         b0[3], b1[3];
+      for (PetscInt k = 0; k < 3; k++) {
+        b0[k] = MPMFaceBin(o, k, PetscMin(t[k], PetscMin(t[3 + k], t[6 + k])));
+        b1[k] = MPMFaceBin(o, k, PetscMax(t[k], PetscMax(t[3 + k], t[6 + k])));
+      }
+      for (PetscInt bz = b0[2]; bz <= b1[2]; bz++)
+        for (PetscInt by = b0[1]; by <= b1[1]; by++)
+          for (PetscInt bx = b0[0]; bx <= b1[0]; bx++) {
+            const PetscInt b = bx + o->fb[0] * (by + o->fb[1] * bz);
+            if (pass) o->fidx[o->fstart[b] + cnt[b]] = i;
+            cnt[b]++;
+          }
+    }
+    if (!pass) {
+      for (PetscInt b = 0; b < nbins; b++) o->fstart[b + 1] = o->fstart[b] + cnt[b];
+      PetscCall(PetscMalloc1(o->fstart[nbins] + 1, &o->fidx));
+      PetscCall(PetscArrayzero(cnt, nbins));
+    }
+  }
+  PetscCall(PetscFree(cnt));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* The region's outline options (within its PetscOptionsBegin, prefix -region_<r>_); *o stays NULL without one. The
    region's box is cut to the outline's bounding box. */
 PetscErrorCode MPMOutlineSetFromOptions(PetscOptionItems *PetscOptionsObject, MPM mpm, const char prefix[], PetscReal lo[], PetscReal hi[], MPMOutline *o)
@@ -396,6 +563,7 @@ PetscErrorCode MPMOutlineSetFromOptions(PetscOptionItems *PetscOptionsObject, MP
     PetscCall(PetscStrncpy((*o)->source, sfile, sizeof((*o)->source)));
     PetscCall(MPMSurfaceRead(mpm->comm, opt, sfile, scale, shift, &(*o)->n, &(*o)->v));
     PetscCall(MPMSurfaceSetUp(mpm->comm, opt, *o));
+    PetscCall(MPMSurfaceOrient(*o));
   }
   if ((*o)->dim == 2) {
     for (PetscInt k = 0; k < 2; k++) {
@@ -440,6 +608,9 @@ PetscErrorCode MPMOutlineDestroy(MPMOutline *o)
   PetscCall(PetscFree((*o)->v));
   PetscCall(PetscFree((*o)->bstart));
   PetscCall(PetscFree((*o)->bidx));
+  PetscCall(PetscFree((*o)->nrm));
+  PetscCall(PetscFree((*o)->fstart));
+  PetscCall(PetscFree((*o)->fidx));
   PetscCall(PetscFree(*o));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -101,7 +101,7 @@ PETSC_INTERN PetscErrorCode MPMHydrostaticAt(const MPMHydrostatic *, const Petsc
 
 /* Region index of the first region holding x, or -1. */
 PETSC_INTERN PetscBool      MPMOutlineContains(const MPMOutline, const PetscReal[]);
-PETSC_INTERN PetscBool      MPMOutlineNearestEdge(const MPMOutline, const PetscReal[], const PetscReal[], const PetscReal[], PetscReal *, PetscReal[]);
+PETSC_INTERN PetscBool      MPMOutlineNearestFace(const MPMOutline, const PetscReal[], const PetscReal[], const PetscReal[], PetscReal *, PetscReal[]);
 PETSC_INTERN PetscErrorCode MPMOutlineSetFromOptions(PetscOptionItems *, MPM, const char[], PetscReal[], PetscReal[], MPMOutline *);
 PETSC_INTERN PetscErrorCode MPMOutlineView(MPMOutline, PetscViewer);
 PETSC_INTERN PetscReal      MPMOutlineVolume(MPMOutline);

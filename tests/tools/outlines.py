@@ -86,6 +86,18 @@ def test_outlines():
             errs.append(seeded_mass(out) / V - 1)
         check(abs(errs[0]) < 2e-3 and abs(errs[1]) < 2e-3, f"a torus: mass error {errs[0]:+.2e} / {errs[1]:+.2e} against its mesh volume {V:.6g} cm^3 at 20^3 / 40^3 cells (< 2e-3)")
 
+        # A turned prism (scripts/outline.py prism, the shapes of inputs/wedge_3d.opts): its faces cross the cells.
+        pstl = os.path.join(d, "prism.stl")
+        tris = outline.prism([[0.3, 0.2], [1.5, 0.5], [1.2, 1.6], [0.4, 1.2]], 0.2, 1.1, 30.0)
+        outline.write_stl(pstl, tris)
+        V = outline.mesh_volume(tris)
+        errs = []
+        for cells in ("20,20,20", "40,40,40"):
+            out = os.path.join(d, "prism" + cells)
+            run(["-mpm_dim", "3", "-mpm_lo", "0,0,-1", "-mpm_hi", "2,2,1", "-mpm_cells", cells, *SOLID, "-region_s_surface", pstl, "-mpm_output", out])
+            errs.append(seeded_mass(out) / V - 1)
+        check(abs(errs[0]) < 2e-3 and abs(errs[1]) < 2e-3, f"a prism turned by 30 degrees: mass error {errs[0]:+.2e} / {errs[1]:+.2e} against its mesh volume {V:.6g} cm^3 at 20^3 / 40^3 cells (< 2e-3)")
+
         # Bad outlines: refused, naming the option and what is wrong.
         openstl = os.path.join(d, "open.stl")
         outline.write_stl(openstl, tris[:-2])
