@@ -259,7 +259,8 @@ PetscErrorCode MPMSetUp(MPM mpm)
     PetscCall(MPMCreateGrid(mpm, sw + (mpm->viscosity ? mpm->viscosity->ghost : 0), why));
   }
   PetscCall(MPMShapeSetUp(mpm->shape, &mpm->grid, mpm->ppc));
-  mpm->kern = mpm->transfer_kernel == MPM_TRANSFER_SPECIALISED && mpm->shape->kernels && mpm->update != MPM_UPDATE_APIC ? &mpm->shape->kernels[mpm->grid.dim - 1] : NULL; /* the specialised kernels have no affine part */
+  if (mpm->update != MPM_UPDATE_BLEND || mpm->grid.dim == 1 || mpm->grid.axisym) mpm->blend.rotation = PETSC_FALSE;                                                                               /* a rotation in the plane or in 3D */
+  mpm->kern = mpm->transfer_kernel == MPM_TRANSFER_SPECIALISED && mpm->shape->kernels && mpm->update != MPM_UPDATE_APIC && !mpm->blend.rotation ? &mpm->shape->kernels[mpm->grid.dim - 1] : NULL; /* the specialised kernels have no affine part */
   /* MUSL: the remap is the only point-kinematics module, so nothing changes v_p between grid to points and the remap */
   mpm->remap_fused = (PetscBool)(mpm->scheme == MPM_SCHEME_MUSL && mpm->kern);
   { /* the point phases of MPMStepPoints window by window: the modules among them pointwise, and a grid to points that updates
@@ -279,7 +280,8 @@ PetscErrorCode MPMSetUp(MPM mpm)
     PetscCall(MPMPointsRegisterTypeFields(mpm, mpm->mat[i].damage));
   }
   if (mpm->update == MPM_UPDATE_APIC) PetscCall(MPMPointsRegisterField(mpm, "affine", -1, "1/s", "APIC affine velocity C_p = B_p D_p^-1 (v(x) = v_p + C_p (x - x_p) about the point)", PETSC_TRUE, &mpm->affine));
-  if (mpm->update == MPM_UPDATE_APIC)
+  if (mpm->blend.rotation) PetscCall(MPMPointsRegisterField(mpm, "affine", -1, "1/s", "The blend's rotation W_p about the point, skew (v(x) = v_p + W_p (x - x_p): omega x (x - x_p))", PETSC_TRUE, &mpm->affine));
+  if (mpm->update == MPM_UPDATE_APIC || mpm->blend.rotation)
     PetscCall(MPMPointsRegisterField(mpm, "affine_ke", 1, "erg/g", "APIC: the kinetic energy of the affine velocity about the point, sum_I N_I |C_p (x_I - x_p)|^2 / 2, part of the kinetic energy", PETSC_FALSE, &mpm->affine_ke));
   PetscCall(MPMCreatePoints(mpm));
   if (mpm->exact) {

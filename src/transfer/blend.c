@@ -21,6 +21,12 @@ PetscErrorCode MPMBlendSetFromOptions(MPM mpm, PetscOptionItems *PetscOptionsObj
   PetscCall(MPMOptionsCheckRange("-mpm_update_blend_expansion", mpm->blend.K, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
   PetscCall(PetscOptionsReal("-mpm_update_blend_slip", "Blend in strong expansions: the slip |v_p - sum N_I v_I^n| over the point's sound speed above which an expanding point asks for a PIC share [-], >= 0", "", mpm->blend.M0, &mpm->blend.M0, NULL));
   PetscCall(MPMOptionsCheckRange("-mpm_update_blend_slip", mpm->blend.M0, 0.0, PETSC_MAX_REAL, PETSC_FALSE, PETSC_FALSE));
+  mpm->blend.rotation = PETSC_FALSE;
+  PetscCall(PetscOptionsBool(
+    "-mpm_update_blend_rotation",
+    "Blend, 2D and 3D (not r-z): each point carries a rotation W_p (omega x (x - x_p)), fitted by least squares to the blend's velocities at its nodes and carried to them, so that the PIC share keeps a body's spin (a rolling or tumbling body); "
+    "its kinetic energy is counted, the fit's remainder heats the point (>= 0); generic transfer kernels",
+    "", mpm->blend.rotation, &mpm->blend.rotation, NULL));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -486,6 +486,45 @@ static void MPMAffineFromMoments(const MPMGrid *g, const PetscReal B[], PetscRea
     }
 }
 
+/* The blend's rotation W_p (-mpm_update_blend_rotation), the least-squares fit of the targets t_I over the stencil,
+     min_W sum_I N_I |t_I - v_p' - W (x_I - x_p)|^2 over skew W (W dx = omega x dx; in 2D omega along z),
+   from the moment r = sum N dx x (t_I - v_p) and D = sum N dx dx^T: (tr(D) I - D) omega = r (2D: omega = r_z / tr D).
+   A projection: what it leaves, sum N |t_I - v_p' - W dx|^2 / 2 >= 0, heats the point (MPMGather). A rank-deficient
+   moment (every dx along a line) takes 1e-12 tr(D) on its diagonal; none (a point on a node of a linear stencil):
+   W = 0. */
+static inline void MPMRotationFromMoments(PetscInt d, const PetscReal r[], const PetscReal D[], PetscReal C[])
+{
+  PetscReal w[3] = {0, 0, 0}, tr = 0.0;
+
+  for (PetscInt i = 0; i < d; i++) tr += D[i * d + i];
+  if (tr > 0.0 && d == 2) w[2] = r[2] / tr;
+  if (tr > 0.0 && d == 3) {
+    const PetscReal e   = 1e-12 * tr;
+    const PetscReal a00 = tr - D[0] + e, a11 = tr - D[4] + e, a22 = tr - D[8] + e, a01 = -D[1], a02 = -D[2], a12 = -D[5];
+    const PetscReal c00 = a11 * a22 - a12 * a12, c01 = a02 * a12 - a01 * a22, c02 = a01 * a12 - a02 * a11;
+    const PetscReal c11 = a00 * a22 - a02 * a02, c12 = a01 * a02 - a00 * a12, c22 = a00 * a11 - a01 * a01, det = a00 * c00 + a01 * c01 + a02 * c02;
+    w[0] = (c00 * r[0] + c01 * r[1] + c02 * r[2]) / det;
+    w[1] = (c01 * r[0] + c11 * r[1] + c12 * r[2]) / det;
+    w[2] = (c02 * r[0] + c12 * r[1] + c22 * r[2]) / det;
+  }
+  if (d == 2) {
+    C[0] = 0.0;
+    C[1] = -w[2];
+    C[2] = w[2];
+    C[3] = 0.0;
+  } else {
+    C[0] = 0.0;
+    C[1] = -w[2];
+    C[2] = w[1];
+    C[3] = w[2];
+    C[4] = 0.0;
+    C[5] = -w[0];
+    C[6] = -w[1];
+    C[7] = w[0];
+    C[8] = 0.0;
+  }
+}
+
 /* The generic gather's point loop (the reference the specialised kernels reproduce), with the dimension d a constant
    where MPMGather calls it, so that its loops over d unroll; the same operations in the same order for every d. */
 MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPoints *pts, const MPMNode *node, PetscBool velocity, PetscBool kinematics, PetscBool work, const PetscBool AFFINE, const PetscBool HOOP, const PetscBool CRACK,
@@ -495,15 +534,17 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
   const PetscReal  alpha = A->alpha, dt = A->dt;
   const PetscBool  kefix = A->kefix, stress = A->stress;
   PetscReal       *x = A->x, *v = A->v, *L = A->L, *e = A->e;
-  const PetscReal *S = A->S;
-  PetscReal       *C = AFFINE ? pts->f[mpm->affine] : NULL;
+  const PetscReal *S   = A->S;
+  PetscReal       *C   = AFFINE ? pts->f[mpm->affine] : NULL;
+  const PetscBool  ROT = (PetscBool)(AFFINE && mpm->blend.rotation); /* the blend's rotation (src/transfer/blend.c), else APIC */
   MPMStencil       st;
 
   for (PetscInt p = 0; p < pts->n; p++) {
     PetscReal       vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Lb[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, dv2c[MPM_MAX_DIM] = {0}, Rc[MPM_MAX_DIM] = {0}, Fs[MPM_MAX_DIM * MPM_MAX_DIM];
     PetscReal       Lbtt                          = 0.0;                                      /* axisymmetric: the hoop rate of vbar, sum N (2 v_I - dv_I)_r / r_p */
     PetscReal       Bm[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Dm[MPM_MAX_DIM * MPM_MAX_DIM] = {0}; /* APIC's moments */
-    PetscReal       Cdv = 0.0;                                                                /* APIC: sum N (C_p (x_I - x_p)) . dv_I */
+    PetscReal       Cdv   = 0.0;                                                              /* APIC: sum N (C_p (x_I - x_p)) . dv_I */
+    PetscReal       rw[3] = {0, 0, 0};                                                        /* the rotation's moment sum N (x_I - x_p) x (t_I - v_p) */
     PetscReal       nb = 0.0, bv0[MPM_MAX_DIM] = {0, 0, 0}, Rbc[MPM_MAX_DIM] = {0, 0, 0};     /* nodal PIC shares: sum N b_I, sum N b_I v_I^n, sum N b_I (v_I^n - v_p) . v_I */
     PetscBool       nodal = PETSC_FALSE;                                                      /* a node of the stencil asks for more than 1 - alpha */
     PetscReal       dx[MPM_MAX_STENCIL][MPM_MAX_DIM], gc[MPM_MAX_DIM];
@@ -516,10 +557,11 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
     for (PetscInt a = 0; a < st.n; a++) {
       const MPMNode *nd              = CRACK && MPMCrackSide(A->crack, d, st.node[a], gc) ? &A->crack->alt[st.node[a]] : &node[st.node[a]]; /* the entry's side's field */
       PetscReal      Cx[MPM_MAX_DIM] = {0, 0, 0};                                                                                           /* APIC: the point's affine velocity at the node less v_p, C_p (x_I - x_p) */
+      PetscReal      ta[MPM_MAX_DIM] = {0, 0, 0};                                                                                           /* the blend's target at the node less v_p */
       if (AFFINE && velocity)
         for (PetscInt i = 0; i < d; i++)
           for (PetscInt j = 0; j < d; j++) {
-            Bm[i * d + j] += st.w[a] * st.s[a][i] * nd->p[i] * dx[a][j];
+            if (!ROT) Bm[i * d + j] += st.w[a] * st.s[a][i] * nd->p[i] * dx[a][j]; /* APIC's fit */
             Dm[i * d + j] += st.w[a] * dx[a][i] * dx[a][j];
             Cx[i] += C[p * d * d + i * d + j] * dx[a][j];
           }
@@ -536,13 +578,25 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
             nb += st.w[a] * b;
             nodal = (PetscBool)(nodal || b > 1.0 - alpha);
           }
-          bv0[i] += st.w[a] * b * (vI - dvI);
-          Rbc[i] += st.w[a] * b * (vI - dvI - v[p * d + i]) * vI;
+          bv0[i] += st.w[a] * b * (vI - dvI - Cx[i]);
+          Rbc[i] += st.w[a] * b * (vI - dvI - v[p * d + i] - Cx[i]) * vI;
+        }
+        if (ROT && velocity) { /* t_I - v_p = C_p dx + dv_I + b_I (v_I^n - v_p - C_p dx) */
+          const PetscReal b = A->bn ? A->bn[2 * st.node[a] + 1] : 1.0 - alpha;
+          ta[i]             = Cx[i] + dvI + b * (vI - dvI - v[p * d + i] - Cx[i]);
         }
         for (PetscInt j = 0; j < d; j++) Lp[i * d + j] += vI * st.dw[a][j];
         if (work)
           for (PetscInt j = 0; j < d; j++) Lb[i * d + j] += (2.0 * vI - dvI) * st.dw[a][j];
         if (HOOP && work && i == 0) Lbtt += st.w[a] * (2.0 * vI - dvI) / rh;
+      }
+      if (ROT && velocity) {
+        if (d == 2) rw[2] += st.w[a] * (dx[a][0] * ta[1] - dx[a][1] * ta[0]);
+        if (d == 3) {
+          rw[0] += st.w[a] * (dx[a][1] * ta[2] - dx[a][2] * ta[1]);
+          rw[1] += st.w[a] * (dx[a][2] * ta[0] - dx[a][0] * ta[2]);
+          rw[2] += st.w[a] * (dx[a][0] * ta[1] - dx[a][1] * ta[0]);
+        }
       }
     }
     if (velocity) {
@@ -557,7 +611,10 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
       if (kefix) e[p] += share - gain + (nodal ? MPMKSumComponents(d, Rbc) : (1.0 - alpha) * R);
       if (AFFINE) {
         PetscReal *ake = &pts->f[mpm->affine_ke][p], knew = 0.0;
-        MPMAffineFromMoments(g, Bm, Dm, &C[p * d * d]);
+        if (ROT)
+          MPMRotationFromMoments(d, rw, Dm, &C[p * d * d]);
+        else
+          MPMAffineFromMoments(g, Bm, Dm, &C[p * d * d]);
         for (PetscInt i = 0; i < d; i++) /* the new affine velocity's kinetic energy, sum N |C_p dx|^2 / 2 = tr(C_p D_p C_p^T) / 2 */
           for (PetscInt j = 0; j < d; j++)
             for (PetscInt k = 0; k < d; k++) knew += 0.5 * C[p * d * d + i * d + j] * Dm[j * d + k] * C[p * d * d + i * d + k];
