@@ -282,7 +282,7 @@ PetscErrorCode MPMSetUp(MPM mpm)
   if (mpm->update == MPM_UPDATE_APIC) PetscCall(MPMPointsRegisterField(mpm, "affine", -1, "1/s", "APIC affine velocity C_p = B_p D_p^-1 (v(x) = v_p + C_p (x - x_p) about the point)", PETSC_TRUE, &mpm->affine));
   if (mpm->blend.rotation) PetscCall(MPMPointsRegisterField(mpm, "affine", -1, "1/s", "The blend's rotation W_p about the point, skew (v(x) = v_p + W_p (x - x_p): omega x (x - x_p))", PETSC_TRUE, &mpm->affine));
   if (mpm->update == MPM_UPDATE_APIC || mpm->blend.rotation)
-    PetscCall(MPMPointsRegisterField(mpm, "affine_ke", 1, "erg/g", "APIC: the kinetic energy of the affine velocity about the point, sum_I N_I |C_p (x_I - x_p)|^2 / 2, part of the kinetic energy", PETSC_FALSE, &mpm->affine_ke));
+    PetscCall(MPMPointsRegisterField(mpm, "affine_ke", 1, "erg/g", "APIC's affine velocity's (or the blend's rotation's) kinetic energy about the point, sum_I N_I |C_p (x_I - x_p)|^2 / 2, part of the kinetic energy", PETSC_FALSE, &mpm->affine_ke));
   PetscCall(MPMCreatePoints(mpm));
   if (mpm->exact) {
     MPMScene scene;
