@@ -367,11 +367,65 @@ static int MPMEdgeCompare(const void *a, const void *b)
   return 0;
 }
 
+/* The bins (x, y, z) of nb[0] x nb[1] x nb[2] that triangle t's box meets, from b0 to b1 a direction: the ray bins over
+   (y, z) (MPMSurfaceContains; one bin along x, the box widened by the ray's offset), the face bins over x, y, z
+   (MPMSurfaceNearest). */
+typedef void (*MPMSurfaceBinRange)(const MPMOutline, const PetscReal *, PetscInt[], PetscInt[]);
+
+static void MPMSurfaceRayBins(const MPMOutline o, const PetscReal *t, PetscInt b0[], PetscInt b1[])
+{
+  b0[0] = b1[0] = 0;
+  for (PetscInt k = 1; k < 3; k++) {
+    b0[k] = MPMOutlineBin(o, k - 1, PetscMin(t[k], PetscMin(t[3 + k], t[6 + k])) - o->eps[k]);
+    b1[k] = MPMOutlineBin(o, k - 1, PetscMax(t[k], PetscMax(t[3 + k], t[6 + k])) + o->eps[k]);
+  }
+}
+
+static void MPMSurfaceFaceBins(const MPMOutline o, const PetscReal *t, PetscInt b0[], PetscInt b1[])
+{
+  for (PetscInt k = 0; k < 3; k++) {
+    b0[k] = MPMFaceBin(o, k, PetscMin(t[k], PetscMin(t[3 + k], t[6 + k])));
+    b1[k] = MPMFaceBin(o, k, PetscMax(t[k], PetscMax(t[3 + k], t[6 + k])));
+  }
+}
+
+/* The triangles of each bin b (bx + nb[0] (by + nb[1] bz)) in CSR form, idx[start[b] .. start[b + 1]), each triangle
+   in every bin its box meets (range). */
+static PetscErrorCode MPMSurfaceBin(const MPMOutline o, const PetscInt nb[3], MPMSurfaceBinRange range, PetscInt **start, PetscInt **idx)
+{
+  const PetscInt nbins = nb[0] * nb[1] * nb[2];
+  PetscInt      *cnt;
+
+  PetscFunctionBegin;
+  PetscCall(PetscCalloc1(nbins + 1, &cnt));
+  PetscCall(PetscCalloc1(nbins + 1, start));
+  for (PetscInt pass = 0; pass < 2; pass++) {
+    for (PetscInt i = 0; i < o->n; i++) {
+      PetscInt b0[3], b1[3];
+      range(o, &o->v[9 * i], b0, b1);
+      for (PetscInt bz = b0[2]; bz <= b1[2]; bz++)
+        for (PetscInt by = b0[1]; by <= b1[1]; by++)
+          for (PetscInt bx = b0[0]; bx <= b1[0]; bx++) {
+            const PetscInt b = bx + nb[0] * (by + nb[1] * bz);
+            if (pass) (*idx)[(*start)[b] + cnt[b]] = i;
+            cnt[b]++;
+          }
+    }
+    if (!pass) {
+      for (PetscInt b = 0; b < nbins; b++) (*start)[b + 1] = (*start)[b] + cnt[b];
+      PetscCall(PetscMalloc1((*start)[nbins] + 1, idx));
+      PetscCall(PetscArrayzero(cnt, nbins));
+    }
+  }
+  PetscCall(PetscFree(cnt));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Bins the triangles by their (y, z) boxes, the volume (sum over triangles of x0 . (x1 x x2) / 6), and the check
    that the surface is closed: every edge shared by an even number of triangles. */
 static PetscErrorCode MPMSurfaceSetUp(MPI_Comm comm, const char opt[], MPMOutline o)
 {
-  PetscInt *cnt, nbins, open = 0;
+  PetscInt  open = 0;
   PetscReal size = 0.0;
 
   PetscFunctionBegin;
@@ -418,28 +472,10 @@ static PetscErrorCode MPMSurfaceSetUp(MPI_Comm comm, const char opt[], MPMOutlin
   PetscCheck(o->volume > 0.0 && o->hi[0] > o->lo[0] && o->hi[1] > o->lo[1] && o->hi[2] > o->lo[2], comm, PETSC_ERR_USER_INPUT, "%s %s: the surface encloses no volume (flat along an axis or of zero volume)", opt, o->source);
   PetscCheck(!open, comm, PETSC_ERR_USER_INPUT, "%s %s: the surface is not closed: %" PetscInt_FMT " edges belong to one triangle (or an odd number); a region needs a closed surface", opt, o->source, open);
   o->nb[0] = o->nb[1] = PetscMax(1, PetscMin(1024, (PetscInt)PetscSqrtReal((PetscReal)o->n)));
-  nbins               = o->nb[0] * o->nb[1];
-  PetscCall(PetscCalloc1(nbins + 1, &cnt));
-  PetscCall(PetscCalloc1(nbins + 1, &o->bstart));
-  for (PetscInt pass = 0; pass < 2; pass++) {
-    for (PetscInt i = 0; i < o->n; i++) {
-      const PetscReal *t  = &o->v[9 * i];
-      const PetscInt   y0 = MPMOutlineBin(o, 0, PetscMin(t[1], PetscMin(t[4], t[7])) - o->eps[1]), y1 = MPMOutlineBin(o, 0, PetscMax(t[1], PetscMax(t[4], t[7])) + o->eps[1]);
-      const PetscInt   z0 = MPMOutlineBin(o, 1, PetscMin(t[2], PetscMin(t[5], t[8])) - o->eps[2]), z1 = MPMOutlineBin(o, 1, PetscMax(t[2], PetscMax(t[5], t[8])) + o->eps[2]);
-      for (PetscInt bz = z0; bz <= z1; bz++)
-        for (PetscInt by = y0; by <= y1; by++) {
-          const PetscInt b = by + o->nb[0] * bz;
-          if (pass) o->bidx[o->bstart[b] + cnt[b]] = i;
-          cnt[b]++;
-        }
-    }
-    if (!pass) {
-      for (PetscInt b = 0; b < nbins; b++) o->bstart[b + 1] = o->bstart[b] + cnt[b];
-      PetscCall(PetscMalloc1(o->bstart[nbins] + 1, &o->bidx));
-      PetscCall(PetscArrayzero(cnt, nbins));
-    }
+  {
+    const PetscInt nb[3] = {1, o->nb[0], o->nb[1]};
+    PetscCall(MPMSurfaceBin(o, nb, MPMSurfaceRayBins, &o->bstart, &o->bidx));
   }
-  PetscCall(PetscFree(cnt));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -449,7 +485,6 @@ static PetscErrorCode MPMSurfaceSetUp(MPI_Comm comm, const char opt[], MPMOutlin
 static PetscErrorCode MPMSurfaceOrient(MPMOutline o)
 {
   PetscReal size = 0.0, vol = 1.0, s;
-  PetscInt *cnt, nbins;
 
   PetscFunctionBegin;
   for (PetscInt k = 0; k < 3; k++) {
@@ -478,32 +513,7 @@ static PetscErrorCode MPMSurfaceOrient(MPMOutline o)
   }
   s = PetscCbrtReal(vol / o->n);
   for (PetscInt k = 0; k < 3; k++) o->fb[k] = PetscMax(1, PetscMin(64, (PetscInt)PetscCeilReal((o->hi[k] - o->lo[k]) / s)));
-  nbins = o->fb[0] * o->fb[1] * o->fb[2];
-  PetscCall(PetscCalloc1(nbins + 1, &cnt));
-  PetscCall(PetscCalloc1(nbins + 1, &o->fstart));
-  for (PetscInt pass = 0; pass < 2; pass++) {
-    for (PetscInt i = 0; i < o->n; i++) {
-      const PetscReal *t = &o->v[9 * i];
-      PetscInt         b0[3], b1[3];
-      for (PetscInt k = 0; k < 3; k++) {
-        b0[k] = MPMFaceBin(o, k, PetscMin(t[k], PetscMin(t[3 + k], t[6 + k])));
-        b1[k] = MPMFaceBin(o, k, PetscMax(t[k], PetscMax(t[3 + k], t[6 + k])));
-      }
-      for (PetscInt bz = b0[2]; bz <= b1[2]; bz++)
-        for (PetscInt by = b0[1]; by <= b1[1]; by++)
-          for (PetscInt bx = b0[0]; bx <= b1[0]; bx++) {
-            const PetscInt b = bx + o->fb[0] * (by + o->fb[1] * bz);
-            if (pass) o->fidx[o->fstart[b] + cnt[b]] = i;
-            cnt[b]++;
-          }
-    }
-    if (!pass) {
-      for (PetscInt b = 0; b < nbins; b++) o->fstart[b + 1] = o->fstart[b] + cnt[b];
-      PetscCall(PetscMalloc1(o->fstart[nbins] + 1, &o->fidx));
-      PetscCall(PetscArrayzero(cnt, nbins));
-    }
-  }
-  PetscCall(PetscFree(cnt));
+  PetscCall(MPMSurfaceBin(o, o->fb, MPMSurfaceFaceBins, &o->fstart, &o->fidx));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -20,6 +20,20 @@ SOLID = ["-mpm_bc_lo", "free,free,free", "-mpm_bc_hi", "free,free,free", "-ts_ma
 STAR = [(0.5, 0.05), (0.61, 0.35), (0.93, 0.36), (0.67, 0.55), (0.77, 0.86), (0.5, 0.68), (0.23, 0.86), (0.33, 0.55), (0.07, 0.36), (0.39, 0.35)]
 
 
+def surface_mass_errors(d, name, tris, lo, hi):
+    """The closed surface tris written as d/name.stl and seeded as a unit-density solid at 20^3 and 40^3 cells of the box
+    lo .. hi: the STL's path, its mesh volume and the seeded mass's relative errors against it."""
+    stl = os.path.join(d, name + ".stl")
+    outline.write_stl(stl, tris)
+    V = outline.mesh_volume(tris)
+    errs = []
+    for cells in ("20,20,20", "40,40,40"):
+        out = os.path.join(d, name + cells)
+        run(["-mpm_dim", "3", "-mpm_lo", lo, "-mpm_hi", hi, "-mpm_cells", cells, *SOLID, "-region_s_surface", stl, "-mpm_output", out])
+        errs.append(seeded_mass(out) / V - 1)
+    return stl, V, errs
+
+
 def seeded_mass(d, body=None):
     """The mass of the first output's points (of one body)."""
     import h5py
@@ -75,28 +89,13 @@ def test_outlines():
         check(errs[2] == errs[0], f"the surface on 2 ranks seeds the same mass as on 1 ({errs[2]:+.3e})")
 
         # A non-convex closed surface of another genus: a torus.
-        stl = os.path.join(d, "torus.stl")
         tris = outline.torus(0.5, 0.2, (1.0, 1.0, 1.0), 48)
-        outline.write_stl(stl, tris)
-        V = outline.mesh_volume(tris)
-        errs = []
-        for cells in ("20,20,20", "40,40,40"):
-            out = os.path.join(d, "torus" + cells)
-            run(["-mpm_dim", "3", "-mpm_lo", "0,0,0", "-mpm_hi", "2,2,2", "-mpm_cells", cells, *SOLID, "-region_s_surface", stl, "-mpm_output", out])
-            errs.append(seeded_mass(out) / V - 1)
+        stl, V, errs = surface_mass_errors(d, "torus", tris, "0,0,0", "2,2,2")
         check(abs(errs[0]) < 2e-3 and abs(errs[1]) < 2e-3, f"a torus: mass error {errs[0]:+.2e} / {errs[1]:+.2e} against its mesh volume {V:.6g} cm^3 at 20^3 / 40^3 cells (< 2e-3)")
 
         # A turned prism (scripts/outline.py prism, the shapes of inputs/wedge_3d.opts): its faces cross the cells.
-        pstl = os.path.join(d, "prism.stl")
-        tris = outline.prism([[0.3, 0.2], [1.5, 0.5], [1.2, 1.6], [0.4, 1.2]], 0.2, 1.1, 30.0)
-        outline.write_stl(pstl, tris)
-        V = outline.mesh_volume(tris)
-        errs = []
-        for cells in ("20,20,20", "40,40,40"):
-            out = os.path.join(d, "prism" + cells)
-            run(["-mpm_dim", "3", "-mpm_lo", "0,0,-1", "-mpm_hi", "2,2,1", "-mpm_cells", cells, *SOLID, "-region_s_surface", pstl, "-mpm_output", out])
-            errs.append(seeded_mass(out) / V - 1)
-        check(abs(errs[0]) < 2e-3 and abs(errs[1]) < 2e-3, f"a prism turned by 30 degrees: mass error {errs[0]:+.2e} / {errs[1]:+.2e} against its mesh volume {V:.6g} cm^3 at 20^3 / 40^3 cells (< 2e-3)")
+        _, Vp, errs = surface_mass_errors(d, "prism", outline.prism([[0.3, 0.2], [1.5, 0.5], [1.2, 1.6], [0.4, 1.2]], 0.2, 1.1, 30.0), "0,0,-1", "2,2,1")
+        check(abs(errs[0]) < 2e-3 and abs(errs[1]) < 2e-3, f"a prism turned by 30 degrees: mass error {errs[0]:+.2e} / {errs[1]:+.2e} against its mesh volume {Vp:.6g} cm^3 at 20^3 / 40^3 cells (< 2e-3)")
 
         # Bad outlines: refused, naming the option and what is wrong.
         openstl = os.path.join(d, "open.stl")
