@@ -259,7 +259,7 @@ PetscErrorCode MPMSetUp(MPM mpm)
     PetscCall(MPMCreateGrid(mpm, sw + (mpm->viscosity ? mpm->viscosity->ghost : 0), why));
   }
   PetscCall(MPMShapeSetUp(mpm->shape, &mpm->grid, mpm->ppc));
-  if (mpm->update != MPM_UPDATE_BLEND || mpm->grid.dim == 1 || mpm->grid.axisym) mpm->blend.rotation = PETSC_FALSE;                                                                               /* a rotation in the plane or in 3D */
+  PetscCheck(!mpm->blend.rotation || (mpm->grid.dim > 1 && !mpm->grid.axisym), mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_update_blend_rotation: a rotation about the point needs a 2D (plane) or 3D grid; this one is %s", mpm->grid.axisym ? "r-z" : "1D");
   mpm->kern = mpm->transfer_kernel == MPM_TRANSFER_SPECIALISED && mpm->shape->kernels && mpm->update != MPM_UPDATE_APIC && !mpm->blend.rotation ? &mpm->shape->kernels[mpm->grid.dim - 1] : NULL; /* the specialised kernels have no affine part */
   /* MUSL: the remap is the only point-kinematics module, so nothing changes v_p between grid to points and the remap */
   mpm->remap_fused = (PetscBool)(mpm->scheme == MPM_SCHEME_MUSL && mpm->kern);

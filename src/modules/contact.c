@@ -12,7 +12,8 @@
    g_b - sum_{c != b} g_c (the two bodies' normals averaged, equal and opposite for two bodies, so that momentum is
    conserved exactly), or mass, along g_b; where a rigid body is present, minus the rigid body's own normal (its
    surface is exact: the averaged normal tilts at a block's corners and slowed a frictionless block on an incline),
-   taken from its geometry where it is one region (its polygon, box or shell), else from its mass gradient.
+   taken from its geometry where it is one region (its polygon, closed surface, box or shell), else from its mass
+   gradient.
    Gap test (-mpm_contact_gap): volume (default), the bodies touch at node I only where their volumes there fill it,
    sum_b sum_p N_I(x_p) V_p >= f V_I, V_I the node's share of the cells (r-z: times r_I; half a cell for each symmetry plane the node lies on), f = -mpm_contact_fill (default 0.5; the
    approach test alone, none, lets bodies meet a cell early: the disks of inputs/disks_2d.opts lose 12% of their
@@ -374,7 +375,7 @@ static PetscBool MPMContactRigidShapeNormal(const MPMContact *ct, MPM mpm, Petsc
     best = dist;
     for (PetscInt k = 0; k < d; k++) n[k] = nk[k];
   }
-  for (PetscInt k = 0; k < d && !reg->outline; k++) { /* the box's faces inside the grid (with a polygon, its bounding box) */
+  for (PetscInt k = 0; k < d && !reg->outline; k++) { /* without an outline, the box's faces inside the grid */
     if (reg->lo[k] > g->lo[k] && PetscAbsReal(x[k] - reg->lo[k]) < best) {
       best = PetscAbsReal(x[k] - reg->lo[k]);
       for (PetscInt j = 0; j < d; j++) n[j] = j == k ? -1.0 : 0.0;

@@ -86,10 +86,17 @@ static PetscBool MPMPolygonContains(const MPMOutline o, const PetscReal x[])
   return in;
 }
 
+/* The bin of x among nb equal bins over lo .. hi, clamped to the first and last. */
+static inline PetscInt MPMBinOf(PetscReal lo, PetscReal hi, PetscInt nb, PetscReal x)
+{
+  const PetscInt b = (PetscInt)PetscFloorReal((x - lo) / (hi - lo) * nb);
+  return PetscMin(PetscMax(b, 0), nb - 1);
+}
+
+/* The ray bin along y (k = 0) or z (k = 1). */
 static inline PetscInt MPMOutlineBin(const MPMOutline o, PetscInt k, PetscReal y)
 {
-  const PetscInt b = (PetscInt)PetscFloorReal((y - o->lo[k + 1]) / (o->hi[k + 1] - o->lo[k + 1]) * o->nb[k]);
-  return PetscMin(PetscMax(b, 0), o->nb[k] - 1);
+  return MPMBinOf(o->lo[k + 1], o->hi[k + 1], o->nb[k], y);
 }
 
 static PetscBool MPMSurfaceContains(const MPMOutline o, const PetscReal xin[])
@@ -172,10 +179,10 @@ static PetscReal MPMTriangleDistance2(const PetscReal *t, const PetscReal p[])
   return r;
 }
 
+/* The face bin along direction k. */
 static inline PetscInt MPMFaceBin(const MPMOutline o, PetscInt k, PetscReal x)
 {
-  const PetscInt b = (PetscInt)PetscFloorReal((x - o->lo[k]) / (o->hi[k] - o->lo[k]) * o->fb[k]);
-  return PetscMin(PetscMax(b, 0), o->fb[k] - 1);
+  return MPMBinOf(o->lo[k], o->hi[k], o->fb[k], x);
 }
 
 /* The surface's triangle nearest to x (MPMOutlineNearestFace): the face bins in rings of growing Chebyshev radius
