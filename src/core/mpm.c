@@ -260,9 +260,9 @@ PetscErrorCode MPMSetUp(MPM mpm)
   }
   PetscCall(MPMShapeSetUp(mpm->shape, &mpm->grid, mpm->ppc));
   PetscCheck(!mpm->blend.rotation || (mpm->grid.dim > 1 && !mpm->grid.axisym), mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_update_blend_rotation: a rotation about the point needs a 2D (plane) or 3D grid; this one is %s", mpm->grid.axisym ? "r-z" : "1D");
-  mpm->kern = mpm->transfer_kernel == MPM_TRANSFER_SPECIALISED && mpm->shape->kernels && mpm->update != MPM_UPDATE_APIC && !mpm->blend.rotation ? &mpm->shape->kernels[mpm->grid.dim - 1] : NULL; /* the specialised kernels have no affine part */
+  mpm->kern = mpm->transfer_kernel == MPM_TRANSFER_SPECIALISED && mpm->shape->kernels ? &mpm->shape->kernels[mpm->grid.dim - 1] : NULL;
   /* MUSL: the remap is the only point-kinematics module, so nothing changes v_p between grid to points and the remap */
-  mpm->remap_fused = (PetscBool)(mpm->scheme == MPM_SCHEME_MUSL && mpm->kern);
+  mpm->remap_fused = (PetscBool)(mpm->scheme == MPM_SCHEME_MUSL && mpm->kern && mpm->update != MPM_UPDATE_APIC && !mpm->blend.rotation); /* the fused remap has no affine part */
   { /* the point phases of MPMStepPoints window by window: the modules among them pointwise, and a grid to points that updates
        each point on its own */
     const PetscBool usl = (PetscBool)(mpm->scheme == MPM_SCHEME_USL);

@@ -21,7 +21,7 @@
    (vpic = sum N v_I, dv = sum N dv_I, dv2_k = sum N dv_Ik^2, R_k, Lp = sum v_I (x) grad N, Lb = sum (2 v_I - dv_I) (x) grad N;
    |dv|^2 and R summed over the components here, MPMKSumComponents). */
 MPM_KINLINE void MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, PetscInt p, const PetscReal vpic[MPM_KD], const PetscReal dv[MPM_KD], const PetscReal dv2c[MPM_KD], const PetscReal Rc[MPM_KD],
-                                                               const PetscReal Lp[MPM_KD * MPM_KD], const PetscReal Lb[MPM_KD * MPM_KD], const PetscReal *nod, const PetscReal rh, const PetscReal Lbtt, const int mode)
+                                                               const PetscReal Lp[MPM_KD * MPM_KD], const PetscReal Lb[MPM_KD * MPM_KD], const PetscReal *nod, const PetscReal rh, const PetscReal Lbtt, MPMAffineSums *aff, const int mode)
 {
   const PetscInt   D        = MPM_KD;
   const PetscBool  velocity = (PetscBool)(mode & MPM_G2P_VELOCITY), kinematics = (PetscBool)(mode & MPM_G2P_KINEMATICS), work = (PetscBool)(mode & MPM_G2P_WORK);
@@ -30,14 +30,15 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(const MPMTransfer
 
   if (velocity) {
     const PetscReal dv2 = MPMKSumComponents(MPM_KD, dv2c), R = (mode & MPM_G2P_FLIP) ? 0.0 : MPMKSumComponents(MPM_KD, Rc);
-    PetscReal       share = 0.5 * dv2, gain = 0.0;
-    for (PetscInt i = 0; i < D; i++) { /* nod: the nodal PIC shares' sums sum N b_I, sum N b_I v_I^n, sum N b_I (v_I^n - v_p) . v_I (src/transfer/blend.c) */
+    PetscReal       share = (mode & MPM_G2P_AFFINE) ? 0.5 * dv2 + aff->Cdv : 0.5 * dv2, gain = 0.0; /* affine: sum N (C_p dx) . dv_I besides */
+    for (PetscInt i = 0; i < D; i++) {                                                              /* nod: the nodal PIC shares' sums sum N b_I, sum N b_I v_I^n, sum N b_I (v_I^n - v_p) . v_I (src/transfer/blend.c) */
       const PetscReal vn = nod ? v[p * D + i] + dv[i] - (nod[0] * v[p * D + i] - nod[1 + i]) : alpha * (v[p * D + i] + dv[i]) + (1.0 - alpha) * vpic[i];
       share += v[p * D + i] * dv[i];
       gain += 0.5 * (vn * vn - v[p * D + i] * v[p * D + i]);
       v[p * D + i] = vn;
     }
     if (A->kefix) e[p] += share - gain + (nod ? MPMKSumComponents(MPM_KD, &nod[1 + MPM_KD]) : (mode & MPM_G2P_FLIP) ? 0.0 : (1.0 - alpha) * R); /* pure FLIP: 0 R = 0, R not summed */
+    if (mode & MPM_G2P_AFFINE) MPMAffineFinish(A, p, aff);                                                                                      /* the affine velocity's new fit, its kinetic energy */
     if (work) {
       PetscReal sL = 0.0, div = 0.0;
       if (A->pointwork)
@@ -76,14 +77,26 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
   PetscBool       nodal  = PETSC_FALSE;                                          /* a node of the stencil has b_I > 1 - alpha */
   const PetscReal rh     = MPM_KD == 2 && A->hoopr ? A->hoopr(A->hctx, p) : 1.0; /* axisymmetric: the hoop terms' radius */
   PetscReal       Lbtt   = 0.0;                                                  /* and sum N (2 v_I - dv_I)_r / r_p */
+  const PetscBool affine = (PetscBool)(velocity && (mode & MPM_G2P_AFFINE));     /* APIC, the blend's rotation (MPMGatherGeneric) */
+  PetscReal       dx[MPM_KS][MPM_MAX_DIM];                                       /* its offsets (MPMAffineOffsets) */
+  MPMAffineSums   as = {0};                                                      /* and its sums, */
+  v4              Dr[MPM_KD], Br[MPM_KD], Cc[MPM_KD];                            /* in registers: the rows of D and B, the columns of C_p */
+  PetscReal       Cdv = 0.0, r0 = 0.0, r1 = 0.0, r2 = 0.0;
 
   for (PetscInt i = 0; i < D; i++) {
     vp[i] = A->v[p * D + i];
     Lp[i] = Lb[i] = zero;
   }
+  if (affine) {
+    MPMAffineOffsets(A->grid, D, &A->x[p * D], ns, node, W, 1, mirror ? &SG[0][0] : NULL, D, dx);
+    for (PetscInt i = 0; i < D; i++) {
+      Dr[i] = Br[i] = Cc[i] = zero;
+      for (PetscInt j = 0; j < D; j++) Cc[i][j] = A->C[p * D * D + j * D + i];
+    }
+  }
   for (PetscInt a = 0; a < ns; a++) {
     const MPMNode *nd = &nodes[node[a]];
-    v4             vI = zero, v0I = zero, dwv = zero, sg = zero, dvI;
+    v4             vI = zero, v0I = zero, dwv = zero, sg = zero, dvI, Cx = zero;
     const v4       w = zero + W[a];
     for (PetscInt i = 0; i < D; i++) {
       vI[i]  = nd->p[i];
@@ -96,19 +109,41 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
       dvI = sg * dvI;
       vI  = sg * vI;
     }
+    if (affine) { /* as MPMGatherGeneric: C_p dx, D = sum N dx dx^T, APIC's moment B = sum N v_I dx^T, a row in the lanes of a vector */
+      v4 dxv = zero;
+      for (PetscInt j = 0; j < D; j++) {
+        dxv[j] = dx[a][j];
+        Cx += Cc[j] * dx[a][j];
+      }
+      for (PetscInt i = 0; i < D; i++) Dr[i] += W[a] * dx[a][i] * dxv;
+      if (!A->rotation)
+        for (PetscInt i = 0; i < D; i++) Br[i] += W[a] * vI[i] * dxv;
+    }
     vpic += w * vI;
     if (velocity) {
       const v4 wd = w * dvI;
       dv += wd;
       dv2 += wd * dvI;
-      if (!(mode & MPM_G2P_FLIP)) R += w * (vI - dvI - vp) * vI;
+      if (affine) {
+        R += w * (vI - dvI - vp - Cx) * vI;
+        for (PetscInt i = 0; i < D; i++) Cdv += W[a] * Cx[i] * dvI[i];
+      } else if (!(mode & MPM_G2P_FLIP))
+        R += w * (vI - dvI - vp) * vI;
       if (shares) { /* as MPMGatherGeneric: sum N b_I, sum N b_I v_I^n, sum N b_I (v_I^n - v_p) v_I */
         const PetscReal b  = A->bn[2 * node[a] + 1];
         const v4        wb = zero + W[a] * b;
         nb += W[a] * b;
         nodal = (PetscBool)(nodal || b > 1.0 - A->alpha);
-        bv0 += wb * (vI - dvI);
-        Rb += wb * (vI - dvI - vp) * vI;
+        bv0 += wb * (vI - dvI - Cx);
+        Rb += wb * (vI - dvI - vp - Cx) * vI;
+      }
+      if (affine && A->rotation) { /* the rotation's moment r = sum N dx x (t_I - v_p), t_I - v_p = C_p dx + dv_I + b_I (v_I^n - v_p - C_p dx) */
+        const v4 ta = Cx + dvI + (A->bn ? A->bn[2 * node[a] + 1] : 1.0 - A->alpha) * (vI - dvI - vp - Cx);
+        if (MPM_KD == 3) {
+          r0 += W[a] * (dx[a][1] * ta[2] - dx[a][2] * ta[1]);
+          r1 += W[a] * (dx[a][2] * ta[0] - dx[a][0] * ta[2]);
+        }
+        if (MPM_KD > 1) r2 += W[a] * (dx[a][0] * ta[1] - dx[a][1] * ta[0]);
       }
     }
     if (work) {
@@ -132,7 +167,18 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
     nod[1 + D + i] = Rb[i];
   }
   nod[0] = nb;
-  MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p, vpicl, dvl, dv2l, Rl, Lpl, Lbl, nodal ? nod : NULL, rh, Lbtt, mode);
+  if (affine) {
+    for (PetscInt i = 0; i < D; i++)
+      for (PetscInt j = 0; j < D; j++) {
+        as.D[i * D + j] = Dr[i][j];
+        as.B[i * D + j] = Br[i][j];
+      }
+    as.Cdv  = Cdv;
+    as.r[0] = r0;
+    as.r[1] = r1;
+    as.r[2] = r2;
+  }
+  MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p, vpicl, dvl, dv2l, Rl, Lpl, Lbl, nodal ? nod : NULL, rh, Lbtt, &as, mode);
   if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p, ns, node, W, NULL, SG, MPM_P2G_REMAP, mirror, 1);
   if (kinematics && A->hw) MPMHeatGather(A, p, ns, node, W, 1); /* the heat exchange */
 }
@@ -204,7 +250,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
       Lpl[i] = Lp[i][l];
       Lbl[i] = Lb[i][l];
     }
-    MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p0 + l, vpicl, dvl, dv2l, Rl, Lpl, Lbl, NULL, rh[l], Lbtt[l], mode);
+    MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p0 + l, vpicl, dvl, dv2l, Rl, Lpl, Lbl, NULL, rh[l], Lbtt[l], NULL, mode);
     if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p0 + l, ns, &node[0][l], &W[0][l], NULL, NULL, MPM_P2G_REMAP, 0, MPM_KLANES);
     if (heat) MPMHeatGatherFinish(A, p0 + l, Tbar[l]);
   }
@@ -247,8 +293,8 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
   PetscInt              p = 0;
 
 #if defined(MPM_KLANES) && !defined(MPM_KSTENCIL)
-  for (; !(A->bn && (mode & MPM_G2P_VELOCITY)) && p + MPM_KLANES <= A->n; p += MPM_KLANES) { /* a step with nodal PIC shares: point by point */
-    PetscInt  node[MPM_KS][MPM_KLANES];                                                      /* each entry's lanes side by side (MPMKStencilStrided) */
+  for (; !(A->bn && (mode & MPM_G2P_VELOCITY)) && !(mode & MPM_G2P_AFFINE) && p + MPM_KLANES <= A->n; p += MPM_KLANES) { /* nodal PIC shares, an affine velocity: point by point */
+    PetscInt  node[MPM_KS][MPM_KLANES];                                                                                  /* each entry's lanes side by side (MPMKStencilStrided) */
     PetscReal W[MPM_KS][MPM_KLANES], DW[MPM_KS][MPM_KD][MPM_KLANES], SG[MPM_KLANES][MPM_KS][MPM_KD];
     PetscBool mirror[MPM_KLANES], any = PETSC_FALSE;
 #  if defined(MPM_KTENT)
@@ -279,7 +325,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
     PetscReal       W[MPM_KS3][MPM_KSLANES], DW[MPM_KS3][MPM_KD][MPM_KSLANES];
     unsigned        padded;
     const unsigned  found  = MPM_KCAT(MPMKStencilGroup, MPM_KNAME, MPM_KD, d)(ctx, g, A, p, node, W, DW, &padded, skip);
-    const PetscBool shares = (PetscBool)(A->bn && (mode & MPM_G2P_VELOCITY));
+    const PetscBool shares = (PetscBool)((A->bn && (mode & MPM_G2P_VELOCITY)) || (mode & MPM_G2P_AFFINE)); /* or an affine velocity: point by point too */
     /* with nodal PIC shares every entry of a stencil, of weight 0 too, decides whether its point takes them
        (MPMGatherGeneric), so a padded lane (kernels.h) takes its own stencil then */
     const unsigned done = shares ? found & ~padded : found;
@@ -318,7 +364,9 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
    drops the PIC term (1 - alpha) R_p, 0 R_p = 0, so R_p's stencil sum is not formed. */
 MPM_KINLINE void MPM_KCAT(MPMKG2PLoop, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const void *ctx, const MPMTransferArgs *A, MPMNode *nodes, const int mode)
 {
-  if ((mode & MPM_G2P_VELOCITY) && A->alpha == 1.0)
+  if ((mode & MPM_G2P_VELOCITY) && !(mode & MPM_G2P_REMAP) && A->C) /* the affine velocity's fit (MPM_G2P_AFFINE), point by point; never with the fused remap (MPM::remap_fused) */
+    MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, mode | MPM_G2P_AFFINE);
+  else if ((mode & MPM_G2P_VELOCITY) && A->alpha == 1.0)
     MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, mode | MPM_G2P_FLIP);
   else
     MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, mode);

@@ -34,9 +34,10 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
   /* the heat exchange's weight w_p and w_p T_p (0: none), summed into its nodal sums with the entries (MPMHeatScatter) */
   const PetscReal hwp = A->hw && !(mode & MPM_P2G_REMAP) ? A->hw[p] : 0.0, hwT = hwp > 0.0 ? hwp * A->hT[p] : 0.0;
   MPM_KCV         vp = zero, Sc[MPM_KD];
-  PetscReal       Sp[MPM_KD * MPM_KD], hoop = 0.0;
+  PetscReal       Sp[MPM_KD * MPM_KD], hoop = 0.0, dx[MPM_KS][MPM_MAX_DIM]; /* with the affine velocity: the offsets */
 
   for (PetscInt k = 0; k < D; k++) vp[k] = A->v[p * D + k];
+  if (mode & MPM_P2G_AFFINE) MPMAffineOffsets(A->grid, D, &A->x[p * D], ns, node, W, ls, mirror ? &SG[0][0] : NULL, D, dx); /* about the stencil's mean */
 #if MPM_KD == 2
   if (A->hoopr && !(mode & MPM_P2G_REMAP)) /* axisymmetric: the hoop force -sigma_tt V / r, sigma_tt = -(p + q) - (s_rr + s_zz), with p + q whatever takes the pressure */
     hoop = A->V[p] * (A->pr[p] + A->q[p] + ((mode & MPM_P2G_STRESS) ? A->S[p * D * D] + A->S[p * D * D + D + 1] : 0.0)) / A->hoopr(A->hctx, p);
@@ -60,7 +61,13 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
       nd->m += wm;
       nd->w2 += W[a * ls] * W[a * ls];
     }
-    m = sg * wm * vp;
+    if (mode & MPM_P2G_AFFINE) { /* the point's affine velocity at the node, v_p + C_p dx_a */
+      MPM_KCV vk = vp;
+      for (PetscInt k = 0; k < D; k++)
+        for (PetscInt j = 0; j < D; j++) vk[k] += A->C[p * D * D + k * D + j] * dx[a][j];
+      m = sg * wm * vk;
+    } else
+      m = sg * wm * vp;
     for (PetscInt k = 0; k < D; k++) mv[k] += m[k];
     if (mode & MPM_P2G_STRESS) {
       MPM_KCV sgr = zero;
@@ -224,7 +231,7 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GRuns, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, c
 /* The points-to-grid loop over the points, with no mode branch left inside: by runs of same-cell points where the
    scene seeds several per cell (MPMKP2GRuns), else point by point (the linear family's stencils of a group in vector
    lanes, MPMKStencilTent), its node sums in point order. */
-MPM_KINLINE void MPM_KCAT(MPMKP2GLoop, MPM_KNAME, MPM_KD, d)(const MPMGrid *gin, const void *ctx, const MPMTransferArgs *Ain, MPMNode *nodes, const int mode)
+MPM_KINLINE void MPM_KCAT(MPMKP2GLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *gin, const void *ctx, const MPMTransferArgs *Ain, MPMNode *nodes, const int mode)
 {
   /* local copies: the grid's and the arguments' doubles (lo, h, dt, ...) stay in registers across the node updates */
   const MPMGrid         gl = *gin, *g = &gl;
@@ -232,7 +239,7 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GLoop, MPM_KNAME, MPM_KD, d)(const MPMGrid *gin,
   PetscInt              p = 0;
 
 #if defined(MPM_KRUNS)
-  if (A->runs) { /* runs pay where a cell holds several points; with one they only add the loads and stores of a run's start and end */
+  if (A->runs && !(mode & MPM_P2G_AFFINE)) { /* runs pay where a cell holds several points; with one they only add the loads and stores of a run's start and end */
     MPM_KCAT(MPMKP2GRuns, MPM_KNAME, MPM_KD, d)(g, A, nodes, mode);
     return;
   }
@@ -268,4 +275,14 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GLoop, MPM_KNAME, MPM_KD, d)(const MPMGrid *gin,
   }
 #endif
   for (; p < A->n; p++) MPM_KCAT(MPMKP2GOne, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, p, mode);
+}
+
+/* The loop, with the affine velocity (APIC, the blend's rotation: A->C) a mode of its own (MPM_P2G_AFFINE), point by
+   point: the momentum of v_p + C_p dx_a. */
+MPM_KINLINE void MPM_KCAT(MPMKP2GLoop, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const void *ctx, const MPMTransferArgs *A, MPMNode *nodes, const int mode)
+{
+  if (A->C)
+    MPM_KCAT(MPMKP2GLoopMode, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, mode | MPM_P2G_AFFINE);
+  else
+    MPM_KCAT(MPMKP2GLoopMode, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, mode);
 }

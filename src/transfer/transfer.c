@@ -178,37 +178,6 @@ MPM_TINLINE void MPMCellRuleForce(MPM mpm, MPMNode *node, PetscBool full, const 
   }
 }
 
-/* APIC (-mpm_update_type apic): x_I - x_p for stencil entry a of the point at xp, with x_I the node's position before
-   the stencil folded it across a wall (its mirror image, where the entry's sign is -1 in that component). */
-static inline void MPMStencilOffset(const MPMGrid *g, const PetscReal xp[], const MPMStencil *st, PetscInt a, PetscReal dx[])
-{
-  PetscInt n = st->node[a];
-
-  for (PetscInt k = 0; k < g->dim; k++) {
-    const PetscInt i = n % g->gm[k];
-    PetscReal      x = g->lo[k] + (g->gs[k] + i) * g->h[k];
-    n /= g->gm[k];
-    if (st->s[a][k] < 0.0) x = 2.0 * (g->mirror_lo[k] && (!g->mirror_hi[k] || xp[k] - g->lo[k] < g->hi[k] - xp[k]) ? g->lo[k] : g->hi[k]) - x;
-    dx[k] = x - xp[k];
-  }
-}
-
-/* APIC: the offsets of every stencil entry about the stencil's mean, dx_a = x_I - x_p - sum_J N_J (x_J - x_p), the
-   offsets the affine velocity is taken about. The mean is 0 inside the grid, not where a domain's corners are clipped
-   at a face of the grid, where about x_p the point's affine velocity would carry momentum and the kinetic-energy fix
-   could turn negative. */
-static inline void MPMStencilOffsets(const MPMGrid *g, const PetscReal xp[], const MPMStencil *st, PetscReal dx[][MPM_MAX_DIM])
-{
-  PetscReal mean[MPM_MAX_DIM] = {0, 0, 0};
-
-  for (PetscInt a = 0; a < st->n; a++) {
-    MPMStencilOffset(g, xp, st, a, dx[a]);
-    for (PetscInt k = 0; k < g->dim; k++) mean[k] += st->w[a] * dx[a][k];
-  }
-  for (PetscInt a = 0; a < st->n; a++)
-    for (PetscInt k = 0; k < g->dim; k++) dx[a][k] -= mean[k];
-}
-
 /* Axisymmetric: the radius the hoop terms divide by (the hoop force -sigma_tt V_p / r, the hoop rate v_r / r and its
    work), max(r_p, w_p / 2), w_p the half-extent of the point's domain along r (MPMPointHalfExtent, for a shape family
    that reads F: CPDI; the lattice half-spacing h / (2 ppc) for the others, whose points may carry F for splitting
@@ -285,7 +254,7 @@ MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node,
     if (CRACK && cs->keep && !cs->near[MPMGridCellNode(g, &x[p * d])]) continue; /* far from failed material: every entry is the body's */
     MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, F, ds, p, Fs), &st);
     if (keep) mpm->shape->ops.keepone(mpm->shape->data, kp0 + p, &x[p * d], &st);
-    if (AFFINE) MPMStencilOffsets(g, &x[p * d], &st, dx);
+    if (AFFINE) MPMAffineOffsets(g, d, &x[p * d], st.n, st.node, st.w, 1, &st.s[0][0], MPM_MAX_DIM, dx);
     if (CRACK) MPMCrackPointGradient(cs->D, d, &st, cs->g2min, gc);
     for (PetscInt a = 0; a < st.n; a++) {
       MPMNode        *nd = &node[st.node[a]];
@@ -417,7 +386,9 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
                                   .S     = S,
                                   .F     = mpm->track_F ? pts.f[MPM_FIELD_DEFGRAD] : NULL,
                                   .ds    = mpm->shape->needs_F ? pts.f[MPM_FIELD_DOMAINSCALE] : NULL,
-                                  .runs  = (PetscBool)(mpm->ppc > 1 && !g->axisym)}; /* the runs have no hoop force */
+                                  .runs  = (PetscBool)(mpm->ppc > 1 && !g->axisym), /* the runs have no hoop force */
+                                  .C     = mpm->affine >= 0 ? pts.f[mpm->affine] : NULL,
+                                  .grid  = g};
       mpm->kern->p2g[(force && !cellrule ? MPM_P2G_PRESSURE : 0) | (stress ? MPM_P2G_STRESS : 0)](g, mpm->shape->data, &A, node);
       if (cellrule && mpm->cell_volume != MPM_CELL_VOLUME_FULL)
         for (PetscInt p = 0; p < pts.n; p++) MPMCellRuleAdd(mpm, &x[p * d], V[p], pr[p] + q[p]);
@@ -525,6 +496,27 @@ static inline void MPMRotationFromMoments(PetscInt d, const PetscReal r[], const
   }
 }
 
+/* The affine velocity's new fit of point p from its sums s (MPMAffineSums): the blend's rotation (A->rotation,
+   MPMRotationFromMoments) or APIC's C = B D^-1 (MPMAffineFromMoments, which adds to s->D's diagonal), then its kinetic
+   energy about the point, k_p' = sum N |C_p' dx|^2 / 2 = tr(C_p' D C_p'^T) / 2 [erg/g], in A->Cke, the change k_p - k_p'
+   into e_p with the kinetic-energy fix (the affine kinetic energy is kinetic energy: its change is not the fix's). The
+   generic and the specialised gathers call it after the velocity's fix. */
+void MPMAffineFinish(const MPMTransferArgs *A, PetscInt p, MPMAffineSums *s)
+{
+  const PetscInt d = A->grid->dim;
+  PetscReal     *C = &A->C[p * d * d], knew = 0.0;
+
+  if (A->rotation)
+    MPMRotationFromMoments(d, s->r, s->D, C);
+  else
+    MPMAffineFromMoments(A->grid, s->B, s->D, C);
+  for (PetscInt i = 0; i < d; i++)
+    for (PetscInt j = 0; j < d; j++)
+      for (PetscInt k = 0; k < d; k++) knew += 0.5 * C[i * d + j] * s->D[j * d + k] * C[i * d + k];
+  if (A->kefix) A->e[p] += A->Cke[p] - knew;
+  A->Cke[p] = knew;
+}
+
 /* The generic gather's point loop (the reference the specialised kernels reproduce), with the dimension d a constant
    where MPMGather calls it, so that its loops over d unroll; the same operations in the same order for every d. */
 MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPoints *pts, const MPMNode *node, PetscBool velocity, PetscBool kinematics, PetscBool work, const PetscBool AFFINE, const PetscBool HOOP, const PetscBool CRACK,
@@ -541,18 +533,16 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
 
   for (PetscInt p = 0; p < pts->n; p++) {
     PetscReal       vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Lb[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, dv2c[MPM_MAX_DIM] = {0}, Rc[MPM_MAX_DIM] = {0}, Fs[MPM_MAX_DIM * MPM_MAX_DIM];
-    PetscReal       Lbtt                          = 0.0;                                      /* axisymmetric: the hoop rate of vbar, sum N (2 v_I - dv_I)_r / r_p */
-    PetscReal       Bm[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Dm[MPM_MAX_DIM * MPM_MAX_DIM] = {0}; /* APIC's moments */
-    PetscReal       Cdv   = 0.0;                                                              /* APIC: sum N (C_p (x_I - x_p)) . dv_I */
-    PetscReal       rw[3] = {0, 0, 0};                                                        /* the rotation's moment sum N (x_I - x_p) x (t_I - v_p) */
-    PetscReal       nb = 0.0, bv0[MPM_MAX_DIM] = {0, 0, 0}, Rbc[MPM_MAX_DIM] = {0, 0, 0};     /* nodal PIC shares: sum N b_I, sum N b_I v_I^n, sum N b_I (v_I^n - v_p) . v_I */
-    PetscBool       nodal = PETSC_FALSE;                                                      /* a node of the stencil asks for more than 1 - alpha */
+    PetscReal       Lbtt = 0.0;                                                           /* axisymmetric: the hoop rate of vbar, sum N (2 v_I - dv_I)_r / r_p */
+    MPMAffineSums   as   = {0};                                                           /* the affine velocity's sums (APIC, the rotation) */
+    PetscReal       nb = 0.0, bv0[MPM_MAX_DIM] = {0, 0, 0}, Rbc[MPM_MAX_DIM] = {0, 0, 0}; /* nodal PIC shares: sum N b_I, sum N b_I v_I^n, sum N b_I (v_I^n - v_p) . v_I */
+    PetscBool       nodal = PETSC_FALSE;                                                  /* a node of the stencil asks for more than 1 - alpha */
     PetscReal       dx[MPM_MAX_STENCIL][MPM_MAX_DIM], gc[MPM_MAX_DIM];
     const PetscReal rh   = HOOP ? MPMHoopRadius(mpm, pts, p) : 1.0; /* the hoop terms' radius */
     PetscBool       kept = PETSC_FALSE;
     if (A->keep == MPM_KEEP_LOAD) kept = mpm->shape->ops.keptone(mpm->shape->data, A->kp0 + p, &x[p * d], &st); /* the stencil the step's scatter kept */
     if (!kept) MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, A->F, A->ds, p, Fs), &st);
-    if (AFFINE && velocity) MPMStencilOffsets(g, &x[p * d], &st, dx);
+    if (AFFINE && velocity) MPMAffineOffsets(g, d, &x[p * d], st.n, st.node, st.w, 1, &st.s[0][0], MPM_MAX_DIM, dx);
     if (CRACK) MPMCrackPointGradient(A->crack->D, d, &st, A->crack->g2min, gc);
     for (PetscInt a = 0; a < st.n; a++) {
       const MPMNode *nd              = CRACK && MPMCrackSide(A->crack, d, st.node[a], gc) ? &A->crack->alt[st.node[a]] : &node[st.node[a]]; /* the entry's side's field */
@@ -561,8 +551,8 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
       if (AFFINE && velocity)
         for (PetscInt i = 0; i < d; i++)
           for (PetscInt j = 0; j < d; j++) {
-            if (!ROT) Bm[i * d + j] += st.w[a] * st.s[a][i] * nd->p[i] * dx[a][j]; /* APIC's fit */
-            Dm[i * d + j] += st.w[a] * dx[a][i] * dx[a][j];
+            if (!ROT) as.B[i * d + j] += st.w[a] * st.s[a][i] * nd->p[i] * dx[a][j]; /* APIC's fit */
+            as.D[i * d + j] += st.w[a] * dx[a][i] * dx[a][j];
             Cx[i] += C[p * d * d + i * d + j] * dx[a][j];
           }
       for (PetscInt i = 0; i < d; i++) {
@@ -571,7 +561,7 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
         dv[i] += st.w[a] * dvI;
         dv2c[i] += st.w[a] * dvI * dvI;                            /* |dv_I|^2 and R per component (MPMKSumComponents) */
         Rc[i] += st.w[a] * (vI - dvI - v[p * d + i] - Cx[i]) * vI; /* (v_I^n - v_p - C_p (x_I - x_p)) . v_I */
-        Cdv += st.w[a] * Cx[i] * dvI;
+        as.Cdv += st.w[a] * Cx[i] * dvI;
         if (A->bn) {
           const PetscReal b = A->bn[2 * st.node[a] + 1];
           if (i == 0) {
@@ -591,37 +581,26 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
         if (HOOP && work && i == 0) Lbtt += st.w[a] * (2.0 * vI - dvI) / rh;
       }
       if (ROT && velocity) {
-        if (d == 2) rw[2] += st.w[a] * (dx[a][0] * ta[1] - dx[a][1] * ta[0]);
+        if (d == 2) as.r[2] += st.w[a] * (dx[a][0] * ta[1] - dx[a][1] * ta[0]);
         if (d == 3) {
-          rw[0] += st.w[a] * (dx[a][1] * ta[2] - dx[a][2] * ta[1]);
-          rw[1] += st.w[a] * (dx[a][2] * ta[0] - dx[a][0] * ta[2]);
-          rw[2] += st.w[a] * (dx[a][0] * ta[1] - dx[a][1] * ta[0]);
+          as.r[0] += st.w[a] * (dx[a][1] * ta[2] - dx[a][2] * ta[1]);
+          as.r[1] += st.w[a] * (dx[a][2] * ta[0] - dx[a][0] * ta[2]);
+          as.r[2] += st.w[a] * (dx[a][0] * ta[1] - dx[a][1] * ta[0]);
         }
       }
     }
     if (velocity) {
       const PetscReal dv2 = MPMKSumComponents(d, dv2c), R = MPMKSumComponents(d, Rc);
-      PetscReal       share = 0.5 * dv2 + Cdv, gain = 0.0; /* grid kinetic energy gain of the point's share, the point's own [erg/g] */
-      for (PetscInt i = 0; i < d; i++) {                   /* with nodal shares v_p + dv - sum N b_I (v_p - v_I^n) (src/transfer/blend.c), else the blend */
+      PetscReal       share = 0.5 * dv2 + as.Cdv, gain = 0.0; /* grid kinetic energy gain of the point's share, the point's own [erg/g] */
+      for (PetscInt i = 0; i < d; i++) {                      /* with nodal shares v_p + dv - sum N b_I (v_p - v_I^n) (src/transfer/blend.c), else the blend */
         const PetscReal vn = nodal ? v[p * d + i] + dv[i] - (nb * v[p * d + i] - bv0[i]) : alpha * (v[p * d + i] + dv[i]) + (1.0 - alpha) * vpic[i];
         share += v[p * d + i] * dv[i];
         gain += 0.5 * (vn * vn - v[p * d + i] * v[p * d + i]);
         v[p * d + i] = vn;
       }
       if (kefix) e[p] += share - gain + (nodal ? MPMKSumComponents(d, Rbc) : (1.0 - alpha) * R);
-      if (AFFINE) {
-        PetscReal *ake = &pts->f[mpm->affine_ke][p], knew = 0.0;
-        if (ROT)
-          MPMRotationFromMoments(d, rw, Dm, &C[p * d * d]);
-        else
-          MPMAffineFromMoments(g, Bm, Dm, &C[p * d * d]);
-        for (PetscInt i = 0; i < d; i++) /* the new affine velocity's kinetic energy, sum N |C_p dx|^2 / 2 = tr(C_p D_p C_p^T) / 2 */
-          for (PetscInt j = 0; j < d; j++)
-            for (PetscInt k = 0; k < d; k++) knew += 0.5 * C[p * d * d + i * d + j] * Dm[j * d + k] * C[p * d * d + i * d + k];
-        if (kefix) e[p] += *ake - knew; /* the affine kinetic energy is kinetic energy: its change is not the fix's */
-        *ake = knew;
-      }
-      if (work) { /* the work the grid's forces did over the kick, sum_p V_p sigma_p : Lbar_p dt_kick = sum_I f_I . vbar_I dt_kick */
+      if (AFFINE) MPMAffineFinish(A, p, &as); /* the new fit, its kinetic energy */
+      if (work) {                             /* the work the grid's forces did over the kick, sum_p V_p sigma_p : Lbar_p dt_kick = sum_I f_I . vbar_I dt_kick */
         PetscReal sL = 0.0, div = 0.0;
         if (A->pointwork)
           div = A->pointwork[p];
@@ -798,7 +777,11 @@ PetscErrorCode MPMGather(MPM mpm, PetscReal dt, PetscReal kick, PetscBool veloci
                                 .hctx      = &hc,
                                 .hooprate  = pts.f[MPM_FIELD_HOOPRATE],
                                 .kp0       = MPMPointsWindowStart(mpm),
-                                .keep      = mpm->shape->keeps && !crack ? MPM_KEEP_LOAD : MPM_KEEP_NONE};
+                                .keep      = mpm->shape->keeps && !crack ? MPM_KEEP_LOAD : MPM_KEEP_NONE,
+                                .C         = velocity && mpm->affine >= 0 ? pts.f[mpm->affine] : NULL,
+                                .Cke       = mpm->affine_ke >= 0 ? pts.f[mpm->affine_ke] : NULL,
+                                .rotation  = mpm->blend.rotation,
+                                .grid      = g};
     if (remap) { /* f_I, zeroed by the kick (MPMGridAdvance, and the ghosts from their owners), takes the remap's momenta (MPMRemapApply) */
       mpm->kern->g2p_remap[work ? MPM_G2P_MODE_VELOCITY_WORK : MPM_G2P_MODE_VELOCITY](g, mpm->shape->data, &A, node);
     } else if (mpm->kern && !crack) {

@@ -14,7 +14,8 @@ enum {
   MPM_P2G_PRESSURE = 1, /* f_I += V_p (p_p + q_p) grad N_I(x_p): point-by-point pressure force */
   MPM_P2G_STRESS   = 2, /* f_I -= V_p s_p . grad N_I(x_p): a strength model's stress           */
   MPM_P2G_NMODES   = 4,
-  MPM_P2G_REMAP    = 4 /* within a kernel: the momentum product alone, into f_I (the MUSL remap's, in grid to points) */
+  MPM_P2G_REMAP    = 4, /* within a kernel: the momentum product alone, into f_I (the MUSL remap's, in grid to points) */
+  MPM_P2G_AFFINE   = 8  /* within a kernel: the momentum of the affine velocity v_p + C_p (x_I - x_p) (MPMTransferArgs::C) */
 };
 typedef enum {
   MPM_P2G_MODE_MASS            = 0, /* m_I and (mv)_I only (the output's projection; the cell rule without strength) */
@@ -30,8 +31,9 @@ enum {
   MPM_G2P_KINEMATICS = 2, /* x_p += dt v_pic, L_p = sum v_I (x) grad N_I                        */
   MPM_G2P_WORK       = 4, /* conservative energy update: e_p += the work of the grid's forces   */
   MPM_G2P_NMODES     = 8,
-  MPM_G2P_REMAP      = 8, /* with velocity: f_I += N_I m_p v_p^{n+1}, the MUSL remap's momentum (g2p_remap)  */
-  MPM_G2P_FLIP       = 16 /* within a kernel, with velocity: alpha = 1 (pure FLIP), whose fix has no PIC term R  */
+  MPM_G2P_REMAP      = 8,  /* with velocity: f_I += N_I m_p v_p^{n+1}, the MUSL remap's momentum (g2p_remap)  */
+  MPM_G2P_FLIP       = 16, /* within a kernel, with velocity: alpha = 1 (pure FLIP), whose fix has no PIC term R  */
+  MPM_G2P_AFFINE     = 32  /* within a kernel, with velocity: the affine velocity's fit (MPMTransferArgs::C)       */
 };
 typedef enum {
   MPM_G2P_MODE_SUMS                     = 0, /* the stencil sums only, nothing written (never asked for) */
@@ -75,11 +77,50 @@ typedef struct {
   PetscReal           *hW;                    /* its nodal sums, 2 per node of the ghosted local grid                                           */
   PetscReal (*hoopr)(const void *, PetscInt); /* axisymmetric (2D): point p's hoop radius [cm] (MPMHoopRadius), NULL: planar; in points
                                                  to grid only where the step's force is summed */
-  const void *hctx;
-  PetscReal  *hooprate; /* axisymmetric: L_tt = v_r / r, written by the kinematics [1/s]                                   */
-  PetscInt    kp0;      /* the first point's index among the rank's points (a window's offset), for the kept stencils       */
-  MPMKeep     keep;     /* the kept stencils (MPMShapeKeep): stored by the step's points to grid, read by its grid to points */
+  const void    *hctx;
+  PetscReal     *hooprate; /* axisymmetric: L_tt = v_r / r, written by the kinematics [1/s]                                   */
+  PetscInt       kp0;      /* the first point's index among the rank's points (a window's offset), for the kept stencils       */
+  MPMKeep        keep;     /* the kept stencils (MPMShapeKeep): stored by the step's points to grid, read by its grid to points */
+  PetscReal     *C;        /* APIC's affine velocity or the blend's rotation per point (d x d) [1/s], or NULL: none                */
+  PetscReal     *Cke;      /* its kinetic energy about the point, sum N |C_p (x_I - x_p)|^2 / 2 [erg/g]                            */
+  PetscBool      rotation; /* C is the blend's rotation (-mpm_update_blend_rotation), fitted to its targets, else APIC's fit      */
+  const MPMGrid *grid;     /* with C: the grid the offsets x_I - x_p are taken on                                                  */
 } MPMTransferArgs;
+
+/* APIC and the blend's rotation: the offsets of point xp's ns stencil entries about the stencil's mean,
+     dx_a = x_I - x_p - sum_J N_J (x_J - x_p)   [cm],
+   x_I the node's position before the stencil folded it across a wall (its mirror image where the entry's sign s_ak is
+   -1: s, the signs of entry a at s[a sd], or NULL where none is -1). Entry a's node and weight are node[a ls] and
+   W[a ls]. The mean is 0 inside the grid, not where a domain's corners are clipped at a face of the grid, where about
+   x_p the point's affine velocity would carry momentum and the kinetic-energy fix could turn negative. The generic and
+   the specialised transfers share it, so that the two give the same bits. */
+static inline void MPMAffineOffsets(const MPMGrid *g, PetscInt d, const PetscReal xp[], PetscInt ns, const PetscInt *node, const PetscReal *W, PetscInt ls, const PetscReal *s, PetscInt sd, PetscReal dx[][MPM_MAX_DIM])
+{
+  PetscReal mean[MPM_MAX_DIM] = {0, 0, 0};
+
+  for (PetscInt a = 0; a < ns; a++) {
+    PetscInt n = node[a * ls];
+    for (PetscInt k = 0; k < d; k++) {
+      const PetscInt i = n % g->gm[k];
+      PetscReal      x = g->lo[k] + (g->gs[k] + i) * g->h[k];
+      n /= g->gm[k];
+      if (s && s[a * sd + k] < 0.0) x = 2.0 * (g->mirror_lo[k] && (!g->mirror_hi[k] || xp[k] - g->lo[k] < g->hi[k] - xp[k]) ? g->lo[k] : g->hi[k]) - x;
+      dx[a][k] = x - xp[k];
+    }
+    for (PetscInt k = 0; k < d; k++) mean[k] += W[a * ls] * dx[a][k];
+  }
+  for (PetscInt a = 0; a < ns; a++)
+    for (PetscInt k = 0; k < d; k++) dx[a][k] -= mean[k];
+}
+
+/* A point's sums for its affine velocity's new fit over its stencil (grid to points, with the velocity):
+     Cdv = sum N (C_p dx) . dv_I,  B = sum N v_I dx^T (APIC),  D = sum N dx dx^T,  r = sum N dx x (t_I - v_p) (the rotation)
+   (dx the offsets of MPMAffineOffsets, C_p the point's old affine velocity, t_I the blend's target at the node). */
+typedef struct {
+  PetscReal Cdv, B[MPM_MAX_DIM * MPM_MAX_DIM], D[MPM_MAX_DIM * MPM_MAX_DIM], r[3];
+} MPMAffineSums;
+
+PETSC_INTERN void MPMAffineFinish(const MPMTransferArgs *, PetscInt, MPMAffineSums *);
 
 /* The heat exchange of artificial conduction (src/modules/conduction.c), fused into the step's transfers: a point with
    weight w_p > 0 adds to its nodes, in points to grid,
