@@ -35,8 +35,14 @@ typedef PetscReal MPM_KCAT(MPMKVec, MPM_KNAME, MPM_KD, d) __attribute__((vector_
 #endif
 
 #if defined(MPM_KSTENCIL)
-/* The family's own stencil of point p (kernels.h): ns <= MPM_KS entries, the mirror signs SG filled only when one is -1. */
-#  define MPM_KEVAL(g, ctx, A, p, node, W, DW, SG, ns) MPM_KSTENCIL(ctx, g, A, p, node, W, &(DW)[0][0], &(SG)[0][0], &(ns), MPM_KD)
+/* The family's own stencil of point p (kernels.h): ns <= MPM_KS entries, the mirror signs SG filled only when one is -1.
+   One function per family and dimension that every mode's kernel calls (not inlined into each: the compile time of a
+   family with a large stencil, CPDI's, grew with every mode that inlined it). */
+static __attribute__((noinline)) int MPM_KCAT(MPMKStencilOwn, MPM_KNAME, MPM_KD, d)(const void *ctx, const MPMGrid *g, const MPMTransferArgs *A, PetscInt p, PetscInt node[], PetscReal W[], PetscReal DW[], PetscReal SG[], PetscInt *ns)
+{
+  return MPM_KSTENCIL(ctx, g, A, p, node, W, DW, SG, ns, MPM_KD);
+}
+#  define MPM_KEVAL(g, ctx, A, p, node, W, DW, SG, ns) MPM_KCAT(MPMKStencilOwn, MPM_KNAME, MPM_KD, d)(ctx, g, A, p, node, W, &(DW)[0][0], &(SG)[0][0], &(ns))
 #else
 /* A tensor-product family: always MPM_KS entries (ns keeps that constant, so the loops over entries unroll). */
 #  define MPM_KEVAL(g, ctx, A, p, node, W, DW, SG, ns) MPM_KCAT(MPMKStencilStrided, MPM_KNAME, MPM_KD, d)(g, &(A)->x[(p)*MPM_KD], node, W, &(DW)[0][0], SG, 1, MPM_KD, 1)
@@ -206,8 +212,8 @@ MPM_KINLINE void MPM_KCAT(MPMKLaneOut, MPM_KNAME, MPM_KD, d)(PetscInt l, const P
    those with entries of weight 0 beyond their own stencil. After n
    groups in a row with no lane done (domains within a cell: several points per cell; a row of points at a wall) the
    next 2^n - 1, at most 7, are not tried: skip[0] groups left to pass over, skip[1] the next count. */
-MPM_KINLINE unsigned MPM_KCAT(MPMKStencilGroup, MPM_KNAME, MPM_KD, d)(const void *ctx, const MPMGrid *g, const MPMTransferArgs *A, PetscInt p, PetscInt node[MPM_KS3][MPM_KSLANES], PetscReal W[MPM_KS3][MPM_KSLANES],
-                                                                      PetscReal DW[MPM_KS3][MPM_KD][MPM_KSLANES], unsigned *padded, PetscInt skip[2])
+static __attribute__((noinline)) unsigned MPM_KCAT(MPMKStencilGroup, MPM_KNAME, MPM_KD, d)(const void *ctx, const MPMGrid *g, const MPMTransferArgs *A, PetscInt p, PetscInt node[MPM_KS3][MPM_KSLANES], PetscReal W[MPM_KS3][MPM_KSLANES],
+                                                                                           PetscReal DW[MPM_KS3][MPM_KD][MPM_KSLANES], unsigned *padded, PetscInt skip[2])
 {
   unsigned done;
 

@@ -84,15 +84,23 @@
   X(D, VelocityRemap, MPM_G2P_MODE_VELOCITY_REMAP) \
   X(D, VelocityWorkRemap, MPM_G2P_MODE_VELOCITY_WORK_REMAP)
 
-#define MPM_KD 1
-#include "kernel_entries.h"
-#undef MPM_KD
-#define MPM_KD 2
-#include "kernel_entries.h"
-#undef MPM_KD
-#define MPM_KD 3
-#include "kernel_entries.h"
-#undef MPM_KD
+/* MPM_KONLY (1, 2 or 3), where a family defines it: that dimension's kernels alone, and its table
+   MPMTransferKernels_<family>_<d>d (not static), for a family whose dimensions compile apart (CPDI). */
+#if !defined(MPM_KONLY) || MPM_KONLY == 1
+#  define MPM_KD 1
+#  include "kernel_entries.h"
+#  undef MPM_KD
+#endif
+#if !defined(MPM_KONLY) || MPM_KONLY == 2
+#  define MPM_KD 2
+#  include "kernel_entries.h"
+#  undef MPM_KD
+#endif
+#if !defined(MPM_KONLY) || MPM_KONLY == 3
+#  define MPM_KD 3
+#  include "kernel_entries.h"
+#  undef MPM_KD
+#endif
 
 /* The table, MPMTransferKernels_<family>[d - 1], each kernel at the index of its mode (transfer.h): p2g[MPM_P2G_MODE_STRESS]
    = MPMP2G_<family>_<d>d_Stress, g2p_remap[MPM_G2P_MODE_VELOCITY_WORK] = MPMG2P_<family>_<d>d_VelocityWorkRemap, ... */
@@ -103,9 +111,13 @@
   {                                                                                                                                                \
     .p2g = {MPM_KP2G_MODES(MPM_KP2GENTRY, D)}, .g2p = {MPM_KG2P_MODES(MPM_KG2PENTRY, D)}, .g2p_remap = { MPM_KG2PREMAP_MODES(MPM_KREMAPENTRY, D) } \
   }
-#define MPM_KTABLES_(name) static const MPMTransferKernels MPMTransferKernels_##name[3] = {MPM_KTABLE(1), MPM_KTABLE(2), MPM_KTABLE(3)};
-#define MPM_KTABLES(name) MPM_KTABLES_(name)
+#if defined(MPM_KONLY)
+const MPMTransferKernels MPM_KCAT(MPMTransferKernels, MPM_KNAME, MPM_KONLY, d) = MPM_KTABLE(MPM_KONLY);
+#else
+#  define MPM_KTABLES_(name) static const MPMTransferKernels MPMTransferKernels_##name[3] = {MPM_KTABLE(1), MPM_KTABLE(2), MPM_KTABLE(3)};
+#  define MPM_KTABLES(name) MPM_KTABLES_(name)
 MPM_KTABLES(MPM_KNAME)
+#endif
 #undef MPM_KTABLES
 #undef MPM_KTABLES_
 #undef MPM_KTABLE
