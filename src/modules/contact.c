@@ -12,8 +12,8 @@
    g_b - sum_{c != b} g_c (the two bodies' normals averaged, equal and opposite for two bodies, so that momentum is
    conserved exactly), or mass, along g_b; where a rigid body is present, minus the rigid body's own normal (its
    surface is exact: the averaged normal tilts at a block's corners and slowed a frictionless block on an incline),
-   taken from its geometry where it is one region (its polygon, closed surface, box or shell), else from its mass
-   gradient.
+   taken from its geometry (its polygons, closed surfaces, boxes or shells; of several regions, their union's
+   surface), else from its mass gradient.
    Gap test (-mpm_contact_gap): volume (default), the bodies touch at node I only where their volumes there fill it,
    sum_b sum_p N_I(x_p) V_p >= f V_I, V_I the node's share of the cells (r-z: times r_I; half a cell for each symmetry plane the node lies on), f = -mpm_contact_fill (default 0.5; the
    approach test alone, none, lets bodies meet a cell early: the disks of inputs/disks_2d.opts lose 12% of their
@@ -57,7 +57,8 @@ typedef struct {
   PetscBool        rigid[MPM_MAX_BODIES];                                        /* -body_<b>_rigid_velocity given                  */
   MPMTable         vtab[MPM_MAX_BODIES];                                         /* its velocity over time (-body_<b>_rigid_velocity[_times]) [cm/s] */
   PetscReal        vrigid[MPM_MAX_BODIES][3];                                    /* its velocity in this kick, v(t^n + dt_n / 2) [cm/s] */
-  PetscInt         rreg[MPM_MAX_BODIES];                                         /* its one region, whose geometry gives its normals, or -1 (several)  */
+  PetscInt         rreg[MPM_MAX_BODIES];                                         /* its first region (whose geometry gives its normals), or -1: none */
+  PetscInt         nrreg[MPM_MAX_BODIES];                                        /* and its number of regions                                       */
   PetscReal        shift[MPM_MAX_BODIES][3];                                     /* its displacement from t = 0 to t^n, int v dt [cm] */
   Vec              geo[MPM_MAX_BODIES];                                          /* per body, ghosted local nodes: m = sum N V_p, p = grad m (MPMNode layout) */
   PetscInt         gid;                                                          /* the grid the vectors were made for (MPMGrid::id)   */
@@ -125,9 +126,10 @@ static PetscErrorCode MPMContactSetFromOptions(MPMModule mod, MPM mpm, PetscOpti
                               "A rigid body: its prescribed velocity, one value per dimension [cm/s], or one row per time of -body_<b>_rigid_velocity_times (linear in between); it takes part in contact and the report gives the contact force on it",
                               mpm->grid.dim, &ct->vtab[b], &ct->rigid[b]));
     if (ct->rigid[b]) MPMTableEval(&ct->vtab[b], 0.0, ct->vrigid[b]);
-    ct->rreg[b] = -1;
-    for (PetscInt r = 0, nr = 0; ct->rigid[b] && r < mpm->nreg; r++)
-      if (mpm->reg[r].body == b) ct->rreg[b] = nr++ ? -1 : r;
+    ct->rreg[b]  = -1;
+    ct->nrreg[b] = 0;
+    for (PetscInt r = 0; ct->rigid[b] && r < mpm->nreg; r++)
+      if (mpm->reg[r].body == b && !ct->nrreg[b]++) ct->rreg[b] = r;
     for (PetscInt r = 0; ct->rigid[b] && r < mpm->nreg; r++) { /* its points start at its velocity: nothing would change theirs */
       PetscCheck(mpm->reg[r].body != b || mpm->reg[r].vradial == 0.0, mpm->comm, PETSC_ERR_USER_INPUT, "%s: region %s of the rigid body has a radial velocity (-region_%s_velocity_radial %g); valid is 0", opt, mpm->reg[r].name, mpm->reg[r].name,
                  (double)mpm->reg[r].vradial);
@@ -346,55 +348,92 @@ static void MPMContactTableIntegral(const MPMTable *tab, PetscReal t, PetscReal 
   }
 }
 
-/* Rigid body rb's outward unit normal at node c from its region's geometry, where the body has one region: the face of
-   its polygon or closed surface (-region_<r>_surface), else of its box, or of its shell (-rmin, -rmax), nearest to where
-   the node lay when the body started (x_I less the body's displacement), faces on the grid's boundary left out (nothing
-   meets them). Its surface is exact: the mass gradient of a surface that crosses the cells, at one point per cell a
-   staircase, scattered by 20 to 40 degrees and braked a frictionless block on a rigid wedge by 18% in 2D and 21% in 3D
-   (docs/contact.md). False where the body has several regions or no face is found: its mass gradient then. */
-static PetscBool MPMContactRigidShapeNormal(const MPMContact *ct, MPM mpm, PetscInt rb, PetscInt c, PetscReal n[])
+/* Whether the point p on a face of region r of body rb, moved outwards along the face's normal n by 1e-6 of a cell,
+   lies in another region of the body: a face inside the body (the regions' union), none of its surface. */
+static PetscBool MPMContactFaceInner(MPM mpm, PetscInt rb, PetscInt r, const PetscReal p[], const PetscReal n[])
 {
-  const MPMGrid   *g = &mpm->grid;
-  const PetscInt   d = g->dim;
-  PetscInt         ic[3];
-  const MPMRegion *reg;
-  PetscReal        x[MPM_MAX_DIM] = {0, 0, 0}, best = PETSC_MAX_REAL, dist, nk[MPM_MAX_DIM], r2 = 0.0, dr[MPM_MAX_DIM] = {0, 0, 0};
+  const PetscInt d              = mpm->grid.dim;
+  PetscReal      q[MPM_MAX_DIM] = {0, 0, 0};
 
-  if (rb < 0 || rb >= mpm->nbodies || ct->rreg[rb] < 0) return PETSC_FALSE;
-  reg = &mpm->reg[ct->rreg[rb]];
-  MPMGridNodeIndices(g, c, ic);
-  for (PetscInt k = 0; k < d; k++) {
-    x[k] = g->lo[k] + (g->gs[k] + ic[k]) * g->h[k] - ct->shift[rb][k];
+  for (PetscInt k = 0; k < d; k++) q[k] = p[k] + 1e-6 * mpm->grid.hmin * n[k];
+  for (PetscInt o = 0; o < mpm->nreg; o++)
+    if (o != r && mpm->reg[o].body == rb && MPMRegionContains(&mpm->reg[o], d, q)) return PETSC_TRUE;
+  return PETSC_FALSE;
+}
+
+/* Region r's face nearest to x (a node's position where the body started): the face of its polygon or closed surface
+   (-region_<r>_surface), else of its box, or of its shell (-rmin, -rmax), faces on the grid's boundary left out
+   (nothing meets them), and, where its body has several regions (union: true), the faces inside the body (an
+   outline's marked at set-up, MPMOutlineSetInner; a box's or a shell's where the point of it nearest to x lies inside,
+   MPMContactFaceInner); its distance [cm] in *best and its outward unit normal in n, false where none is found. */
+static PetscBool MPMContactRegionFace(MPM mpm, PetscInt r, PetscBool unite, const PetscReal x[], PetscReal *best, PetscReal n[])
+{
+  const MPMGrid   *g   = &mpm->grid;
+  const MPMRegion *reg = &mpm->reg[r];
+  const PetscInt   d   = g->dim;
+  PetscReal        dist, nk[MPM_MAX_DIM], r2 = 0.0, dr[MPM_MAX_DIM] = {0, 0, 0}, p[MPM_MAX_DIM];
+
+  *best = PETSC_MAX_REAL;
+  for (PetscInt k = 0; k < d; k++)
     if (k != reg->axis) {
       dr[k] = x[k] - reg->center[k];
       r2 += dr[k] * dr[k];
     }
-  }
   if (reg->outline) {
     if (!MPMOutlineNearestFace(reg->outline, x, g->lo, g->hi, &dist, nk)) return PETSC_FALSE;
-    best = dist;
+    *best = dist;
     for (PetscInt k = 0; k < d; k++) n[k] = nk[k];
   }
-  for (PetscInt k = 0; k < d && !reg->outline; k++) { /* without an outline, the box's faces inside the grid */
-    if (reg->lo[k] > g->lo[k] && PetscAbsReal(x[k] - reg->lo[k]) < best) {
-      best = PetscAbsReal(x[k] - reg->lo[k]);
-      for (PetscInt j = 0; j < d; j++) n[j] = j == k ? -1.0 : 0.0;
+  for (PetscInt k = 0; k < d && !reg->outline; k++) /* without an outline, the box's faces inside the grid */
+    for (PetscInt s = -1; s <= 1; s += 2) {
+      const PetscReal f = s < 0 ? reg->lo[k] : reg->hi[k];
+      if ((s < 0 ? !(f > g->lo[k]) : !(f < g->hi[k])) || !(PetscAbsReal(x[k] - f) < *best)) continue;
+      for (PetscInt j = 0; j < d; j++) {
+        nk[j] = j == k ? (PetscReal)s : 0.0;
+        p[j]  = j == k ? f : x[j];
+      }
+      if (unite && MPMContactFaceInner(mpm, reg->body, r, p, nk)) continue;
+      *best = PetscAbsReal(x[k] - f);
+      for (PetscInt j = 0; j < d; j++) n[j] = nk[j];
     }
-    if (reg->hi[k] < g->hi[k] && PetscAbsReal(reg->hi[k] - x[k]) < best) {
-      best = PetscAbsReal(reg->hi[k] - x[k]);
-      for (PetscInt j = 0; j < d; j++) n[j] = j == k ? 1.0 : 0.0;
+  if (r2 > 0.0) { /* the shell's spheres or cylinders */
+    const PetscReal rr = PetscSqrtReal(r2);
+    for (PetscInt s = 1; s >= -1; s -= 2) { /* the outer sphere first */
+      const PetscReal R = s > 0 ? reg->rmax : reg->rmin;
+      if ((s > 0 ? !(R < PETSC_MAX_REAL) : !(R > 0.0)) || !(PetscAbsReal(rr - R) < *best)) continue;
+      for (PetscInt j = 0; j < d; j++) {
+        nk[j] = s * dr[j] / rr;
+        p[j]  = j == reg->axis ? x[j] : reg->center[j] + R * dr[j] / rr;
+      }
+      if (unite && MPMContactFaceInner(mpm, reg->body, r, p, nk)) continue;
+      *best = PetscAbsReal(rr - R);
+      for (PetscInt j = 0; j < d; j++) n[j] = nk[j];
     }
   }
-  if (r2 > 0.0) { /* the shell's spheres or cylinders */
-    const PetscReal r = PetscSqrtReal(r2);
-    if (reg->rmax < PETSC_MAX_REAL && PetscAbsReal(r - reg->rmax) < best) {
-      best = PetscAbsReal(r - reg->rmax);
-      for (PetscInt j = 0; j < d; j++) n[j] = dr[j] / r;
-    }
-    if (reg->rmin > 0.0 && PetscAbsReal(r - reg->rmin) < best) {
-      best = PetscAbsReal(r - reg->rmin);
-      for (PetscInt j = 0; j < d; j++) n[j] = -dr[j] / r;
-    }
+  return (PetscBool)(*best < PETSC_MAX_REAL);
+}
+
+/* Rigid body rb's outward unit normal at node c from its regions' geometry: the nearest face (MPMContactRegionFace)
+   to where the node lay when the body started (x_I less the body's displacement), of the union of its regions (the
+   faces inside it left out). Its surface is exact: the mass gradient of a surface that crosses the cells, at one point
+   per cell a staircase, scattered by 20 to 40 degrees and braked a frictionless block on a rigid wedge by 18% in 2D and
+   21% in 3D (docs/contact.md); a wedge of two regions that share a face took the shared face's normal beside it.
+   False where no face is found: the mass gradient then. */
+static PetscBool MPMContactRigidShapeNormal(const MPMContact *ct, MPM mpm, PetscInt rb, PetscInt c, PetscReal n[])
+{
+  const MPMGrid *g = &mpm->grid;
+  const PetscInt d = g->dim;
+  PetscInt       ic[3];
+  PetscReal      x[MPM_MAX_DIM] = {0, 0, 0}, best = PETSC_MAX_REAL;
+
+  if (rb < 0 || rb >= mpm->nbodies || ct->rreg[rb] < 0) return PETSC_FALSE;
+  MPMGridNodeIndices(g, c, ic);
+  for (PetscInt k = 0; k < d; k++) x[k] = g->lo[k] + (g->gs[k] + ic[k]) * g->h[k] - ct->shift[rb][k];
+  for (PetscInt r = ct->rreg[rb]; r < mpm->nreg; r++) {
+    PetscReal dist, nr[MPM_MAX_DIM];
+    if (mpm->reg[r].body != rb || !MPMContactRegionFace(mpm, r, (PetscBool)(ct->nrreg[rb] > 1), x, &dist, nr) || !(dist < best)) continue;
+    best = dist;
+    for (PetscInt k = 0; k < d; k++) n[k] = nr[k];
   }
   return (PetscBool)(best < PETSC_MAX_REAL);
 }

@@ -72,6 +72,7 @@ struct _n_MPMOutline {
   PetscInt   fb[3];  /* surface: bins of the nearest-face search along x, y, z over lo .. hi */
   PetscInt  *fstart; /* CSR: the triangles whose boxes meet face bin b are fidx[fstart[b] .. fstart[b + 1]) */
   PetscInt  *fidx;
+  char      *inner; /* per face (a polygon's edge ending at vertex i, a triangle): 1 where it lies inside its body (MPMOutlineSetInner), or NULL */
   char       source[PETSC_MAX_PATH_LEN];
 };
 
@@ -205,7 +206,7 @@ static PetscReal MPMSurfaceNearest(const MPMOutline o, const PetscReal x[], cons
             const PetscInt   i = o->fidx[q];
             const PetscReal *t = &o->v[9 * i], *m = &o->nrm[3 * i];
             PetscReal        d2;
-            if (m[0] == 0.0 && m[1] == 0.0 && m[2] == 0.0) continue;
+            if ((m[0] == 0.0 && m[1] == 0.0 && m[2] == 0.0) || (o->inner && o->inner[i])) continue;
             if (MPMOutlineOnBox(3, t, lo, hi)) continue;
             d2 = MPMTriangleDistance2(t, x);
             if (d2 < best) {
@@ -226,7 +227,7 @@ static PetscReal MPMSurfaceNearest(const MPMOutline o, const PetscReal x[], cons
 }
 
 /* The outline's face nearest to x, a polygon's edge or a surface's triangle, leaving out the faces that lie on the
-   face of the box lo .. hi (the grid's: beyond it nothing touches them): its distance from x [cm] and its outward unit
+   face of the box lo .. hi (the grid's: beyond it nothing touches them) and those inside its body (MPMOutlineSetInner): its distance from x [cm] and its outward unit
    normal n; false where every face lies on the box. A polygon's vertices run either way: the normal is turned to point
    away from its interior (MPMOutline::orient); a surface's triangles are turned at set-up (MPMSurfaceOrient). */
 PetscBool MPMOutlineNearestFace(const MPMOutline o, const PetscReal x[], const PetscReal lo[], const PetscReal hi[], PetscReal *dist, PetscReal n[])
@@ -238,7 +239,7 @@ PetscBool MPMOutlineNearestFace(const MPMOutline o, const PetscReal x[], const P
     const PetscReal ax = o->v[2 * j], ay = o->v[2 * j + 1], bx = o->v[2 * i], by = o->v[2 * i + 1], ex = bx - ax, ey = by - ay, l2 = ex * ex + ey * ey;
     const PetscReal e[4] = {ax, ay, bx, by};
     PetscReal       t, dx, dy, d2;
-    if (MPMOutlineOnBox(2, e, lo, hi) || !(l2 > 0.0)) continue;
+    if (MPMOutlineOnBox(2, e, lo, hi) || !(l2 > 0.0) || (o->inner && o->inner[i])) continue;
     t  = PetscMin(1.0, PetscMax(0.0, ((x[0] - ax) * ex + (x[1] - ay) * ey) / l2));
     dx = x[0] - (ax + t * ex);
     dy = x[1] - (ay + t * ey);
@@ -253,6 +254,37 @@ PetscBool MPMOutlineNearestFace(const MPMOutline o, const PetscReal x[], const P
   if (best >= PETSC_MAX_REAL) return PETSC_FALSE;
   *dist = PetscSqrtReal(best);
   return PETSC_TRUE;
+}
+
+/* Marks the faces of outline o that lie inside the body it is a region of: a face whose centroid, moved outwards along
+   its normal by 1e-6 of the outline's size, lies in another region of the body (covered(ctx, x)): a face two regions
+   share, or one inside another region. The body is the regions' union; its surface leaves these out
+   (MPMOutlineNearestFace). A face partly inside counts by its centroid. */
+PetscErrorCode MPMOutlineSetInner(MPMOutline o, PetscBool (*covered)(void *, const PetscReal[]), void *ctx)
+{
+  PetscReal size = 0.0;
+
+  PetscFunctionBegin;
+  for (PetscInt k = 0; k < o->dim; k++) size = PetscMax(size, o->hi[k] - o->lo[k]);
+  if (!o->inner) PetscCall(PetscCalloc1(o->n, &o->inner));
+  for (PetscInt i = 0, j = o->n - 1; i < o->n; j = i++) {
+    PetscReal c[3] = {0, 0, 0}, n[3] = {0, 0, 0};
+    if (o->dim == 2) { /* the edge from vertex j to i, its right-hand normal turned outwards (MPMOutlineNearestFace) */
+      const PetscReal ex = o->v[2 * i] - o->v[2 * j], ey = o->v[2 * i + 1] - o->v[2 * j + 1], l = PetscSqrtReal(ex * ex + ey * ey);
+      if (!(l > 0.0)) continue;
+      c[0] = 0.5 * (o->v[2 * i] + o->v[2 * j]);
+      c[1] = 0.5 * (o->v[2 * i + 1] + o->v[2 * j + 1]);
+      n[0] = o->orient * ey / l;
+      n[1] = -o->orient * ex / l;
+    } else
+      for (PetscInt k = 0; k < 3; k++) {
+        c[k] = (o->v[9 * i + k] + o->v[9 * i + 3 + k] + o->v[9 * i + 6 + k]) / 3.0;
+        n[k] = o->nrm[3 * i + k];
+      }
+    for (PetscInt k = 0; k < o->dim; k++) c[k] += 1e-6 * size * n[k];
+    o->inner[i] = (char)covered(ctx, c);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscBool MPMOutlineContains(const MPMOutline o, const PetscReal x[])
@@ -628,6 +660,7 @@ PetscErrorCode MPMOutlineDestroy(MPMOutline *o)
   PetscCall(PetscFree((*o)->nrm));
   PetscCall(PetscFree((*o)->fstart));
   PetscCall(PetscFree((*o)->fidx));
+  PetscCall(PetscFree((*o)->inner));
   PetscCall(PetscFree(*o));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

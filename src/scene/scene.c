@@ -55,10 +55,10 @@ static PetscErrorCode MPMRegionSetFromOptions(MPM mpm, MPMRegion *r)
   PetscOptionsBegin(mpm->comm, prefix, "Region of the scene", "MPM");
   PetscCall(PetscOptionsString("-material", "Material that fills the region (one of -mpm_materials)", "", mat, mat, sizeof(mat), &set));
   r->bodyname[0] = 0;
-  PetscCall(PetscOptionsString(
-    "-body",
-    "Body the region belongs to: regions with the same body name move on one velocity field (welded); bodies meet through -mpm_contact. Default: a solid region is a body of its own (named after the region), the fluid regions form the body fluid", "",
-    r->bodyname, r->bodyname, sizeof(r->bodyname), NULL));
+  PetscCall(PetscOptionsString("-body",
+                               "Body the region belongs to: regions with the same body name move on one velocity field (welded; a rigid body of several regions is their union, its contact normals from the union's surface); bodies meet through "
+                               "-mpm_contact. Default: a solid region is a body of its own (named after the region), the fluid regions form the body fluid",
+                               "", r->bodyname, r->bodyname, sizeof(r->bodyname), NULL));
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-lo", "Lower corner of the region's box [cm]", d, r->lo));
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-hi", "Upper corner of the region's box [cm]", d, r->hi));
   PetscCall(MPMOptionsDimReals(PetscOptionsObject, "-center", "Centre of the region's shell rmin <= |x - center| <= rmax [cm]", d, r->center));
@@ -130,6 +130,22 @@ static PetscErrorCode MPMMaterialAddStage(MPMMaterial *mat, void *obj, PetscErro
    one; a region without that option is a body of its own, named after it, where its material has strength (a
    solid), and joins the body "fluid" where it has none (gases and liquids share one field). Bodies are numbered in
    the order of their first region. */
+/* Whether a region of region r's body other than r holds x (MPMOutlineSetInner's test). */
+typedef struct {
+  MPM      mpm;
+  PetscInt r;
+} MPMSceneCover;
+
+static PetscBool MPMSceneCovered(void *ctx, const PetscReal x[])
+{
+  const MPMSceneCover *c   = (const MPMSceneCover *)ctx;
+  const MPM            mpm = c->mpm;
+
+  for (PetscInt o = 0; o < mpm->nreg; o++)
+    if (o != c->r && mpm->reg[o].body == mpm->reg[c->r].body && MPMRegionContains(&mpm->reg[o], mpm->grid.dim, x)) return PETSC_TRUE;
+  return PETSC_FALSE;
+}
+
 static PetscErrorCode MPMSceneBodies(MPM mpm)
 {
   PetscFunctionBegin;
@@ -149,6 +165,12 @@ static PetscErrorCode MPMSceneBodies(MPM mpm)
       mpm->nbodies++;
     }
     r->body = b;
+  }
+  for (PetscInt i = 0; i < mpm->nreg; i++) { /* a body of several regions is their union: its outlines' faces inside it are none of its surface */
+    MPMSceneCover cover = {mpm, i};
+    PetscInt      nr    = 0;
+    for (PetscInt j = 0; j < mpm->nreg; j++) nr += mpm->reg[j].body == mpm->reg[i].body;
+    if (nr > 1 && mpm->reg[i].outline) PetscCall(MPMOutlineSetInner(mpm->reg[i].outline, MPMSceneCovered, &cover));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

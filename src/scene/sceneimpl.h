@@ -103,22 +103,28 @@ PETSC_INTERN PetscErrorCode MPMHydrostaticAt(const MPMHydrostatic *, const Petsc
 PETSC_INTERN PetscBool      MPMOutlineContains(const MPMOutline, const PetscReal[]);
 PETSC_INTERN PetscBool      MPMOutlineNearestFace(const MPMOutline, const PetscReal[], const PetscReal[], const PetscReal[], PetscReal *, PetscReal[]);
 PETSC_INTERN PetscErrorCode MPMOutlineSetFromOptions(PetscOptionItems *, MPM, const char[], PetscReal[], PetscReal[], MPMOutline *);
+PETSC_INTERN PetscErrorCode MPMOutlineSetInner(MPMOutline, PetscBool (*)(void *, const PetscReal[]), void *);
 PETSC_INTERN PetscErrorCode MPMOutlineView(MPMOutline, PetscViewer);
 PETSC_INTERN PetscReal      MPMOutlineVolume(MPMOutline);
 PETSC_INTERN PetscErrorCode MPMOutlineDestroy(MPMOutline *);
 
+/* Whether region reg holds x (d components): in its box, its shell and its outline. */
+static inline PetscBool MPMRegionContains(const MPMRegion *reg, PetscInt d, const PetscReal x[])
+{
+  PetscBool in = PETSC_TRUE;
+  PetscReal r2 = 0.0;
+
+  for (PetscInt k = 0; k < d; k++) {
+    in = (PetscBool)(in && x[k] >= reg->lo[k] && x[k] <= reg->hi[k]);
+    if (k != reg->axis) r2 += PetscSqr(x[k] - reg->center[k]);
+  }
+  return (PetscBool)(in && r2 >= reg->rmin * reg->rmin && (reg->rmax >= PETSC_MAX_REAL || r2 <= reg->rmax * reg->rmax) && (!reg->outline || MPMOutlineContains(reg->outline, x)));
+}
+
 static inline PetscInt MPMSceneRegionAt(const MPMScene *sc, const PetscReal x[])
 {
-  for (PetscInt r = 0; r < sc->nreg; r++) {
-    const MPMRegion *reg = &sc->reg[r];
-    PetscBool        in  = PETSC_TRUE;
-    PetscReal        r2  = 0.0;
-    for (PetscInt k = 0; k < sc->grid->dim; k++) {
-      in = (PetscBool)(in && x[k] >= reg->lo[k] && x[k] <= reg->hi[k]);
-      if (k != reg->axis) r2 += PetscSqr(x[k] - reg->center[k]);
-    }
-    if (in && r2 >= reg->rmin * reg->rmin && (reg->rmax >= PETSC_MAX_REAL || r2 <= reg->rmax * reg->rmax) && (!reg->outline || MPMOutlineContains(reg->outline, x))) return r;
-  }
+  for (PetscInt r = 0; r < sc->nreg; r++)
+    if (MPMRegionContains(&sc->reg[r], sc->grid->dim, x)) return r;
   return -1;
 }
 
