@@ -65,7 +65,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(const MPMTransfer
    the lanes of one vector (MPM_KCV), the mirror signs too: each sum takes the same products in the same entry order as
    component by component, so the same bits, with a vector operation where those took d or d^2 scalar ones. */
 MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, const MPMNode *nodes, PetscInt p, const PetscInt ns, const PetscInt node[MPM_KS], const PetscReal W[MPM_KS], const PetscReal DW[MPM_KS][MPM_KD],
-                                                              const PetscReal SG[MPM_KS][MPM_KD], const int mode, const int mirror)
+                                                              const PetscReal SG[MPM_KS][MPM_KD], const int mode, const int mirror, const PetscInt box)
 {
   typedef MPM_KCV v4;
   const PetscInt  D        = MPM_KD;
@@ -81,14 +81,15 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
   PetscReal       dx[MPM_KS][MPM_MAX_DIM];                                       /* its offsets (MPMAffineOffsets) */
   MPMAffineSums   as = {0};                                                      /* and its sums, */
   v4              Dr[MPM_KD], Br[MPM_KD], Cc[MPM_KD];                            /* in registers: the rows of D and B, the columns of C_p */
-  PetscReal       Cdv = 0.0, r0 = 0.0, r1 = 0.0, r2 = 0.0;
+  v4              Cdv = zero;                                                    /* sum N (C_p dx) . dv_I per component, summed over them at the end (MPMKSumComponents) */
+  PetscReal       r0 = 0.0, r1 = 0.0, r2 = 0.0;
 
   for (PetscInt i = 0; i < D; i++) {
     vp[i] = A->v[p * D + i];
     Lp[i] = Lb[i] = zero;
   }
   if (affine) {
-    MPMAffineOffsets(A->grid, D, &A->x[p * D], ns, node, W, 1, mirror ? &SG[0][0] : NULL, D, dx);
+    MPMAffineOffsets(A->grid, D, &A->x[p * D], ns, node, W, 1, mirror ? &SG[0][0] : NULL, D, box, dx);
     for (PetscInt i = 0; i < D; i++) {
       Dr[i] = Br[i] = Cc[i] = zero;
       for (PetscInt j = 0; j < D; j++) Cc[i][j] = A->C[p * D * D + j * D + i];
@@ -126,7 +127,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
       dv2 += wd * dvI;
       if (affine) {
         R += w * (vI - dvI - vp - Cx) * vI;
-        for (PetscInt i = 0; i < D; i++) Cdv += W[a] * Cx[i] * dvI[i];
+        Cdv += w * Cx * dvI;
       } else if (!(mode & MPM_G2P_FLIP))
         R += w * (vI - dvI - vp) * vI;
       if (shares) { /* as MPMGatherGeneric: sum N b_I, sum N b_I v_I^n, sum N b_I (v_I^n - v_p) v_I */
@@ -173,13 +174,17 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
         as.D[i * D + j] = Dr[i][j];
         as.B[i * D + j] = Br[i][j];
       }
-    as.Cdv  = Cdv;
+    {
+      PetscReal c[MPM_KD];
+      for (PetscInt i = 0; i < D; i++) c[i] = Cdv[i];
+      as.Cdv = MPMKSumComponents(MPM_KD, c);
+    }
     as.r[0] = r0;
     as.r[1] = r1;
     as.r[2] = r2;
   }
   MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p, vpicl, dvl, dv2l, Rl, Lpl, Lbl, nodal ? nod : NULL, rh, Lbtt, &as, mode);
-  if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p, ns, node, W, NULL, SG, MPM_P2G_REMAP, mirror, 1);
+  if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p, ns, node, W, NULL, SG, MPM_P2G_REMAP, mirror, 1, 0);
   if (kinematics && A->hw) MPMHeatGather(A, p, ns, node, W, 1); /* the heat exchange */
 }
 
@@ -251,7 +256,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
       Lbl[i] = Lb[i][l];
     }
     MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p0 + l, vpicl, dvl, dv2l, Rl, Lpl, Lbl, NULL, rh[l], Lbtt[l], NULL, mode);
-    if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p0 + l, ns, &node[0][l], &W[0][l], NULL, NULL, MPM_P2G_REMAP, 0, MPM_KLANES);
+    if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p0 + l, ns, &node[0][l], &W[0][l], NULL, NULL, MPM_P2G_REMAP, 0, MPM_KLANES, 0);
     if (heat) MPMHeatGatherFinish(A, p0 + l, Tbar[l]);
   }
 }
@@ -270,16 +275,16 @@ MPM_KINLINE void MPM_KCAT(MPMKG2POne, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, co
     const PetscReal *kW, *kDW;
     const PetscInt   kns = MPM_KKEPT(ctx, A, p, &knode, &kW, &kDW, MPM_KD);
     if (kns) {
-      MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, kns, knode, kW, (const PetscReal(*)[MPM_KD])kDW, SG, mode, 0);
+      MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, kns, knode, kW, (const PetscReal(*)[MPM_KD])kDW, SG, mode, 0, 0);
       return;
     }
   }
 #endif
   mirror = MPM_KEVAL(g, ctx, A, p, node, W, DW, SG, ns);
   if (mirror)
-    MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 1);
+    MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 1, 0);
   else
-    MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 0);
+    MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, DW, SG, mode, 0, 0);
 }
 
 /* The grid-to-points loop over the points, with no mode branch left inside: MPM_KLANES points at a time where none
@@ -312,9 +317,9 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
         PetscReal Wl[MPM_KS], DWl[MPM_KS][MPM_KD];
         MPM_KCAT(MPMKLaneOut, MPM_KNAME, MPM_KD, d)(l, MPM_KS, node, W, DW, nodel, Wl, DWl);
         if (mirror[l])
-          MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS, nodel, Wl, DWl, SG[l], mode, 1);
+          MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS, nodel, Wl, DWl, SG[l], mode, 1, 0);
         else
-          MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS, nodel, Wl, DWl, SG[l], mode, 0);
+          MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS, nodel, Wl, DWl, SG[l], mode, 0, 0);
       }
   }
 #endif
@@ -353,7 +358,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
         continue;
       }
       MPM_KCAT(MPMKLaneOut, MPM_KNAME, MPM_KD, d)(l, MPM_KS3, node, W, DW, nodel, Wl, DWl);
-      MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS3, nodel, Wl, DWl, NULL, mode, 0);
+      MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS3, nodel, Wl, DWl, NULL, mode, 0, 3);
     }
   }
 #endif

@@ -24,7 +24,7 @@
    weight and gradient component k are node[a ls], W[a ls] and DW[(a d + k) ls] (one point's arrays, ls = 1, or one
    lane of a group's, ls = the group's lanes). */
 MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, MPMNode *nodes, PetscInt p, const PetscInt ns, const PetscInt *node, const PetscReal *W, const PetscReal *DW, const PetscReal SG[][MPM_KD], const int mode,
-                                                              const int mirror, const PetscInt ls)
+                                                              const int mirror, const PetscInt ls, const PetscInt box)
 {
   const PetscInt D    = MPM_KD;
   const MPM_KCV  zero = {0.0, 0.0, 0.0, 0.0};
@@ -33,11 +33,17 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
   const PetscReal mp = A->m[p], Vp = (mode & (MPM_P2G_PRESSURE | MPM_P2G_STRESS)) ? A->V[p] : 0.0, P = (mode & MPM_P2G_PRESSURE) ? A->pr[p] + A->q[p] : 0.0, VP = Vp * P;
   /* the heat exchange's weight w_p and w_p T_p (0: none), summed into its nodal sums with the entries (MPMHeatScatter) */
   const PetscReal hwp = A->hw && !(mode & MPM_P2G_REMAP) ? A->hw[p] : 0.0, hwT = hwp > 0.0 ? hwp * A->hT[p] : 0.0;
-  MPM_KCV         vp = zero, Sc[MPM_KD];
+  MPM_KCV         vp = zero, Sc[MPM_KD], Cc[MPM_KD];                        /* Cc: the columns of the affine velocity C_p, read once */
   PetscReal       Sp[MPM_KD * MPM_KD], hoop = 0.0, dx[MPM_KS][MPM_MAX_DIM]; /* with the affine velocity: the offsets */
 
   for (PetscInt k = 0; k < D; k++) vp[k] = A->v[p * D + k];
-  if (mode & MPM_P2G_AFFINE) MPMAffineOffsets(A->grid, D, &A->x[p * D], ns, node, W, ls, mirror ? &SG[0][0] : NULL, D, dx); /* about the stencil's mean */
+  if (mode & MPM_P2G_AFFINE) { /* the offsets about the stencil's mean */
+    MPMAffineOffsets(A->grid, D, &A->x[p * D], ns, node, W, ls, mirror ? &SG[0][0] : NULL, D, box, dx);
+    for (PetscInt j = 0; j < D; j++) {
+      Cc[j] = zero;
+      for (PetscInt k = 0; k < D; k++) Cc[j][k] = A->C[p * D * D + k * D + j];
+    }
+  }
 #if MPM_KD == 2
   if (A->hoopr && !(mode & MPM_P2G_REMAP)) /* axisymmetric: the hoop force -sigma_tt V / r, sigma_tt = -(p + q) - (s_rr + s_zz), with p + q whatever takes the pressure */
     hoop = A->V[p] * (A->pr[p] + A->q[p] + ((mode & MPM_P2G_STRESS) ? A->S[p * D * D] + A->S[p * D * D + D + 1] : 0.0)) / A->hoopr(A->hctx, p);
@@ -63,8 +69,7 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
     }
     if (mode & MPM_P2G_AFFINE) { /* the point's affine velocity at the node, v_p + C_p dx_a */
       MPM_KCV vk = vp;
-      for (PetscInt k = 0; k < D; k++)
-        for (PetscInt j = 0; j < D; j++) vk[k] += A->C[p * D * D + k * D + j] * dx[a][j];
+      for (PetscInt j = 0; j < D; j++) vk += Cc[j] * dx[a][j];
       m = sg * wm * vk;
     } else
       m = sg * wm * vp;
@@ -96,9 +101,9 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GOne, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, co
   if (A->keep == MPM_KEEP_STORE) MPM_KKEEP(ctx, A, p, ns, node, W, &DW[0][0], mirror, MPM_KD);
 #endif
   if (mirror)
-    MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, &DW[0][0], SG, mode, 1, 1);
+    MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, &DW[0][0], SG, mode, 1, 1, 0);
   else
-    MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, &DW[0][0], SG, mode, 0, 1);
+    MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p, ns, node, W, &DW[0][0], SG, mode, 0, 1, 0);
 }
 
 #if !defined(MPM_KSTENCIL) && defined(__GNUC__) && defined(PETSC_USE_REAL_DOUBLE) && (MPM_KS & (MPM_KS - 1)) == 0
@@ -252,7 +257,7 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
       for (PetscInt l = 0; l < MPM_KLANES; l++) MPM_KCAT(MPMKP2GOne, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, p + l, mode);
       continue;
     }
-    for (PetscInt l = 0; l < MPM_KLANES; l++) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS, &node[0][l], &W[0][l], &DW[0][0][l], NULL, mode, 0, MPM_KLANES);
+    for (PetscInt l = 0; l < MPM_KLANES; l++) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS, &node[0][l], &W[0][l], &DW[0][0][l], NULL, mode, 0, MPM_KLANES, 0);
   }
 #endif
 #if defined(MPM_KSTENCIL_LANES) && MPM_KD > 1
@@ -270,7 +275,7 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
 #  if defined(MPM_KKEEP)
       if (A->keep == MPM_KEEP_STORE) MPM_KKEEP(ctx, A, p + l, 0, NULL, NULL, NULL, PETSC_TRUE, MPM_KD); /* none kept: grid to points takes it in lanes again */
 #  endif
-      MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS3, &node[0][l], &W[0][l], &DW[0][0][l], NULL, mode, 0, MPM_KSLANES);
+      MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, nodes, p + l, MPM_KS3, &node[0][l], &W[0][l], &DW[0][0][l], NULL, mode, 0, MPM_KSLANES, 3);
     }
   }
 #endif

@@ -254,7 +254,7 @@ MPM_TINLINE void MPMScatterGeneric(MPM mpm, const MPMPoints *pts, MPMNode *node,
     if (CRACK && cs->keep && !cs->near[MPMGridCellNode(g, &x[p * d])]) continue; /* far from failed material: every entry is the body's */
     MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, F, ds, p, Fs), &st);
     if (keep) mpm->shape->ops.keepone(mpm->shape->data, kp0 + p, &x[p * d], &st);
-    if (AFFINE) MPMAffineOffsets(g, d, &x[p * d], st.n, st.node, st.w, 1, &st.s[0][0], MPM_MAX_DIM, dx);
+    if (AFFINE) MPMAffineOffsets(g, d, &x[p * d], st.n, st.node, st.w, 1, &st.s[0][0], MPM_MAX_DIM, 0, dx);
     if (CRACK) MPMCrackPointGradient(cs->D, d, &st, cs->g2min, gc);
     for (PetscInt a = 0; a < st.n; a++) {
       MPMNode        *nd = &node[st.node[a]];
@@ -533,8 +533,9 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
 
   for (PetscInt p = 0; p < pts->n; p++) {
     PetscReal       vpic[MPM_MAX_DIM] = {0, 0, 0}, dv[MPM_MAX_DIM] = {0, 0, 0}, Lp[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, Lb[MPM_MAX_DIM * MPM_MAX_DIM] = {0}, dv2c[MPM_MAX_DIM] = {0}, Rc[MPM_MAX_DIM] = {0}, Fs[MPM_MAX_DIM * MPM_MAX_DIM];
-    PetscReal       Lbtt = 0.0;                                                           /* axisymmetric: the hoop rate of vbar, sum N (2 v_I - dv_I)_r / r_p */
-    MPMAffineSums   as   = {0};                                                           /* the affine velocity's sums (APIC, the rotation) */
+    PetscReal       Lbtt              = 0.0;                                              /* axisymmetric: the hoop rate of vbar, sum N (2 v_I - dv_I)_r / r_p */
+    MPMAffineSums   as                = {0};                                              /* the affine velocity's sums (APIC, the rotation) */
+    PetscReal       Cdvc[MPM_MAX_DIM] = {0, 0, 0};                                        /* and sum N (C_p dx) . dv_I per component */
     PetscReal       nb = 0.0, bv0[MPM_MAX_DIM] = {0, 0, 0}, Rbc[MPM_MAX_DIM] = {0, 0, 0}; /* nodal PIC shares: sum N b_I, sum N b_I v_I^n, sum N b_I (v_I^n - v_p) . v_I */
     PetscBool       nodal = PETSC_FALSE;                                                  /* a node of the stencil asks for more than 1 - alpha */
     PetscReal       dx[MPM_MAX_STENCIL][MPM_MAX_DIM], gc[MPM_MAX_DIM];
@@ -542,7 +543,7 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
     PetscBool       kept = PETSC_FALSE;
     if (A->keep == MPM_KEEP_LOAD) kept = mpm->shape->ops.keptone(mpm->shape->data, A->kp0 + p, &x[p * d], &st); /* the stencil the step's scatter kept */
     if (!kept) MPMShapeEvaluate(mpm->shape, g, &x[p * d], MPMPointDomain(d, A->F, A->ds, p, Fs), &st);
-    if (AFFINE && velocity) MPMAffineOffsets(g, d, &x[p * d], st.n, st.node, st.w, 1, &st.s[0][0], MPM_MAX_DIM, dx);
+    if (AFFINE && velocity) MPMAffineOffsets(g, d, &x[p * d], st.n, st.node, st.w, 1, &st.s[0][0], MPM_MAX_DIM, 0, dx);
     if (CRACK) MPMCrackPointGradient(A->crack->D, d, &st, A->crack->g2min, gc);
     for (PetscInt a = 0; a < st.n; a++) {
       const MPMNode *nd              = CRACK && MPMCrackSide(A->crack, d, st.node[a], gc) ? &A->crack->alt[st.node[a]] : &node[st.node[a]]; /* the entry's side's field */
@@ -561,7 +562,7 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
         dv[i] += st.w[a] * dvI;
         dv2c[i] += st.w[a] * dvI * dvI;                            /* |dv_I|^2 and R per component (MPMKSumComponents) */
         Rc[i] += st.w[a] * (vI - dvI - v[p * d + i] - Cx[i]) * vI; /* (v_I^n - v_p - C_p (x_I - x_p)) . v_I */
-        as.Cdv += st.w[a] * Cx[i] * dvI;
+        Cdvc[i] += st.w[a] * Cx[i] * dvI;                          /* per component (MPMKSumComponents) */
         if (A->bn) {
           const PetscReal b = A->bn[2 * st.node[a] + 1];
           if (i == 0) {
@@ -591,8 +592,9 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
     }
     if (velocity) {
       const PetscReal dv2 = MPMKSumComponents(d, dv2c), R = MPMKSumComponents(d, Rc);
-      PetscReal       share = 0.5 * dv2 + as.Cdv, gain = 0.0; /* grid kinetic energy gain of the point's share, the point's own [erg/g] */
-      for (PetscInt i = 0; i < d; i++) {                      /* with nodal shares v_p + dv - sum N b_I (v_p - v_I^n) (src/transfer/blend.c), else the blend */
+      if (AFFINE) as.Cdv = MPMKSumComponents(d, Cdvc);
+      PetscReal share = 0.5 * dv2 + as.Cdv, gain = 0.0; /* grid kinetic energy gain of the point's share, the point's own [erg/g] */
+      for (PetscInt i = 0; i < d; i++) {                /* with nodal shares v_p + dv - sum N b_I (v_p - v_I^n) (src/transfer/blend.c), else the blend */
         const PetscReal vn = nodal ? v[p * d + i] + dv[i] - (nb * v[p * d + i] - bv0[i]) : alpha * (v[p * d + i] + dv[i]) + (1.0 - alpha) * vpic[i];
         share += v[p * d + i] * dv[i];
         gain += 0.5 * (vn * vn - v[p * d + i] * v[p * d + i]);

@@ -91,19 +91,25 @@ typedef struct {
      dx_a = x_I - x_p - sum_J N_J (x_J - x_p)   [cm],
    x_I the node's position before the stencil folded it across a wall (its mirror image where the entry's sign s_ak is
    -1: s, the signs of entry a at s[a sd], or NULL where none is -1). Entry a's node and weight are node[a ls] and
-   W[a ls]. The mean is 0 inside the grid, not where a domain's corners are clipped at a face of the grid, where about
+   W[a ls]; where nb > 0 the entries are a box of nb nodes a direction from entry 0's, entry a = a_0 + nb a_1 + nb^2 a_2
+   at node indices i_k + a_k (CPDI's stencils in lanes): the same nodes, without a division per entry. The mean is 0 inside the grid, not where a domain's corners are clipped at a face of the grid, where about
    x_p the point's affine velocity would carry momentum and the kinetic-energy fix could turn negative. The generic and
    the specialised transfers share it, so that the two give the same bits. */
-static inline void MPMAffineOffsets(const MPMGrid *g, PetscInt d, const PetscReal xp[], PetscInt ns, const PetscInt *node, const PetscReal *W, PetscInt ls, const PetscReal *s, PetscInt sd, PetscReal dx[][MPM_MAX_DIM])
+static inline void MPMAffineOffsets(const MPMGrid *g, PetscInt d, const PetscReal xp[], PetscInt ns, const PetscInt *node, const PetscReal *W, PetscInt ls, const PetscReal *s, PetscInt sd, const PetscInt nb, PetscReal dx[][MPM_MAX_DIM])
 {
   PetscReal mean[MPM_MAX_DIM] = {0, 0, 0};
+  PetscInt  i0[MPM_MAX_DIM]   = {0, 0, 0};
 
+  for (PetscInt k = 0, n = node[0]; nb && k < d; k++) { /* a box stencil (nb > 0): entry 0's node indices */
+    i0[k] = n % g->gm[k];
+    n /= g->gm[k];
+  }
   for (PetscInt a = 0; a < ns; a++) {
-    PetscInt n = node[a * ls];
-    for (PetscInt k = 0; k < d; k++) {
-      const PetscInt i = n % g->gm[k];
+    PetscInt n = nb ? a : node[a * ls];
+    for (PetscInt k = 0; k < d; k++) { /* the node's index along k: decoded, or entry 0's plus the entry's place in the box */
+      const PetscInt i = nb ? i0[k] + n % nb : n % g->gm[k];
       PetscReal      x = g->lo[k] + (g->gs[k] + i) * g->h[k];
-      n /= g->gm[k];
+      n /= nb ? nb : g->gm[k];
       if (s && s[a * sd + k] < 0.0) x = 2.0 * (g->mirror_lo[k] && (!g->mirror_hi[k] || xp[k] - g->lo[k] < g->hi[k] - xp[k]) ? g->lo[k] : g->hi[k]) - x;
       dx[a][k] = x - xp[k];
     }
