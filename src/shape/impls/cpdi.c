@@ -79,7 +79,7 @@ static PetscErrorCode MPMShapeSetUp_CPDI(MPMShape shape, const MPMGrid *g, Petsc
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The generic transfers' (the r-z grid, APIC): local point q's stencil at x kept, or its kept stencil read (false
+/* The generic transfers' (a body with a crack field, -mpm_transfer_kernel generic): local point q's stencil at x kept, or its kept stencil read (false
    where none is valid), with the records of the specialised kernels' (CPDIKeep, CPDIKept). */
 static void MPMShapeKeepOne_CPDI(void *ctx, PetscInt q, const PetscReal x[], const MPMStencil *st)
 {
