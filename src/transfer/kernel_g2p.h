@@ -11,6 +11,9 @@
      work        e_p += MPMWorkIncrement (dt_kick (s : Lbar - (p + q) tr Lbar) / rho, Lbar = Lb / 2)
      kinematics  x_p += dt vpic,  L_p = Lp
      remap       f_I += N_I m_p v_p with the new v_p (MPMKP2GPoint's momentum, kernel_p2g.h)
+     affine      with the velocity (A->C: APIC, the blend's rotation; MPM_G2P_AFFINE, point by point): the sums
+                 MPMAffineSums over the offsets dx = x_I - x_p about the stencil's mean (MPMAffineOffsets), u_Ip =
+                 v_p + C_p dx in R and the PIC shares, then the new C_p and its kinetic energy (MPMAffineFinish)
    on the r-z grid (A->hoopr) the hoop rate L_tt = vpic_r / r_p with the kinematics and, with the work, its part
      Lbar_tt = sum N_I (2 v_I - dv_I)_r / r_p in the trace and -(s_rr + s_zz) Lbar_tt in s : Lbar,
    and with the kinematics, where the step makes the heat exchange (A->hw), a weighted point's e_p (MPMHeatGather),

@@ -4,6 +4,7 @@
      m_I    += N_I m_p                                [g]
      w2_I   += N_I^2                                  [-]
      (mv)_I += s_I N_I m_p v_p                        [g cm/s]
+              (v_p + C_p dx_I with an affine velocity, A->C: APIC, the blend's rotation; MPM_P2G_AFFINE)
    and by mode (MPM_P2G_*) the internal force [dyn]
      pressure  f_I += s_I V_p (p_p + q_p) grad N_I
      stress    f_I += s_I (-V_p sigma_p) grad N_I,  -V sigma = V ((p + q) I - s)  (MPMStressForceMatrix)
