@@ -25,7 +25,7 @@ PetscErrorCode MPMBlendSetFromOptions(MPM mpm, PetscOptionItems *PetscOptionsObj
   PetscCall(PetscOptionsBool(
     "-mpm_update_blend_rotation",
     "Blend, 2D and 3D (not r-z): each point carries a rotation W_p (omega x (x - x_p)), fitted by least squares to the blend's velocities at its nodes and carried to them, so that the PIC share keeps a body's spin (a rolling or tumbling body); "
-    "its kinetic energy is counted, the fit's remainder heats the point (>= 0); 1.4 (2D) to 1.75 (3D) times the default's time",
+    "its kinetic energy is counted, the fit's remainder heats the point (>= 0); 1.4 (2D) to 1.7 (3D) times the default's time",
     "", mpm->blend.rotation, &mpm->blend.rotation, NULL));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -333,11 +333,13 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
     PetscReal       W[MPM_KS3][MPM_KSLANES], DW[MPM_KS3][MPM_KD][MPM_KSLANES];
     unsigned        padded;
     const unsigned  found  = MPM_KCAT(MPMKStencilGroup, MPM_KNAME, MPM_KD, d)(ctx, g, A, p, node, W, DW, &padded, skip);
-    const PetscBool shares = (PetscBool)((A->bn && (mode & MPM_G2P_VELOCITY)) || (mode & MPM_G2P_AFFINE)); /* or an affine velocity: point by point too */
+    const PetscBool shares = (PetscBool)(A->bn && (mode & MPM_G2P_VELOCITY));
     /* with nodal PIC shares every entry of a stencil, of weight 0 too, decides whether its point takes them
        (MPMGatherGeneric), so a padded lane (kernels.h) takes its own stencil then */
     const unsigned done = shares ? found & ~padded : found;
-    if (done && !shares && (done == (1u << MPM_KSLANES) - 1 || !(mode & MPM_G2P_REMAP))) {
+    /* the affine velocity's sums go point by point too, each lane's stencil copied out, a padded one with its entries of
+       weight 0 (they add 0 to each of its sums) */
+    if (done && !shares && !(mode & MPM_G2P_AFFINE) && (done == (1u << MPM_KSLANES) - 1 || !(mode & MPM_G2P_REMAP))) {
       /* the lanes done sum in lanes; the others (a point at a wall, a domain over 3 cells) follow point by point, which
          needs no remap: without it a point writes only its own fields, so the order of the points does not matter */
       const PetscInt l0 = __builtin_ctz(done);
