@@ -390,7 +390,7 @@ static PetscBool MPMContactRegionFace(MPM mpm, PetscInt r, PetscBool unite, cons
       if ((s < 0 ? !(f > g->lo[k]) : !(f < g->hi[k])) || !(PetscAbsReal(x[k] - f) < *best)) continue;
       for (PetscInt j = 0; j < d; j++) {
         nk[j] = j == k ? (PetscReal)s : 0.0;
-        p[j]  = j == k ? f : x[j];
+        p[j]  = j == k ? f : PetscMin(PetscMax(x[j], reg->lo[j]), reg->hi[j]); /* the face's point nearest x */
       }
       if (unite && MPMContactFaceInner(mpm, reg->body, r, p, nk)) continue;
       *best = PetscAbsReal(x[k] - f);
