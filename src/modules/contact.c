@@ -348,17 +348,15 @@ static void MPMContactTableIntegral(const MPMTable *tab, PetscReal t, PetscReal 
   }
 }
 
-/* Whether the point p on a face of region r of body rb, moved outwards along the face's normal n by 1e-6 of a cell,
+/* Whether the point p on a face of region r, moved outwards along the face's normal n by 1e-6 of a cell,
    lies in another region of the body: a face inside the body (the regions' union), none of its surface. */
-static PetscBool MPMContactFaceInner(MPM mpm, PetscInt rb, PetscInt r, const PetscReal p[], const PetscReal n[])
+static PetscBool MPMContactFaceInner(MPM mpm, PetscInt r, const PetscReal p[], const PetscReal n[])
 {
   const PetscInt d              = mpm->grid.dim;
   PetscReal      q[MPM_MAX_DIM] = {0, 0, 0};
 
   for (PetscInt k = 0; k < d; k++) q[k] = p[k] + 1e-6 * mpm->grid.hmin * n[k];
-  for (PetscInt o = 0; o < mpm->nreg; o++)
-    if (o != r && mpm->reg[o].body == rb && MPMRegionContains(&mpm->reg[o], d, q)) return PETSC_TRUE;
-  return PETSC_FALSE;
+  return MPMBodyOtherRegionHolds(mpm->reg, mpm->nreg, d, r, q);
 }
 
 /* Region r's face nearest to x (a node's position where the body started): the face of its polygon or closed surface
@@ -392,7 +390,7 @@ static PetscBool MPMContactRegionFace(MPM mpm, PetscInt r, PetscBool unite, cons
         nk[j] = j == k ? (PetscReal)s : 0.0;
         p[j]  = j == k ? f : PetscMin(PetscMax(x[j], reg->lo[j]), reg->hi[j]); /* the face's point nearest x */
       }
-      if (unite && MPMContactFaceInner(mpm, reg->body, r, p, nk)) continue;
+      if (unite && MPMContactFaceInner(mpm, r, p, nk)) continue;
       *best = PetscAbsReal(x[k] - f);
       for (PetscInt j = 0; j < d; j++) n[j] = nk[j];
     }
@@ -405,7 +403,7 @@ static PetscBool MPMContactRegionFace(MPM mpm, PetscInt r, PetscBool unite, cons
         nk[j] = s * dr[j] / rr;
         p[j]  = j == reg->axis ? x[j] : reg->center[j] + R * dr[j] / rr;
       }
-      if (unite && MPMContactFaceInner(mpm, reg->body, r, p, nk)) continue;
+      if (unite && MPMContactFaceInner(mpm, r, p, nk)) continue;
       *best = PetscAbsReal(rr - R);
       for (PetscInt j = 0; j < d; j++) n[j] = nk[j];
     }

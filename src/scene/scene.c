@@ -126,11 +126,7 @@ static PetscErrorCode MPMMaterialAddStage(MPMMaterial *mat, void *obj, PetscErro
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The scene's bodies, each with its own nodal velocity field: the regions with the same -region_<r>_body name form
-   one; a region without that option is a body of its own, named after it, where its material has strength (a
-   solid), and joins the body "fluid" where it has none (gases and liquids share one field). Bodies are numbered in
-   the order of their first region. */
-/* Whether a region of region r's body other than r holds x (MPMOutlineSetInner's test). */
+/* MPMOutlineSetInner's test for region r of the scene: MPMBodyOtherRegionHolds. */
 typedef struct {
   MPM      mpm;
   PetscInt r;
@@ -138,14 +134,15 @@ typedef struct {
 
 static PetscBool MPMSceneCovered(void *ctx, const PetscReal x[])
 {
-  const MPMSceneCover *c   = (const MPMSceneCover *)ctx;
-  const MPM            mpm = c->mpm;
+  const MPMSceneCover *c = (const MPMSceneCover *)ctx;
 
-  for (PetscInt o = 0; o < mpm->nreg; o++)
-    if (o != c->r && mpm->reg[o].body == mpm->reg[c->r].body && MPMRegionContains(&mpm->reg[o], mpm->grid.dim, x)) return PETSC_TRUE;
-  return PETSC_FALSE;
+  return MPMBodyOtherRegionHolds(c->mpm->reg, c->mpm->nreg, c->mpm->grid.dim, c->r, x);
 }
 
+/* The scene's bodies, each with its own nodal velocity field: the regions with the same -region_<r>_body name form
+   one; a region without that option is a body of its own, named after it, where its material has strength (a
+   solid), and joins the body "fluid" where it has none (gases and liquids share one field). Bodies are numbered in
+   the order of their first region. */
 static PetscErrorCode MPMSceneBodies(MPM mpm)
 {
   PetscFunctionBegin;

@@ -121,6 +121,16 @@ static inline PetscBool MPMRegionContains(const MPMRegion *reg, PetscInt d, cons
   return (PetscBool)(in && r2 >= reg->rmin * reg->rmin && (reg->rmax >= PETSC_MAX_REAL || r2 <= reg->rmax * reg->rmax) && (!reg->outline || MPMOutlineContains(reg->outline, x)));
 }
 
+/* Whether a region of region r's body other than r holds x: a body of several regions is their union, and a face of
+   r is inside it, none of its surface, where just beyond it such a region lies (MPMOutlineSetInner, the contact's
+   rigid normals). */
+static inline PetscBool MPMBodyOtherRegionHolds(const MPMRegion reg[], PetscInt nreg, PetscInt d, PetscInt r, const PetscReal x[])
+{
+  for (PetscInt o = 0; o < nreg; o++)
+    if (o != r && reg[o].body == reg[r].body && MPMRegionContains(&reg[o], d, x)) return PETSC_TRUE;
+  return PETSC_FALSE;
+}
+
 static inline PetscInt MPMSceneRegionAt(const MPMScene *sc, const PetscReal x[])
 {
   for (PetscInt r = 0; r < sc->nreg; r++)
