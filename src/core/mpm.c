@@ -259,6 +259,7 @@ PetscErrorCode MPMSetUp(MPM mpm)
     PetscCall(MPMCreateGrid(mpm, sw + (mpm->viscosity ? mpm->viscosity->ghost : 0), why));
   }
   PetscCall(MPMShapeSetUp(mpm->shape, &mpm->grid, mpm->ppc));
+  PetscCall(MPMBlendSetUp(mpm)); /* the rotation's default, from the scene's bodies */
   PetscCheck(!mpm->blend.rotation || (mpm->grid.dim > 1 && !mpm->grid.axisym), mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_update_blend_rotation: a rotation about the point needs a 2D (plane) or 3D grid; this one is %s", mpm->grid.axisym ? "r-z" : "1D");
   mpm->kern = mpm->transfer_kernel == MPM_TRANSFER_SPECIALISED && mpm->shape->kernels ? &mpm->shape->kernels[mpm->grid.dim - 1] : NULL;
   /* MUSL: the remap is the only point-kinematics module, so nothing changes v_p between grid to points and the remap */
@@ -329,7 +330,10 @@ PetscErrorCode MPMView(MPM mpm, PetscViewer viewer)
   PetscCall(PetscViewerASCIIPrintf(viewer, "transfer kernels: %s%s; point phases: %s %" PetscInt_FMT "\n", mpm->kern ? "specialised" : "generic", mpm->remap_fused ? " (the MUSL remap's momentum summed in grid to points)" : "",
                                    mpm->windowed ? "in windows of points," : "each over all points,", mpm->windowed ? mpm->point_window : mpm->npoints0));
   PetscCall(MPMShapeView(mpm->shape, viewer));
-  PetscCall(PetscViewerASCIIPrintf(viewer, "particle update %s (FLIP fraction %g)\n", MPMUpdateTypes[mpm->update], (double)mpm->alpha));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "particle update %s (FLIP fraction %g)%s\n", MPMUpdateTypes[mpm->update], (double)mpm->alpha,
+                                   mpm->update != MPM_UPDATE_BLEND ? ""
+                                   : mpm->blend.rotation           ? ", a rotation per point"
+                                                                   : ", no rotation per point"));
   if (mpm->viscosity)
     PetscCall(MPMViscosityView(mpm->viscosity, viewer));
   else

@@ -177,16 +177,17 @@ struct _p_MPM {
     PetscReal *W;                                        /* while live: the nodal sums W_I, Q_I (after their ghost sum: W_I, T_I = Q_I / W_I), the array of mean_l */
     PetscInt   lo, hi;                                   /* one rank: the local nodes [lo, hi] (flat) the last exchange wrote; mean_l is zero outside them */
   } heat;
-  struct {               /* the blend's PIC share per node in strong expansions (-mpm_update_blend_expansion, src/transfer/blend.c) */
-    PetscReal  K;        /* -mpm_update_blend_expansion: an asking point's PIC share min(1, K div v_p dt) [-] (0: off) */
-    PetscReal  M0;       /* -mpm_update_blend_slip: the slip over the sound speed above which a point asks [-]         */
-    PetscBool  rotation; /* -mpm_update_blend_rotation: the points carry a rotation (the affine field) [2D, 3D] */
-    Vec        l;        /* ghosted local vector of mean_da: sum N V_p s_p, then b_I (the second of 2 per node)         */
-    PetscReal *B;        /* while live: its array                                                                   */
-    PetscBool  live;     /* from MPMBlendSharesBegin to the end of the step's point phases                          */
-    PetscBool  asked;    /* a local point asked for a share this step                                               */
-    PetscBool  nodal;    /* after MPMBlendSharesSum: a point asked on some rank, B holds b_I (the gathers read it)     */
-    PetscBool  dirty;    /* l holds an earlier step's shares (zeroed when the next step needs it)                    */
+  struct {                   /* the blend's PIC share per node in strong expansions (-mpm_update_blend_expansion, src/transfer/blend.c) */
+    PetscReal  K;            /* -mpm_update_blend_expansion: an asking point's PIC share min(1, K div v_p dt) [-] (0: off) */
+    PetscReal  M0;           /* -mpm_update_blend_slip: the slip over the sound speed above which a point asks [-]         */
+    PetscBool  rotation;     /* -mpm_update_blend_rotation: the points carry a rotation (the affine field) [2D, 3D] */
+    PetscBool  rotation_set; /* the option was given (else MPMBlendSetUp sets it from the scene)                    */
+    Vec        l;            /* ghosted local vector of mean_da: sum N V_p s_p, then b_I (the second of 2 per node)         */
+    PetscReal *B;            /* while live: its array                                                                   */
+    PetscBool  live;         /* from MPMBlendSharesBegin to the end of the step's point phases                          */
+    PetscBool  asked;        /* a local point asked for a share this step                                               */
+    PetscBool  nodal;        /* after MPMBlendSharesSum: a point asked on some rank, B holds b_I (the gathers read it)     */
+    PetscBool  dirty;        /* l holds an earlier step's shares (zeroed when the next step needs it)                    */
   } blend;
   TS  ts;
   Vec tsu; /* the TS state: empty; the MPM state lives in the grid and swarm */
@@ -336,6 +337,7 @@ PETSC_INTERN PetscErrorCode MPMSignalsRestore(void);
 PETSC_INTERN PetscErrorCode MPMScatter(MPM, PetscBool, PetscReal);
 PETSC_INTERN PetscErrorCode MPMGather(MPM, PetscReal, PetscReal, PetscBool, PetscBool, PetscBool);
 PETSC_INTERN PetscErrorCode MPMBlendSetFromOptions(MPM, PetscOptionItems *);
+PETSC_INTERN PetscErrorCode MPMBlendSetUp(MPM);
 PETSC_INTERN PetscErrorCode MPMBlendSharesBegin(MPM);
 PETSC_INTERN PetscErrorCode MPMBlendScatter(MPM);
 PETSC_INTERN PetscErrorCode MPMBlendSharesSum(MPM);

@@ -98,6 +98,13 @@ void MPMBodyBox(MPM mpm, PetscInt b, const PetscInt **lo, const PetscInt **hi)
   *hi = b == mpm->body ? mpm->box_hi : mpm->bnodes[b].box_hi;
 }
 
+/* Whether bodies may meet in the run (the contact module steps, src/modules/contact.c): several bodies, pieces a body
+   may break into (MPMBodyAdd), or crack fields. */
+PetscBool MPMBodiesMayMeet(MPM mpm)
+{
+  return (PetscBool)(mpm->nbodies > 1 || mpm->bodies_open || mpm->crack);
+}
+
 /* The nodal fields the step runs: the bodies, then the crack fields. */
 PetscInt MPMFieldsCount(MPM mpm)
 {

@@ -299,6 +299,7 @@ PETSC_INTERN PetscErrorCode MPMCrackBodyWindow(MPM, PetscInt);
 PETSC_INTERN PetscBool      MPMCrackSplitOf(MPM, MPMCrackSplit *);
 PETSC_INTERN PetscInt       MPMCrackOf(MPM, PetscInt, const PetscReal **, const char **);
 PETSC_INTERN PetscInt       MPMFieldsCount(MPM);
+PETSC_INTERN PetscBool      MPMBodiesMayMeet(MPM);
 PETSC_INTERN PetscInt       MPMFieldSlot(MPM, PetscInt, PetscInt *);
 PETSC_INTERN PetscInt       MPMSlotBody(MPM, PetscInt);
 PETSC_INTERN PetscErrorCode MPMGridZeroForScatter(MPM, PetscInt, const PetscReal[], MPMNode *);

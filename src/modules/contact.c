@@ -139,7 +139,7 @@ static PetscErrorCode MPMContactSetFromOptions(MPMModule mod, MPM mpm, PetscOpti
                    (double)mpm->reg[r].v[k], (double)ct->vrigid[b][k]);
     }
   }
-  mod->active = (PetscBool)(mpm->nbodies > 1 || mpm->bodies_open || mpm->crack);
+  mod->active = MPMBodiesMayMeet(mpm);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -28,7 +28,9 @@ nodes the halves share pull them together: more than 10 times further from -+v.
 cells across) at 500 and 1000 cells along: the first failure time is the 1D run's to 1e-8 (the steps' round-off), the
 fragments' masses to 2e-6 and velocities to 1e-5 of v (the 2D and 3D principal stress, the fragment count's neighbours
 and the transfers of a plane wave; the crack fields' contact decisions, approach or not where the two faces move
-alike, carry the plane wave's round-off, 1e-6 of v before any failure, into the debris between the pieces).
+alike, carry the plane wave's round-off, 1e-6 of v before any failure, into the debris between the pieces), their
+transverse velocities below 1e-8 of v (round-off: the largest 1.4e-9 of v at 1000 x 4 cells, 7e-11 without the
+blend's rotation per point, whose fit across the strip takes up the plane wave's round-off).
 (5) With -mpm_fracture_bodies (pieces become bodies that meet through contact): the plate's scab becomes a body of
 its own (a third of the mass within 0.03) flying at v within 2%, closer at the finer grid (1000 and 2000 cells); the
 pulled bar's halves part at -+v within 0.1% (400 and 800 cells); 2 ranks give the bodies of 1 rank to 1e-9.
@@ -158,7 +160,7 @@ def test_spall():
             f1, f2 = sorted(r1["damage"]["fragment_list"], key=fragment_key), sorted(rep["damage"]["fragment_list"], key=fragment_key)
             m1, m2 = sum(f["mass"] for f in f1), sum(f["mass"] for f in f2)
             same = len(f1) == len(f2) and abs(t2d / t1d - 1) < 1e-8
-            same = same and all(abs(a["mass"] / m1 - b["mass"] / m2) < 2e-6 and abs(a["velocity"][0] - b["velocity"][0]) < 1e-5 * V and abs(b["velocity"][1]) < 1e-9 * V for a, b in zip(f1, f2))
+            same = same and all(abs(a["mass"] / m1 - b["mass"] / m2) < 2e-6 and abs(a["velocity"][0] - b["velocity"][0]) < 1e-5 * V and abs(b["velocity"][1]) < 1e-8 * V for a, b in zip(f1, f2))
             check(same, f"2D, {cells} x {ny} cells: first failure {t2d * 1e6:.4f} us, {len(f2)} fragments (the scab at {f1[1]['velocity'][0]:.1f} cm/s), the 1D run's (time to 1e-8, fragments to 1e-5 of v)")
             w = 2 * 0.005 * 1000 / cells  # 2 x 2 cells across
             rep = scene("spall_plate_1d", os.path.join(tmp, f"r{cells}"), ["-mpm_dim", "3", "-mpm_lo", "-1.5,0,0", "-mpm_hi", f"3.5,{w:g},{w:g}", "-mpm_cells", f"{cells},2,2", "-region_flyer_lo", "-1,0,0",
@@ -168,7 +170,7 @@ def test_spall():
             f3 = sorted(rep["damage"]["fragment_list"], key=fragment_key)
             m3 = sum(f["mass"] for f in f3)
             same = len(f1) == len(f3) and abs(t3d / t1d - 1) < 1e-8
-            same = same and all(abs(a["mass"] / m1 - b["mass"] / m3) < 2e-6 and abs(a["velocity"][0] - b["velocity"][0]) < 1e-5 * V and abs(b["velocity"][1]) + abs(b["velocity"][2]) < 1e-9 * V for a, b in zip(f1, f3))
+            same = same and all(abs(a["mass"] / m1 - b["mass"] / m3) < 2e-6 and abs(a["velocity"][0] - b["velocity"][0]) < 1e-5 * V and abs(b["velocity"][1]) + abs(b["velocity"][2]) < 1e-8 * V for a, b in zip(f1, f3))
             check(same, f"3D, {cells} x 2 x 2 cells: first failure {t3d * 1e6:.4f} us, {len(f3)} fragments (the scab at {f1[1]['velocity'][0]:.1f} cm/s), the 1D run's (time to 1e-8, fragments to 1e-5 of v)")
         berr, bodies = [], {}
         for cells in (1000, 2000):

@@ -55,20 +55,25 @@ def xdmf_read(d):
 def xdmf_grid_sums(d, dim, what):
     """Through the XDMF (xdmf_read): at every output the grid's nodal masses sum to the points' mass (the projection
     conserves it), each nodal velocity component is bounded by the points' largest in magnitude (a mass-weighted mean of
-    the points' velocities, mirror images at walls flipping only the sign), and the velocity the XDMF describes is the
-    dataset's components 1 .. d in the node order of the mesh."""
+    the points' velocities, mirror images at walls flipping only the sign; with the blend's rotation per point the
+    points carry v_p + W_p (x_I - x_p) to their nodes, |x_I - x_p| below 2 sqrt(d) h for points not stretched past a
+    cell), and the velocity the XDMF describes is the dataset's components 1 .. d in the node order of the mesh."""
     import h5py
     import numpy as np
     x = xdmf_read(d)
     check(len(x["grid"]) == len(x["points"]) > 0, f"{what}: XDMF grid collection with one grid per output ({len(x['grid'])})")
+    spacing = [g.findall("DataItem")[1].text for g in ET.parse(os.path.join(d, "petmpm.xmf")).iter("Geometry") if g.get("GeometryType") == "ORIGIN_DXDYDZ"]
+    reach = 2 * np.sqrt(dim) * max(float(v) for v in spacing[0].split())
     with h5py.File(os.path.join(d, "petmpm.h5"), "r") as f:
         nodes = f["grid/nodes"][:]
+        counts = f["particle_count"][:]
+        affine = [f["particle_fields/affine"][s][: int(counts[s])].reshape(-1, dim, dim) for s in range(len(counts))] if "affine" in f["particle_fields"] else None
     for s, (pt, gr) in enumerate(zip(x["points"], x["grid"])):
         def vec(a):
             return a["velocity"] if "velocity" in a else np.hstack([a["velocity_" + c] for c in "xy"])
         mp, mg = pt["mass"][:, 0], gr["mass"][:, 0]
         vp, vg = vec(pt)[:, :dim], vec(gr)[:, :dim]
-        bound = np.abs(vp).max(0) * (1 + 1e-12)
+        bound = (np.abs(vp) + (reach * np.abs(affine[s]).sum(2) if affine is not None else 0)).max(0) * (1 + 1e-12)
         same = np.array_equal(vg, nodes[s].reshape(-1, 1 + dim)[:, 1:]) and np.array_equal(mg, nodes[s].reshape(-1, 1 + dim)[:, 0])
         check(abs(mg.sum() - mp.sum()) < 1e-12 * mp.sum() and (np.abs(vg) <= bound).all() and same,
               f"{what}, output {s}: the XDMF grid's mass {mg.sum():.10g} against the points' {mp.sum():.10g}, nodal speeds within the points' {bound}, the mesh order of /grid/nodes")
