@@ -11,7 +11,8 @@
      work        e_p += MPMWorkIncrement (dt_kick (s : Lbar - (p + q) tr Lbar) / rho, Lbar = Lb / 2)
      kinematics  x_p += dt vpic,  L_p = Lp
      remap       f_I += N_I m_p v_p with the new v_p (MPMKP2GPoint's momentum, kernel_p2g.h)
-     affine      with the velocity (A->C: APIC, the blend's rotation; MPM_G2P_AFFINE, point by point): the sums
+     affine      with the velocity (A->C: APIC, the blend's rotation; MPM_G2P_AFFINE; in lanes for CPDI's groups, else
+                 point by point): the sums
                  MPMAffineSums over the offsets dx = x_I - x_p about the stencil's mean (MPMAffineOffsets), u_Ip =
                  v_p + C_p dx in R and the PIC shares, then the new C_p and its kinetic energy (MPMAffineFinish)
    on the r-z grid (A->hoopr) the hoop rate L_tt = vpic_r / r_p with the kinematics and, with the work, its part
@@ -187,7 +188,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PPoint, MPM_KNAME, MPM_KD, d)(const MPMTransferA
     as.r[2] = r2;
   }
   MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p, vpicl, dvl, dv2l, Rl, Lpl, Lbl, nodal ? nod : NULL, rh, Lbtt, &as, mode);
-  if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p, ns, node, W, NULL, SG, MPM_P2G_REMAP, mirror, 1, 0);
+  if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p, ns, node, W, NULL, SG, MPM_P2G_REMAP, mirror, 1, 0, NULL);
   if (kinematics && A->hw) MPMHeatGather(A, p, ns, node, W, 1); /* the heat exchange */
 }
 
@@ -203,6 +204,18 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
   const PetscBool hoop         = (PetscBool)(MPM_KD == 2 && A->hoopr);
   MPM_KVEC        vpic[MPM_KD] = {0}, dv[MPM_KD] = {0}, Lp[MPM_KD * MPM_KD] = {0}, Lb[MPM_KD * MPM_KD] = {0}, dv2[MPM_KD] = {0}, R[MPM_KD] = {0}, vp[MPM_KD], rh, Lbtt = {0}, Tbar = {0};
   PetscBool       heat = PETSC_FALSE; /* a lane's point exchanges heat: the group sums Tbar = sum N T_I (MPMHeatGather) in lanes */
+  /* the affine velocity (APIC, the blend's rotation; MPM_G2P_AFFINE; box stencils only, box = 3: CPDI's groups):
+     MPMKG2PPoint's sums in lanes, with C_p's entries, D, B, sum N (C_p dx) . dv_I per component and the rotation's
+     moment r, the offsets from MPMKAffineBox. */
+  const PetscBool affine = (PetscBool)(velocity && (mode & MPM_G2P_AFFINE));
+  MPM_KVEC        Cm[MPM_KD * MPM_KD], Dm[MPM_KD * MPM_KD] = {0}, Bm[MPM_KD * MPM_KD] = {0}, Cdv[MPM_KD] = {0}, r[3] = {0}, xo[MPM_KD][3], mean[MPM_KD];
+
+  if (affine) {
+#  if defined(MPM_KSTENCIL_LANES) && MPM_KD > 1
+    MPM_KCAT(MPMKAffineBox, MPM_KNAME, MPM_KD, d)(A, p0, node, W, xo, mean);
+#  endif
+    for (PetscInt i = 0; i < D * D; i++) Cm[i] = MPM_KLANE(&A->C[p0 * D * D + i], D * D);
+  }
 
   for (PetscInt l = 0; kinematics && A->hw && l < MPM_KLANES; l++) heat = (PetscBool)(heat || (((mask >> l) & 1u) && A->hw[p0 + l] > 0.0));
 
@@ -214,8 +227,19 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
   }
   for (PetscInt a = 0; a < ns; a++) {
     const MPM_KVEC w = MPM_KLANE(W[a], 1);
-    MPM_KVEC       dw[MPM_KD];
+    MPM_KVEC       dw[MPM_KD], dxv[MPM_KD], Cx[MPM_KD];
     for (PetscInt j = 0; j < D; j++) dw[j] = MPM_KLANE(DW[a][j], 1);
+    if (affine) { /* as MPMKG2PPoint: C_p dx, D = sum N dx dx^T */
+      for (PetscInt j = 0, n = a; j < D; j++, n /= 3) dxv[j] = xo[j][n % 3] - mean[j];
+      for (PetscInt i = 0; i < D; i++) {
+        const MPM_KVEC wdx = w * dxv[i];
+        Cx[i]              = (MPM_KVEC){0};
+        for (PetscInt j = 0; j < D; j++) {
+          Cx[i] += Cm[i * D + j] * dxv[j];
+          Dm[i * D + j] += wdx * dxv[j];
+        }
+      }
+    }
     if (heat) {
       PetscReal Tl[MPM_KLANES];
       for (PetscInt l = 0; l < MPM_KLANES; l++) Tl[l] = A->hW[2 * node[a][l] + 1];
@@ -229,12 +253,20 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
       }
       const MPM_KVEC vI = MPM_KLANE(vl, 1), v0I = MPM_KLANE(v0l, 1);
       vpic[i] += w * vI;
+      if (affine && !A->rotation) /* APIC's moment B = sum N v_I dx^T */
+        for (PetscInt j = 0; j < D; j++) Bm[i * D + j] += w * vI * dxv[j];
       if (velocity || work) {
         const MPM_KVEC dvI = vI - v0I;
         if (velocity) {
           dv[i] += w * dvI;
           dv2[i] += w * dvI * dvI;
-          if (!(mode & MPM_G2P_FLIP)) R[i] += w * (vI - dvI - vp[i]) * vI;
+          if (affine) {
+            R[i] += w * (vI - dvI - vp[i] - Cx[i]) * vI;
+            Cdv[i] += w * Cx[i] * dvI;
+          } else if (!(mode & MPM_G2P_FLIP))
+            R[i] += w * (vI - dvI - vp[i]) * vI;
+          if (affine && A->rotation) /* the target's offset t_I - v_p (no nodal shares in lanes: b = 1 - alpha), kept for the moment */
+            Cx[i] = Cx[i] + dvI + (1.0 - A->alpha) * (vI - dvI - vp[i] - Cx[i]);
         }
         if (work) {
           for (PetscInt j = 0; j < D; j++) Lb[i * D + j] += (2.0 * vI - dvI) * dw[j];
@@ -244,10 +276,28 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
       if (kinematics)
         for (PetscInt j = 0; j < D; j++) Lp[i * D + j] += vI * dw[j];
     }
+    if (affine && A->rotation) { /* the rotation's moment r = sum N dx x (t_I - v_p), t_I - v_p in Cx */
+      if (MPM_KD == 3) {
+        r[0] += w * (dxv[1] * Cx[2] - dxv[2] * Cx[1]);
+        r[1] += w * (dxv[2] * Cx[0] - dxv[0] * Cx[2]);
+      }
+      if (MPM_KD > 1) r[2] += w * (dxv[0] * Cx[1] - dxv[1] * Cx[0]);
+    }
   }
   for (PetscInt l = 0; l < MPM_KLANES; l++) {
-    PetscReal vpicl[MPM_KD], dvl[MPM_KD], dv2l[MPM_KD], Rl[MPM_KD], Lpl[MPM_KD * MPM_KD], Lbl[MPM_KD * MPM_KD];
+    PetscReal     vpicl[MPM_KD], dvl[MPM_KD], dv2l[MPM_KD], Rl[MPM_KD], Lpl[MPM_KD * MPM_KD], Lbl[MPM_KD * MPM_KD];
+    MPMAffineSums as = {0};
     if (!((mask >> l) & 1u)) continue;
+    if (affine) {
+      PetscReal c[MPM_KD];
+      for (PetscInt i = 0; i < D * D; i++) {
+        as.D[i] = Dm[i][l];
+        as.B[i] = Bm[i][l];
+      }
+      for (PetscInt i = 0; i < D; i++) c[i] = Cdv[i][l];
+      as.Cdv = MPMKSumComponents(MPM_KD, c);
+      for (PetscInt k = 0; k < 3; k++) as.r[k] = r[k][l];
+    }
     for (PetscInt i = 0; i < D; i++) {
       vpicl[i] = vpic[i][l];
       dvl[i]   = dv[i][l];
@@ -258,8 +308,8 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
       Lpl[i] = Lp[i][l];
       Lbl[i] = Lb[i][l];
     }
-    MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p0 + l, vpicl, dvl, dv2l, Rl, Lpl, Lbl, NULL, rh[l], Lbtt[l], NULL, mode);
-    if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p0 + l, ns, &node[0][l], &W[0][l], NULL, NULL, MPM_P2G_REMAP, 0, MPM_KLANES, 0);
+    MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(A, p0 + l, vpicl, dvl, dv2l, Rl, Lpl, Lbl, NULL, rh[l], Lbtt[l], &as, mode);
+    if (mode & MPM_G2P_REMAP) MPM_KCAT(MPMKP2GPoint, MPM_KNAME, MPM_KD, d)(A, (MPMNode *)nodes, p0 + l, ns, &node[0][l], &W[0][l], NULL, NULL, MPM_P2G_REMAP, 0, MPM_KLANES, 0, NULL);
     if (heat) MPMHeatGatherFinish(A, p0 + l, Tbar[l]);
   }
 }
@@ -301,7 +351,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
   PetscInt              p = 0;
 
 #if defined(MPM_KLANES) && !defined(MPM_KSTENCIL)
-  for (; !(A->bn && (mode & MPM_G2P_VELOCITY)) && !(mode & MPM_G2P_AFFINE) && p + MPM_KLANES <= A->n; p += MPM_KLANES) { /* nodal PIC shares, an affine velocity: point by point */
+  for (; !(A->bn && (mode & MPM_G2P_VELOCITY)) && !(mode & MPM_G2P_AFFINE) && p + MPM_KLANES <= A->n; p += MPM_KLANES) { /* nodal PIC shares, an affine velocity (no box stencils here): point by point */
     PetscInt  node[MPM_KS][MPM_KLANES];                                                                                  /* each entry's lanes side by side (MPMKStencilStrided) */
     PetscReal W[MPM_KS][MPM_KLANES], DW[MPM_KS][MPM_KD][MPM_KLANES], SG[MPM_KLANES][MPM_KS][MPM_KD];
     PetscBool mirror[MPM_KLANES], any = PETSC_FALSE;
@@ -337,9 +387,9 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
     /* with nodal PIC shares every entry of a stencil, of weight 0 too, decides whether its point takes them
        (MPMGatherGeneric), so a padded lane (kernels.h) takes its own stencil then */
     const unsigned done = shares ? found & ~padded : found;
-    /* the affine velocity's sums go point by point too, each lane's stencil copied out, a padded one with its entries of
-       weight 0 (they add 0 to each of its sums) */
-    if (done && !shares && !(mode & MPM_G2P_AFFINE) && (done == (1u << MPM_KSLANES) - 1 || !(mode & MPM_G2P_REMAP))) {
+    /* the affine velocity's sums go in lanes too, a padded lane with its box's entries of weight 0 (they add 0 to each
+       of its sums), as MPMKG2PPoint with box 3 */
+    if (done && !shares && (done == (1u << MPM_KSLANES) - 1 || !(mode & MPM_G2P_REMAP))) {
       /* the lanes done sum in lanes; the others (a point at a wall, a domain over 3 cells) follow point by point, which
          needs no remap: without it a point writes only its own fields, so the order of the points does not matter */
       const PetscInt l0 = __builtin_ctz(done);
@@ -374,7 +424,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(const MPMGrid *
    drops the PIC term (1 - alpha) R_p, 0 R_p = 0, so R_p's stencil sum is not formed. */
 MPM_KINLINE void MPM_KCAT(MPMKG2PLoop, MPM_KNAME, MPM_KD, d)(const MPMGrid *g, const void *ctx, const MPMTransferArgs *A, MPMNode *nodes, const int mode)
 {
-  if ((mode & MPM_G2P_VELOCITY) && !(mode & MPM_G2P_REMAP) && A->C) /* the affine velocity's fit (MPM_G2P_AFFINE), point by point; never with the fused remap (MPM::remap_fused) */
+  if ((mode & MPM_G2P_VELOCITY) && !(mode & MPM_G2P_REMAP) && A->C) /* the affine velocity's fit (MPM_G2P_AFFINE); never with the fused remap (MPM::remap_fused) */
     MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, mode | MPM_G2P_AFFINE);
   else if ((mode & MPM_G2P_VELOCITY) && A->alpha == 1.0)
     MPM_KCAT(MPMKG2PLoopMode, MPM_KNAME, MPM_KD, d)(g, ctx, A, nodes, mode | MPM_G2P_FLIP);

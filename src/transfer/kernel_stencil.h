@@ -227,4 +227,29 @@ static __attribute__((noinline)) unsigned MPM_KCAT(MPMKStencilGroup, MPM_KNAME, 
   skip[1] = done ? 0 : PetscMin(2 * skip[1] + 1, 7);
   return done;
 }
+
+/* The affine velocity's offsets (MPMAffineOffsets) of a group's 3^d box stencils in lanes: along direction k a box's
+   nodes lie at 3 places from its first node, xo[k][j] = x_kj - x_p (j = 0, 1, 2), entry a at digit j = (a / 3^k) % 3;
+   mean[k] = sum N (x_kj - x_p). Entry a's offset is xo[k][j] - mean[k]: MPMAffineOffsets' operations, lane by lane. A
+   lane outside the group's mask holds another lane's nodes and weight 0: finite offsets, never used. */
+MPM_KINLINE void MPM_KCAT(MPMKAffineBox, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, PetscInt p0, const PetscInt node[][MPM_KSLANES], const PetscReal W[][MPM_KSLANES], MPM_KVEC xo[MPM_KD][3], MPM_KVEC mean[MPM_KD])
+{
+  const MPMGrid *g = A->grid;
+  PetscReal      xl[MPM_KD][3][MPM_KSLANES];
+
+  for (PetscInt l = 0; l < MPM_KSLANES; l++)
+    for (PetscInt k = 0, n = node[0][l]; k < MPM_KD; k++) {
+      const PetscInt i0 = n % g->gm[k];
+      n /= g->gm[k];
+      for (PetscInt j = 0; j < 3; j++) xl[k][j][l] = g->lo[k] + (g->gs[k] + i0 + j) * g->h[k] - A->x[(p0 + l) * MPM_KD + k];
+    }
+  for (PetscInt k = 0; k < MPM_KD; k++) {
+    mean[k] = (MPM_KVEC){0};
+    for (PetscInt j = 0; j < 3; j++) xo[k][j] = MPM_KLANE(xl[k][j], 1);
+  }
+  for (PetscInt a = 0; a < MPM_KS3; a++) {
+    const MPM_KVEC w = MPM_KLANE(W[a], 1);
+    for (PetscInt k = 0, n = a; k < MPM_KD; k++, n /= 3) mean[k] += w * xo[k][n % 3];
+  }
+}
 #endif
