@@ -42,7 +42,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PFinish, MPM_KNAME, MPM_KD, d)(const MPMTransfer
       v[p * D + i] = vn;
     }
     if (A->kefix) e[p] += share - gain + (nod ? MPMKSumComponents(MPM_KD, &nod[1 + MPM_KD]) : (mode & MPM_G2P_FLIP) ? 0.0 : (1.0 - alpha) * R); /* pure FLIP: 0 R = 0, R not summed */
-    if (mode & MPM_G2P_AFFINE) MPMAffineFinish(A, p, aff);                                                                                      /* the affine velocity's new fit, its kinetic energy */
+    if (mode & MPM_G2P_AFFINE) MPMAffineFinish(A, p, aff, MPM_KD);                                                                              /* the affine velocity's new fit, its kinetic energy */
     if (work) {
       PetscReal sL = 0.0, div = 0.0;
       if (A->pointwork)

@@ -440,83 +440,6 @@ static PetscReal MPMExpansionWork(void *ctx, PetscInt p, PetscReal e, PetscReal 
   return MPMIsentropeWork(ex->mpm, ex->mpm->mat[(PetscInt)ex->mat[p]].eos, ex->m[p], ex->rho[p], e, ex->rho[p] / (1.0 + eps), delin);
 }
 
-/* APIC: C = B D^-1 from the moments B = sum N_I v_I (x_I - x_p)^T and D = sum N_I (x_I - x_p)(x_I - x_p)^T (d x d, row
-   major). D is symmetric positive definite for every shape family but degenerates for linear hats at a node (t (1 - t)
-   h^2 there), so it gets 1e-12 h_k^2 on its diagonal first. */
-static void MPMAffineFromMoments(const MPMGrid *g, const PetscReal B[], PetscReal D[], PetscReal C[])
-{
-  const PetscInt d = g->dim;
-  PetscReal      Di[MPM_MAX_DIM * MPM_MAX_DIM];
-
-  for (PetscInt k = 0; k < d; k++) D[k * d + k] += 1e-12 * g->h[k] * g->h[k];
-  MPMInverse(d, D, Di);
-  for (PetscInt i = 0; i < d; i++)
-    for (PetscInt j = 0; j < d; j++) {
-      C[i * d + j] = 0.0;
-      for (PetscInt k = 0; k < d; k++) C[i * d + j] += B[i * d + k] * Di[k * d + j];
-    }
-}
-
-/* The blend's rotation W_p (-mpm_update_blend_rotation), the least-squares fit of the targets t_I over the stencil,
-     min_W sum_I N_I |t_I - v_p' - W (x_I - x_p)|^2 over skew W (W dx = omega x dx; in 2D omega along z),
-   from the moment r = sum N dx x (t_I - v_p) and D = sum N dx dx^T: (tr(D) I - D) omega = r (2D: omega = r_z / tr D).
-   A projection: what it leaves, sum N |t_I - v_p' - W dx|^2 / 2 >= 0, heats the point (MPMGather). A rank-deficient
-   moment (every dx along a line) takes 1e-12 tr(D) on its diagonal; none (a point on a node of a linear stencil):
-   W = 0. */
-static inline void MPMRotationFromMoments(PetscInt d, const PetscReal r[], const PetscReal D[], PetscReal C[])
-{
-  PetscReal w[3] = {0, 0, 0}, tr = 0.0;
-
-  for (PetscInt i = 0; i < d; i++) tr += D[i * d + i];
-  if (tr > 0.0 && d == 2) w[2] = r[2] / tr;
-  if (tr > 0.0 && d == 3) {
-    const PetscReal e   = 1e-12 * tr;
-    const PetscReal a00 = tr - D[0] + e, a11 = tr - D[4] + e, a22 = tr - D[8] + e, a01 = -D[1], a02 = -D[2], a12 = -D[5];
-    const PetscReal c00 = a11 * a22 - a12 * a12, c01 = a02 * a12 - a01 * a22, c02 = a01 * a12 - a02 * a11;
-    const PetscReal c11 = a00 * a22 - a02 * a02, c12 = a01 * a02 - a00 * a12, c22 = a00 * a11 - a01 * a01, det = a00 * c00 + a01 * c01 + a02 * c02;
-    w[0] = (c00 * r[0] + c01 * r[1] + c02 * r[2]) / det;
-    w[1] = (c01 * r[0] + c11 * r[1] + c12 * r[2]) / det;
-    w[2] = (c02 * r[0] + c12 * r[1] + c22 * r[2]) / det;
-  }
-  if (d == 2) {
-    C[0] = 0.0;
-    C[1] = -w[2];
-    C[2] = w[2];
-    C[3] = 0.0;
-  } else {
-    C[0] = 0.0;
-    C[1] = -w[2];
-    C[2] = w[1];
-    C[3] = w[2];
-    C[4] = 0.0;
-    C[5] = -w[0];
-    C[6] = -w[1];
-    C[7] = w[0];
-    C[8] = 0.0;
-  }
-}
-
-/* The affine velocity's new fit of point p from its sums s (MPMAffineSums): the blend's rotation (A->rotation,
-   MPMRotationFromMoments) or APIC's C = B D^-1 (MPMAffineFromMoments, which adds to s->D's diagonal), then its kinetic
-   energy about the point, k_p' = sum N |C_p' dx|^2 / 2 = tr(C_p' D C_p'^T) / 2 [erg/g], in A->Cke, the change k_p - k_p'
-   into e_p with the kinetic-energy fix (the affine kinetic energy is kinetic energy: its change is not the fix's). The
-   generic and the specialised gathers call it after the velocity's fix. */
-void MPMAffineFinish(const MPMTransferArgs *A, PetscInt p, MPMAffineSums *s)
-{
-  const PetscInt d = A->grid->dim;
-  PetscReal     *C = &A->C[p * d * d], knew = 0.0;
-
-  if (A->rotation)
-    MPMRotationFromMoments(d, s->r, s->D, C);
-  else
-    MPMAffineFromMoments(A->grid, s->B, s->D, C);
-  for (PetscInt i = 0; i < d; i++)
-    for (PetscInt j = 0; j < d; j++)
-      for (PetscInt k = 0; k < d; k++) knew += 0.5 * C[i * d + j] * s->D[j * d + k] * C[i * d + k];
-  if (A->kefix) A->e[p] += A->Cke[p] - knew;
-  A->Cke[p] = knew;
-}
-
 /* The generic gather's point loop (the reference the specialised kernels reproduce), with the dimension d a constant
    where MPMGather calls it, so that its loops over d unroll; the same operations in the same order for every d. */
 MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPoints *pts, const MPMNode *node, PetscBool velocity, PetscBool kinematics, PetscBool work, const PetscBool AFFINE, const PetscBool HOOP, const PetscBool CRACK,
@@ -601,8 +524,8 @@ MPM_TINLINE void MPMGatherGeneric(MPM mpm, const MPMTransferArgs *A, const MPMPo
         v[p * d + i] = vn;
       }
       if (kefix) e[p] += share - gain + (nodal ? MPMKSumComponents(d, Rbc) : (1.0 - alpha) * R);
-      if (AFFINE) MPMAffineFinish(A, p, &as); /* the new fit, its kinetic energy */
-      if (work) {                             /* the work the grid's forces did over the kick, sum_p V_p sigma_p : Lbar_p dt_kick = sum_I f_I . vbar_I dt_kick */
+      if (AFFINE) MPMAffineFinish(A, p, &as, d); /* the new fit, its kinetic energy */
+      if (work) {                                /* the work the grid's forces did over the kick, sum_p V_p sigma_p : Lbar_p dt_kick = sum_I f_I . vbar_I dt_kick */
         PetscReal sL = 0.0, div = 0.0;
         if (A->pointwork)
           div = A->pointwork[p];
