@@ -645,7 +645,8 @@ static PetscErrorCode MPMWriteReportWith(MPM mpm, MPMReport rep)
     fprintf(fp, "],\n  \"points_per_cell\": %" PetscInt_FMT ",\n  \"particles\": %" PetscInt_FMT ",\n  \"particles_initial\": %" PetscInt_FMT ",\n  \"ranks\": %d,\n", mpm->ppc, npoints, mpm->npoints0, size);
     fprintf(fp, "  \"shape\": \"%s\",\n  \"update\": \"%s\",\n  \"viscosity\": \"%s\",\n  \"scheme\": \"%s\",\n  \"stress_integration\": \"%s\",\n", shapetype, MPMUpdateTypes[mpm->update], visctype, MPMSchemes[mpm->scheme],
             MPMStressIntegrations[mpm->stress_integration]);
-    fprintf(fp, "  \"energy_update\": \"%s\",\n  \"ke_fix\": %s,\n", MPMEnergyUpdates[mpm->energy_update], mpm->ke_fix ? "true" : "false");
+    fprintf(fp, "  \"energy_update\": \"%s\",\n  \"ke_fix\": %s,\n  \"update_rotation\": %s,\n", MPMEnergyUpdates[mpm->energy_update], mpm->ke_fix ? "true" : "false",
+            mpm->update == MPM_UPDATE_BLEND && mpm->blend.rotation ? "true" : "false"); /* the blend's rotation per point (src/transfer/blend.c) */
     fprintf(fp, "  \"steps\": %" PetscInt_FMT ",\n  \"time\": %.17g,\n  \"wall_seconds\": %.6g,\n  \"setup_seconds\": %.6g,\n  \"output_seconds\": %.6g,\n", mpm->steps, (double)mpm->time, (double)mpm->wall_loop, (double)mpm->wall_setup,
             (double)mpm->wall_output);
     fprintf(fp, "  \"particle_steps_per_second\": %.6g,\n  \"particle_steps_per_second_per_rank\": %.6g,\n", (double)pss, (double)(pss / size));
