@@ -53,7 +53,8 @@ static PetscErrorCode MPMCkptRead(hid_t file, const char name[], hsize_t offset,
   hsize_t len;
 
   PetscFunctionBegin;
-  PetscCheck(dset >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "-mpm_restart: the checkpoint has no %s: it was written by another version of petmpm (before the field existed) or for another scene", name);
+  PetscCheck(dset >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "-mpm_restart: the checkpoint has no %s: it was written by another version of petmpm (before the field existed) or for another scene%s", name,
+             strcmp(name, "points/affine") ? "" : " (the blend's rotation per point, the default where bodies meet since 2026-11-30: a run written before it continues with -mpm_update_blend_rotation false -mpm_restart_force)");
   space = H5Dget_space(dset);
   H5Sget_simple_extent_dims(space, &len, NULL);
   H5Sclose(space);
