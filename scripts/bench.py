@@ -21,6 +21,10 @@ Cases (point-steps per second, median of --repeat runs, each case's runs interle
   cpdi8      the 3D manufactured neo-Hookean solid (mms_axis_aligned_3d.opts) with CPDI at 8 points per cell, 12^3 cells
   anvilrz    the r-z Taylor anvil (taylor_anvil_rz.opts) in the default method at 48 x 126 cells (R0/24), 2.3e3 points,
              1500 steps: the validation runs' grid
+  roll2d     the rolling disk (rolling_2d.opts on the plane shortened to x <= 3 cm, 70 x 30 cells): two bodies, so the
+             default blend carries a rotation per point (src/transfer/blend.c)
+  roll2dnr   the same with -mpm_update_blend_rotation false; roll2d's rate over it: the rotation's cost in 2D
+  incl3d     the 3D incline (incline_3d.opts), the rotation on; incl3dnr without it: the rotation's cost in 3D
 Each case on every rank count of --ranks; with --before, the same runs with another petmpm (the code before a
 change) interleaved too, and the speed-up. The -log_view phase shares of each case on one rank, and the memory
 per point in 3D: the marginal process memory per point between two sizes (PETSc's -memory_view maximum), with block8
@@ -109,6 +113,7 @@ def main():
     ref = build_reference(os.path.join(a.build, "bench-ref"))
     ranks = [int(r) for r in a.ranks.split(",")]
     blk = "25,25,105" if a.quick else "50,50,210"  # the 0.4 x 0.4 x 2.4 bar in a 0.6 x 0.6 x 2.6 box: 8 points per cell
+    roll = ["-mpm_cells", "70,30", "-mpm_hi", "3,1.5", "-region_plane_hi", "3,0.5", "-region_plane_lo", "-0.5,0.3"]
     cases = [
         ("sod", "weak Sod 1D, linear, 4 ppc, 1024 cells", "sod_weak.opts", ["-options_file", os.path.join(SRC, "inputs", "methods", "cth.opts")], "mpm1d", ["sod", "5"]),
         ("block8", "3D block, linear, 8 ppc, USL, MG + JC", "bar_impact_3d.opts",
@@ -122,6 +127,10 @@ def main():
         ("anvil3d", "3D Taylor anvil, the default method (CPDI, blend, splitting), R0/9", "taylor_anvil_3d.opts", ["-mpm_cells", "24,24,63", "-ts_max_steps", "100"], None, None),
         ("cpdi8", "3D manufactured solid, CPDI, 8 ppc, 12^3 cells", "mms_axis_aligned_3d.opts", ["-mpm_cells", "12,12,12", "-mpm_shape_type", "cpdi"], None, None),
         ("anvilrz", "r-z Taylor anvil, the default method, R0/24", "taylor_anvil_rz.opts", ["-mpm_cells", "48,126", "-ts_max_steps", "1500"], None, None),
+        ("roll2d", "2D rolling disk, the default method (a rotation per point)", "rolling_2d.opts", roll, None, None),
+        ("roll2dnr", "2D rolling disk, no rotation per point", "rolling_2d.opts", roll + ["-mpm_update_blend_rotation", "false"], None, None),
+        ("incl3d", "3D incline, the default method (a rotation per point)", "incline_3d.opts", [], None, None),
+        ("incl3dnr", "3D incline, no rotation per point", "incline_3d.opts", ["-mpm_update_blend_rotation", "false"], None, None),
     ]
     if a.cases:
         cases = [c for c in cases if c[0] in a.cases.split(",")]
@@ -156,6 +165,10 @@ def main():
         for r in ranks:
             if (fast, r) in medians and (slow, r) in medians:
                 say(f"\nThe default method against linear MUSL on the same points ({slow} / {fast}, {r} rank(s)): {medians[(slow, r)] / medians[(fast, r)]:.3f} of its rate.")
+    for plain, rot in (("roll2dnr", "roll2d"), ("incl3dnr", "incl3d")):
+        for r in ranks:
+            if (plain, r) in medians and (rot, r) in medians:
+                say(f"\nThe blend's rotation per point ({rot} / {plain}, {r} rank(s)): {medians[(plain, r)] / medians[(rot, r)]:.3f} times the time.")
     say()
     say("-log_view, one rank, share of the time-loop stage [%]:")
     say()

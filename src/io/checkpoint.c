@@ -53,8 +53,7 @@ static PetscErrorCode MPMCkptRead(hid_t file, const char name[], hsize_t offset,
   hsize_t len;
 
   PetscFunctionBegin;
-  PetscCheck(dset >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "-mpm_restart: the checkpoint has no %s: it was written by another version of petmpm (before the field existed) or for another scene%s", name,
-             strcmp(name, "points/affine") ? "" : " (the blend's rotation per point, the default where bodies meet since 2026-11-30: a run written before it continues with -mpm_update_blend_rotation false -mpm_restart_force)");
+  PetscCheck(dset >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "-mpm_restart: the checkpoint has no %s: it was written by another version of petmpm (before the field existed) or for another scene", name);
   space = H5Dget_space(dset);
   H5Sget_simple_extent_dims(space, &len, NULL);
   H5Sclose(space);
@@ -535,6 +534,8 @@ PetscErrorCode MPMRestartRead(MPM mpm)
     hsize_t        len;
     if (!mpm->field_on[k]) continue;
     PetscCall(PetscSNPrintf(name, sizeof(name), "points/%s", mpm->field[k].name));
+    PetscCheck(H5Lexists(f, name, H5P_DEFAULT) > 0, mpm->comm, PETSC_ERR_FILE_READ, "-mpm_restart %s: the checkpoint has no point field %s (%s): its run had another method (a default that changed since, docs/options.md) or another scene",
+               mpm->restart, mpm->field[k].name, mpm->field[k].meaning);
     PetscCall(MPMCkptRead(f, name, (hsize_t)(offset * bs), (hsize_t)(n * bs), pts.f[k], &len));
     PetscCheck(len == (hsize_t)(N * bs), mpm->comm, PETSC_ERR_FILE_READ, "-mpm_restart %s: field %s holds %llu values for %" PetscInt_FMT " points", mpm->restart, mpm->field[k].name, (unsigned long long)len, N);
   }

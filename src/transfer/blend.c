@@ -25,7 +25,7 @@ PetscErrorCode MPMBlendSetFromOptions(MPM mpm, PetscOptionItems *PetscOptionsObj
   PetscCall(PetscOptionsBool(
     "-mpm_update_blend_rotation",
     "Blend, 2D and 3D (not r-z): each point carries a rotation W_p (omega x (x - x_p)), fitted by least squares to the blend's velocities at its nodes and carried to them, so that the PIC share keeps a body's spin (a rolling or tumbling body); "
-    "its kinetic energy is counted, the fit's remainder heats the point (>= 0); 1.32 (2D) to 1.43 (3D) times the time without it (default: true in 2D and 3D where bodies may meet or a wall has friction, else false)",
+    "its kinetic energy is counted, the fit's remainder heats the point (>= 0); 1.34 (2D) to 1.44 (3D) times the time without it (default: true in 2D and 3D where bodies may meet or a wall has friction, else false)",
     "", mpm->blend.rotation, &mpm->blend.rotation, &mpm->blend.rotation_set));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -34,7 +34,7 @@ PetscErrorCode MPMBlendSetFromOptions(MPM mpm, PetscOptionItems *PetscOptionsObj
    a body can be set spinning by another (bodies that may meet, MPMBodiesMayMeet: a tangential or off-centre contact
    force) or by a wall's friction; a disk rolling down an incline slid at 24.25 cm/s against 32.70 without it
    (tests/scenes/contact_rolling.json). A lone body's spin decays by the blend's PIC share (a free disk 24% in a turn at
-   32 cells across; tests/scenes/spin.json), which the option keeps for 1.32 (2D) to 1.43 (3D) times its time (docs/algorithm.md). */
+   32 cells across; tests/scenes/spin.json), which the option keeps for 1.34 (2D) to 1.44 (3D) times its time (docs/algorithm.md). */
 PetscErrorCode MPMBlendSetUp(MPM mpm)
 {
   PetscBool friction = PETSC_FALSE;

@@ -212,9 +212,8 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
 
   if (affine) {
 #  if defined(MPM_KSTENCIL_LANES) && MPM_KD > 1
-    MPM_KCAT(MPMKAffineBox, MPM_KNAME, MPM_KD, d)(A, p0, node, W, xo, mean);
+    MPM_KCAT(MPMKAffineBox, MPM_KNAME, MPM_KD, d)(A, p0, node, W, Cm, xo, mean);
 #  endif
-    for (PetscInt i = 0; i < D * D; i++) Cm[i] = MPM_KLANE(&A->C[p0 * D * D + i], D * D);
   }
 
   for (PetscInt l = 0; kinematics && A->hw && l < MPM_KLANES; l++) heat = (PetscBool)(heat || (((mask >> l) & 1u) && A->hw[p0 + l] > 0.0));
@@ -230,7 +229,7 @@ MPM_KINLINE void MPM_KCAT(MPMKG2PLanes, MPM_KNAME, MPM_KD, d)(const MPMTransferA
     MPM_KVEC       dw[MPM_KD], dxv[MPM_KD], Cx[MPM_KD];
     for (PetscInt j = 0; j < D; j++) dw[j] = MPM_KLANE(DW[a][j], 1);
     if (affine) { /* as MPMKG2PPoint: C_p dx, D = sum N dx dx^T */
-      for (PetscInt j = 0, n = a; j < D; j++, n /= 3) dxv[j] = xo[j][n % 3] - mean[j];
+      MPM_KCAT(MPMKAffineOffset, MPM_KNAME, MPM_KD, d)(a, xo, mean, dxv);
       for (PetscInt i = 0; i < D; i++) {
         const MPM_KVEC wdx = w * dxv[i];
         Cx[i]              = (MPM_KVEC){0};

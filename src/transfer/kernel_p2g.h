@@ -245,13 +245,12 @@ MPM_KINLINE void MPM_KCAT(MPMKP2GAffineLanes, MPM_KNAME, MPM_KD, d)(const MPMTra
   MPM_KVEC       xo[MPM_KD][3], mean[MPM_KD], Cm[MPM_KD * MPM_KD], vp[MPM_KD];
   const MPM_KVEC mp = MPM_KLANE(&A->m[p0], 1);
 
-  MPM_KCAT(MPMKAffineBox, MPM_KNAME, MPM_KD, d)(A, p0, node, W, xo, mean);
-  for (PetscInt i = 0; i < MPM_KD * MPM_KD; i++) Cm[i] = MPM_KLANE(&A->C[p0 * MPM_KD * MPM_KD + i], MPM_KD * MPM_KD);
+  MPM_KCAT(MPMKAffineBox, MPM_KNAME, MPM_KD, d)(A, p0, node, W, Cm, xo, mean);
   for (PetscInt k = 0; k < MPM_KD; k++) vp[k] = MPM_KLANE(&A->v[p0 * MPM_KD + k], MPM_KD);
   for (PetscInt a = 0; a < MPM_KS3; a++) {
     const MPM_KVEC wm = MPM_KLANE(W[a], 1) * mp;
     MPM_KVEC       dxv[MPM_KD];
-    for (PetscInt j = 0, n = a; j < MPM_KD; j++, n /= 3) dxv[j] = xo[j][n % 3] - mean[j];
+    MPM_KCAT(MPMKAffineOffset, MPM_KNAME, MPM_KD, d)(a, xo, mean, dxv);
     for (PetscInt k = 0; k < MPM_KD; k++) {
       MPM_KVEC vk = vp[k];
       for (PetscInt j = 0; j < MPM_KD; j++) vk += Cm[k * MPM_KD + j] * dxv[j];

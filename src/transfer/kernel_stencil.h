@@ -192,6 +192,13 @@ MPM_KINLINE int  MPM_KCAT(MPMKStencilTent, MPM_KNAME, MPM_KD, d)(const MPMGrid *
 }
 #  endif
 
+/* The affine velocity's offsets dx = x_I - x_p - sum N dx of entry a of a group's 3^d box stencils, in lanes, from
+   MPMKAffineBox's parts (the tensor families' lanes take no affine velocity). */
+MPM_KINLINE void MPM_KCAT(MPMKAffineOffset, MPM_KNAME, MPM_KD, d)(PetscInt a, MPM_KVEC xo[MPM_KD][3], const MPM_KVEC mean[MPM_KD], MPM_KVEC dxv[MPM_KD])
+{
+  for (PetscInt k = 0, n = a; k < MPM_KD; k++, n /= 3) dxv[k] = xo[k][n % 3] - mean[k];
+}
+
 /* Lane l of a group's lane-interleaved stencil of ns entries as one point's arrays. */
 MPM_KINLINE void MPM_KCAT(MPMKLaneOut, MPM_KNAME, MPM_KD, d)(PetscInt l, const PetscInt ns, const PetscInt node[][MPM_KLANES], const PetscReal W[][MPM_KLANES], const PetscReal DW[][MPM_KD][MPM_KLANES], PetscInt nodel[], PetscReal Wl[],
                                                              PetscReal DWl[][MPM_KD])
@@ -228,11 +235,12 @@ static __attribute__((noinline)) unsigned MPM_KCAT(MPMKStencilGroup, MPM_KNAME, 
   return done;
 }
 
-/* The affine velocity's offsets (MPMAffineOffsets) of a group's 3^d box stencils in lanes: along direction k a box's
-   nodes lie at 3 places from its first node, xo[k][j] = x_kj - x_p (j = 0, 1, 2), entry a at digit j = (a / 3^k) % 3;
-   mean[k] = sum N (x_kj - x_p). Entry a's offset is xo[k][j] - mean[k]: MPMAffineOffsets' operations, lane by lane. A
-   lane outside the group's mask holds another lane's nodes and weight 0: finite offsets, never used. */
-MPM_KINLINE void MPM_KCAT(MPMKAffineBox, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, PetscInt p0, const PetscInt node[][MPM_KSLANES], const PetscReal W[][MPM_KSLANES], MPM_KVEC xo[MPM_KD][3], MPM_KVEC mean[MPM_KD])
+/* The affine velocity in lanes for a group's 3^d box stencils: C_p's entries Cm (row major) and the offsets'
+   (MPMAffineOffsets) parts: along direction k a box's nodes lie at 3 places from its first node, xo[k][j] = x_kj - x_p
+   (j = 0, 1, 2), entry a at digit j = (a / 3^k) % 3, and mean[k] = sum N (x_kj - x_p); entry a's offsets are
+   MPMKAffineOffset's, MPMAffineOffsets' operations lane by lane. A lane outside the group's mask holds another lane's
+   nodes and weight 0: finite offsets, never used. */
+MPM_KINLINE void MPM_KCAT(MPMKAffineBox, MPM_KNAME, MPM_KD, d)(const MPMTransferArgs *A, PetscInt p0, const PetscInt node[][MPM_KSLANES], const PetscReal W[][MPM_KSLANES], MPM_KVEC Cm[MPM_KD * MPM_KD], MPM_KVEC xo[MPM_KD][3], MPM_KVEC mean[MPM_KD])
 {
   const MPMGrid *g = A->grid;
   PetscReal      xl[MPM_KD][3][MPM_KSLANES];
@@ -251,5 +259,6 @@ MPM_KINLINE void MPM_KCAT(MPMKAffineBox, MPM_KNAME, MPM_KD, d)(const MPMTransfer
     const MPM_KVEC w = MPM_KLANE(W[a], 1);
     for (PetscInt k = 0, n = a; k < MPM_KD; k++, n /= 3) mean[k] += w * xo[k][n % 3];
   }
+  for (PetscInt i = 0; i < MPM_KD * MPM_KD; i++) Cm[i] = MPM_KLANE(&A->C[p0 * MPM_KD * MPM_KD + i], MPM_KD * MPM_KD);
 }
 #endif
