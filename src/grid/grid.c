@@ -559,29 +559,45 @@ PetscErrorCode MPMGridZeroForScatter(MPM mpm, PetscInt n, const PetscReal x[], M
    nodes is shared). */
 PetscErrorCode MPMGridDilate(const MPMGrid *g, const char shared[], char near[])
 {
-  const PetscInt n = g->gm[0] * g->gm[1] * g->gm[2], r = g->sw + 1;
+  const PetscInt n = g->gm[0] * g->gm[1] * g->gm[2], r = g->sw + 1, gm[3] = {g->gm[0], g->gm[1], g->gm[2]};
+  PetscInt       lo[3] = {PETSC_MAX_INT, PETSC_MAX_INT, PETSC_MAX_INT}, hi[3] = {-1, -1, -1}; /* the marks' box, then the dilated one's */
   char          *tmp;
 
   PetscFunctionBegin;
+  PetscCall(PetscArrayzero(near, n));
+  for (PetscInt i2 = 0, c = 0; i2 < gm[2]; i2++) /* the box of the marks: the passes below sweep it widened, not the whole local box */
+    for (PetscInt i1 = 0; i1 < gm[1]; i1++)
+      for (PetscInt i0 = 0; i0 < gm[0]; i0++, c++) {
+        const PetscInt ijk[3] = {i0, i1, i2};
+        if (!shared[c]) continue;
+        for (PetscInt k = 0; k < 3; k++) {
+          lo[k] = PetscMin(lo[k], ijk[k]);
+          hi[k] = PetscMax(hi[k], ijk[k] + 1);
+        }
+      }
+  if (hi[0] < 0) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscMalloc1(n, &tmp));
-  PetscCall(PetscArraycpy(near, shared, n));
+  for (PetscInt i2 = lo[2]; i2 < hi[2]; i2++)
+    for (PetscInt i1 = lo[1]; i1 < hi[1]; i1++) PetscCall(PetscArraycpy(&near[(i2 * gm[1] + i1) * gm[0] + lo[0]], &shared[(i2 * gm[1] + i1) * gm[0] + lo[0]], hi[0] - lo[0]));
   for (PetscInt k = 0; k < g->dim; k++) { /* along each line of direction k: marked where a mark lies within r, from the distances to the last and the next mark */
-    const PetscInt stride = k == 0 ? 1 : k == 1 ? g->gm[0] : g->gm[0] * g->gm[1], len = g->gm[k];
-    const PetscInt na = k == 0 ? g->gm[1] : g->gm[0], nb = k == 2 ? g->gm[1] : g->gm[2], sa = k == 0 ? g->gm[0] : 1, sb = k == 2 ? g->gm[0] : g->gm[0] * g->gm[1];
-    PetscCall(PetscArraycpy(tmp, near, n));
-    for (PetscInt ib = 0; ib < nb; ib++)
-      for (PetscInt ia = 0; ia < na; ia++) {
+    const PetscInt stride = k == 0 ? 1 : k == 1 ? gm[0] : gm[0] * gm[1], ka = k == 0 ? 1 : 0, kb = k == 2 ? 1 : 2;
+    const PetscInt sa = ka == 0 ? 1 : gm[0], sb = kb == 1 ? gm[0] : gm[0] * gm[1], jlo = PetscMax(0, lo[k] - r), jhi = PetscMin(gm[k], hi[k] + r);
+    for (PetscInt ib = lo[kb]; ib < hi[kb]; ib++)
+      for (PetscInt ia = lo[ka]; ia < hi[ka]; ia++) {
         const PetscInt base = ib * sb + ia * sa;
-        PetscInt       last = -2 * r - 2, next = len + 2 * r + 2;
-        for (PetscInt j = 0; j < len; j++) {
-          if (tmp[base + j * stride]) last = j;
+        PetscInt       last = -2 * r - 2, next = gm[k] + 2 * r + 2;
+        for (PetscInt j = jlo; j < jhi; j++) tmp[j - jlo] = near[base + j * stride];
+        for (PetscInt j = jlo; j < jhi; j++) {
+          if (tmp[j - jlo]) last = j;
           near[base + j * stride] = (char)(j - last <= r);
         }
-        for (PetscInt j = len - 1; j >= 0; j--) {
-          if (tmp[base + j * stride]) next = j;
+        for (PetscInt j = jhi - 1; j >= jlo; j--) {
+          if (tmp[j - jlo]) next = j;
           if (next - j <= r) near[base + j * stride] = 1;
         }
       }
+    lo[k] = jlo;
+    hi[k] = jhi;
   }
   PetscCall(PetscFree(tmp));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -65,6 +65,9 @@ typedef struct {
   char            *shared;                                                       /* per local node: two or more bodies have mass there */
   char            *near;                                                         /* per local node: a shared node within the ghost width sw (a point whose cell starts there may reach one) */
   PetscInt        *cand, ncand, maxcand;                                         /* the local points whose stencil reaches a shared node */
+  PetscInt        *coff, *cnode, mcnode;                                         /* their stencils (MPMContactGeometry's, reused by the heat and the surface test): entries coff[i] .. coff[i+1] */
+  PetscReal       *cw;                                                           /* and the entries' weights N_I(x_p) */
+  PetscInt        *slist, nslist, mslist;                                        /* the shared local nodes, ghosts included */
   PetscInt         nshared;                                                      /* shared nodes on all ranks this step (0: the bodies are apart) */
   PetscReal        work, friction;                                               /* energy the corrections took out of the grid, its frictional part, this rank [erg] */
   PetscReal        impulse[MPM_MAX_BODIES][3];                                   /* integral of the contact force on each rigid body, this rank [dyn s] */
@@ -150,10 +153,49 @@ static PetscErrorCode MPMContactSetFromOptions(MPMModule mod, MPM mpm, PetscOpti
    flat face towards the axis by atan(h / r) (a rigid anvil's under a Taylor rod: 6 degrees at r = 10 h), which takes
    sin^2 of the radial velocity at each correction and lifts the rod. Once per step (the MUSL remap's pass reuses them:
    the points have not moved). The nodes' masses are the kick's, ghosts filled. */
+/* The union of the fields' owned-node boxes (MPMBodyBox: outside its box a field's owned nodes hold zeros). */
+static PetscErrorCode MPMContactFieldsBox(const MPMContact *ct, MPM mpm, PetscInt lo[], PetscInt hi[])
+{
+  PetscFunctionBegin;
+  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
+    lo[k] = PETSC_MAX_INT;
+    hi[k] = -1;
+  }
+  for (PetscInt b = 0; b < ct->nf; b++) {
+    const PetscInt *blo, *bhi;
+    PetscBool       empty = PETSC_FALSE;
+    MPMBodyBox(mpm, ct->slot[b], &blo, &bhi);
+    for (PetscInt k = 0; k < MPM_MAX_DIM; k++) empty = (PetscBool)(empty || blo[k] >= bhi[k]);
+    for (PetscInt k = 0; k < MPM_MAX_DIM && !empty; k++) {
+      lo[k] = PetscMin(lo[k], blo[k]);
+      hi[k] = PetscMax(hi[k], bhi[k]);
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Local node c, where two or more fields have mass, marked shared and listed (once). */
+static PetscErrorCode MPMContactMarkShared(MPMContact *ct, PetscInt c)
+{
+  PetscFunctionBegin;
+  if (ct->shared[c]) PetscFunctionReturn(PETSC_SUCCESS);
+  ct->shared[c] = 1;
+  if (ct->nslist == ct->mslist) {
+    PetscInt *l2;
+    ct->mslist = PetscMax(1024, 2 * ct->mslist);
+    PetscCall(PetscMalloc1(ct->mslist, &l2));
+    PetscCall(PetscArraycpy(l2, ct->slist, ct->nslist));
+    PetscCall(PetscFree(ct->slist));
+    ct->slist = l2;
+  }
+  ct->slist[ct->nslist++] = c;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const *node)
 {
   const PetscInt d = mpm->grid.dim, nb = mpm->nbodies, nf = ct->nf;
-  PetscInt       nloc, ns = 0;
+  PetscInt       nloc, ns, lo[MPM_MAX_DIM], hi[MPM_MAX_DIM];
 
   PetscFunctionBegin;
   PetscCall(VecGetLocalSize(mpm->lnodes, &nloc));
@@ -182,15 +224,39 @@ static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const
     }
     if (!ct->ext[b] && ct->gap == MPM_CONTACT_GAP_SURFACE && b < nb) PetscCall(PetscMalloc1(nloc, &ct->ext[b]));
   }
-  for (PetscInt c = 0; c < nloc; c++) { /* the shared nodes, ghosts included */
-    PetscInt nin = 0;
+  PetscCall(PetscArrayzero(ct->shared, nloc));
+  ct->nslist = 0;
+  for (PetscInt a = 0; a < nf; a++) /* the shared nodes: the owned ones where the boxes of two fields meet (outside its box a field's owned nodes hold zeros, MPMBodyBox), then the ghosts */
+    for (PetscInt b = a + 1; b < nf; b++) {
+      const PetscInt *alo, *ahi, *blo, *bhi;
+      MPMBodyBox(mpm, ct->slot[a], &alo, &ahi);
+      MPMBodyBox(mpm, ct->slot[b], &blo, &bhi);
+      for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
+        lo[k] = PetscMax(alo[k], blo[k]);
+        hi[k] = PetscMin(ahi[k], bhi[k]);
+      }
+      for (PetscInt i2 = lo[2]; i2 < hi[2]; i2++)
+        for (PetscInt i1 = lo[1]; i1 < hi[1]; i1++)
+          for (PetscInt i0 = lo[0]; i0 < hi[0]; i0++) {
+            const PetscInt c = MPMOwnedToLocal(&mpm->grid, i0, i1, i2);
+            if (node[a][c].m > 0.0 && node[b][c].m > 0.0) PetscCall(MPMContactMarkShared(ct, c));
+          }
+    }
+  for (PetscInt i = 0; i < mpm->nghost; i++) {
+    const PetscInt c   = mpm->ghost[i];
+    PetscInt       nin = 0;
     for (PetscInt b = 0; b < nf; b++) nin += node[b][c].m > 0.0;
-    ct->shared[c] = (char)(nin > 1);
-    ns += nin > 1;
+    if (nin > 1) PetscCall(MPMContactMarkShared(ct, c));
   }
+  ns = ct->nslist;
   PetscCall(MPIU_Allreduce(&ns, &ct->nshared, 1, MPIU_INT, MPIU_SUM, mpm->comm));
   ct->ncand = 0;
   if (!ct->nshared) PetscFunctionReturn(PETSC_SUCCESS); /* the bodies are apart: nothing to correct this step */
+  if (!ct->maxcand) {
+    ct->maxcand = 1024;
+    PetscCall(PetscMalloc2(ct->maxcand, &ct->cand, ct->maxcand + 1, &ct->coff));
+  }
+  ct->coff[0] = 0;
   PetscCall(MPMGridDilate(&mpm->grid, ct->shared, ct->near));
   for (PetscInt b = nb; b < nf && ct->nbz != nb; b++)
     PetscCall(VecZeroEntries(ct->geo[b])); /* a crack field has no points (its body's geometry stands for it): zero but for the heat, which MPMContactHeat clears; again where a body added in the run took its index */
@@ -216,14 +282,30 @@ static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const
       for (PetscInt a = 0; a < st.n && !near; a++) near = (PetscBool)ct->shared[st.node[a]];
       if (!near) continue;
       if (ct->ncand == ct->maxcand) {
-        PetscInt *c2;
+        PetscInt *c2, *o2;
         ct->maxcand = PetscMax(1024, 2 * ct->maxcand);
-        PetscCall(PetscMalloc1(ct->maxcand, &c2));
+        PetscCall(PetscMalloc2(ct->maxcand, &c2, ct->maxcand + 1, &o2));
         PetscCall(PetscArraycpy(c2, ct->cand, ct->ncand));
-        PetscCall(PetscFree(ct->cand));
+        PetscCall(PetscArraycpy(o2, ct->coff, ct->ncand + 1));
+        PetscCall(PetscFree2(ct->cand, ct->coff));
         ct->cand = c2;
+        ct->coff = o2;
       }
-      ct->cand[ct->ncand++] = mpm->bstart[b] + p;
+      if (ct->coff[ct->ncand] + st.n > ct->mcnode) {
+        PetscInt  *n2;
+        PetscReal *w2;
+        ct->mcnode = PetscMax(2 * ct->mcnode, ct->coff[ct->ncand] + st.n + 4096);
+        PetscCall(PetscMalloc2(ct->mcnode, &n2, ct->mcnode, &w2));
+        PetscCall(PetscArraycpy(n2, ct->cnode, ct->coff[ct->ncand]));
+        PetscCall(PetscArraycpy(w2, ct->cw, ct->coff[ct->ncand]));
+        PetscCall(PetscFree2(ct->cnode, ct->cw));
+        ct->cnode = n2;
+        ct->cw    = w2;
+      }
+      PetscCall(PetscArraycpy(&ct->cnode[ct->coff[ct->ncand]], st.node, st.n));
+      PetscCall(PetscArraycpy(&ct->cw[ct->coff[ct->ncand]], st.w, st.n));
+      ct->coff[ct->ncand + 1] = ct->coff[ct->ncand] + st.n;
+      ct->cand[ct->ncand++]   = mpm->bstart[b] + p;
       for (PetscInt a = 0; a < st.n; a++) {
         MPMNode *nd = &geo[st.node[a]];
         nd->m += st.w[a] * V;
@@ -261,9 +343,8 @@ static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const
    cleared. */
 static PetscErrorCode MPMContactHeat(MPMContact *ct, MPM mpm, MPMNode *const *node)
 {
-  const PetscInt d = mpm->grid.dim;
-  MPMNode       *geo[MPM_MAX_BODIES];
-  MPMPoints      pts;
+  MPMNode  *geo[MPM_MAX_BODIES];
+  MPMPoints pts;
 
   PetscFunctionBegin;
   for (PetscInt b = 0; b < ct->nf; b++) {
@@ -271,28 +352,22 @@ static PetscErrorCode MPMContactHeat(MPMContact *ct, MPM mpm, MPMNode *const *no
     PetscCall(MPMGhostExchange(mpm, mpm->node_type, (PetscScalar *)geo[b], PETSC_FALSE, PETSC_TRUE));
   }
   PetscCall(MPMPointsGetArrays(mpm, &pts));
-  for (PetscInt i = 0; i < ct->ncand; i++) {
-    const PetscInt p = ct->cand[i];
-    PetscReal      Fs[MPM_MAX_DIM * MPM_MAX_DIM], de = 0.0;
-    MPMStencil     st;
-    MPMShapeEvaluate(mpm->shape, &mpm->grid, &pts.f[MPM_FIELD_POSITION][p * d], MPMPointDomain(d, pts.f[MPM_FIELD_DEFGRAD], pts.f[MPM_FIELD_DOMAINSCALE], p, Fs), &st);
-    for (PetscInt a = 0; a < st.n; a++) {
-      const PetscInt c = st.node[a];
+  for (PetscInt i = 0; i < ct->ncand; i++) { /* the point's stencil as MPMContactGeometry kept it (the points have not moved) */
+    PetscReal de = 0.0;
+    for (PetscInt a = ct->coff[i]; a < ct->coff[i + 1]; a++) {
+      const PetscInt c = ct->cnode[a];
       PetscReal      E = 0.0, M = 0.0;
       for (PetscInt b = 0; b < ct->nf; b++) {
         E += geo[b][c].f[0];
         M += node[b][c].m;
       }
-      if (E != 0.0) de += st.w[a] * E / M;
+      if (E != 0.0) de += ct->cw[a] * E / M;
     }
-    pts.f[MPM_FIELD_ENERGY][p] += de;
+    pts.f[MPM_FIELD_ENERGY][ct->cand[i]] += de;
   }
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   for (PetscInt b = 0; b < ct->nf; b++) {
-    PetscInt n;
-    PetscCall(VecGetLocalSize(ct->geo[b], &n));
-    for (PetscInt c = 0; c < n / MPM_NODE_DOF; c++) /* E was set at shared nodes only (their ghosts filled from their owners) */
-      if (ct->shared[c]) geo[b][c].f[0] = 0.0;
+    for (PetscInt i = 0; i < ct->nslist; i++) geo[b][ct->slist[i]].f[0] = 0.0; /* E was set at shared nodes only (their ghosts filled from their owners) */
     PetscCall(VecRestoreArray(ct->geo[b], (PetscScalar **)&geo[b]));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -578,13 +653,10 @@ static PetscErrorCode MPMContactExtents(MPMContact *ct, MPM mpm, MPMNode *const 
   for (PetscInt i = 0; i < ct->ncand; i++) {
     const PetscInt   p = ct->cand[i], b = pts.f[MPM_FIELD_BODY] ? (PetscInt)pts.f[MPM_FIELD_BODY][p] : 0; /* one body with a crack field: no body field */
     const PetscReal *x = &pts.f[MPM_FIELD_POSITION][p * d];
-    PetscReal        Fs[MPM_MAX_DIM * MPM_MAX_DIM];
-    MPMStencil       st;
-    MPMShapeEvaluate(mpm->shape, &mpm->grid, x, MPMPointDomain(d, pts.f[MPM_FIELD_DEFGRAD], pts.f[MPM_FIELD_DOMAINSCALE], p, Fs), &st);
-    for (PetscInt a = 0; a < st.n; a++) {
-      const PetscInt c = st.node[a];
+    for (PetscInt a = ct->coff[i]; a < ct->coff[i + 1]; a++) { /* its stencil as MPMContactGeometry kept it */
+      const PetscInt c = ct->cnode[a];
       PetscReal      n[3], e = 0.0;
-      if (!ct->shared[c] || st.w[a] <= 0.0) continue;
+      if (!ct->shared[c] || ct->cw[a] <= 0.0) continue;
       MPMContactNormalOf(ct, mpm, node, geo, b, c, n);
       for (PetscInt k = 0; k < d; k++) e += x[k] * n[k];
       ct->ext[b][c] = PetscMax(ct->ext[b][c], e + MPMPointHalfExtent(mpm, &pts, p, n));
@@ -738,19 +810,8 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
   for (PetscInt b = 0; b < nf; b++) PetscCall(VecGetArray(MPMBodyNodesVec(mpm, ct->slot[b]), (PetscScalar **)&node[b]));
   if (!ctx->remap) PetscCall(MPMContactGeometry(ct, mpm, node));
   if (!ctx->remap && ct->nshared && ct->gap == MPM_CONTACT_GAP_SURFACE) PetscCall(MPMContactExtents(ct, mpm, node));
-  for (PetscInt k = 0; k < MPM_MAX_DIM; k++) { /* the union of the fields' node boxes */
-    lo[k] = PETSC_MAX_INT;
-    hi[k] = -1;
-  }
+  PetscCall(MPMContactFieldsBox(ct, mpm, lo, hi)); /* the union of the fields' node boxes */
   for (PetscInt b = 0; b < nf; b++) {
-    const PetscInt *blo, *bhi;
-    PetscBool       empty = PETSC_FALSE;
-    MPMBodyBox(mpm, ct->slot[b], &blo, &bhi);
-    for (PetscInt k = 0; k < MPM_MAX_DIM; k++) empty = (PetscBool)(empty || blo[k] >= bhi[k]);
-    for (PetscInt k = 0; k < MPM_MAX_DIM && !empty; k++) {
-      lo[k] = PetscMin(lo[k], blo[k]);
-      hi[k] = PetscMax(hi[k], bhi[k]);
-    }
     PetscCall(VecGetArray(ct->geo[b], (PetscScalar **)&geo[b]));
     for (PetscInt k = 0; k < 13; k++) frc[b][k] = 0.0;
     anyrigid = (PetscBool)(anyrigid || (b < nb && ct->rigid[b]));
@@ -785,6 +846,7 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
         PetscBool      rgap = PETSC_FALSE, rfull;                                                    /* a rigid body here (ct->rigid_gap), and the volumes fill f_r of the node */
         PetscInt       nbod = 0;                                                                     /* bodies with mass here                 */
         PetscReal      vs[MPM_MAX_BODIES][3];
+        if (!ct->shared[c]) continue; /* fewer than two fields have mass here (MPMContactGeometry) */
         for (PetscInt b = 0; b < nf; b++)
           if (node[b][c].m > 0.0) {
             if (!hasfam[ct->fam[b]]) nbod++;
@@ -1045,7 +1107,9 @@ static PetscErrorCode MPMContactDestroy(MPMModule mod)
   PetscFunctionBegin;
   for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) PetscCall(VecDestroy(&ct->geo[b]));
   PetscCall(PetscFree2(ct->shared, ct->near));
-  PetscCall(PetscFree(ct->cand));
+  PetscCall(PetscFree2(ct->cand, ct->coff));
+  PetscCall(PetscFree2(ct->cnode, ct->cw));
+  PetscCall(PetscFree(ct->slist));
   for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) PetscCall(PetscFree(ct->ext[b]));
   for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) PetscCall(PetscFree(ct->wl[b]));
   PetscCall(PetscFree(ct->wmark));

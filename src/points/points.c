@@ -772,23 +772,26 @@ PetscErrorCode MPMExactInitialize(MPMExact exact, MPM mpm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Moves every field the points carry so that the point perm[i] goes to place i (n points). */
+/* Moves every field the points carry so that the point perm[i] goes to place i (n points); only the places from the
+   first to the last that perm moves are copied (points appended by a split move the ones after their body's). */
 static PetscErrorCode MPMPointsPermute(MPM mpm, const MPMPoints *pts, const PetscInt perm[])
 {
-  const PetscInt d = mpm->grid.dim, n = pts->n;
-  PetscInt       bsmax = 1;
+  const PetscInt d     = mpm->grid.dim;
+  PetscInt       bsmax = 1, lo = 0, hi = pts->n;
   PetscReal     *tmp;
 
   PetscFunctionBegin;
+  while (lo < hi && perm[lo] == lo) lo++;
+  while (hi > lo && perm[hi - 1] == hi - 1) hi--;
   for (PetscInt f = 0; f < mpm->nfields; f++) bsmax = PetscMax(bsmax, MPMFieldBlockSize(mpm->field[f].bs, d));
-  PetscCall(PetscMalloc1(n * bsmax, &tmp));
+  PetscCall(PetscMalloc1((hi - lo) * bsmax, &tmp));
   for (PetscInt f = 0; f < mpm->nfields; f++) {
     const PetscInt bs = MPMFieldBlockSize(mpm->field[f].bs, d);
     PetscReal     *a  = pts->f[f];
     if (!a) continue;
-    for (PetscInt i = 0; i < n; i++)
-      for (PetscInt k = 0; k < bs; k++) tmp[i * bs + k] = a[perm[i] * bs + k];
-    PetscCall(PetscArraycpy(a, tmp, n * bs));
+    for (PetscInt i = lo; i < hi; i++)
+      for (PetscInt k = 0; k < bs; k++) tmp[(i - lo) * bs + k] = a[perm[i] * bs + k];
+    PetscCall(PetscArraycpy(&a[lo * bs], tmp, (hi - lo) * bs));
   }
   PetscCall(PetscFree(tmp));
   PetscFunctionReturn(PETSC_SUCCESS);
