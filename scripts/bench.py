@@ -25,6 +25,10 @@ Cases (point-steps per second, median of --repeat runs, each case's runs interle
              default blend carries a rotation per point (src/transfer/blend.c)
   roll2dnr   the same with -mpm_update_blend_rotation false; roll2d's rate over it: the rotation's cost in 2D
   incl3d     the 3D incline (incline_3d.opts), the rotation on; incl3dnr without it: the rotation's cost in 3D
+  pen2       the rod penetrating the plate (penetration_2d.opts at 120^2 cells to 10 us): two bodies, contact and the
+             rotation per point; pen1 the same points welded into one body (-region_<r>_body one), pen1r welded with
+             the rotation: pen1's rate over pen2's is what two bodies cost, pen1r's what contact alone costs (issue 40:
+             at most 1.5)
 Each case on every rank count of --ranks; with --before, the same runs with another petmpm (the code before a
 change) interleaved too, and the speed-up. The -log_view phase shares of each case on one rank, and the memory
 per point in 3D: the marginal process memory per point between two sizes (PETSc's -memory_view maximum), with block8
@@ -114,6 +118,7 @@ def main():
     ranks = [int(r) for r in a.ranks.split(",")]
     blk = "25,25,105" if a.quick else "50,50,210"  # the 0.4 x 0.4 x 2.4 bar in a 0.6 x 0.6 x 2.6 box: 8 points per cell
     roll = ["-mpm_cells", "70,30", "-mpm_hi", "3,1.5", "-region_plane_hi", "3,0.5", "-region_plane_lo", "-0.5,0.3"]
+    pen, weld = ["-mpm_cells", "120,120", "-ts_max_time", "1e-5"], ["-region_rod_body", "one", "-region_plate_body", "one"]
     cases = [
         ("sod", "weak Sod 1D, linear, 4 ppc, 1024 cells", "sod_weak.opts", ["-options_file", os.path.join(SRC, "inputs", "methods", "cth.opts")], "mpm1d", ["sod", "5"]),
         ("block8", "3D block, linear, 8 ppc, USL, MG + JC", "bar_impact_3d.opts",
@@ -131,6 +136,9 @@ def main():
         ("roll2dnr", "2D rolling disk, no rotation per point", "rolling_2d.opts", roll + ["-mpm_update_blend_rotation", "false"], None, None),
         ("incl3d", "3D incline, the default method (a rotation per point)", "incline_3d.opts", [], None, None),
         ("incl3dnr", "3D incline, no rotation per point", "incline_3d.opts", ["-mpm_update_blend_rotation", "false"], None, None),
+        ("pen2", "2D rod into plate, two bodies (contact, the rotation)", "penetration_2d.opts", pen, None, None),
+        ("pen1", "2D rod into plate, welded into one body", "penetration_2d.opts", pen + weld, None, None),
+        ("pen1r", "2D rod into plate, welded, the rotation on", "penetration_2d.opts", pen + weld + ["-mpm_update_blend_rotation"], None, None),
     ]
     if a.cases:
         cases = [c for c in cases if c[0] in a.cases.split(",")]
@@ -169,6 +177,10 @@ def main():
         for r in ranks:
             if (plain, r) in medians and (rot, r) in medians:
                 say(f"\nThe blend's rotation per point ({rot} / {plain}, {r} rank(s)): {medians[(plain, r)] / medians[(rot, r)]:.3f} times the time.")
+    for one, what in (("pen1", "two bodies against one"), ("pen1r", "contact alone: two bodies against one with the rotation")):
+        for r in ranks:
+            if (one, r) in medians and ("pen2", r) in medians:
+                say(f"\nThe cost of contact, {what} (pen2 / {one}, {r} rank(s)): {medians[(one, r)] / medians[('pen2', r)]:.3f} times the time.")
     say()
     say("-log_view, one rank, share of the time-loop stage [%]:")
     say()
