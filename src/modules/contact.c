@@ -146,13 +146,6 @@ static PetscErrorCode MPMContactSetFromOptions(MPMModule mod, MPM mpm, PetscOpti
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Per body at the nodes two or more bodies share: sum N_I V_p (in m), g_I = sum m_p grad N_I(x_p) (in p; mirror
-   images across walls with their signs) and in r-z sum N_I m_p (in v0[0], the scale g_I is compared with), summed over
-   the ranks, from the points whose stencil reaches such a node (the candidates, kept for MPMContactHeat). In r-z m_p
-   is taken per unit r, m_p / r_p: the mass per radian of a body uniform in r grows as r, and its gradient would tilt the normal of a
-   flat face towards the axis by atan(h / r) (a rigid anvil's under a Taylor rod: 6 degrees at r = 10 h), which takes
-   sin^2 of the radial velocity at each correction and lifts the rod. Once per step (the MUSL remap's pass reuses them:
-   the points have not moved). The nodes' masses are the kick's, ghosts filled. */
 /* The union of the fields' owned-node boxes (MPMBodyBox: outside its box a field's owned nodes hold zeros). */
 static PetscErrorCode MPMContactFieldsBox(const MPMContact *ct, MPM mpm, PetscInt lo[], PetscInt hi[])
 {
@@ -192,6 +185,14 @@ static PetscErrorCode MPMContactMarkShared(MPMContact *ct, PetscInt c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Per body at the nodes two or more bodies share: sum N_I V_p (in m), g_I = sum m_p grad N_I(x_p) (in p; mirror
+   images across walls with their signs) and in r-z sum N_I m_p (in v0[0], the scale g_I is compared with), summed over
+   the ranks, from the points whose stencil reaches such a node (the candidates, with their stencils' nodes and weights, kept for
+   MPMContactHeat and MPMContactExtents). In r-z m_p
+   is taken per unit r, m_p / r_p: the mass per radian of a body uniform in r grows as r, and its gradient would tilt the normal of a
+   flat face towards the axis by atan(h / r) (a rigid anvil's under a Taylor rod: 6 degrees at r = 10 h), which takes
+   sin^2 of the radial velocity at each correction and lifts the rod. Once per step (the MUSL remap's pass reuses them:
+   the points have not moved). The nodes' masses are the kick's, ghosts filled. */
 static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const *node)
 {
   const PetscInt d = mpm->grid.dim, nb = mpm->nbodies, nf = ct->nf;
