@@ -65,8 +65,8 @@ typedef struct {
   char            *shared;                                                       /* per local node: two or more bodies have mass there */
   char            *near;                                                         /* per local node: a shared node within the ghost width sw (a point whose cell starts there may reach one) */
   PetscInt        *cand, ncand, maxcand;                                         /* the local points whose stencil reaches a shared node */
-  PetscInt        *coff, *cnode, mcnode;                                         /* their stencils (MPMContactGeometry's, reused by the heat and the surface test): entries coff[i] .. coff[i+1] */
-  PetscReal       *cw;                                                           /* and the entries' weights N_I(x_p) */
+  PetscInt        *coff, mcoff, *cnode, mcnode;                                  /* their stencils (MPMContactGeometry's, reused by the heat and the surface test): entries coff[i] .. coff[i+1] */
+  PetscReal       *cw;                                                           /* and the entries' weights N_I(x_p) (mcnode of them) */
   PetscInt        *slist, nslist, mslist;                                        /* the shared local nodes, ghosts included */
   PetscInt         nshared;                                                      /* shared nodes on all ranks this step (0: the bodies are apart) */
   PetscReal        work, friction;                                               /* energy the corrections took out of the grid, its frictional part, this rank [erg] */
@@ -167,20 +167,24 @@ static PetscErrorCode MPMContactFieldsBox(const MPMContact *ct, MPM mpm, PetscIn
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Grows the array *a of elements of size bytes, kept from step to step, to hold need of them (doubling, at least 1024). */
+static PetscErrorCode MPMContactReserve(PetscInt need, PetscInt *max, size_t size, void *a)
+{
+  PetscFunctionBegin;
+  if (need > *max) {
+    *max = PetscMax(need, PetscMax(1024, 2 * *max));
+    PetscCall(PetscRealloc((size_t)*max * size, a));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Local node c, where two or more fields have mass, marked shared and listed (once). */
 static PetscErrorCode MPMContactMarkShared(MPMContact *ct, PetscInt c)
 {
   PetscFunctionBegin;
   if (ct->shared[c]) PetscFunctionReturn(PETSC_SUCCESS);
   ct->shared[c] = 1;
-  if (ct->nslist == ct->mslist) {
-    PetscInt *l2;
-    ct->mslist = PetscMax(1024, 2 * ct->mslist);
-    PetscCall(PetscMalloc1(ct->mslist, &l2));
-    PetscCall(PetscArraycpy(l2, ct->slist, ct->nslist));
-    PetscCall(PetscFree(ct->slist));
-    ct->slist = l2;
-  }
+  PetscCall(MPMContactReserve(ct->nslist + 1, &ct->mslist, sizeof(PetscInt), &ct->slist));
   ct->slist[ct->nslist++] = c;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -253,10 +257,7 @@ static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const
   PetscCall(MPIU_Allreduce(&ns, &ct->nshared, 1, MPIU_INT, MPIU_SUM, mpm->comm));
   ct->ncand = 0;
   if (!ct->nshared) PetscFunctionReturn(PETSC_SUCCESS); /* the bodies are apart: nothing to correct this step */
-  if (!ct->maxcand) {
-    ct->maxcand = 1024;
-    PetscCall(PetscMalloc2(ct->maxcand, &ct->cand, ct->maxcand + 1, &ct->coff));
-  }
+  PetscCall(MPMContactReserve(1, &ct->mcoff, sizeof(PetscInt), &ct->coff));
   ct->coff[0] = 0;
   PetscCall(MPMGridDilate(&mpm->grid, ct->shared, ct->near));
   for (PetscInt b = nb; b < nf && ct->nbz != nb; b++)
@@ -282,26 +283,12 @@ static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const
       MPMShapeEvaluate(mpm->shape, &mpm->grid, &pts.f[MPM_FIELD_POSITION][p * d], MPMPointDomain(d, pts.f[MPM_FIELD_DEFGRAD], pts.f[MPM_FIELD_DOMAINSCALE], p, Fs), &st);
       for (PetscInt a = 0; a < st.n && !near; a++) near = (PetscBool)ct->shared[st.node[a]];
       if (!near) continue;
-      if (ct->ncand == ct->maxcand) {
-        PetscInt *c2, *o2;
-        ct->maxcand = PetscMax(1024, 2 * ct->maxcand);
-        PetscCall(PetscMalloc2(ct->maxcand, &c2, ct->maxcand + 1, &o2));
-        PetscCall(PetscArraycpy(c2, ct->cand, ct->ncand));
-        PetscCall(PetscArraycpy(o2, ct->coff, ct->ncand + 1));
-        PetscCall(PetscFree2(ct->cand, ct->coff));
-        ct->cand = c2;
-        ct->coff = o2;
-      }
-      if (ct->coff[ct->ncand] + st.n > ct->mcnode) {
-        PetscInt  *n2;
-        PetscReal *w2;
-        ct->mcnode = PetscMax(2 * ct->mcnode, ct->coff[ct->ncand] + st.n + 4096);
-        PetscCall(PetscMalloc2(ct->mcnode, &n2, ct->mcnode, &w2));
-        PetscCall(PetscArraycpy(n2, ct->cnode, ct->coff[ct->ncand]));
-        PetscCall(PetscArraycpy(w2, ct->cw, ct->coff[ct->ncand]));
-        PetscCall(PetscFree2(ct->cnode, ct->cw));
-        ct->cnode = n2;
-        ct->cw    = w2;
+      PetscCall(MPMContactReserve(ct->ncand + 1, &ct->maxcand, sizeof(PetscInt), &ct->cand));
+      PetscCall(MPMContactReserve(ct->ncand + 2, &ct->mcoff, sizeof(PetscInt), &ct->coff));
+      if (ct->coff[ct->ncand] + st.n > ct->mcnode) { /* the nodes and the weights alike */
+        PetscInt m = ct->mcnode;
+        PetscCall(MPMContactReserve(ct->coff[ct->ncand] + st.n, &ct->mcnode, sizeof(PetscInt), &ct->cnode));
+        PetscCall(MPMContactReserve(ct->coff[ct->ncand] + st.n, &m, sizeof(PetscReal), &ct->cw));
       }
       PetscCall(PetscArraycpy(&ct->cnode[ct->coff[ct->ncand]], st.node, st.n));
       PetscCall(PetscArraycpy(&ct->cw[ct->coff[ct->ncand]], st.w, st.n));
@@ -313,14 +300,7 @@ static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const
         for (PetscInt k = 0; k < d; k++) nd->p[k] += st.s[a][k] * mg * st.dw[a][k];
         if (mpm->grid.axisym) nd->v0[0] += st.w[a] * mg; /* the scale of g_I in r-z (MPMContactNormalOf) */
         if (list && !ct->wmark[st.node[a]]) {
-          if (ct->nwl[b] == ct->mwl[b]) {
-            PetscInt *w2;
-            ct->mwl[b] = PetscMax(1024, 2 * ct->mwl[b]);
-            PetscCall(PetscMalloc1(ct->mwl[b], &w2));
-            PetscCall(PetscArraycpy(w2, ct->wl[b], ct->nwl[b]));
-            PetscCall(PetscFree(ct->wl[b]));
-            ct->wl[b] = w2;
-          }
+          PetscCall(MPMContactReserve(ct->nwl[b] + 1, &ct->mwl[b], sizeof(PetscInt), &ct->wl[b]));
           ct->wmark[st.node[a]]   = 1;
           ct->wl[b][ct->nwl[b]++] = st.node[a];
         }
@@ -1108,8 +1088,10 @@ static PetscErrorCode MPMContactDestroy(MPMModule mod)
   PetscFunctionBegin;
   for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) PetscCall(VecDestroy(&ct->geo[b]));
   PetscCall(PetscFree2(ct->shared, ct->near));
-  PetscCall(PetscFree2(ct->cand, ct->coff));
-  PetscCall(PetscFree2(ct->cnode, ct->cw));
+  PetscCall(PetscFree(ct->cand));
+  PetscCall(PetscFree(ct->coff));
+  PetscCall(PetscFree(ct->cnode));
+  PetscCall(PetscFree(ct->cw));
   PetscCall(PetscFree(ct->slist));
   for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) PetscCall(PetscFree(ct->ext[b]));
   for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) PetscCall(PetscFree(ct->wl[b]));
