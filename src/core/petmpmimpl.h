@@ -117,9 +117,11 @@ struct _p_MPM {
   PetscBool            has_bodyforce; /* the exact solution drives the points with a body force (manufactured) */
   PetscBool            view;
   PetscInt             nmat, nreg;
-  PetscInt             nbodies;     /* bodies of the scene (MPMSceneBodies), each with its own nodal velocity field */
-  PetscBool            bodies_open; /* bodies may be added during the run (MPMBodyAdd: the pieces a body breaks into) */
-  MPMCrack             crack;       /* crack fields (src/grid/crack.c), NULL: none (-mpm_fracture_fields) */
+  PetscInt             nbodies;                             /* bodies of the scene (MPMSceneBodies), each with its own nodal velocity field */
+  PetscBool            bodies_open;                         /* bodies may be added during the run (MPMBodyAdd: the pieces a body breaks into) */
+  MPMCrack             crack;                               /* crack fields (src/grid/crack.c), NULL: none (-mpm_fracture_fields) */
+  PetscBool            body_rigid[MPM_MAX_BODIES];          /* a module prescribes the body's motion (a rigid body): its points move at body_v, without grid to points (MPMMoveRigidly) */
+  PetscReal            body_v[MPM_MAX_BODIES][MPM_MAX_DIM]; /* that velocity in this step, v(t^n + dt_n / 2) [cm/s], set before the point phases */
   char                 bodyname[MPM_MAX_BODIES][MPM_MAX_NAME];
   MPMMaterial          mat[MPM_MAX_MATERIALS];
   MPMRegion            reg[MPM_MAX_REGIONS];
@@ -342,7 +344,8 @@ PETSC_INTERN PetscErrorCode MPMBlendSharesBegin(MPM);
 PETSC_INTERN PetscErrorCode MPMBlendScatter(MPM);
 PETSC_INTERN PetscErrorCode MPMBlendSharesSum(MPM);
 PETSC_INTERN PetscErrorCode MPMBlendSharesEnd(MPM);
-PETSC_INTERN PetscErrorCode MPMParticlesToGrid(MPM, const MPMStepContext *);
+PETSC_INTERN PetscErrorCode MPMParticlesToGrid(MPM, const MPMStepContext *, PetscBool);
 PETSC_INTERN PetscErrorCode MPMGridToParticles(MPM, const MPMStepContext *, PetscBool, PetscBool);
+PETSC_INTERN PetscErrorCode MPMMoveRigidly(MPM, const MPMStepContext *, PetscBool);
 PETSC_INTERN PetscBool      MPMGridToParticlesIsPointwise(MPM);
 PETSC_INTERN PetscErrorCode MPMProjectToGrid(MPM);

@@ -44,13 +44,20 @@ typedef enum { MPM_BODY_P2G, MPM_BODY_ADVANCE, MPM_BODY_BLEND, MPM_BODY_REMAP, M
 
 static PetscErrorCode MPMStepPoints(MPM, const MPMStepContext *, PetscInt *);
 
+/* Whether the selected body's points move rigidly (MPMMoveRigidly): a rigid body, where the gather would read its nodes
+   alone (no crack field) and point by point (not the cell rule's work, summed over cells). */
+static PetscBool MPMBodyMovesRigidly(MPM mpm)
+{
+  return (PetscBool)(mpm->body_rigid[mpm->body] && !mpm->crack && mpm->stress_integration != MPM_STRESS_CELL);
+}
+
 static PetscErrorCode MPMBodyPhaseRun(MPM mpm, MPMBodyPhase phase, MPMStepContext *ctx, PetscInt *nbad)
 {
   PetscFunctionBegin;
   switch (phase) {
   case MPM_BODY_P2G:
-    PetscCall(MPMParticlesToGrid(mpm, ctx));                    /* m_I, (mv)_I, f_I = f_int at t^n */
-    PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_FORCE, ctx)); /* f_I += f_ext: gravity          */
+    PetscCall(MPMParticlesToGrid(mpm, ctx, (PetscBool)!MPMBodyMovesRigidly(mpm))); /* m_I, (mv)_I, f_I = f_int at t^n */
+    PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_FORCE, ctx));                    /* f_I += f_ext: gravity          */
     break;
   case MPM_BODY_ADVANCE:
     PetscCall(MPMGridAdvance(mpm, ctx)); /* (mv)_I += dt_kick f_I; walls */
@@ -120,7 +127,10 @@ static PetscErrorCode MPMStepPoints(MPM mpm, const MPMStepContext *ctx, PetscInt
 
   PetscFunctionBegin;
   PetscCall(MPMPointsVelocityGradientBegin(mpm));
-  PetscCall(MPMGridToParticles(mpm, ctx, usl, PETSC_TRUE)); /* USL: v_p; x_p, L_p          */
+  if (MPMBodyMovesRigidly(mpm))
+    PetscCall(MPMMoveRigidly(mpm, ctx, usl)); /* its nodes all hold its velocity */
+  else
+    PetscCall(MPMGridToParticles(mpm, ctx, usl, PETSC_TRUE)); /* USL: v_p; x_p, L_p          */
   if (usl) PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_KINEMATICS, ctx));
   PetscCall(MPMModulesApply(mpm, MPM_PHASE_POINT_STATE, ctx)); /* q_p: artificial viscosity    */
   PetscCall(MPMConstitutivePoints(mpm, ctx->dt, nbad));        /* rho_p, e_p, p_p, c_p, T_p, s_p */

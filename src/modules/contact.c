@@ -770,7 +770,10 @@ static PetscErrorCode MPMContactSetUp(MPMModule mod, MPM mpm)
   PetscCall(MPMShapeGetType(mpm->shape, &type));
   PetscCheck(ct->gap != MPM_CONTACT_GAP_POSITION || mpm->shape->tent_mass, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_contact_gap position reads the tent's integral from the nodal masses: it needs -mpm_shape_type linear, gimp or cpdi, not %s", type);
   ct->rigid_gap = (PetscBool)(ct->gap == MPM_CONTACT_GAP_VOLUME && ct->fill_rigid > ct->fill && mpm->shape->tent_mass); /* (B-splines: the volume test's f alone) */
-  for (PetscInt b = 0; b < mpm->nbodies; b++) anyrigid = (PetscBool)(anyrigid || ct->rigid[b]);
+  for (PetscInt b = 0; b < mpm->nbodies; b++) {
+    anyrigid           = (PetscBool)(anyrigid || ct->rigid[b]);
+    mpm->body_rigid[b] = ct->rigid[b]; /* its points move at its velocity (MPMMoveRigidly), set in each kick below */
+  }
   ct->rigid_gap = (PetscBool)(ct->rigid_gap && anyrigid);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -804,6 +807,7 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
       if (!ct->rigid[b]) continue;
       MPMTableEval(&ct->vtab[b], ctx->tn + 0.5 * ctx->dt, ct->vrigid[b]);
       MPMTableEval(&ct->vtab[b], ctx->tn + 0.5 * ctx->dt - ctx->kick, vold);
+      for (PetscInt k = 0; k < d; k++) mpm->body_v[b][k] = ct->vrigid[b][k];
       MPMContactTableIntegral(&ct->vtab[b], ctx->tn, ct->shift[b]); /* where its points are at t^n */
       MPMBodyBox(mpm, b, &blo, &bhi);
       for (PetscInt i2 = blo[2]; i2 < bhi[2]; i2++)

@@ -416,11 +416,14 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode MPMParticlesToGrid(MPM mpm, const MPMStepContext *ctx)
+/* The step's points to grid (MPMScatter); without force the masses and momenta alone: the points of a body that moves
+   rigidly (MPMMoveRigidly), whose nodes take its velocity after the kick, so that no internal force of theirs is read
+   (nor their weight in the time step's acceleration limit, which its prescribed motion does not feel). */
+PetscErrorCode MPMParticlesToGrid(MPM mpm, const MPMStepContext *ctx, PetscBool force)
 {
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(mpm->log.p2g, 0, 0, 0, 0));
-  PetscCall(MPMScatter(mpm, PETSC_TRUE, ctx->tn));
+  PetscCall(MPMScatter(mpm, force, ctx->tn));
   PetscCall(PetscLogEventEnd(mpm->log.p2g, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -740,6 +743,41 @@ PetscErrorCode MPMGridToParticles(MPM mpm, const MPMStepContext *ctx, PetscBool 
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(mpm->log.g2p, 0, 0, 0, 0));
   PetscCall(MPMGather(mpm, ctx->dt, ctx->kick, velocity, kinematics, (PetscBool)(velocity && !kinematics && mpm->remap_fused)));
+  PetscCall(PetscLogEventEnd(mpm->log.g2p, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Grid to points for the points of a body that moves rigidly at its prescribed velocity v_r = MPM::body_v (a rigid body
+   of the contact module): every node of its field holds v_r (before the kick too, when v_r is constant), so the gather
+   gives v_p = v_r (velocity), x_p += dt v_r, L_p = 0, the hoop rate v_r,r / r_p (kinematics), C_p = 0 and no change
+   of e_p (no work, no kinetic-energy fix: dv_I = 0 at v_p = v_I; the heat exchange leaves points at L_p = 0 alone).
+   The same numbers as the gather for a body at rest; for a moving one the gather's sum N_I v_r differs from v_r by
+   round-off. The body's points pay no stencil. */
+PetscErrorCode MPMMoveRigidly(MPM mpm, const MPMStepContext *ctx, PetscBool velocity)
+{
+  const PetscInt   d  = mpm->grid.dim;
+  const PetscReal *vr = mpm->body_v[mpm->body];
+  MPMPoints        pts;
+
+  PetscFunctionBegin;
+  PetscCall(PetscLogEventBegin(mpm->log.g2p, 0, 0, 0, 0));
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  {
+    PetscReal     *x = pts.f[MPM_FIELD_POSITION], *v = pts.f[MPM_FIELD_VELOCITY], *L = pts.f[MPM_FIELD_GRADV], *hoop = pts.f[MPM_FIELD_HOOPRATE];
+    PetscReal     *C = velocity && mpm->affine >= 0 ? pts.f[mpm->affine] : NULL, *Cke = velocity && mpm->affine_ke >= 0 ? pts.f[mpm->affine_ke] : NULL;
+    const PetscInt nC = C ? MPMFieldBlockSize(mpm->field[mpm->affine].bs, d) : 0;
+    for (PetscInt p = 0; p < pts.n; p++) {
+      if (mpm->grid.axisym && hoop) hoop[p] = vr[0] / MPMHoopRadius(mpm, &pts, p); /* at x^n, as the gather's */
+      for (PetscInt k = 0; k < d; k++) {
+        if (velocity) v[p * d + k] = vr[k];
+        x[p * d + k] += ctx->dt * vr[k];
+      }
+      for (PetscInt k = 0; k < d * d; k++) L[p * d * d + k] = 0.0;
+      for (PetscInt k = 0; k < nC; k++) C[p * nC + k] = 0.0;
+      if (Cke) Cke[p] = 0.0;
+    }
+  }
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   PetscCall(PetscLogEventEnd(mpm->log.g2p, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
