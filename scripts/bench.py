@@ -25,6 +25,10 @@ Cases (point-steps per second, median of --repeat runs, each case's runs interle
              default blend carries a rotation per point (src/transfer/blend.c)
   roll2dnr   the same with -mpm_update_blend_rotation false; roll2d's rate over it: the rotation's cost in 2D
   incl3d     the 3D incline (incline_3d.opts), the rotation on; incl3dnr without it: the rotation's cost in 3D
+  roll3d     the ball rolling on the rigid incline (rolling_3d.opts to 0.03 s): the rigid plane holds 78% of the points,
+             which move at its velocity without a gather and, at rest, keep their nodal sums (src/core/step.c)
+  anvil3dr   the 3D Taylor rod (R0/6) on a rigid copper anvil body (tests/scenes/contact.json taylor3d_rigid6): 42% of
+             the points rigid
   pen2       the rod penetrating the plate (penetration_2d.opts at 120^2 cells to 10 us): two bodies, contact and the
              rotation per point; pen1 the same points welded into one body (-region_<r>_body one), pen1r welded with
              the rotation: pen1's rate over pen2's is what two bodies cost, pen1r's what contact alone costs (issue 40:
@@ -119,6 +123,8 @@ def main():
     blk = "25,25,105" if a.quick else "50,50,210"  # the 0.4 x 0.4 x 2.4 bar in a 0.6 x 0.6 x 2.6 box: 8 points per cell
     roll = ["-mpm_cells", "70,30", "-mpm_hi", "3,1.5", "-region_plane_hi", "3,0.5", "-region_plane_lo", "-0.5,0.3"]
     pen, weld = ["-mpm_cells", "120,120", "-ts_max_time", "1e-5"], ["-region_rod_body", "one", "-region_plate_body", "one"]
+    anvil = ["-mpm_lo", "0,0,-0.3175", "-mpm_cells", "16,16,47", "-mpm_bc_lo", "wall,wall,free", "-mpm_regions", "rod,anvil", "-region_anvil_material", "copper", "-region_anvil_lo", "0,0,-0.3175",
+             "-region_anvil_hi", "1.016,1.016,0", "-region_anvil_density", "8.93", "-region_anvil_temperature", "0.025680", "-body_anvil_rigid_velocity", "0,0,0", "-mpm_exact_anvil_surface", "0"]
     cases = [
         ("sod", "weak Sod 1D, linear, 4 ppc, 1024 cells", "sod_weak.opts", ["-options_file", os.path.join(SRC, "inputs", "methods", "cth.opts")], "mpm1d", ["sod", "5"]),
         ("block8", "3D block, linear, 8 ppc, USL, MG + JC", "bar_impact_3d.opts",
@@ -136,6 +142,8 @@ def main():
         ("roll2dnr", "2D rolling disk, no rotation per point", "rolling_2d.opts", roll + ["-mpm_update_blend_rotation", "false"], None, None),
         ("incl3d", "3D incline, the default method (a rotation per point)", "incline_3d.opts", [], None, None),
         ("incl3dnr", "3D incline, no rotation per point", "incline_3d.opts", ["-mpm_update_blend_rotation", "false"], None, None),
+        ("roll3d", "3D ball on a rigid incline (78% of the points rigid)", "rolling_3d.opts", ["-ts_max_time", "0.03"], None, None),
+        ("anvil3dr", "3D Taylor rod, R0/6, on a rigid anvil body", "taylor_anvil_3d.opts", anvil, None, None),
         ("pen2", "2D rod into plate, two bodies (contact, the rotation)", "penetration_2d.opts", pen, None, None),
         ("pen1", "2D rod into plate, welded into one body", "penetration_2d.opts", pen + weld, None, None),
         ("pen1r", "2D rod into plate, welded, the rotation on", "penetration_2d.opts", pen + weld + ["-mpm_update_blend_rotation"], None, None),

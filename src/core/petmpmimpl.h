@@ -122,6 +122,10 @@ struct _p_MPM {
   MPMCrack             crack;                               /* crack fields (src/grid/crack.c), NULL: none (-mpm_fracture_fields) */
   PetscBool            body_rigid[MPM_MAX_BODIES];          /* a module prescribes the body's motion (a rigid body): its points move at body_v, without grid to points (MPMMoveRigidly) */
   PetscReal            body_v[MPM_MAX_BODIES][MPM_MAX_DIM]; /* that velocity in this step, v(t^n + dt_n / 2) [cm/s], set before the point phases */
+  PetscBool            body_rest[MPM_MAX_BODIES];           /* such a body's points are at rest: they have not moved since their last points to grid */
+  PetscBool            body_kept[MPM_MAX_BODIES];           /* its nodes still hold the sums of that points to grid (MPMRigidNodesKept) */
+  PetscInt             body_kept_grid[MPM_MAX_BODIES];      /* the grid they were made on (MPMGrid::id) */
+  unsigned long long   body_kept_order[MPM_MAX_BODIES];     /* a hash of its points' ids in their order then, local */
   char                 bodyname[MPM_MAX_BODIES][MPM_MAX_NAME];
   MPMMaterial          mat[MPM_MAX_MATERIALS];
   MPMRegion            reg[MPM_MAX_REGIONS];

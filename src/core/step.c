@@ -51,13 +51,41 @@ static PetscBool MPMBodyMovesRigidly(MPM mpm)
   return (PetscBool)(mpm->body_rigid[mpm->body] && !mpm->crack && mpm->stress_integration != MPM_STRESS_CELL);
 }
 
+/* Whether the selected rigid body's nodes may keep the sums of its last points to grid (USL): its points at rest since
+   then, on the same grid, in the same order on every rank (the sums then come out the same bits). Its nodes then hold
+   m_I as made, (mv)_I = 0 (the contact module set v_I = 0 after the kick), f_I = 0 (the kick zeroed it) and v_I^n = 0,
+   what a points to grid without force (MPMParticlesToGrid) gives points at rest. Collective. */
+static PetscErrorCode MPMRigidNodesKept(MPM mpm, PetscBool *kept)
+{
+  const PetscInt     b = mpm->body;
+  unsigned long long h = 1469598103934665603ULL; /* FNV-1a over the ids' integers in order */
+  MPMPoints          pts;
+  PetscBool          same;
+
+  PetscFunctionBegin;
+  PetscCall(MPMPointsGetArrays(mpm, &pts));
+  for (PetscInt p = 0; p < pts.n; p++) h = (h ^ (unsigned long long)pts.f[MPM_FIELD_ID][p]) * 1099511628211ULL;
+  PetscCall(MPMPointsRestoreArrays(mpm, &pts));
+  same = (PetscBool)(mpm->body_kept[b] && mpm->body_rest[b] && mpm->body_kept_grid[b] == mpm->grid.id && h == mpm->body_kept_order[b]);
+  PetscCall(MPIU_Allreduce(&same, kept, 1, MPIU_BOOL, MPI_LAND, mpm->comm));
+  mpm->body_kept[b]       = mpm->body_rest[b]; /* kept from here: the sums about to be made (or kept) are of points at rest */
+  mpm->body_kept_grid[b]  = mpm->grid.id;
+  mpm->body_kept_order[b] = h;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode MPMBodyPhaseRun(MPM mpm, MPMBodyPhase phase, MPMStepContext *ctx, PetscInt *nbad)
 {
   PetscFunctionBegin;
   switch (phase) {
   case MPM_BODY_P2G:
-    PetscCall(MPMParticlesToGrid(mpm, ctx, (PetscBool)!MPMBodyMovesRigidly(mpm))); /* m_I, (mv)_I, f_I = f_int at t^n */
-    PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_FORCE, ctx));                    /* f_I += f_ext: gravity          */
+    if (MPMBodyMovesRigidly(mpm)) { /* a rigid body: its nodes take its velocity after the kick, so no force; at rest, the last sums */
+      PetscBool kept = PETSC_FALSE;
+      if (mpm->scheme == MPM_SCHEME_USL) PetscCall(MPMRigidNodesKept(mpm, &kept));
+      if (!kept) PetscCall(MPMParticlesToGrid(mpm, ctx, PETSC_FALSE));
+    } else
+      PetscCall(MPMParticlesToGrid(mpm, ctx, PETSC_TRUE));      /* m_I, (mv)_I, f_I = f_int at t^n */
+    PetscCall(MPMModulesApply(mpm, MPM_PHASE_GRID_FORCE, ctx)); /* f_I += f_ext: gravity          */
     break;
   case MPM_BODY_ADVANCE:
     PetscCall(MPMGridAdvance(mpm, ctx)); /* (mv)_I += dt_kick f_I; walls */

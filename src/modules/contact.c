@@ -772,7 +772,8 @@ static PetscErrorCode MPMContactSetUp(MPMModule mod, MPM mpm)
   ct->rigid_gap = (PetscBool)(ct->gap == MPM_CONTACT_GAP_VOLUME && ct->fill_rigid > ct->fill && mpm->shape->tent_mass); /* (B-splines: the volume test's f alone) */
   for (PetscInt b = 0; b < mpm->nbodies; b++) {
     anyrigid           = (PetscBool)(anyrigid || ct->rigid[b]);
-    mpm->body_rigid[b] = ct->rigid[b]; /* its points move at its velocity (MPMMoveRigidly), set in each kick below */
+    mpm->body_rigid[b] = ct->rigid[b];                                                                             /* its points move at its velocity (MPMMoveRigidly), set in each kick below */
+    mpm->body_rest[b]  = (PetscBool)(ct->rigid[b] && !(ct->vrigid[b][0] || ct->vrigid[b][1] || ct->vrigid[b][2])); /* its points start at v(0) */
   }
   ct->rigid_gap = (PetscBool)(ct->rigid_gap && anyrigid);
   PetscFunctionReturn(PETSC_SUCCESS);

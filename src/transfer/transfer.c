@@ -761,6 +761,8 @@ PetscErrorCode MPMMoveRigidly(MPM mpm, const MPMStepContext *ctx, PetscBool velo
 
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(mpm->log.g2p, 0, 0, 0, 0));
+  mpm->body_rest[mpm->body] = PETSC_TRUE;
+  for (PetscInt k = 0; k < d; k++) mpm->body_rest[mpm->body] = (PetscBool)(mpm->body_rest[mpm->body] && vr[k] == 0.0); /* moved: its nodes' sums are stale */
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   {
     PetscReal     *x = pts.f[MPM_FIELD_POSITION], *v = pts.f[MPM_FIELD_VELOCITY], *L = pts.f[MPM_FIELD_GRADV], *hoop = pts.f[MPM_FIELD_HOOPRATE];
@@ -789,6 +791,7 @@ PetscErrorCode MPMProjectToGrid(MPM mpm)
   MPMNode       *node;
 
   PetscFunctionBegin;
+  for (PetscInt b = 0; b < mpm->nbodies; b++) mpm->body_kept[b] = PETSC_FALSE; /* the current body's nodes take every point's sums here */
   PetscCall(MPMScatter(mpm, PETSC_FALSE, 0.0));
   PetscCall(VecGetArray(mpm->lnodes, (PetscScalar **)&node));
   MPM_FOR_BOX_NODES(mpm, c) /* outside the box m_I = 0 and (mv)_I = 0 */
