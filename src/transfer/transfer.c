@@ -418,7 +418,7 @@ PetscErrorCode MPMScatter(MPM mpm, PetscBool force, PetscReal tn)
 
 /* The step's points to grid (MPMScatter); without force the masses and momenta alone: the points of a body that moves
    rigidly (MPMMoveRigidly), whose nodes take its velocity after the kick, so that no internal force of theirs is read
-   (nor their weight in the time step's acceleration limit, which its prescribed motion does not feel). */
+   (a stress-free body's is zero: the same bits). */
 PetscErrorCode MPMParticlesToGrid(MPM mpm, const MPMStepContext *ctx, PetscBool force)
 {
   PetscFunctionBegin;
