@@ -124,6 +124,7 @@ struct _p_MPM {
   PetscReal            body_v[MPM_MAX_BODIES][MPM_MAX_DIM]; /* that velocity in this step, v(t^n + dt_n / 2) [cm/s], set before the point phases */
   PetscBool            body_rest[MPM_MAX_BODIES];           /* such a body's points are at rest: they have not moved since their last points to grid */
   PetscBool            body_kept[MPM_MAX_BODIES];           /* its nodes still hold the sums of that points to grid (MPMRigidNodesKept) */
+  PetscBool            body_same[MPM_MAX_BODIES];           /* this step's points to grid kept them: its points are as in the last step (positions, domains, order) */
   PetscInt             body_kept_grid[MPM_MAX_BODIES];      /* the grid they were made on (MPMGrid::id) */
   unsigned long long   body_kept_order[MPM_MAX_BODIES];     /* a hash of its points' ids in their order then, local */
   char                 bodyname[MPM_MAX_BODIES][MPM_MAX_NAME];

@@ -68,6 +68,7 @@ static PetscErrorCode MPMRigidNodesKept(MPM mpm, PetscBool *kept)
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
   same = (PetscBool)(mpm->body_kept[b] && mpm->body_rest[b] && mpm->body_kept_grid[b] == mpm->grid.id && h == mpm->body_kept_order[b]);
   PetscCall(MPIU_Allreduce(&same, kept, 1, MPIU_BOOL, MPI_LAND, mpm->comm));
+  mpm->body_same[b]       = *kept;
   mpm->body_kept[b]       = mpm->body_rest[b]; /* kept from here: the sums about to be made (or kept) are of points at rest */
   mpm->body_kept_grid[b]  = mpm->grid.id;
   mpm->body_kept_order[b] = h;

@@ -46,6 +46,11 @@ static const char *const MPMContactNormals[] = {"average", "mass", "MPMContactNo
 typedef enum { MPM_CONTACT_GAP_SURFACE, MPM_CONTACT_GAP_VOLUME, MPM_CONTACT_GAP_NONE, MPM_CONTACT_GAP_POSITION } MPMContactGap;
 static const char *const MPMContactGaps[] = {"surface", "volume", "none", "position", "MPMContactGap", "MPM_CONTACT_GAP_", NULL};
 
+typedef struct {     /* a stencil entry kept: its node, N_I(x_p), grad N_I(x_p), the mirror signs (MPMStencil's) */
+  PetscInt  node, n; /* n: the stencil's entries, in its first entry */
+  PetscReal w, dw[MPM_MAX_DIM], s[MPM_MAX_DIM];
+} MPMContactEntry;
+
 typedef struct {
   PetscReal        mu[MPM_MAX_BODIES][MPM_MAX_BODIES]; /* Coulomb friction coefficient of each pair of bodies [-] */
   MPMContactNormal normal;
@@ -82,6 +87,10 @@ typedef struct {
   PetscInt         nbz;                                                          /* the bodies when the crack fields' geometry was last zeroed      */
   PetscInt        *wl[MPM_MAX_BODIES], nwl[MPM_MAX_BODIES], mwl[MPM_MAX_BODIES]; /* one rank: per body, the nodes its geometry was summed into last (zeroed next, not the whole vector) */
   char            *wmark;                                                        /* one rank: per local node, in the list being built            */
+  PetscInt        *rslot[MPM_MAX_BODIES], nrslot[MPM_MAX_BODIES];                /* a rigid body at rest: per local point of it, its stencil's first entry in rent (-1: none kept) */
+  MPMContactEntry *rent[MPM_MAX_BODIES];                                         /* the entries of the stencils kept (MPMContactGeometry) */
+  PetscInt         nrent[MPM_MAX_BODIES], mrent[MPM_MAX_BODIES];                 /* how many, and room for */
+  PetscBool        rfresh[MPM_MAX_BODIES];                                       /* they are of the points as they are now (MPM::body_same in every step since) */
 } MPMContact;
 
 static PetscErrorCode MPMContactSetFromOptions(MPMModule mod, MPM mpm, PetscOptionItems *PetscOptionsObject)
@@ -178,6 +187,56 @@ static PetscErrorCode MPMContactReserve(PetscInt need, PetscInt *max, size_t siz
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The stencils kept for a rigid body's points at rest (MPMContactGeometry: it evaluates a point's stencil where a shared
+   node may be within its reach, and at rest its points' positions and domains do not change from step to step): none,
+   for its n local points. */
+static PetscErrorCode MPMContactKeptReset(MPMContact *ct, PetscInt b, PetscInt n)
+{
+  PetscFunctionBegin;
+  if (n > ct->nrslot[b]) {
+    PetscCall(PetscFree(ct->rslot[b]));
+    PetscCall(PetscMalloc1(n, &ct->rslot[b]));
+    ct->nrslot[b] = n;
+  }
+  for (PetscInt p = 0; p < n; p++) ct->rslot[b][p] = -1;
+  ct->nrent[b] = 0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MPMContactKeptStore(MPMContact *ct, PetscInt b, PetscInt p, const MPMStencil *st)
+{
+  MPMContactEntry *e;
+
+  PetscFunctionBegin;
+  PetscCall(MPMContactReserve(ct->nrent[b] + PetscMax(st->n, 1), &ct->mrent[b], sizeof(MPMContactEntry), &ct->rent[b]));
+  ct->rslot[b][p] = ct->nrent[b];
+  e               = ct->rent[b] + ct->nrent[b];
+  e[0].n          = st->n;
+  for (PetscInt a = 0; a < st->n; a++) {
+    e[a].node = st->node[a];
+    e[a].w    = st->w[a];
+    for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
+      e[a].dw[k] = st->dw[a][k];
+      e[a].s[k]  = st->s[a][k];
+    }
+  }
+  ct->nrent[b] += PetscMax(st->n, 1);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static void MPMContactKeptLoad(const MPMContactEntry *e, MPMStencil *st)
+{
+  st->n = e[0].n;
+  for (PetscInt a = 0; a < st->n; a++) {
+    st->node[a] = e[a].node;
+    st->w[a]    = e[a].w;
+    for (PetscInt k = 0; k < MPM_MAX_DIM; k++) {
+      st->dw[a][k] = e[a].dw[k];
+      st->s[a][k]  = e[a].s[k];
+    }
+  }
+}
+
 /* Local node c, where two or more fields have mass, marked shared and listed (once). */
 static PetscErrorCode MPMContactMarkShared(MPMContact *ct, PetscInt c)
 {
@@ -229,6 +288,8 @@ static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const
     }
     if (!ct->ext[b] && ct->gap == MPM_CONTACT_GAP_SURFACE && b < nb) PetscCall(PetscMalloc1(nloc, &ct->ext[b]));
   }
+  for (PetscInt b = 0; b < nb; b++) /* in every step, met or not: a rigid body's points that moved (or a new grid or order) drop its kept stencils */
+    if (!mpm->body_same[b]) ct->rfresh[b] = PETSC_FALSE;
   PetscCall(PetscArrayzero(ct->shared, nloc));
   ct->nslist = 0;
   for (PetscInt a = 0; a < nf; a++) /* the shared nodes: the owned ones where the boxes of two fields meet (outside its box a field's owned nodes hold zeros, MPMBodyBox), then the ghosts */
@@ -273,6 +334,10 @@ static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const
     ct->nwl[b] = 0;
     PetscCall(MPMBodyWindow(mpm, b));
     PetscCall(MPMPointsGetArrays(mpm, &pts));
+    if (ct->rigid[b] && !ct->rfresh[b]) { /* none kept yet for the points as they are */
+      PetscCall(MPMContactKeptReset(ct, b, pts.n));
+      ct->rfresh[b] = PETSC_TRUE;
+    }
     for (PetscInt p = 0; p < pts.n; p++) {
       const PetscReal m = pts.f[MPM_FIELD_MASS][p], V = pts.f[MPM_FIELD_VOLUME][p], r = pts.f[MPM_FIELD_POSITION][p * d];
       const PetscReal mg = mpm->grid.axisym ? (r > 0.0 ? m / r : 0.0) : m; /* r-z: the mass per unit r, whose gradient a body uniform in r does not tilt */
@@ -280,7 +345,12 @@ static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const
       PetscBool       near = PETSC_FALSE;
       MPMStencil      st;
       if (!ct->near[MPMGridCellNode(&mpm->grid, &pts.f[MPM_FIELD_POSITION][p * d])]) continue; /* no shared node within its reach */
-      MPMShapeEvaluate(mpm->shape, &mpm->grid, &pts.f[MPM_FIELD_POSITION][p * d], MPMPointDomain(d, pts.f[MPM_FIELD_DEFGRAD], pts.f[MPM_FIELD_DOMAINSCALE], p, Fs), &st);
+      if (ct->rigid[b] && ct->rslot[b][p] >= 0)
+        MPMContactKeptLoad(ct->rent[b] + ct->rslot[b][p], &st); /* a rigid body at rest: as evaluated before */
+      else {
+        MPMShapeEvaluate(mpm->shape, &mpm->grid, &pts.f[MPM_FIELD_POSITION][p * d], MPMPointDomain(d, pts.f[MPM_FIELD_DEFGRAD], pts.f[MPM_FIELD_DOMAINSCALE], p, Fs), &st);
+        if (ct->rigid[b]) PetscCall(MPMContactKeptStore(ct, b, p, &st));
+      }
       for (PetscInt a = 0; a < st.n && !near; a++) near = (PetscBool)ct->shared[st.node[a]];
       if (!near) continue;
       PetscCall(MPMContactReserve(ct->ncand + 1, &ct->maxcand, sizeof(PetscInt), &ct->cand));
@@ -1100,6 +1170,8 @@ static PetscErrorCode MPMContactDestroy(MPMModule mod)
   PetscCall(PetscFree(ct->slist));
   for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) PetscCall(PetscFree(ct->ext[b]));
   for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) PetscCall(PetscFree(ct->wl[b]));
+  for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) PetscCall(PetscFree(ct->rslot[b]));
+  for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) PetscCall(PetscFree(ct->rent[b]));
   PetscCall(PetscFree(ct->wmark));
   PetscCall(PetscFree(mod->data));
   PetscFunctionReturn(PETSC_SUCCESS);
