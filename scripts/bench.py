@@ -27,6 +27,9 @@ Cases (point-steps per second, median of --repeat runs, each case's runs interle
   incl3d     the 3D incline (incline_3d.opts), the rotation on; incl3dnr without it: the rotation's cost in 3D
   roll3d     the ball rolling on the rigid incline (rolling_3d.opts to 0.03 s): the rigid plane holds 78% of the points,
              which move at its velocity without a gather and, at rest, keep their nodal sums (src/core/step.c)
+  hertz3dr   the 3D Hertz sphere on its rigid plane (hertz_3d.opts on the test's plane thinned to z >= 0.25, to 3 ms):
+             25% of the points rigid
+  wedge3d    the block sliding down the rigid 3D wedge (wedge_3d.opts, closed triangulated surfaces): 78% rigid
   anvil3dr   the 3D Taylor rod (R0/6) on a rigid copper anvil body (tests/scenes/contact.json taylor3d_rigid6): 42% of
              the points rigid
   pen2       the rod penetrating the plate (penetration_2d.opts at 120^2 cells to 10 us): two bodies, contact and the
@@ -144,6 +147,9 @@ def main():
         ("incl3dnr", "3D incline, no rotation per point", "incline_3d.opts", ["-mpm_update_blend_rotation", "false"], None, None),
         ("roll3d", "3D ball on a rigid incline (78% of the points rigid)", "rolling_3d.opts", ["-ts_max_time", "0.03"], None, None),
         ("anvil3dr", "3D Taylor rod, R0/6, on a rigid anvil body", "taylor_anvil_3d.opts", anvil, None, None),
+        ("hertz3dr", "3D Hertz sphere on its rigid plane (25% of the points rigid)", "hertz_3d.opts",
+         ["-mpm_lo", "-1.25,-1.25,0.25", "-mpm_cells", "40,40,40", "-region_plane_lo", "-1.25,-1.25,0.25", "-ts_max_time", "3e-3"], None, None),
+        ("wedge3d", "3D block on the rigid wedge (78% of the points rigid)", "wedge_3d.opts", [], None, None),
         ("pen2", "2D rod into plate, two bodies (contact, the rotation)", "penetration_2d.opts", pen, None, None),
         ("pen1", "2D rod into plate, welded into one body", "penetration_2d.opts", pen + weld, None, None),
         ("pen1r", "2D rod into plate, welded, the rotation on", "penetration_2d.opts", pen + weld + ["-mpm_update_blend_rotation"], None, None),

@@ -77,6 +77,18 @@ struct _n_MPMCrack {
   char         *near[MPM_MAX_BODIES];   /* per local node: a point whose cell starts here may reach a sep node (MPMGridDilate) */
 };
 
+/* A body whose motion a module prescribes (a rigid body of the contact module): its points move at v without grid to
+   points (MPMMoveRigidly); at rest they keep their nodal sums (MPMRigidNodesKept) and the contact's stencils. */
+typedef struct {
+  PetscBool          rigid;          /* the module prescribes its motion */
+  PetscReal          v[MPM_MAX_DIM]; /* its velocity in this step, v(t^n + dt_n / 2) [cm/s], set before the point phases */
+  PetscBool          rest;           /* its points have not moved since their last points to grid */
+  PetscBool          kept;           /* its nodes still hold the sums of that points to grid */
+  PetscBool          same;           /* this step's points to grid kept them: its points are as in the last step (positions, domains, order) */
+  PetscInt           grid;           /* the grid the sums were made on (MPMGrid::id) */
+  unsigned long long order;          /* a hash of its local points' ids in their order then */
+} MPMBodyMotion;
+
 struct _p_MPM {
   MPI_Comm comm;
   /* scene */
@@ -117,16 +129,10 @@ struct _p_MPM {
   PetscBool            has_bodyforce; /* the exact solution drives the points with a body force (manufactured) */
   PetscBool            view;
   PetscInt             nmat, nreg;
-  PetscInt             nbodies;                             /* bodies of the scene (MPMSceneBodies), each with its own nodal velocity field */
-  PetscBool            bodies_open;                         /* bodies may be added during the run (MPMBodyAdd: the pieces a body breaks into) */
-  MPMCrack             crack;                               /* crack fields (src/grid/crack.c), NULL: none (-mpm_fracture_fields) */
-  PetscBool            body_rigid[MPM_MAX_BODIES];          /* a module prescribes the body's motion (a rigid body): its points move at body_v, without grid to points (MPMMoveRigidly) */
-  PetscReal            body_v[MPM_MAX_BODIES][MPM_MAX_DIM]; /* that velocity in this step, v(t^n + dt_n / 2) [cm/s], set before the point phases */
-  PetscBool            body_rest[MPM_MAX_BODIES];           /* such a body's points are at rest: they have not moved since their last points to grid */
-  PetscBool            body_kept[MPM_MAX_BODIES];           /* its nodes still hold the sums of that points to grid (MPMRigidNodesKept) */
-  PetscBool            body_same[MPM_MAX_BODIES];           /* this step's points to grid kept them: its points are as in the last step (positions, domains, order) */
-  PetscInt             body_kept_grid[MPM_MAX_BODIES];      /* the grid they were made on (MPMGrid::id) */
-  unsigned long long   body_kept_order[MPM_MAX_BODIES];     /* a hash of its points' ids in their order then, local */
+  PetscInt             nbodies;                /* bodies of the scene (MPMSceneBodies), each with its own nodal velocity field */
+  PetscBool            bodies_open;            /* bodies may be added during the run (MPMBodyAdd: the pieces a body breaks into) */
+  MPMCrack             crack;                  /* crack fields (src/grid/crack.c), NULL: none (-mpm_fracture_fields) */
+  MPMBodyMotion        motion[MPM_MAX_BODIES]; /* per body: whether a module prescribes its motion, and what the step keeps of it (MPMBodyMotion) */
   char                 bodyname[MPM_MAX_BODIES][MPM_MAX_NAME];
   MPMMaterial          mat[MPM_MAX_MATERIALS];
   MPMRegion            reg[MPM_MAX_REGIONS];

@@ -48,7 +48,7 @@ static PetscErrorCode MPMStepPoints(MPM, const MPMStepContext *, PetscInt *);
    alone (no crack field) and point by point (not the cell rule's work, summed over cells). */
 static PetscBool MPMBodyMovesRigidly(MPM mpm)
 {
-  return (PetscBool)(mpm->body_rigid[mpm->body] && !mpm->crack && mpm->stress_integration != MPM_STRESS_CELL);
+  return (PetscBool)(mpm->motion[mpm->body].rigid && !mpm->crack && mpm->stress_integration != MPM_STRESS_CELL);
 }
 
 /* Whether the selected rigid body's nodes may keep the sums of its last points to grid (USL): its points at rest since
@@ -66,12 +66,12 @@ static PetscErrorCode MPMRigidNodesKept(MPM mpm, PetscBool *kept)
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   for (PetscInt p = 0; p < pts.n; p++) h = (h ^ (unsigned long long)pts.f[MPM_FIELD_ID][p]) * 1099511628211ULL;
   PetscCall(MPMPointsRestoreArrays(mpm, &pts));
-  same = (PetscBool)(mpm->body_kept[b] && mpm->body_rest[b] && mpm->body_kept_grid[b] == mpm->grid.id && h == mpm->body_kept_order[b]);
+  same = (PetscBool)(mpm->motion[b].kept && mpm->motion[b].rest && mpm->motion[b].grid == mpm->grid.id && h == mpm->motion[b].order);
   PetscCall(MPIU_Allreduce(&same, kept, 1, MPIU_BOOL, MPI_LAND, mpm->comm));
-  mpm->body_same[b]       = *kept;
-  mpm->body_kept[b]       = mpm->body_rest[b]; /* kept from here: the sums about to be made (or kept) are of points at rest */
-  mpm->body_kept_grid[b]  = mpm->grid.id;
-  mpm->body_kept_order[b] = h;
+  mpm->motion[b].same  = *kept;
+  mpm->motion[b].kept  = mpm->motion[b].rest; /* kept from here: the sums about to be made (or kept) are of points at rest */
+  mpm->motion[b].grid  = mpm->grid.id;
+  mpm->motion[b].order = h;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

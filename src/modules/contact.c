@@ -46,51 +46,51 @@ static const char *const MPMContactNormals[] = {"average", "mass", "MPMContactNo
 typedef enum { MPM_CONTACT_GAP_SURFACE, MPM_CONTACT_GAP_VOLUME, MPM_CONTACT_GAP_NONE, MPM_CONTACT_GAP_POSITION } MPMContactGap;
 static const char *const MPMContactGaps[] = {"surface", "volume", "none", "position", "MPMContactGap", "MPM_CONTACT_GAP_", NULL};
 
-typedef struct {     /* a stencil entry kept: its node, N_I(x_p), grad N_I(x_p), the mirror signs (MPMStencil's) */
-  PetscInt  node, n; /* n: the stencil's entries, in its first entry */
+typedef struct { /* a stencil entry kept: its node, N_I(x_p), grad N_I(x_p), the mirror signs (MPMStencil's) */
+  PetscInt  node;
   PetscReal w, dw[MPM_MAX_DIM], s[MPM_MAX_DIM];
 } MPMContactEntry;
 
 typedef struct {
   PetscReal        mu[MPM_MAX_BODIES][MPM_MAX_BODIES]; /* Coulomb friction coefficient of each pair of bodies [-] */
   MPMContactNormal normal;
-  MPMContactGap    gap;                                                          /* -mpm_contact_gap                                   */
-  PetscReal        fill;                                                         /* -mpm_contact_fill: the volume gap test's fraction f [-] */
-  PetscReal        fill_rigid;                                                   /* -mpm_contact_fill_rigid: its fraction f_r where a rigid body is [-] */
-  PetscBool        rigid_gap;                                                    /* that test on: the volume test, f_r > f, a rigid body, the tent's masses */
-  PetscReal       *ext[MPM_MAX_BODIES];                                          /* surface gap test, per local node: max_p (x_p . n_b + a_p) over the body's points there [cm] */
-  PetscBool        rigid[MPM_MAX_BODIES];                                        /* -body_<b>_rigid_velocity given                  */
-  MPMTable         vtab[MPM_MAX_BODIES];                                         /* its velocity over time (-body_<b>_rigid_velocity[_times]) [cm/s] */
-  PetscReal        vrigid[MPM_MAX_BODIES][3];                                    /* its velocity in this kick, v(t^n + dt_n / 2) [cm/s] */
-  PetscInt         rreg[MPM_MAX_BODIES];                                         /* its first region (whose geometry gives its normals), or -1: none */
-  PetscInt         nrreg[MPM_MAX_BODIES];                                        /* and its number of regions                                       */
-  PetscReal        shift[MPM_MAX_BODIES][3];                                     /* its displacement from t = 0 to t^n, int v dt [cm] */
-  Vec              geo[MPM_MAX_BODIES];                                          /* per body, ghosted local nodes: m = sum N V_p, p = grad m (MPMNode layout) */
-  PetscInt         gid;                                                          /* the grid the vectors were made for (MPMGrid::id)   */
-  char            *shared;                                                       /* per local node: two or more bodies have mass there */
-  char            *near;                                                         /* per local node: a shared node within the ghost width sw (a point whose cell starts there may reach one) */
-  PetscInt        *cand, ncand, maxcand;                                         /* the local points whose stencil reaches a shared node */
-  PetscInt        *coff, mcoff, *cnode, mcnode;                                  /* their stencils (MPMContactGeometry's, reused by the heat and the surface test): entries coff[i] .. coff[i+1] */
-  PetscReal       *cw;                                                           /* and the entries' weights N_I(x_p) (mcnode of them) */
-  PetscInt        *slist, nslist, mslist;                                        /* the shared local nodes, ghosts included */
-  PetscInt         nshared;                                                      /* shared nodes on all ranks this step (0: the bodies are apart) */
-  PetscReal        work, friction;                                               /* energy the corrections took out of the grid, its frictional part, this rank [erg] */
-  PetscReal        impulse[MPM_MAX_BODIES][3];                                   /* integral of the contact force on each rigid body, this rank [dyn s] */
-  PetscReal        force[MPM_MAX_BODIES][3];                                     /* the contact force on each rigid body in the last kick, all ranks [dyn] */
-  PetscReal        fmax[MPM_MAX_BODIES];                                         /* the largest |force| so far [dyn] */
-  PetscReal        patch[MPM_MAX_BODIES];                                        /* the rms radius of the normal forces on it in the last kick, across the force [cm] */
-  PetscReal        rwork;                                                        /* the work the moving rigid bodies did on the others, all ranks [erg] */
-  PetscInt         nodes;                                                        /* node-corrections made, this rank */
-  PetscInt         nf;                                                           /* the nodal fields this step: the bodies, then the crack fields (src/grid/crack.c) */
-  PetscInt         slot[MPM_MAX_BODIES];                                         /* per field: its MPM::bnodes slot                                  */
-  PetscInt         fam[MPM_MAX_BODIES];                                          /* per field: its body (a crack field's is the body it splits)      */
-  PetscInt         nbz;                                                          /* the bodies when the crack fields' geometry was last zeroed      */
-  PetscInt        *wl[MPM_MAX_BODIES], nwl[MPM_MAX_BODIES], mwl[MPM_MAX_BODIES]; /* one rank: per body, the nodes its geometry was summed into last (zeroed next, not the whole vector) */
-  char            *wmark;                                                        /* one rank: per local node, in the list being built            */
-  PetscInt        *rslot[MPM_MAX_BODIES], nrslot[MPM_MAX_BODIES];                /* a rigid body at rest: per local point of it, its stencil's first entry in rent (-1: none kept) */
-  MPMContactEntry *rent[MPM_MAX_BODIES];                                         /* the entries of the stencils kept (MPMContactGeometry) */
-  PetscInt         nrent[MPM_MAX_BODIES], mrent[MPM_MAX_BODIES];                 /* how many, and room for */
-  PetscBool        rfresh[MPM_MAX_BODIES];                                       /* they are of the points as they are now (MPM::body_same in every step since) */
+  MPMContactGap    gap;                                                                    /* -mpm_contact_gap                                   */
+  PetscReal        fill;                                                                   /* -mpm_contact_fill: the volume gap test's fraction f [-] */
+  PetscReal        fill_rigid;                                                             /* -mpm_contact_fill_rigid: its fraction f_r where a rigid body is [-] */
+  PetscBool        rigid_gap;                                                              /* that test on: the volume test, f_r > f, a rigid body, the tent's masses */
+  PetscReal       *ext[MPM_MAX_BODIES];                                                    /* surface gap test, per local node: max_p (x_p . n_b + a_p) over the body's points there [cm] */
+  PetscBool        rigid[MPM_MAX_BODIES];                                                  /* -body_<b>_rigid_velocity given                  */
+  MPMTable         vtab[MPM_MAX_BODIES];                                                   /* its velocity over time (-body_<b>_rigid_velocity[_times]) [cm/s] */
+  PetscReal        vrigid[MPM_MAX_BODIES][3];                                              /* its velocity in this kick, v(t^n + dt_n / 2) [cm/s] */
+  PetscInt         rreg[MPM_MAX_BODIES];                                                   /* its first region (whose geometry gives its normals), or -1: none */
+  PetscInt         nrreg[MPM_MAX_BODIES];                                                  /* and its number of regions                                       */
+  PetscReal        shift[MPM_MAX_BODIES][3];                                               /* its displacement from t = 0 to t^n, int v dt [cm] */
+  Vec              geo[MPM_MAX_BODIES];                                                    /* per body, ghosted local nodes: m = sum N V_p, p = grad m (MPMNode layout) */
+  PetscInt         gid;                                                                    /* the grid the vectors were made for (MPMGrid::id)   */
+  char            *shared;                                                                 /* per local node: two or more bodies have mass there */
+  char            *near;                                                                   /* per local node: a shared node within the ghost width sw (a point whose cell starts there may reach one) */
+  PetscInt        *cand, ncand, maxcand;                                                   /* the local points whose stencil reaches a shared node */
+  PetscInt        *coff, mcoff, *cnode, mcnode;                                            /* their stencils (MPMContactGeometry's, reused by the heat and the surface test): entries coff[i] .. coff[i+1] */
+  PetscReal       *cw;                                                                     /* and the entries' weights N_I(x_p) (mcnode of them) */
+  PetscInt        *slist, nslist, mslist;                                                  /* the shared local nodes, ghosts included */
+  PetscInt         nshared;                                                                /* shared nodes on all ranks this step (0: the bodies are apart) */
+  PetscReal        work, friction;                                                         /* energy the corrections took out of the grid, its frictional part, this rank [erg] */
+  PetscReal        impulse[MPM_MAX_BODIES][3];                                             /* integral of the contact force on each rigid body, this rank [dyn s] */
+  PetscReal        force[MPM_MAX_BODIES][3];                                               /* the contact force on each rigid body in the last kick, all ranks [dyn] */
+  PetscReal        fmax[MPM_MAX_BODIES];                                                   /* the largest |force| so far [dyn] */
+  PetscReal        patch[MPM_MAX_BODIES];                                                  /* the rms radius of the normal forces on it in the last kick, across the force [cm] */
+  PetscReal        rwork;                                                                  /* the work the moving rigid bodies did on the others, all ranks [erg] */
+  PetscInt         nodes;                                                                  /* node-corrections made, this rank */
+  PetscInt         nf;                                                                     /* the nodal fields this step: the bodies, then the crack fields (src/grid/crack.c) */
+  PetscInt         slot[MPM_MAX_BODIES];                                                   /* per field: its MPM::bnodes slot                                  */
+  PetscInt         fam[MPM_MAX_BODIES];                                                    /* per field: its body (a crack field's is the body it splits)      */
+  PetscInt         nbz;                                                                    /* the bodies when the crack fields' geometry was last zeroed      */
+  PetscInt        *wl[MPM_MAX_BODIES], nwl[MPM_MAX_BODIES], mwl[MPM_MAX_BODIES];           /* one rank: per body, the nodes its geometry was summed into last (zeroed next, not the whole vector) */
+  char            *wmark;                                                                  /* one rank: per local node, in the list being built            */
+  PetscInt        *rslot[MPM_MAX_BODIES], *rcount[MPM_MAX_BODIES], nrslot[MPM_MAX_BODIES]; /* a rigid body at rest: per local point of it, its stencil's first entry in rent (-1: none kept) and its entries */
+  MPMContactEntry *rent[MPM_MAX_BODIES];                                                   /* the entries of the stencils kept (MPMContactGeometry) */
+  PetscInt         nrent[MPM_MAX_BODIES], mrent[MPM_MAX_BODIES];                           /* how many, and room for */
+  PetscBool        rfresh[MPM_MAX_BODIES];                                                 /* they are of the points as they are now (MPMBodyMotion::same in every step since) */
 } MPMContact;
 
 static PetscErrorCode MPMContactSetFromOptions(MPMModule mod, MPM mpm, PetscOptionItems *PetscOptionsObject)
@@ -194,8 +194,8 @@ static PetscErrorCode MPMContactKeptReset(MPMContact *ct, PetscInt b, PetscInt n
 {
   PetscFunctionBegin;
   if (n > ct->nrslot[b]) {
-    PetscCall(PetscFree(ct->rslot[b]));
-    PetscCall(PetscMalloc1(n, &ct->rslot[b]));
+    PetscCall(PetscFree2(ct->rslot[b], ct->rcount[b]));
+    PetscCall(PetscMalloc2(n, &ct->rslot[b], n, &ct->rcount[b]));
     ct->nrslot[b] = n;
   }
   for (PetscInt p = 0; p < n; p++) ct->rslot[b][p] = -1;
@@ -208,10 +208,10 @@ static PetscErrorCode MPMContactKeptStore(MPMContact *ct, PetscInt b, PetscInt p
   MPMContactEntry *e;
 
   PetscFunctionBegin;
-  PetscCall(MPMContactReserve(ct->nrent[b] + PetscMax(st->n, 1), &ct->mrent[b], sizeof(MPMContactEntry), &ct->rent[b]));
-  ct->rslot[b][p] = ct->nrent[b];
-  e               = ct->rent[b] + ct->nrent[b];
-  e[0].n          = st->n;
+  PetscCall(MPMContactReserve(ct->nrent[b] + st->n, &ct->mrent[b], sizeof(MPMContactEntry), &ct->rent[b]));
+  ct->rslot[b][p]  = ct->nrent[b];
+  ct->rcount[b][p] = st->n;
+  e                = ct->rent[b] + ct->nrent[b];
   for (PetscInt a = 0; a < st->n; a++) {
     e[a].node = st->node[a];
     e[a].w    = st->w[a];
@@ -220,13 +220,13 @@ static PetscErrorCode MPMContactKeptStore(MPMContact *ct, PetscInt b, PetscInt p
       e[a].s[k]  = st->s[a][k];
     }
   }
-  ct->nrent[b] += PetscMax(st->n, 1);
+  ct->nrent[b] += st->n;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static void MPMContactKeptLoad(const MPMContactEntry *e, MPMStencil *st)
+static void MPMContactKeptLoad(const MPMContactEntry *e, PetscInt n, MPMStencil *st)
 {
-  st->n = e[0].n;
+  st->n = n;
   for (PetscInt a = 0; a < st->n; a++) {
     st->node[a] = e[a].node;
     st->w[a]    = e[a].w;
@@ -289,7 +289,7 @@ static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const
     if (!ct->ext[b] && ct->gap == MPM_CONTACT_GAP_SURFACE && b < nb) PetscCall(PetscMalloc1(nloc, &ct->ext[b]));
   }
   for (PetscInt b = 0; b < nb; b++) /* in every step, met or not: a rigid body's points that moved (or a new grid or order) drop its kept stencils */
-    if (!mpm->body_same[b]) ct->rfresh[b] = PETSC_FALSE;
+    if (!mpm->motion[b].same) ct->rfresh[b] = PETSC_FALSE;
   PetscCall(PetscArrayzero(ct->shared, nloc));
   ct->nslist = 0;
   for (PetscInt a = 0; a < nf; a++) /* the shared nodes: the owned ones where the boxes of two fields meet (outside its box a field's owned nodes hold zeros, MPMBodyBox), then the ghosts */
@@ -346,7 +346,7 @@ static PetscErrorCode MPMContactGeometry(MPMContact *ct, MPM mpm, MPMNode *const
       MPMStencil      st;
       if (!ct->near[MPMGridCellNode(&mpm->grid, &pts.f[MPM_FIELD_POSITION][p * d])]) continue; /* no shared node within its reach */
       if (ct->rigid[b] && ct->rslot[b][p] >= 0)
-        MPMContactKeptLoad(ct->rent[b] + ct->rslot[b][p], &st); /* a rigid body at rest: as evaluated before */
+        MPMContactKeptLoad(ct->rent[b] + ct->rslot[b][p], ct->rcount[b][p], &st); /* a rigid body at rest: as evaluated before */
       else {
         MPMShapeEvaluate(mpm->shape, &mpm->grid, &pts.f[MPM_FIELD_POSITION][p * d], MPMPointDomain(d, pts.f[MPM_FIELD_DEFGRAD], pts.f[MPM_FIELD_DOMAINSCALE], p, Fs), &st);
         if (ct->rigid[b]) PetscCall(MPMContactKeptStore(ct, b, p, &st));
@@ -841,9 +841,9 @@ static PetscErrorCode MPMContactSetUp(MPMModule mod, MPM mpm)
   PetscCheck(ct->gap != MPM_CONTACT_GAP_POSITION || mpm->shape->tent_mass, mpm->comm, PETSC_ERR_USER_INPUT, "-mpm_contact_gap position reads the tent's integral from the nodal masses: it needs -mpm_shape_type linear, gimp or cpdi, not %s", type);
   ct->rigid_gap = (PetscBool)(ct->gap == MPM_CONTACT_GAP_VOLUME && ct->fill_rigid > ct->fill && mpm->shape->tent_mass); /* (B-splines: the volume test's f alone) */
   for (PetscInt b = 0; b < mpm->nbodies; b++) {
-    anyrigid           = (PetscBool)(anyrigid || ct->rigid[b]);
-    mpm->body_rigid[b] = ct->rigid[b];                                                                             /* its points move at its velocity (MPMMoveRigidly), set in each kick below */
-    mpm->body_rest[b]  = (PetscBool)(ct->rigid[b] && !(ct->vrigid[b][0] || ct->vrigid[b][1] || ct->vrigid[b][2])); /* its points start at v(0) */
+    anyrigid             = (PetscBool)(anyrigid || ct->rigid[b]);
+    mpm->motion[b].rigid = ct->rigid[b];                                                                             /* its points move at its velocity (MPMMoveRigidly), set in each kick below */
+    mpm->motion[b].rest  = (PetscBool)(ct->rigid[b] && !(ct->vrigid[b][0] || ct->vrigid[b][1] || ct->vrigid[b][2])); /* its points start at v(0) */
   }
   ct->rigid_gap = (PetscBool)(ct->rigid_gap && anyrigid);
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -878,7 +878,7 @@ static PetscErrorCode MPMContactApply(MPMModule mod, MPM mpm, const MPMStepConte
       if (!ct->rigid[b]) continue;
       MPMTableEval(&ct->vtab[b], ctx->tn + 0.5 * ctx->dt, ct->vrigid[b]);
       MPMTableEval(&ct->vtab[b], ctx->tn + 0.5 * ctx->dt - ctx->kick, vold);
-      for (PetscInt k = 0; k < d; k++) mpm->body_v[b][k] = ct->vrigid[b][k];
+      for (PetscInt k = 0; k < d; k++) mpm->motion[b].v[k] = ct->vrigid[b][k];
       MPMContactTableIntegral(&ct->vtab[b], ctx->tn, ct->shift[b]); /* where its points are at t^n */
       MPMBodyBox(mpm, b, &blo, &bhi);
       for (PetscInt i2 = blo[2]; i2 < bhi[2]; i2++)
@@ -1170,7 +1170,7 @@ static PetscErrorCode MPMContactDestroy(MPMModule mod)
   PetscCall(PetscFree(ct->slist));
   for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) PetscCall(PetscFree(ct->ext[b]));
   for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) PetscCall(PetscFree(ct->wl[b]));
-  for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) PetscCall(PetscFree(ct->rslot[b]));
+  for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) PetscCall(PetscFree2(ct->rslot[b], ct->rcount[b]));
   for (PetscInt b = 0; b < MPM_MAX_BODIES; b++) PetscCall(PetscFree(ct->rent[b]));
   PetscCall(PetscFree(ct->wmark));
   PetscCall(PetscFree(mod->data));

@@ -747,7 +747,7 @@ PetscErrorCode MPMGridToParticles(MPM mpm, const MPMStepContext *ctx, PetscBool 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Grid to points for the points of a body that moves rigidly at its prescribed velocity v_r = MPM::body_v (a rigid body
+/* Grid to points for the points of a body that moves rigidly at its prescribed velocity v_r = MPMBodyMotion::v (a rigid body
    of the contact module): every node of its field holds v_r (before the kick too, when v_r is constant), so the gather
    gives v_p = v_r (velocity), x_p += dt v_r, L_p = 0, the hoop rate v_r,r / r_p (kinematics), C_p = 0 and no change
    of e_p (no work, no kinetic-energy fix: dv_I = 0 at v_p = v_I; the heat exchange leaves points at L_p = 0 alone).
@@ -756,13 +756,13 @@ PetscErrorCode MPMGridToParticles(MPM mpm, const MPMStepContext *ctx, PetscBool 
 PetscErrorCode MPMMoveRigidly(MPM mpm, const MPMStepContext *ctx, PetscBool velocity)
 {
   const PetscInt   d  = mpm->grid.dim;
-  const PetscReal *vr = mpm->body_v[mpm->body];
+  const PetscReal *vr = mpm->motion[mpm->body].v;
   MPMPoints        pts;
 
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(mpm->log.g2p, 0, 0, 0, 0));
-  mpm->body_rest[mpm->body] = PETSC_TRUE;
-  for (PetscInt k = 0; k < d; k++) mpm->body_rest[mpm->body] = (PetscBool)(mpm->body_rest[mpm->body] && vr[k] == 0.0); /* moved: its nodes' sums are stale */
+  mpm->motion[mpm->body].rest = PETSC_TRUE;
+  for (PetscInt k = 0; k < d; k++) mpm->motion[mpm->body].rest = (PetscBool)(mpm->motion[mpm->body].rest && vr[k] == 0.0); /* moved: its nodes' sums are stale */
   PetscCall(MPMPointsGetArrays(mpm, &pts));
   {
     PetscReal     *x = pts.f[MPM_FIELD_POSITION], *v = pts.f[MPM_FIELD_VELOCITY], *L = pts.f[MPM_FIELD_GRADV], *hoop = pts.f[MPM_FIELD_HOOPRATE];
@@ -791,7 +791,7 @@ PetscErrorCode MPMProjectToGrid(MPM mpm)
   MPMNode       *node;
 
   PetscFunctionBegin;
-  for (PetscInt b = 0; b < mpm->nbodies; b++) mpm->body_kept[b] = PETSC_FALSE; /* the current body's nodes take every point's sums here */
+  for (PetscInt b = 0; b < mpm->nbodies; b++) mpm->motion[b].kept = PETSC_FALSE; /* the current body's nodes take every point's sums here */
   PetscCall(MPMScatter(mpm, PETSC_FALSE, 0.0));
   PetscCall(VecGetArray(mpm->lnodes, (PetscScalar **)&node));
   MPM_FOR_BOX_NODES(mpm, c) /* outside the box m_I = 0 and (mv)_I = 0 */
